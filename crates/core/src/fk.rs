@@ -1,0 +1,98 @@
+//! Forward kinematics in one top-down pass over the joint tree: O(n), one
+//! `sin_cos` per revolute joint (She 2006 §2.2 and §6.1.1.1's `ComputeS` /
+//! `ComputeW`; PODA's chained homogeneous transforms `ⁱTⱼ = ⁱTᵢ₊₁ ⋯`).
+
+use glam::{DMat3, DVec3};
+
+use crate::{JointKind, Pose, RootTransform, Skeleton};
+
+/// World-frame kinematic state of a skeleton for one pose. Reuse one value per
+/// skeleton: [`Kinematics::update`] overwrites it without allocating.
+#[derive(Clone, Debug, Default)]
+pub struct Kinematics {
+    /// World position of each joint's origin after its motion, metres.
+    pub joint_position: Vec<DVec3>,
+    /// World orientation of each joint's moving frame.
+    pub joint_rotation: Vec<DMat3>,
+    /// World direction of each joint axis (unit).
+    pub joint_axis: Vec<DVec3>,
+    /// World position of each joint's axis anchor (origin before a prismatic slide), metres.
+    pub joint_anchor: Vec<DVec3>,
+    /// World position of each end effector, metres.
+    pub effector_position: Vec<DVec3>,
+    /// World orientation of each end effector.
+    pub effector_rotation: Vec<DMat3>,
+}
+
+/// Rotation by `angle` radians about the unit vector `axis` (Rodrigues), one `sin_cos`.
+#[must_use]
+pub fn axis_angle(axis: DVec3, angle: f64) -> DMat3 {
+    let (s, c) = angle.sin_cos();
+    let t = 1.0 - c;
+    let (x, y, z) = (axis.x, axis.y, axis.z);
+    DMat3::from_cols(
+        DVec3::new(t * x * x + c, t * x * y + s * z, t * x * z - s * y),
+        DVec3::new(t * x * y - s * z, t * y * y + c, t * y * z + s * x),
+        DVec3::new(t * x * z + s * y, t * y * z - s * x, t * z * z + c),
+    )
+}
+
+impl Kinematics {
+    /// State sized for `skeleton`, all zero until the first update.
+    #[must_use]
+    pub fn new(skeleton: &Skeleton) -> Self {
+        let n = skeleton.joint_count();
+        let k = skeleton.effector_count();
+        Self {
+            joint_position: vec![DVec3::ZERO; n],
+            joint_rotation: vec![DMat3::IDENTITY; n],
+            joint_axis: vec![DVec3::ZERO; n],
+            joint_anchor: vec![DVec3::ZERO; n],
+            effector_position: vec![DVec3::ZERO; k],
+            effector_rotation: vec![DMat3::IDENTITY; k],
+        }
+    }
+
+    /// State for `pose`, freshly allocated (convenience for tests and one-off use).
+    #[must_use]
+    pub fn of(skeleton: &Skeleton, pose: &Pose) -> Self {
+        let mut state = Self::new(skeleton);
+        state.update(skeleton, &pose.root, &pose.joints);
+        state
+    }
+
+    /// Recomputes every joint and effector for root `root` and joint values `values`.
+    ///
+    /// # Panics
+    /// If `values` is shorter than the skeleton's joint count (a programming error).
+    pub fn update(&mut self, skeleton: &Skeleton, root: &RootTransform, values: &[f64]) {
+        let n = skeleton.joint_count();
+        assert!(values.len() >= n, "one value per joint");
+        if self.joint_position.len() != n || self.effector_position.len() != skeleton.effector_count() {
+            *self = Self::new(skeleton);
+        }
+        for (j, joint) in skeleton.joints().iter().enumerate() {
+            let (parent_rotation, parent_position) = match joint.parent {
+                Some(p) => (self.joint_rotation[p], self.joint_position[p]),
+                None => (root.rotation, root.position),
+            };
+            let anchor = parent_position + parent_rotation * joint.offset;
+            let frame = parent_rotation * joint.frame;
+            let axis = frame * joint.axis;
+            let value = values[j];
+            let (rotation, position) = match joint.kind {
+                JointKind::Revolute => (frame * axis_angle(joint.axis, value), anchor),
+                JointKind::Prismatic => (frame, anchor + axis * value),
+            };
+            self.joint_anchor[j] = anchor;
+            self.joint_axis[j] = axis;
+            self.joint_rotation[j] = rotation;
+            self.joint_position[j] = position;
+        }
+        for (e, effector) in skeleton.effectors().iter().enumerate() {
+            let rotation = self.joint_rotation[effector.joint];
+            self.effector_position[e] = self.joint_position[effector.joint] + rotation * effector.offset;
+            self.effector_rotation[e] = rotation;
+        }
+    }
+}

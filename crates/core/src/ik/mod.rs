@@ -1,0 +1,9 @@
+//! Jacobian inverse kinematics (She 2006 §4.4: transpose, pseudoinverse, DLS,
+//! SDLS) with PODA's null-space "center angles and gains" (eq. 6), joint limits
+//! and the thesis' per-joint "wounded" weights (§5.1.1).
+
+mod options;
+mod solver;
+
+pub use options::{IkOptions, JointWeight, Method};
+pub use solver::{IkSolver, IkStatus, Targets};

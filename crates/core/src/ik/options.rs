@@ -1,0 +1,105 @@
+//! Options shared by every IK method (She 2006 §4.4; PODA eq. 6), with defaults
+//! sized for metre-scale creatures.
+
+use serde::{Deserialize, Serialize};
+
+/// The Jacobian IK methods of She 2006 §4.4.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Method {
+    /// Jacobian transpose, Δθ = α Jᵀe with Buss's α = ⟨e, JJᵀe⟩ / ‖JJᵀe‖² (§4.4.1).
+    Transpose,
+    /// Moore–Penrose pseudoinverse through a thin SVD with a rank tolerance (§4.4.2, PODA eq. 4–5).
+    Pinv,
+    /// Damped least squares, Δθ = Jᵀ(JJᵀ + λ²I)⁻¹e (§4.4.3).
+    Dls,
+    /// Selectively damped least squares (Buss & Kim 2005, §4.4.5).
+    Sdls,
+}
+
+impl Method {
+    /// Every method, in the thesis' order.
+    pub const ALL: [Method; 4] = [Method::Transpose, Method::Pinv, Method::Dls, Method::Sdls];
+
+    /// The short name used in presets, URLs and the CLI.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Transpose => "transpose",
+            Method::Pinv => "pinv",
+            Method::Dls => "dls",
+            Method::Sdls => "sdls",
+        }
+    }
+
+    /// Parses a short name (`transpose`, `pinv`, `dls`, `sdls`; also `pseudoinverse`, `jt`).
+    #[must_use]
+    pub fn parse(name: &str) -> Option<Self> {
+        match name.to_ascii_lowercase().as_str() {
+            "transpose" | "jt" | "jacobian-transpose" => Some(Method::Transpose),
+            "pinv" | "pseudoinverse" => Some(Method::Pinv),
+            "dls" => Some(Method::Dls),
+            "sdls" => Some(Method::Sdls),
+            _ => None,
+        }
+    }
+}
+
+/// How a joint's participation is weighted: She 2006 §5.1.1's "wounded" parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointWeight {
+    /// Multiply form: the joint's step is scaled by this factor in every method
+    /// (0 freezes the joint, below 1 stiffens it, above 1 loosens it). Default 1.
+    pub multiply: f64,
+    /// Add form: radians (or metres) added to the joint's step on every iteration,
+    /// a steady push the other joints must work against. Default 0.
+    pub add: f64,
+}
+
+impl Default for JointWeight {
+    fn default() -> Self {
+        Self { multiply: 1.0, add: 0.0 }
+    }
+}
+
+/// Options for [`IkSolver`](super::IkSolver). Every field has a default suited to
+/// metre-scale figures.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct IkOptions {
+    /// The method. Default SDLS (the thesis' best performer).
+    pub method: Method,
+    /// DLS damping λ, metres. Default 0.05.
+    pub lambda: f64,
+    /// SDLS γmax, the largest change of any joint per iteration, radians. Default π/4
+    /// (the thesis misprints 4/π).
+    pub gamma_max: f64,
+    /// Largest joint change per iteration for transpose, pinv and DLS, radians
+    /// (metres for prismatic joints). Default 0.2.
+    pub max_step: f64,
+    /// Singular values below `rank_tolerance · σ_max` count as zero. Default 1e-6.
+    pub rank_tolerance: f64,
+    /// Gain k of PODA's null-space term Δθ += (I − J⁺J)(−k∇H), H = Σ αᵢ(θᵢ − θcᵢ)²,
+    /// applied with pinv and DLS. 0 turns it off. Default 0.
+    pub null_space_gain: f64,
+    /// Keep joints inside their limits by clamping and re-solving without the clamped
+    /// joints. Default true.
+    pub enforce_limits: bool,
+    /// Most clamp-and-re-solve passes per iteration. Default 4.
+    pub limit_passes: usize,
+}
+
+impl Default for IkOptions {
+    fn default() -> Self {
+        Self {
+            method: Method::Sdls,
+            lambda: 0.05,
+            gamma_max: std::f64::consts::FRAC_PI_4,
+            max_step: 0.2,
+            rank_tolerance: 1e-6,
+            null_space_gain: 0.0,
+            enforce_limits: true,
+            limit_passes: 4,
+        }
+    }
+}
