@@ -16,6 +16,7 @@ pub mod fk;
 pub mod ik;
 pub mod jacobian;
 pub mod pose;
+pub mod preset;
 pub mod skeleton;
 
 pub use fk::Kinematics;

@@ -1,0 +1,208 @@
+//! Parameters of She 2006's sinusoidal target script (§5.1.1 control module,
+//! §5.2.2 target code, §5.2.3 wounded weights), in metres, hertz and radians.
+//!
+//! The thesis moves each target as `c + A·sin(ωT)` per axis; gaitlab names the
+//! two extremes of each swing ("front/back leg maximum position", "front/back
+//! hand maximum position", thesis Fig. 5.2) and adds a foot lift during the
+//! forward swing so that feet leave the ground.
+
+use glam::DVec3;
+use serde::{Deserialize, Serialize};
+
+/// The four thesis motions.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ThesisMode {
+    /// Walking: double support, reachable foot targets.
+    Walk,
+    /// Running: flight phase, faster cycle, larger hand swing.
+    Run,
+    /// Walking with the wounded weights applied.
+    WoundedWalk,
+    /// Running with the wounded weights applied.
+    WoundedRun,
+}
+
+impl ThesisMode {
+    /// Every mode, in the thesis' order.
+    pub const ALL: [ThesisMode; 4] = [
+        ThesisMode::Walk,
+        ThesisMode::Run,
+        ThesisMode::WoundedWalk,
+        ThesisMode::WoundedRun,
+    ];
+
+    /// The name used in presets, URLs and the CLI (`walk`, `run`, `wounded-walk`, `wounded-run`).
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            ThesisMode::Walk => "walk",
+            ThesisMode::Run => "run",
+            ThesisMode::WoundedWalk => "wounded-walk",
+            ThesisMode::WoundedRun => "wounded-run",
+        }
+    }
+
+    /// Parses a mode name (also accepts `_` for `-`).
+    #[must_use]
+    pub fn parse(name: &str) -> Option<Self> {
+        let name = name.to_ascii_lowercase().replace('_', "-");
+        Self::ALL.into_iter().find(|m| m.name() == name)
+    }
+
+    /// Whether the wounded weights apply.
+    #[must_use]
+    pub fn wounded(self) -> bool {
+        matches!(self, ThesisMode::WoundedWalk | ThesisMode::WoundedRun)
+    }
+
+    /// Whether this is a running mode.
+    #[must_use]
+    pub fn running(self) -> bool {
+        matches!(self, ThesisMode::Run | ThesisMode::WoundedRun)
+    }
+}
+
+/// Shape of one cyclic motion (walk or run). Positions are in the body frame
+/// relative to the root's ground projection (x toward the figure's left, y up
+/// from the ground, z forward) and are given for the LEFT limbs; the right limbs
+/// mirror x and run half a cycle later.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct CycleShape {
+    /// Gait cycles per second (the thesis' `walk_speed` / `run_speed` as ω = 2πf).
+    pub frequency_hz: f64,
+    /// Foot target at the front extreme of the stroke, metres.
+    pub front_foot: DVec3,
+    /// Foot target at the back extreme of the stroke, metres.
+    pub back_foot: DVec3,
+    /// Extra foot height at mid-swing, metres (0 keeps the thesis' flat y).
+    pub step_height_m: f64,
+    /// Hand target at the front extreme of the swing, metres.
+    pub front_hand: DVec3,
+    /// Hand target at the back extreme of the swing, metres.
+    pub back_hand: DVec3,
+    /// Root height above the ground, metres.
+    pub root_height_m: f64,
+    /// Vertical bob of the root, peak to peak, metres (twice per cycle).
+    pub bounce_m: f64,
+}
+
+impl CycleShape {
+    /// The default walking cycle for a 1.75 m human.
+    #[must_use]
+    pub fn walk() -> Self {
+        Self {
+            frequency_hz: 0.9,
+            front_foot: DVec3::new(0.1, 0.06, 0.32),
+            back_foot: DVec3::new(0.1, 0.06, -0.32),
+            step_height_m: 0.08,
+            front_hand: DVec3::new(0.22, 0.88, 0.22),
+            back_hand: DVec3::new(0.22, 0.9, -0.2),
+            root_height_m: 0.94,
+            bounce_m: 0.03,
+        }
+    }
+
+    /// The default running cycle for a 1.75 m human.
+    #[must_use]
+    pub fn run() -> Self {
+        Self {
+            frequency_hz: 1.4,
+            front_foot: DVec3::new(0.1, 0.1, 0.42),
+            back_foot: DVec3::new(0.1, 0.16, -0.42),
+            step_height_m: 0.2,
+            front_hand: DVec3::new(0.2, 1.05, 0.28),
+            back_hand: DVec3::new(0.2, 0.95, -0.24),
+            root_height_m: 0.9,
+            bounce_m: 0.06,
+        }
+    }
+}
+
+impl Default for CycleShape {
+    fn default() -> Self {
+        Self::walk()
+    }
+}
+
+/// A wounded joint (She 2006 §5.1.1 "weighted parameters", §5.2.3).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WoundedJoint {
+    /// Joint name.
+    pub joint: String,
+    /// Multiply form: the joint's step is scaled by this (0 freezes it). Default 1.
+    #[serde(default = "one")]
+    pub multiply: f64,
+    /// Add form: radians added to the joint's step each iteration. Default 0.
+    #[serde(default)]
+    pub add: f64,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// Which effector plays which limb in the thesis script.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct EffectorRoles {
+    /// Effector that follows the left foot target.
+    pub left_foot: String,
+    /// Effector that follows the right foot target.
+    pub right_foot: String,
+    /// Effector that follows the left hand target.
+    pub left_hand: String,
+    /// Effector that follows the right hand target.
+    pub right_hand: String,
+}
+
+impl Default for EffectorRoles {
+    fn default() -> Self {
+        Self {
+            left_foot: "left_foot".into(),
+            right_foot: "right_foot".into(),
+            left_hand: "left_hand".into(),
+            right_hand: "right_hand".into(),
+        }
+    }
+}
+
+/// Everything the thesis' control module exposes (§5.1.1, §6.2 panels).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ThesisParams {
+    /// Walking cycle.
+    pub walk: CycleShape,
+    /// Running cycle.
+    pub run: CycleShape,
+    /// Time is divided by this (≥ 1 slows the motion down). Default 1.
+    pub slowdown: f64,
+    /// Whether the root advances and the targets go with it ("moving forward"). Default true.
+    pub moving_forward: bool,
+    /// Forward speed when moving forward, m/s; `None` matches the stride
+    /// (4 × half-stroke × frequency). Default `None`.
+    pub speed_mps: Option<f64>,
+    /// IK iterations per animation frame. Default 4.
+    pub iterations_per_frame: usize,
+    /// Joints weighted in the wounded modes.
+    pub wounded: Vec<WoundedJoint>,
+    /// Effector roles.
+    pub roles: EffectorRoles,
+}
+
+impl Default for ThesisParams {
+    fn default() -> Self {
+        Self {
+            walk: CycleShape::walk(),
+            run: CycleShape::run(),
+            slowdown: 1.0,
+            moving_forward: true,
+            speed_mps: None,
+            iterations_per_frame: 4,
+            wounded: Vec::new(),
+            roles: EffectorRoles::default(),
+        }
+    }
+}
