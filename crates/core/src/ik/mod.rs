@@ -2,8 +2,17 @@
 //! SDLS) with PODA's null-space "center angles and gains" (eq. 6), joint limits
 //! and the thesis' per-joint "wounded" weights (§5.1.1).
 
+mod dls;
+mod eigen;
+mod nullspace;
 mod options;
+mod pinv;
+mod sdls;
 mod solver;
+mod svd;
+mod transpose;
 
 pub use options::{IkOptions, JointWeight, Method};
+pub use eigen::{NoConvergence, SymmetricEigen};
 pub use solver::{IkSolver, IkStatus, Targets};
+pub use svd::ThinSvd;

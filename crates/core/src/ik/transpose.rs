@@ -1,0 +1,35 @@
+//! Jacobian transpose (She 2006 §4.4.1): Δθ = α Jᵀe, with Buss's step length
+//! α = ⟨e, JJᵀe⟩ / ‖JJᵀe‖², the α that brings the predicted change J Δθ closest
+//! to e (the thesis prints it as Δs·Δt / 2|Δt|²; Buss 2004 eq. 6 is the one used).
+
+use nalgebra::DMatrix;
+
+/// Writes the transpose step for `jacobian` and task error `error` into `step`,
+/// using `scratch` (length m) for JJᵀe.
+pub fn transpose_step(jacobian: &DMatrix<f64>, error: &[f64], scratch: &mut [f64], step: &mut [f64]) {
+    let m = jacobian.nrows();
+    let data = jacobian.as_slice();
+    // g = Jᵀ e
+    for (c, out) in step.iter_mut().enumerate() {
+        let col = &data[c * m..(c + 1) * m];
+        *out = col.iter().zip(error).map(|(x, y)| x * y).sum();
+    }
+    // h = J g
+    let scratch = &mut scratch[..m];
+    scratch.fill(0.0);
+    for (c, &g) in step.iter().enumerate() {
+        if g == 0.0 {
+            continue;
+        }
+        let col = &data[c * m..(c + 1) * m];
+        for (out, x) in scratch.iter_mut().zip(col) {
+            *out += x * g;
+        }
+    }
+    let numerator: f64 = error.iter().zip(scratch.iter()).map(|(x, y)| x * y).sum();
+    let denominator: f64 = scratch.iter().map(|x| x * x).sum();
+    let alpha = if denominator > 1e-300 { numerator / denominator } else { 0.0 };
+    for g in step.iter_mut() {
+        *g *= alpha;
+    }
+}
