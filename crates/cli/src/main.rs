@@ -1,1 +1,63 @@
-fn main() {}
+//! `gaitlab`: the command-line face of gaitlab (DESIGN.md "Contracts"): list and
+//! validate presets, run the She 2006 motions headless with metrics, BVH and CSV
+//! output, follow recorded targets, and report the performance figures.
+
+mod bench;
+mod fail;
+mod load;
+mod report;
+mod run;
+mod sink;
+mod track;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+
+/// gaitlab — legged figures animated by inverse kinematics (She 2006), PODA
+/// gait synthesis and Raibert–Hodgins dynamics.
+#[derive(Parser, Debug)]
+#[command(name = "gaitlab", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// One line per bundled preset: name, engine, joints, legs.
+    Presets,
+    /// Check a preset file; exit 0 with a summary, or 2 with `error: <json path>: <reason>`.
+    Validate {
+        /// Path to a preset JSON file (or the name of a bundled preset).
+        file: String,
+    },
+    /// Run a preset headless and report metrics.
+    Run(run::RunArgs),
+    /// Follow recorded effector targets from a CSV file.
+    Track(track::TrackArgs),
+    /// Performance figures: µs per IK iteration per method and preset.
+    Bench(bench::BenchArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let outcome = match cli.command {
+        Command::Presets => {
+            load::print_presets();
+            Ok(())
+        }
+        Command::Validate { file } => load::validate(&file),
+        Command::Run(args) => run::run(&args),
+        Command::Track(args) => track::track(&args),
+        Command::Bench(args) => bench::bench(&args),
+    };
+    match outcome {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(failure) => {
+            eprintln!("error: {}", failure.message);
+            ExitCode::from(failure.code)
+        }
+    }
+}

@@ -20,6 +20,7 @@ pub fn fill_jacobian(skeleton: &Skeleton, kin: &Kinematics, jacobian: &mut DMatr
         jacobian.fill(0.0);
     }
     let joints = skeleton.joints();
+    let data = jacobian.as_mut_slice();
     let mut row = 0;
     for (e, effector) in skeleton.effectors().iter().enumerate() {
         let s = kin.effector_position[e];
@@ -29,13 +30,10 @@ pub fn fill_jacobian(skeleton: &Skeleton, kin: &Kinematics, jacobian: &mut DMatr
                 JointKind::Revolute => (axis.cross(s - kin.joint_anchor[j]), axis),
                 JointKind::Prismatic => (axis, glam::DVec3::ZERO),
             };
-            jacobian[(row, j)] = linear.x;
-            jacobian[(row + 1, j)] = linear.y;
-            jacobian[(row + 2, j)] = linear.z;
+            let column = &mut data[j * rows + row..];
+            column[..3].copy_from_slice(&linear.to_array());
             if effector.orientation {
-                jacobian[(row + 3, j)] = angular.x;
-                jacobian[(row + 4, j)] = angular.y;
-                jacobian[(row + 5, j)] = angular.z;
+                column[3..6].copy_from_slice(&angular.to_array());
             }
         }
         row += if effector.orientation { 6 } else { 3 };

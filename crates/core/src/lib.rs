@@ -12,6 +12,8 @@
 //! - Rotations are `glam::DMat3` (column vectors, right-handed).
 //! - Pure: no I/O, no clocks, no web or GPU crates.
 
+pub mod driver;
+pub mod export;
 pub mod fk;
 pub mod ik;
 pub mod jacobian;
@@ -21,4 +23,5 @@ pub mod skeleton;
 
 pub use fk::Kinematics;
 pub use pose::{Pose, RootTransform};
+pub use preset::{Creature, Preset, PresetError, Scenario};
 pub use skeleton::{Effector, Joint, JointKind, Skeleton, SkeletonError};

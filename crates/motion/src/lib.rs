@@ -1,1 +1,17 @@
-//! gaitlab-motion: kinematic drivers (She 2006 §5.2 target scripts).
+//! gaitlab-motion: kinematic drivers — She 2006 §5.2's sinusoidal target
+//! scripts for walking, running and their wounded variants ([`ThesisScript`],
+//! [`ThesisDriver`]), and recorded-target tracking ([`TrackDriver`]).
+//!
+//! Every driver implements [`gaitlab_core::driver::Driver`]: advance by `dt`,
+//! read the [`Pose`](gaitlab_core::Pose), the targets and the IK metrics.
+
+mod error;
+mod ik_stage;
+mod script;
+mod thesis_driver;
+mod track;
+
+pub use error::DriverError;
+pub use script::{Limb, ScriptSample, ThesisScript};
+pub use thesis_driver::{MAX_ITERATIONS_PER_FRAME, ThesisDriver, validate_params};
+pub use track::{FnTargets, TargetSource, TrackDriver, TrackOptions};

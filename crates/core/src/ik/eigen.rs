@@ -198,7 +198,7 @@ impl SymmetricEigen {
                     }
                     let g = d[l];
                     let mut p = (d[l + 1] - g) / (2.0 * e[l]);
-                    let mut r = p.hypot(1.0);
+                    let mut r = (p * p + 1.0).sqrt();
                     if p < 0.0 {
                         r = -r;
                     }
@@ -223,7 +223,7 @@ impl SymmetricEigen {
                         s2 = s;
                         let g = c * e[i];
                         let h = c * p;
-                        r = p.hypot(e[i]);
+                        r = (p * p + e[i] * e[i]).sqrt();
                         e[i + 1] = s * r;
                         s = e[i] / r;
                         c = p / r;

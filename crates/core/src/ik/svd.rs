@@ -102,39 +102,60 @@ impl ThinSvd {
         let sigma_max = largest.max(0.0).sqrt();
         let threshold = (rank_tolerance * sigma_max).max(1e-150);
         let data = j.as_slice();
+        // Keep the eigenpairs above the threshold; record their σ.
+        let mut kept = 0;
         for i in 0..side {
-            let lambda = self.eigen.values()[i];
-            let sigma = lambda.max(0.0).sqrt();
-            if sigma <= threshold {
-                continue;
-            }
-            let r = self.rank;
-            self.sigma[r] = sigma;
-            let q = self.eigen.vector(i);
-            if rows_side {
-                // u = q; v = Jᵀ u / σ.
-                self.u[r * m..(r + 1) * m].copy_from_slice(q);
-                let v = &mut self.v[r * n..(r + 1) * n];
-                for (c, out) in v.iter_mut().enumerate() {
-                    let col = &data[c * m..(c + 1) * m];
-                    *out = col.iter().zip(q).map(|(x, y)| x * y).sum::<f64>() / sigma;
+            let sigma = self.eigen.values()[i].max(0.0).sqrt();
+            if sigma > threshold {
+                self.sigma[kept] = sigma;
+                let q = self.eigen.vector(i);
+                if rows_side {
+                    self.u[kept * m..(kept + 1) * m].copy_from_slice(q);
+                } else {
+                    self.v[kept * n..(kept + 1) * n].copy_from_slice(q);
                 }
-            } else {
-                // v = q; u = J v / σ.
-                self.v[r * n..(r + 1) * n].copy_from_slice(q);
-                let u = &mut self.u[r * m..(r + 1) * m];
-                u.fill(0.0);
-                for (c, &qc) in q.iter().enumerate() {
-                    let col = &data[c * m..(c + 1) * m];
-                    for (out, x) in u.iter_mut().zip(col) {
-                        *out += x * qc;
+                kept += 1;
+            }
+        }
+        self.rank = kept;
+        if rows_side {
+            // vᵢ = Jᵀuᵢ/σᵢ, skipping the (many) zero entries of each column.
+            self.v[..n * kept].fill(0.0);
+            for c in 0..n {
+                let col = &data[c * m..(c + 1) * m];
+                for (a, &x) in col.iter().enumerate() {
+                    if x == 0.0 {
+                        continue;
+                    }
+                    for i in 0..kept {
+                        self.v[i * n + c] += x * self.u[i * m + a];
+                    }
+                }
+            }
+            for i in 0..kept {
+                let inv = 1.0 / self.sigma[i];
+                for x in &mut self.v[i * n..(i + 1) * n] {
+                    *x *= inv;
+                }
+            }
+        } else {
+            // uᵢ = Jvᵢ/σᵢ.
+            self.u[..m * kept].fill(0.0);
+            for i in 0..kept {
+                let inv = 1.0 / self.sigma[i];
+                let (v, u) = (&self.v[i * n..(i + 1) * n], &mut self.u[i * m..(i + 1) * m]);
+                for (c, &vc) in v.iter().enumerate() {
+                    if vc == 0.0 {
+                        continue;
+                    }
+                    for (out, x) in u.iter_mut().zip(&data[c * m..(c + 1) * m]) {
+                        *out += x * vc;
                     }
                 }
                 for out in u.iter_mut() {
-                    *out /= sigma;
+                    *out *= inv;
                 }
             }
-            self.rank += 1;
         }
         Ok(())
     }

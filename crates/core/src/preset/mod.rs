@@ -1,4 +1,33 @@
-//! Presets: the JSON description of a creature and its default scenario,
-//! parsed with serde and validated against DESIGN.md's input limits.
+//! Presets: the JSON description of a creature and its default scenario
+//! (format `gaitlab-preset/1`), parsed with serde, validated against DESIGN.md's
+//! input limits before anything is built, and built into a [`Creature`].
+//!
+//! ```text
+//! &str ──Preset::from_json──▶ Preset (parsed + validated) ──Preset::build──▶ Creature
+//!        (size limit, serde with JSON paths,                 (Skeleton, root position,
+//!         every rule of Preset::validate)                      Scenario)
+//! ```
+//!
+//! Every failure is a [`PresetError`] whose `path` is a JSON path into the file
+//! (`skeleton.joints[3].axis`), shown to people as `path: reason`.
 
+mod build;
+mod bundled;
+mod error;
+mod scenario;
+mod schema;
 pub mod thesis;
+mod validate;
+
+pub use build::Creature;
+pub use bundled::{DEFAULT_PRESET, bundled, bundled_json, bundled_names, load_bundled};
+pub use error::{PresetError, ROOT_PATH};
+pub use scenario::{DEFAULT_FPS, Engine, MAX_FPS, Scenario};
+pub use schema::{
+    DhJointSpec, EffectorSpec, FORMAT, Format, JointSpec, JointType, LimbSpec, MAX_EFFECTORS,
+    MAX_JOINTS, MAX_LIMBS, MAX_NAME_CHARS, MAX_PRESET_BYTES, Preset, RootSpec, SkeletonSpec,
+};
+pub use validate::{
+    MAX_FREQUENCY_HZ, MAX_ITERATIONS_PER_FRAME, MAX_SLOWDOWN, MAX_SPEED_MPS, MAX_START_RAMP_S,
+    MAX_WOUNDED_ADD, MAX_WOUNDED_MULTIPLY, MIN_SLOWDOWN, THESIS_ROLE_COUNT,
+};

@@ -76,44 +76,56 @@ pub struct CycleShape {
     pub front_foot: DVec3,
     /// Foot target at the back extreme of the stroke, metres.
     pub back_foot: DVec3,
-    /// Extra foot height at mid-swing, metres (0 keeps the thesis' flat y).
+    /// Extra foot height at mid-swing, metres: the foot rises by
+    /// `step_height_m · max(0, cos φ)²` only while it swings forward (0 keeps
+    /// the thesis' flat y).
     pub step_height_m: f64,
-    /// Hand target at the front extreme of the swing, metres.
+    /// Hand target at the front extreme of the swing, metres (heights at the
+    /// mean root height; hands ride up and down with the root's bob).
     pub front_hand: DVec3,
     /// Hand target at the back extreme of the swing, metres.
     pub back_hand: DVec3,
-    /// Root height above the ground, metres.
+    /// Mean root height above the ground, metres.
     pub root_height_m: f64,
-    /// Vertical bob of the root, peak to peak, metres (twice per cycle).
+    /// Vertical bob of the root, peak to peak, metres (twice per cycle):
+    /// walking peaks at mid-stance, running between stances.
     pub bounce_m: f64,
 }
 
 impl CycleShape {
-    /// The default walking cycle for a 1.75 m human.
+    /// The default walking cycle for a 1.75 m human (presets/human.json): 0.9
+    /// cycles/s, a 0.52 m stroke (stride-matched speed π·0.52·0.9 ≈ 1.47 m/s),
+    /// 8 cm foot lift, hips 0.97 m up with a 2.5 cm bob, arms swinging
+    /// mostly in front of the body. Tuned so that the knees stay bent (no
+    /// straight-knee singularity) and the torso stays upright.
     #[must_use]
     pub fn walk() -> Self {
         Self {
             frequency_hz: 0.9,
-            front_foot: DVec3::new(0.1, 0.06, 0.32),
-            back_foot: DVec3::new(0.1, 0.06, -0.32),
+            front_foot: DVec3::new(0.1, 0.0, 0.26),
+            back_foot: DVec3::new(0.1, 0.0, -0.26),
             step_height_m: 0.08,
-            front_hand: DVec3::new(0.22, 0.88, 0.22),
-            back_hand: DVec3::new(0.22, 0.9, -0.2),
-            root_height_m: 0.94,
-            bounce_m: 0.03,
+            front_hand: DVec3::new(0.22, 0.89, 0.26),
+            back_hand: DVec3::new(0.22, 0.82, -0.14),
+            root_height_m: 0.97,
+            bounce_m: 0.025,
         }
     }
 
-    /// The default running cycle for a 1.75 m human.
+    /// The default running cycle for a 1.75 m human: 1.4 cycles/s, a 0.68 m
+    /// stroke (≈ 3.0 m/s stride-matched), 20 cm foot lift (high heel kick),
+    /// hips 0.9 m up with a 6 cm bob that peaks between stances, feet a few
+    /// centimetres up at both ends of the stroke so that both are off the
+    /// ground at the top of the bob (the thesis' "intermediate phase", §5.2.1).
     #[must_use]
     pub fn run() -> Self {
         Self {
             frequency_hz: 1.4,
-            front_foot: DVec3::new(0.1, 0.1, 0.42),
-            back_foot: DVec3::new(0.1, 0.16, -0.42),
+            front_foot: DVec3::new(0.1, 0.02, 0.34),
+            back_foot: DVec3::new(0.1, 0.05, -0.34),
             step_height_m: 0.2,
-            front_hand: DVec3::new(0.2, 1.05, 0.28),
-            back_hand: DVec3::new(0.2, 0.95, -0.24),
+            front_hand: DVec3::new(0.22, 0.9, 0.3),
+            back_hand: DVec3::new(0.23, 0.8, -0.16),
             root_height_m: 0.9,
             bounce_m: 0.06,
         }
@@ -181,11 +193,26 @@ pub struct ThesisParams {
     pub slowdown: f64,
     /// Whether the root advances and the targets go with it ("moving forward"). Default true.
     pub moving_forward: bool,
-    /// Forward speed when moving forward, m/s; `None` matches the stride
-    /// (4 × half-stroke × frequency). Default `None`.
+    /// Forward speed when moving forward, m/s; `None` matches the stride:
+    /// π × |front_foot.z − back_foot.z| × frequency / slowdown, the body-frame
+    /// speed of the planted foot at mid-stance, so that it is at rest in the
+    /// world there. Default `None`.
     pub speed_mps: Option<f64>,
     /// IK iterations per animation frame. Default 4.
     pub iterations_per_frame: usize,
+    /// Posture relaxation per frame, 0 to 1: before the frame's IK iterations
+    /// every joint moves toward its PODA center angle by
+    /// `posture_gain · gain_j · (center_j − θ_j)` (the joint's `center` and
+    /// `gain`), and the iterations then restore the targets. This keeps
+    /// redundant joints (torso, ankles, elbows) from drifting for every method,
+    /// like PODA eq. 6's null-space term, which the solver applies only for
+    /// pinv and DLS. 0 turns it off. Default 0.1.
+    pub posture_gain: f64,
+    /// Seconds over which, after a reset, the targets blend (smoothstep) from
+    /// the rest pose's effector positions into the cycle and the speed rises
+    /// from 0, so the figure starts from standing instead of snapping to the
+    /// first targets. 0 starts the cycle at once. Default 0.5.
+    pub start_ramp_s: f64,
     /// Joints weighted in the wounded modes.
     pub wounded: Vec<WoundedJoint>,
     /// Effector roles.
@@ -201,6 +228,8 @@ impl Default for ThesisParams {
             moving_forward: true,
             speed_mps: None,
             iterations_per_frame: 4,
+            posture_gain: 0.1,
+            start_ramp_s: 0.5,
             wounded: Vec::new(),
             roles: EffectorRoles::default(),
         }

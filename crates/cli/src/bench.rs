@@ -1,0 +1,162 @@
+//! `gaitlab bench [--json]`: the performance figures. For each preset and IK
+//! method, the µs one IK iteration takes (forward kinematics + Jacobian + solve
+//! + update, She 2006 §4.4), measured over the targets of the preset's own
+//! thesis walk, and the µs per animation frame of the whole driver.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use clap::Args;
+use gaitlab_core::driver::Driver;
+use gaitlab_core::ik::{IkSolver, Method, Targets};
+use gaitlab_core::preset::thesis::ThesisMode;
+use gaitlab_core::{Creature, RootTransform};
+use gaitlab_motion::ThesisDriver;
+use serde_json::{Value, json};
+
+use crate::fail::Failure;
+use crate::load;
+
+/// Arguments of `gaitlab bench`.
+#[derive(Args, Debug)]
+pub struct BenchArgs {
+    /// Print one JSON object instead of a table.
+    #[arg(long)]
+    pub json: bool,
+    /// Presets to measure (default: human and ik-quadruped).
+    #[arg(long = "preset")]
+    pub presets: Vec<String>,
+    /// Timed repetitions of each case; the median is reported.
+    #[arg(long, default_value_t = 5)]
+    pub repeats: usize,
+}
+
+/// Targets the issue sets for this machine, µs per iteration: (preset, method, budget).
+const BUDGETS: [(&str, Method, f64); 3] = [("human", Method::Sdls, 10.0), ("human", Method::Dls, 3.0), ("ik-quadruped", Method::Sdls, 65.0)];
+
+/// One frame of recorded targets.
+struct Frame {
+    root: RootTransform,
+    targets: Targets,
+}
+
+/// Records 10 s of the preset's thesis walk (60 fps) as a target sequence.
+fn record(creature: &Creature) -> Result<Vec<Frame>, Failure> {
+    let scenario = &creature.scenario;
+    let mut driver = ThesisDriver::new(creature.skeleton.clone(), scenario.thesis.clone(), ThesisMode::Walk, scenario.ik_options())
+        .map_err(|e| Failure::input(format!("{}: scenario.thesis.{e}", creature.name)))?;
+    let mut frames = Vec::with_capacity(600);
+    for _ in 0..600 {
+        driver.step(1.0 / 60.0);
+        if let Some(targets) = driver.targets() {
+            frames.push(Frame { root: driver.pose().root, targets: targets.clone() });
+        }
+    }
+    Ok(frames)
+}
+
+fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
+}
+
+/// µs per IK iteration of `method` over `frames`, `iterations` per frame.
+fn time_iterations(creature: &Creature, frames: &[Frame], method: Method, iterations: usize, repeats: usize) -> f64 {
+    let mut options = creature.scenario.ik_options();
+    options.method = method;
+    let skeleton = &creature.skeleton;
+    let mut solver = IkSolver::new(skeleton, options);
+    let mut values = skeleton.rest_values();
+    // Warm up (and reach the steady tracking state).
+    for frame in frames.iter().take(60) {
+        for _ in 0..iterations {
+            black_box(solver.iterate(skeleton, &frame.root, &mut values, &frame.targets));
+        }
+    }
+    let samples = (0..repeats.max(1))
+        .map(|_| {
+            let start = Instant::now();
+            for frame in frames {
+                for _ in 0..iterations {
+                    black_box(solver.iterate(skeleton, &frame.root, &mut values, &frame.targets));
+                }
+            }
+            start.elapsed().as_secs_f64() * 1e6 / (frames.len() * iterations) as f64
+        })
+        .collect();
+    median(samples)
+}
+
+/// µs per frame of the whole thesis driver (script + IK iterations).
+fn time_frames(creature: &Creature, method: Method, repeats: usize) -> Result<f64, Failure> {
+    let scenario = &creature.scenario;
+    let mut options = scenario.ik_options();
+    options.method = method;
+    let mut driver = ThesisDriver::new(creature.skeleton.clone(), scenario.thesis.clone(), ThesisMode::Walk, options)
+        .map_err(|e| Failure::input(format!("{}: scenario.thesis.{e}", creature.name)))?;
+    let samples = (0..repeats.max(1))
+        .map(|_| {
+            let start = Instant::now();
+            for _ in 0..600 {
+                driver.step(1.0 / 60.0);
+            }
+            start.elapsed().as_secs_f64() * 1e6 / 600.0
+        })
+        .collect();
+    Ok(median(samples))
+}
+
+/// `gaitlab bench`.
+pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
+    let presets = if args.presets.is_empty() { vec!["human".to_owned(), "ik-quadruped".to_owned()] } else { args.presets.clone() };
+    let mut rows = Vec::new();
+    for name in &presets {
+        let creature = load::creature(name)?;
+        let frames = record(&creature)?;
+        let iterations = creature.scenario.thesis.iterations_per_frame;
+        for method in Method::ALL {
+            let us_per_iteration = time_iterations(&creature, &frames, method, iterations, args.repeats);
+            let us_per_frame = time_frames(&creature, method, args.repeats)?;
+            let budget = BUDGETS.iter().find(|(p, m, _)| p == name && *m == method).map(|(_, _, b)| *b);
+            rows.push(json!({
+                "preset": creature.name,
+                "joints": creature.skeleton.joint_count(),
+                "effectors": creature.skeleton.effector_count(),
+                "method": method.name(),
+                "us_per_iteration": us_per_iteration,
+                "iterations_per_frame": iterations,
+                "us_per_frame": us_per_frame,
+                "budget_us_per_iteration": budget,
+                "within_budget": budget.map(|b| us_per_iteration <= b),
+            }));
+        }
+    }
+    let report = json!({ "ik": rows, "cpus": std::thread::available_parallelism().map_or(1, |n| n.get()) });
+    if args.json {
+        println!("{report}");
+    } else {
+        print_table(&report);
+    }
+    Ok(())
+}
+
+fn print_table(report: &Value) {
+    println!("{:<14} {:>6} {:>4} {:<10} {:>12} {:>12} {:>10}", "preset", "joints", "eff", "method", "µs/iter", "µs/frame", "budget");
+    for row in report["ik"].as_array().into_iter().flatten() {
+        let budget = match (row["budget_us_per_iteration"].as_f64(), row["within_budget"].as_bool()) {
+            (Some(b), Some(true)) => format!("≤{b} ok"),
+            (Some(b), _) => format!("≤{b} MISS"),
+            _ => String::new(),
+        };
+        println!(
+            "{:<14} {:>6} {:>4} {:<10} {:>12.2} {:>12.2} {:>10}",
+            row["preset"].as_str().unwrap_or("?"),
+            row["joints"],
+            row["effectors"],
+            row["method"].as_str().unwrap_or("?"),
+            row["us_per_iteration"].as_f64().unwrap_or(f64::NAN),
+            row["us_per_frame"].as_f64().unwrap_or(f64::NAN),
+            budget
+        );
+    }
+}

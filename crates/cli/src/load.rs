@@ -1,0 +1,80 @@
+//! Finding presets: a bundled name or a file path. Files are size-checked
+//! before they are read in full (DESIGN.md input limits: a preset ≤ 256 KiB).
+
+use std::io::Read;
+
+use gaitlab_core::preset::{MAX_PRESET_BYTES, bundled, load_bundled};
+use gaitlab_core::{Creature, PresetError};
+
+use crate::fail::Failure;
+
+/// Reads at most `limit` bytes of `path` as UTF-8 text; a larger file is an error
+/// that names the limit, and nothing past it is read.
+pub fn read_limited(path: &str, limit: usize, what: &str) -> Result<String, Failure> {
+    let file = std::fs::File::open(path).map_err(|e| Failure::io(path, e))?;
+    let mut bytes = Vec::new();
+    file.take(limit as u64 + 1).read_to_end(&mut bytes).map_err(|e| Failure::io(path, e))?;
+    if bytes.len() > limit {
+        return Err(Failure::input(format!("{path}: {what} is larger than {} KiB", limit / 1024)));
+    }
+    String::from_utf8(bytes).map_err(|e| Failure::input(format!("{path}: not UTF-8 text ({e})")))
+}
+
+/// A preset by bundled name, or else by file path. Errors are `<json path>: <reason>`.
+pub fn creature(name_or_path: &str) -> Result<Creature, Failure> {
+    if let Some(loaded) = load_bundled(name_or_path) {
+        return loaded.map_err(|e| Failure::input(format!("bundled preset {name_or_path}: {e}")));
+    }
+    let looks_like_file = name_or_path.contains('/') || name_or_path.contains('.') || std::path::Path::new(name_or_path).exists();
+    if !looks_like_file {
+        let names: Vec<&str> = bundled().iter().map(|(name, _)| *name).collect();
+        return Err(Failure::input(format!(
+            "{name_or_path}: no such bundled preset (try one of: {}) and no such file",
+            names.join(", ")
+        )));
+    }
+    let text = read_limited(name_or_path, MAX_PRESET_BYTES, "preset")?;
+    Creature::from_json(&text).map_err(|e: PresetError| Failure::input(e))
+}
+
+/// `gaitlab presets`.
+pub fn print_presets() {
+    for (name, _) in bundled() {
+        match load_bundled(name) {
+            Some(Ok(creature)) => println!(
+                "{name:<14} engine={:<4} joints={:<3} legs={}",
+                creature.scenario.engine.name(),
+                creature.skeleton.joint_count(),
+                legs(&creature)
+            ),
+            Some(Err(error)) => println!("{name:<14} invalid: {error}"),
+            None => {}
+        }
+    }
+}
+
+/// Legs of a creature: effectors whose name says foot, paw or hoof.
+pub fn legs(creature: &Creature) -> usize {
+    creature
+        .skeleton
+        .effectors()
+        .iter()
+        .filter(|e| ["foot", "paw", "hoof", "toe"].iter().any(|w| e.name.contains(w)))
+        .count()
+}
+
+/// `gaitlab validate FILE`.
+pub fn validate(file: &str) -> Result<(), Failure> {
+    let creature = creature(file)?;
+    println!(
+        "ok: {} — engine {}, {} joints, {} effectors, {} legs, mode {}, method {}",
+        creature.name,
+        creature.scenario.engine.name(),
+        creature.skeleton.joint_count(),
+        creature.skeleton.effector_count(),
+        legs(&creature),
+        creature.scenario.mode.name(),
+        creature.scenario.method.name()
+    );
+    Ok(())
+}

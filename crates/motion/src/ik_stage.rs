@@ -1,0 +1,103 @@
+//! The IK stage shared by the IK drivers: run the frame's iterations of She
+//! 2006 §5.1.2's calculation module, then measure each effector's distance to
+//! its target (§5.3's `d`) and accumulate the metrics. Allocation-free per frame.
+
+use gaitlab_core::driver::{IkFrameReport, IkMetrics};
+use gaitlab_core::ik::{IkOptions, IkSolver, Targets};
+use gaitlab_core::{Kinematics, RootTransform, Skeleton};
+use glam::{DMat3, DVec3};
+
+/// Solver, kinematic workspace, targets and figures of one IK-driven figure.
+#[derive(Clone, Debug)]
+pub(crate) struct IkStage {
+    pub(crate) solver: IkSolver,
+    pub(crate) kinematics: Kinematics,
+    pub(crate) targets: Targets,
+    pub(crate) report: IkFrameReport,
+    pub(crate) metrics: IkMetrics,
+    /// Joint values at the start of the frame, restored if the solve goes non-finite.
+    last_good: Vec<f64>,
+}
+
+impl IkStage {
+    pub(crate) fn new(skeleton: &Skeleton, options: IkOptions) -> Self {
+        let k = skeleton.effector_count();
+        Self {
+            solver: IkSolver::new(skeleton, options),
+            kinematics: Kinematics::new(skeleton),
+            targets: Targets {
+                position: vec![DVec3::ZERO; k],
+                rotation: vec![DMat3::IDENTITY; k],
+            },
+            report: IkFrameReport::new(k),
+            metrics: IkMetrics::new(k),
+            last_good: vec![0.0; skeleton.joint_count()],
+        }
+    }
+
+    /// Forward kinematics for the current pose, then the report's errors.
+    pub(crate) fn measure(&mut self, skeleton: &Skeleton, root: &RootTransform, values: &[f64]) {
+        self.kinematics.update(skeleton, root, values);
+        let mut max = 0.0_f64;
+        for ((error, effector), target) in self
+            .report
+            .effector_error_m
+            .iter_mut()
+            .zip(&self.kinematics.effector_position)
+            .zip(&self.targets.position)
+        {
+            *error = effector.distance(*target);
+            max = if error.is_nan() {
+                f64::INFINITY
+            } else {
+                max.max(*error)
+            };
+        }
+        self.report.max_error_m = max;
+    }
+
+    /// Runs `iterations` IK iterations on `values` toward the current targets,
+    /// measures the result and records a frame of `dt` seconds. If the joint
+    /// values go non-finite they are restored to the frame's starting values.
+    pub(crate) fn solve(
+        &mut self,
+        skeleton: &Skeleton,
+        root: &RootTransform,
+        values: &mut [f64],
+        iterations: usize,
+        dt: f64,
+    ) {
+        self.last_good.copy_from_slice(values);
+        let mut clamped = 0;
+        for _ in 0..iterations {
+            let status = self.solver.iterate(skeleton, root, values, &self.targets);
+            clamped = status.clamped_joints;
+        }
+        let restored = !values.iter().all(|v| v.is_finite());
+        if restored {
+            values.copy_from_slice(&self.last_good);
+        }
+        self.report.iterations = iterations;
+        self.report.clamped_joints = clamped;
+        self.report.restored = restored;
+        self.measure(skeleton, root, values);
+        self.metrics.record(dt, &self.report);
+    }
+
+    /// Moves every joint toward its PODA center angle by
+    /// `gain · joint.gain · (center − value)`, within its limits.
+    pub(crate) fn relax(skeleton: &Skeleton, values: &mut [f64], gain: f64) {
+        if gain <= 0.0 {
+            return;
+        }
+        for (value, joint) in values.iter_mut().zip(skeleton.joints()) {
+            *value = joint.clamp(*value + gain * joint.gain * (joint.center - *value));
+        }
+    }
+
+    /// Clears the report and metrics.
+    pub(crate) fn clear(&mut self) {
+        self.report = IkFrameReport::new(self.report.effector_error_m.len());
+        self.metrics.clear();
+    }
+}

@@ -1,0 +1,204 @@
+//! The thesis target script: She 2006 §5.2.2's sinusoidal end-effector targets
+//! for walking and running (§5.2.1 cycles, §5.1.1 step, hand and speed
+//! parameters), as a pure function of time, [`ThesisParams`] and [`ThesisMode`].
+//!
+//! # The script
+//! With `ω = 2π·frequency_hz / slowdown` and the left limbs' phase `φ = ωt`
+//! (the right limbs' phase is `φ − π`, half a cycle later), every target moves
+//! between the two extremes of its stroke (thesis Fig. 5.2), in the body frame
+//! (x toward the figure's left, y up from the ground, z forward, origin at the
+//! root's ground projection):
+//!
+//! - foot: `mid + half·sin φ + ŷ·step_height·max(0, cos φ)²`, where
+//!   `mid = (front + back)/2`, `half = (front − back)/2`. The foot is at the
+//!   front at `φ = π/2`, sweeps back during stance (`cos φ < 0`) and is lifted
+//!   only while it swings forward (`cos φ > 0`, highest at mid-swing `φ = 0`);
+//!   the square keeps lift-off and touch-down velocity-continuous.
+//! - hand: `mid − half·sin φ`, opposite to the same-side foot, riding up and
+//!   down with the root's bounce (hands are given at the mean root height).
+//! - root height: `root_height ± (bounce/2)·cos 2φ`, twice per cycle; `+` for
+//!   walking (highest at mid-stance, the inverted pendulum), `−` for running
+//!   (lowest at mid-stance, highest in the flight-like phase between stances).
+//!
+//! The right limbs mirror x. The left limbs are given in [`CycleShape`].
+//!
+//! # Speed
+//! In the body frame the planted foot moves backward at `ω·|half.z|·|cos φ|`,
+//! fastest at mid-stance. The stride-matched speed is that peak,
+//! `ω·|front.z − back.z|/2 = π·|front.z − back.z|·frequency/slowdown`, so that the
+//! planted foot is at rest in the world at mid-stance and never moves backward
+//! (the foot traces a cycloid). The stroke's average speed
+//! `2·|front.z − back.z|·frequency/slowdown` would leave it sliding backward at
+//! mid-stance.
+
+use std::f64::consts::{PI, TAU};
+
+use gaitlab_core::preset::thesis::{CycleShape, ThesisMode, ThesisParams};
+use glam::DVec3;
+
+/// The limbs the script moves, in [`ScriptSample::targets`] order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Limb {
+    /// Left foot (phase `φ`).
+    LeftFoot,
+    /// Right foot (phase `φ − π`).
+    RightFoot,
+    /// Left hand (opposite to the left foot).
+    LeftHand,
+    /// Right hand (opposite to the right foot).
+    RightHand,
+}
+
+impl Limb {
+    /// Every limb, in target order.
+    pub const ALL: [Limb; 4] = [
+        Limb::LeftFoot,
+        Limb::RightFoot,
+        Limb::LeftHand,
+        Limb::RightHand,
+    ];
+
+    /// Index into [`ScriptSample::targets`].
+    #[must_use]
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// Whether this is a foot.
+    #[must_use]
+    pub fn is_foot(self) -> bool {
+        matches!(self, Limb::LeftFoot | Limb::RightFoot)
+    }
+}
+
+/// The script's output at one instant, in the body frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ScriptSample {
+    /// Target per limb, metres, in [`Limb::ALL`] order: relative to the root's
+    /// ground projection, x toward the figure's left, y up from the ground, z forward.
+    pub targets: [DVec3; 4],
+    /// Root height above the ground, metres.
+    pub root_height_m: f64,
+}
+
+impl ScriptSample {
+    /// The target of `limb`.
+    #[must_use]
+    pub fn target(&self, limb: Limb) -> DVec3 {
+        self.targets[limb.index()]
+    }
+}
+
+/// The target script for one parameter set and mode (She 2006 §5.2.2).
+#[derive(Clone, Copy, Debug)]
+pub struct ThesisScript<'a> {
+    /// The parameters (cycle shapes, slowdown, speed).
+    pub params: &'a ThesisParams,
+    /// The motion: walking modes use `params.walk`, running modes `params.run`.
+    pub mode: ThesisMode,
+}
+
+impl<'a> ThesisScript<'a> {
+    /// The script for `params` in `mode`.
+    #[must_use]
+    pub fn new(params: &'a ThesisParams, mode: ThesisMode) -> Self {
+        Self { params, mode }
+    }
+
+    /// The cycle shape this mode uses.
+    #[must_use]
+    pub fn shape(&self) -> &'a CycleShape {
+        if self.mode.running() {
+            &self.params.run
+        } else {
+            &self.params.walk
+        }
+    }
+
+    /// Effective cycle frequency, `frequency_hz / slowdown`, hertz. A slowdown
+    /// that is not a positive finite number counts as 1.
+    #[must_use]
+    pub fn frequency_hz(&self) -> f64 {
+        let slowdown = self.params.slowdown;
+        let slowdown = if slowdown.is_finite() && slowdown > 0.0 {
+            slowdown
+        } else {
+            1.0
+        };
+        self.shape().frequency_hz / slowdown
+    }
+
+    /// Angular frequency `ω = 2π·frequency_hz / slowdown`, radians per second.
+    #[must_use]
+    pub fn angular_frequency(&self) -> f64 {
+        TAU * self.frequency_hz()
+    }
+
+    /// Duration of one cycle, seconds (infinite at zero frequency).
+    #[must_use]
+    pub fn period_s(&self) -> f64 {
+        1.0 / self.frequency_hz()
+    }
+
+    /// Speed at which the planted foot is at rest at mid-stance:
+    /// `ω·|front.z − back.z|/2`, metres per second (see the module docs).
+    #[must_use]
+    pub fn stride_matched_speed_mps(&self) -> f64 {
+        let shape = self.shape();
+        0.5 * self.angular_frequency() * (shape.front_foot.z - shape.back_foot.z).abs()
+    }
+
+    /// Forward speed of the root: 0 unless `moving_forward`, else `speed_mps`
+    /// or, when that is `None`, the stride-matched speed.
+    #[must_use]
+    pub fn speed_mps(&self) -> f64 {
+        if !self.params.moving_forward {
+            return 0.0;
+        }
+        self.params
+            .speed_mps
+            .unwrap_or_else(|| self.stride_matched_speed_mps())
+    }
+
+    /// The targets and root height at left-limb phase `phase`, radians.
+    #[must_use]
+    pub fn at_phase(&self, phase: f64) -> ScriptSample {
+        let shape = self.shape();
+        let right_phase = phase - PI;
+        let mirror = DVec3::new(-1.0, 1.0, 1.0);
+        let bounce = 0.5 * shape.bounce_m * (2.0 * phase).cos();
+        let bounce = if self.mode.running() { -bounce } else { bounce };
+        let ride = DVec3::new(0.0, bounce, 0.0);
+        ScriptSample {
+            targets: [
+                foot(shape, phase),
+                foot(shape, right_phase) * mirror,
+                hand(shape, phase) + ride,
+                hand(shape, right_phase) * mirror + ride,
+            ],
+            root_height_m: shape.root_height_m + bounce,
+        }
+    }
+
+    /// The targets and root height at time `t`, seconds (phase `ωt`).
+    #[must_use]
+    pub fn at_time(&self, t: f64) -> ScriptSample {
+        self.at_phase(self.angular_frequency() * t)
+    }
+}
+
+/// Left foot target at phase `phase`.
+fn foot(shape: &CycleShape, phase: f64) -> DVec3 {
+    let (sin, cos) = phase.sin_cos();
+    let mid = 0.5 * (shape.front_foot + shape.back_foot);
+    let half = 0.5 * (shape.front_foot - shape.back_foot);
+    let lift = cos.max(0.0);
+    mid + half * sin + DVec3::Y * (shape.step_height_m * lift * lift)
+}
+
+/// Left hand target at left-foot phase `phase`: opposite to the foot.
+fn hand(shape: &CycleShape, phase: f64) -> DVec3 {
+    let mid = 0.5 * (shape.front_hand + shape.back_hand);
+    let half = 0.5 * (shape.front_hand - shape.back_hand);
+    mid - half * phase.sin()
+}

@@ -1,0 +1,439 @@
+//! The thesis driver: She 2006 §5.1's control → calculation → animation loop.
+//! Each frame it advances the script (§5.2.2), moves the root forward
+//! ("moving forward", §6.2), places the four targets in the world, runs the
+//! chosen Jacobian IK method (§4.4, §5.3) and, in the wounded modes, applies the
+//! per-joint weights (§5.1.1, §5.2.3).
+
+use std::sync::Arc;
+
+use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
+use gaitlab_core::ik::{IkOptions, JointWeight, Method, Targets};
+use gaitlab_core::preset::thesis::{EffectorRoles, ThesisMode, ThesisParams};
+use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
+use glam::{DMat3, DVec3};
+
+use crate::error::DriverError;
+use crate::ik_stage::IkStage;
+use crate::script::{Limb, ScriptSample, ThesisScript};
+
+/// Most IK iterations per frame a parameter set may ask for.
+pub const MAX_ITERATIONS_PER_FRAME: usize = 256;
+
+/// Animates a skeleton with the thesis target script and Jacobian IK.
+///
+/// The root is placed by the script, not by the IK: at the ground point
+/// `origin + heading·(0, 0, distance)` raised by the script's root height, with
+/// the origin's orientation (use a heading, a rotation about y). Effectors
+/// other than the four roles track their rest position relative to the root.
+/// After a reset the four targets blend from their rest positions into the
+/// cycle over `start_ramp_s` (see [`ThesisParams::start_ramp_s`]).
+#[derive(Clone, Debug)]
+pub struct ThesisDriver {
+    skeleton: Arc<Skeleton>,
+    params: ThesisParams,
+    mode: ThesisMode,
+    origin: RootTransform,
+    /// Effector index per [`Limb`].
+    roles: [usize; 4],
+    /// Resolved wounded weights: joint index and weight.
+    wounded: Vec<(usize, JointWeight)>,
+    /// Rest position of every effector relative to the root, body frame.
+    rest_offset: Vec<DVec3>,
+    /// Rest orientation of every effector relative to the root.
+    rest_rotation: Vec<DMat3>,
+    stage: IkStage,
+    pose: Pose,
+    time: f64,
+    phase: f64,
+    distance: f64,
+    sample: ScriptSample,
+}
+
+impl ThesisDriver {
+    /// A driver for `skeleton` in `mode`, at time 0 in the rest pose, at the
+    /// world origin facing +z.
+    ///
+    /// # Errors
+    /// If `params` fails [`validate_params`] or names an effector or wounded
+    /// joint the skeleton does not have.
+    pub fn new(
+        skeleton: impl Into<Arc<Skeleton>>,
+        params: ThesisParams,
+        mode: ThesisMode,
+        options: IkOptions,
+    ) -> Result<Self, DriverError> {
+        let skeleton = skeleton.into();
+        let (roles, wounded) = resolve(&skeleton, &params)?;
+        let rest = Kinematics::of(
+            &skeleton,
+            &Pose {
+                root: RootTransform::default(),
+                joints: skeleton.rest_values(),
+            },
+        );
+        let stage = IkStage::new(&skeleton, options);
+        let sample = ThesisScript::new(&params, mode).at_phase(0.0);
+        let mut driver = Self {
+            pose: Pose {
+                root: RootTransform::default(),
+                joints: skeleton.rest_values(),
+            },
+            rest_offset: rest.effector_position.clone(),
+            rest_rotation: rest.effector_rotation.clone(),
+            skeleton,
+            params,
+            mode,
+            origin: RootTransform::default(),
+            roles,
+            wounded,
+            stage,
+            time: 0.0,
+            phase: 0.0,
+            distance: 0.0,
+            sample,
+        };
+        driver.apply_weights();
+        driver.reset();
+        Ok(driver)
+    }
+
+    /// The parameters.
+    #[must_use]
+    pub fn params(&self) -> &ThesisParams {
+        &self.params
+    }
+
+    /// Replaces the parameters (live; the cycle phase and distance carry on).
+    ///
+    /// # Errors
+    /// As [`ThesisDriver::new`]; the driver is unchanged on error.
+    pub fn set_params(&mut self, params: ThesisParams) -> Result<(), DriverError> {
+        let (roles, wounded) = resolve(&self.skeleton, &params)?;
+        self.params = params;
+        self.roles = roles;
+        self.wounded = wounded;
+        self.apply_weights();
+        Ok(())
+    }
+
+    /// The motion.
+    #[must_use]
+    pub fn mode(&self) -> ThesisMode {
+        self.mode
+    }
+
+    /// Switches the motion (live), applying or clearing the wounded weights.
+    pub fn set_mode(&mut self, mode: ThesisMode) {
+        self.mode = mode;
+        self.apply_weights();
+    }
+
+    /// The IK options.
+    #[must_use]
+    pub fn options(&self) -> &IkOptions {
+        self.stage.solver.options()
+    }
+
+    /// Replaces the IK options (take effect at the next iteration).
+    pub fn set_options(&mut self, options: IkOptions) {
+        *self.stage.solver.options_mut() = options;
+    }
+
+    /// Switches the IK method (She 2006 §6.2 method panel).
+    pub fn set_method(&mut self, method: Method) {
+        self.stage.solver.options_mut().method = method;
+    }
+
+    /// Where the figure starts: the ground point below `origin.position` and the
+    /// heading `origin.rotation`. Takes effect at the next reset.
+    pub fn set_origin(&mut self, origin: RootTransform) {
+        self.origin = origin;
+    }
+
+    /// The script for the current parameters and mode.
+    #[must_use]
+    pub fn script(&self) -> ThesisScript<'_> {
+        ThesisScript::new(&self.params, self.mode)
+    }
+
+    /// Left-limb cycle phase, radians (accumulated, so live frequency changes stay smooth).
+    #[must_use]
+    pub fn phase(&self) -> f64 {
+        self.phase
+    }
+
+    /// Distance the root has moved forward since the reset, metres.
+    #[must_use]
+    pub fn distance_m(&self) -> f64 {
+        self.distance
+    }
+
+    /// The script's output for the current frame, body frame.
+    #[must_use]
+    pub fn sample(&self) -> &ScriptSample {
+        &self.sample
+    }
+
+    /// Effector index playing `limb`.
+    #[must_use]
+    pub fn effector_of(&self, limb: Limb) -> usize {
+        self.roles[limb.index()]
+    }
+
+    /// Places the root and every target for the current phase and distance.
+    fn place(&mut self) {
+        let script = ThesisScript::new(&self.params, self.mode);
+        self.sample = script.at_phase(self.phase);
+        let blend = start_blend(self.time, self.params.start_ramp_s);
+        let heading = self.origin.rotation;
+        let mut ground = self.origin.position + heading * DVec3::new(0.0, 0.0, self.distance);
+        ground.y = 0.0;
+        let root_height = DVec3::new(0.0, self.sample.root_height_m, 0.0);
+        let root_position = ground + heading * root_height;
+        self.pose.root = RootTransform {
+            position: root_position,
+            rotation: heading,
+        };
+        let targets = &mut self.stage.targets;
+        for (e, (position, rotation)) in targets
+            .position
+            .iter_mut()
+            .zip(targets.rotation.iter_mut())
+            .enumerate()
+        {
+            *position = root_position + heading * self.rest_offset[e];
+            *rotation = heading * self.rest_rotation[e];
+        }
+        for limb in Limb::ALL {
+            let e = self.roles[limb.index()];
+            let cycle = self.sample.target(limb) - root_height;
+            let mut relative = self.rest_offset[e].lerp(cycle, blend);
+            if limb.is_foot() {
+                let d: f64 = std::env::var("LEAN").ok().and_then(|s| s.parse().ok()).unwrap_or(0.0);
+                relative.z -= d * (std::f64::consts::PI * blend).sin();
+            }
+            targets.position[e] = root_position + heading * relative;
+        }
+    }
+
+    /// Sets the wounded weights in wounded modes and clears them otherwise.
+    fn apply_weights(&mut self) {
+        self.stage.solver.clear_weights();
+        if self.mode.wounded() {
+            for &(joint, weight) in &self.wounded {
+                self.stage.solver.set_weight(joint, weight);
+            }
+        }
+    }
+}
+
+impl Driver for ThesisDriver {
+    fn step(&mut self, dt: f64) {
+        if !(dt.is_finite() && dt > 0.0) {
+            return;
+        }
+        let script = ThesisScript::new(&self.params, self.mode);
+        let omega = script.angular_frequency();
+        let speed = script.speed_mps();
+        self.time += dt;
+        self.phase = (self.phase + omega * dt) % std::f64::consts::TAU;
+        self.distance += speed * start_blend(self.time, self.params.start_ramp_s) * dt;
+        self.place();
+        IkStage::relax(
+            &self.skeleton,
+            &mut self.pose.joints,
+            self.params.posture_gain,
+        );
+        self.stage.solve(
+            &self.skeleton,
+            &self.pose.root,
+            &mut self.pose.joints,
+            self.params.iterations_per_frame,
+            dt,
+        );
+    }
+
+    fn time(&self) -> f64 {
+        self.time
+    }
+
+    fn reset(&mut self) {
+        self.time = 0.0;
+        self.phase = 0.0;
+        self.distance = 0.0;
+        for (value, joint) in self.pose.joints.iter_mut().zip(self.skeleton.joints()) {
+            *value = joint.rest;
+        }
+        self.place();
+        self.stage.clear();
+        self.stage
+            .measure(&self.skeleton, &self.pose.root, &self.pose.joints);
+    }
+
+    fn skeleton(&self) -> &Skeleton {
+        &self.skeleton
+    }
+
+    fn pose(&self) -> &Pose {
+        &self.pose
+    }
+
+    fn effector_positions(&self) -> &[DVec3] {
+        &self.stage.kinematics.effector_position
+    }
+
+    fn targets(&self) -> Option<&Targets> {
+        Some(&self.stage.targets)
+    }
+
+    fn ik_report(&self) -> Option<&IkFrameReport> {
+        Some(&self.stage.report)
+    }
+
+    fn ik_metrics(&self) -> Option<&IkMetrics> {
+        Some(&self.stage.metrics)
+    }
+}
+
+/// Weight of the cycle against the rest pose `t` seconds after a reset: a
+/// smoothstep from 0 to 1 over `ramp_s` seconds (1 at once if `ramp_s` is 0).
+fn start_blend(t: f64, ramp_s: f64) -> f64 {
+    if ramp_s > 0.0 && t < ramp_s {
+        let x = (t / ramp_s).clamp(0.0, 1.0);
+        x * x * (3.0 - 2.0 * x)
+    } else {
+        1.0
+    }
+}
+
+/// Checks that every number in `params` is usable: finite positions, heights
+/// and bounces; non-negative frequencies; a positive slowdown; a finite,
+/// non-negative speed and start ramp; a posture gain in [0, 1]; 1 to [`MAX_ITERATIONS_PER_FRAME`] iterations per frame;
+/// finite wounded weights.
+///
+/// # Errors
+/// The first offending field, as a path (`run.front_foot`, `wounded[0].add`).
+pub fn validate_params(params: &ThesisParams) -> Result<(), DriverError> {
+    for (name, shape) in [("walk", &params.walk), ("run", &params.run)] {
+        let path = |field: &str| format!("{name}.{field}");
+        if !(shape.frequency_hz.is_finite() && shape.frequency_hz >= 0.0) {
+            return Err(DriverError::new(
+                path("frequency_hz"),
+                "must be a finite number ≥ 0",
+            ));
+        }
+        for (field, value) in [
+            ("front_foot", shape.front_foot),
+            ("back_foot", shape.back_foot),
+            ("front_hand", shape.front_hand),
+            ("back_hand", shape.back_hand),
+        ] {
+            if !value.is_finite() {
+                return Err(DriverError::new(path(field), "must be finite"));
+            }
+        }
+        for (field, value) in [
+            ("step_height_m", shape.step_height_m),
+            ("root_height_m", shape.root_height_m),
+            ("bounce_m", shape.bounce_m),
+        ] {
+            if !value.is_finite() {
+                return Err(DriverError::new(path(field), "must be finite"));
+            }
+        }
+    }
+    if !(params.slowdown.is_finite() && params.slowdown > 0.0) {
+        return Err(DriverError::new("slowdown", "must be a finite number > 0"));
+    }
+    if !(0.0..=1.0).contains(&params.posture_gain) {
+        return Err(DriverError::new("posture_gain", "must be between 0 and 1"));
+    }
+    if !(params.start_ramp_s.is_finite() && params.start_ramp_s >= 0.0) {
+        return Err(DriverError::new(
+            "start_ramp_s",
+            "must be a finite number ≥ 0",
+        ));
+    }
+    if let Some(speed) = params.speed_mps
+        && !(speed.is_finite() && speed >= 0.0)
+    {
+        return Err(DriverError::new("speed_mps", "must be a finite number ≥ 0"));
+    }
+    if !(1..=MAX_ITERATIONS_PER_FRAME).contains(&params.iterations_per_frame) {
+        return Err(DriverError::new(
+            "iterations_per_frame",
+            format!("must be between 1 and {MAX_ITERATIONS_PER_FRAME}"),
+        ));
+    }
+    for (i, wounded) in params.wounded.iter().enumerate() {
+        if !wounded.multiply.is_finite() {
+            return Err(DriverError::new(
+                format!("wounded[{i}].multiply"),
+                "must be finite",
+            ));
+        }
+        if !wounded.add.is_finite() {
+            return Err(DriverError::new(
+                format!("wounded[{i}].add"),
+                "must be finite",
+            ));
+        }
+    }
+    Ok(())
+}
+
+type Resolved = ([usize; 4], Vec<(usize, JointWeight)>);
+
+/// Validates `params` and looks up the effector roles and wounded joints.
+fn resolve(skeleton: &Skeleton, params: &ThesisParams) -> Result<Resolved, DriverError> {
+    validate_params(params)?;
+    let EffectorRoles {
+        left_foot,
+        right_foot,
+        left_hand,
+        right_hand,
+    } = &params.roles;
+    let mut roles = [0; 4];
+    for (slot, (field, name)) in roles.iter_mut().zip([
+        ("left_foot", left_foot),
+        ("right_foot", right_foot),
+        ("left_hand", left_hand),
+        ("right_hand", right_hand),
+    ]) {
+        *slot = skeleton.effector_index(name).ok_or_else(|| {
+            DriverError::new(
+                format!("roles.{field}"),
+                format!("no effector named {name:?}"),
+            )
+        })?;
+    }
+    for (i, a) in roles.iter().enumerate() {
+        if roles[..i].contains(a) {
+            return Err(DriverError::new(
+                "roles",
+                "each role needs its own effector",
+            ));
+        }
+    }
+    let wounded = params
+        .wounded
+        .iter()
+        .enumerate()
+        .map(|(i, w)| {
+            let joint = skeleton.joint_index(&w.joint).ok_or_else(|| {
+                DriverError::new(
+                    format!("wounded[{i}].joint"),
+                    format!("no joint named {:?}", w.joint),
+                )
+            })?;
+            Ok((
+                joint,
+                JointWeight {
+                    multiply: w.multiply,
+                    add: w.add,
+                },
+            ))
+        })
+        .collect::<Result<Vec<_>, DriverError>>()?;
+    Ok((roles, wounded))
+}
