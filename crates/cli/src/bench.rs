@@ -26,6 +26,9 @@ pub struct BenchArgs {
     /// Presets to measure (default: human and ik-quadruped).
     #[arg(long = "preset")]
     pub presets: Vec<String>,
+    /// Methods to measure (default: all four).
+    #[arg(long = "method")]
+    pub methods: Vec<String>,
     /// Timed repetitions of each case; the median is reported.
     #[arg(long, default_value_t = 5)]
     pub repeats: usize,
@@ -109,12 +112,17 @@ fn time_frames(creature: &Creature, method: Method, repeats: usize) -> Result<f6
 /// `gaitlab bench`.
 pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
     let presets = if args.presets.is_empty() { vec!["human".to_owned(), "ik-quadruped".to_owned()] } else { args.presets.clone() };
+    let methods = if args.methods.is_empty() {
+        Method::ALL.to_vec()
+    } else {
+        args.methods.iter().map(|m| crate::run::method(Some(m), Method::Sdls)).collect::<Result<Vec<_>, _>>()?
+    };
     let mut rows = Vec::new();
     for name in &presets {
         let creature = load::creature(name)?;
         let frames = record(&creature)?;
         let iterations = creature.scenario.thesis.iterations_per_frame;
-        for method in Method::ALL {
+        for &method in &methods {
             let us_per_iteration = time_iterations(&creature, &frames, method, iterations, args.repeats);
             let us_per_frame = time_frames(&creature, method, args.repeats)?;
             let budget = BUDGETS.iter().find(|(p, m, _)| p == name && *m == method).map(|(_, _, b)| *b);

@@ -4,6 +4,7 @@
 
 use glam::{DMat3, DVec3};
 
+use crate::skeleton::AxisKind;
 use crate::{JointKind, Pose, RootTransform, Skeleton};
 
 /// World-frame kinematic state of a skeleton for one pose. Reuse one value per
@@ -35,6 +36,28 @@ pub fn axis_angle(axis: DVec3, angle: f64) -> DMat3 {
         DVec3::new(t * x * y - s * z, t * y * y + c, t * y * z + s * x),
         DVec3::new(t * x * z + s * y, t * y * z - s * x, t * z * z + c),
     )
+}
+
+/// `frame · R(axis, angle)`, with the cheap column rotations when the axis is a
+/// (signed) coordinate axis of the joint frame.
+fn rotate_about(frame: DMat3, kind: AxisKind, axis: DVec3, angle: f64) -> DMat3 {
+    let (s, c) = angle.sin_cos();
+    let (f0, f1, f2) = (frame.x_axis, frame.y_axis, frame.z_axis);
+    match kind {
+        AxisKind::X(sign) => {
+            let s = s * sign;
+            DMat3::from_cols(f0, f1 * c + f2 * s, f2 * c - f1 * s)
+        }
+        AxisKind::Y(sign) => {
+            let s = s * sign;
+            DMat3::from_cols(f0 * c - f2 * s, f1, f0 * s + f2 * c)
+        }
+        AxisKind::Z(sign) => {
+            let s = s * sign;
+            DMat3::from_cols(f0 * c + f1 * s, f1 * c - f0 * s, f2)
+        }
+        AxisKind::General => frame * axis_angle(axis, angle),
+    }
 }
 
 impl Kinematics {
@@ -77,11 +100,12 @@ impl Kinematics {
                 None => (root.rotation, root.position),
             };
             let anchor = parent_position + parent_rotation * joint.offset;
-            let frame = parent_rotation * joint.frame;
+            let shape = skeleton.joint_shape(j);
+            let frame = if shape.identity_frame { parent_rotation } else { parent_rotation * joint.frame };
             let axis = frame * joint.axis;
             let value = values[j];
             let (rotation, position) = match joint.kind {
-                JointKind::Revolute => (frame * axis_angle(joint.axis, value), anchor),
+                JointKind::Revolute => (rotate_about(frame, shape.axis, joint.axis, value), anchor),
                 JointKind::Prismatic => (frame, anchor + axis * value),
             };
             self.joint_anchor[j] = anchor;
@@ -93,6 +117,33 @@ impl Kinematics {
             let rotation = self.joint_rotation[effector.joint];
             self.effector_position[e] = self.joint_position[effector.joint] + rotation * effector.offset;
             self.effector_rotation[e] = rotation;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::skeleton::AxisKind;
+
+    #[test]
+    fn coordinate_axis_fast_paths_equal_the_general_rotation() {
+        let frame = DMat3::from_axis_angle(DVec3::new(0.3, -0.5, 0.8).normalize(), 0.9);
+        let cases = [
+            (AxisKind::X(1.0), DVec3::X),
+            (AxisKind::X(-1.0), DVec3::NEG_X),
+            (AxisKind::Y(1.0), DVec3::Y),
+            (AxisKind::Y(-1.0), DVec3::NEG_Y),
+            (AxisKind::Z(1.0), DVec3::Z),
+            (AxisKind::Z(-1.0), DVec3::NEG_Z),
+        ];
+        for (kind, axis) in cases {
+            for angle in [-2.5, -0.3, 0.0, 0.7, 3.0] {
+                let fast = rotate_about(frame, kind, axis, angle);
+                let general = frame * axis_angle(axis, angle);
+                let worst = (fast - general).to_cols_array().iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+                assert!(worst < 1e-15, "{kind:?} at {angle}: {worst:e}");
+            }
         }
     }
 }

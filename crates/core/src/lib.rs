@@ -24,4 +24,4 @@ pub mod skeleton;
 pub use fk::Kinematics;
 pub use pose::{Pose, RootTransform};
 pub use preset::{Creature, Preset, PresetError, Scenario};
-pub use skeleton::{Effector, Joint, JointKind, Skeleton, SkeletonError};
+pub use skeleton::{Effector, Joint, JointKind, Skeleton, SkeletonError, TaskBlock};

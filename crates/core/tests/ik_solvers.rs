@@ -281,3 +281,53 @@ fn orientation_rows_align_the_effector_frame() {
     let turn = glam::DQuat::from_mat3(&(targets.rotation[0] * kin.effector_rotation[0].transpose())).to_scaled_axis().length();
     assert!(error < 1e-4 && turn < 1e-4, "position {error:e} m, orientation {turn:e} rad");
 }
+
+#[test]
+fn independent_limbs_are_solved_block_by_block_with_the_same_result() {
+    // Two chains hanging from the root share no joint: J is block diagonal and
+    // the solver decomposes each block alone. The steps must equal the closed
+    // forms computed on the whole matrix with nalgebra.
+    use gaitlab_core::{Effector, Joint};
+    let mut rng = Rng::new(99);
+    let mut joints = Vec::new();
+    for limb in 0..2 {
+        for i in 0..5 {
+            let parent = if i == 0 { None } else { Some(joints.len() - 1) };
+            joints.push(Joint::revolute(&format!("l{limb}j{i}"), parent, rng.vec3(0.3), rng.unit_vec3()));
+        }
+    }
+    let effectors = vec![
+        Effector { name: "a".into(), joint: 4, offset: DVec3::new(0.0, -0.1, 0.0), orientation: false },
+        Effector { name: "b".into(), joint: 9, offset: DVec3::new(0.0, -0.1, 0.0), orientation: true },
+    ];
+    let skeleton = Skeleton::new(joints, effectors).expect("valid");
+    assert_eq!(skeleton.task_blocks().len(), 2);
+    let values: Vec<f64> = (0..10).map(|_| rng.range(-1.0, 1.0)).collect();
+    let root = RootTransform::default();
+    let kin = Kinematics::of(&skeleton, &Pose { root, joints: values.clone() });
+    let mut targets = Targets::at(&kin);
+    targets.position[0] += DVec3::new(0.01, -0.02, 0.005);
+    targets.position[1] += DVec3::new(-0.01, 0.01, 0.02);
+    let lambda: f64 = 0.2;
+    for method in [Method::Pinv, Method::Dls] {
+        let opts = IkOptions { method, lambda, max_step: 10.0, enforce_limits: false, ..IkOptions::default() };
+        let mut solver = IkSolver::new(&skeleton, opts);
+        let mut updated = values.clone();
+        solver.iterate(&skeleton, &root, &mut updated, &targets);
+        let j = solver.jacobian().clone();
+        let mut e = DVector::zeros(9);
+        for (r, x) in (targets.position[0] - kin.effector_position[0]).to_array().into_iter().enumerate() {
+            e[r] = x;
+        }
+        for (r, x) in (targets.position[1] - kin.effector_position[1]).to_array().into_iter().enumerate() {
+            e[3 + r] = x;
+        }
+        let expected = match method {
+            Method::Pinv => j.clone().pseudo_inverse(1e-12).expect("svd") * &e,
+            _ => j.transpose() * (&j * j.transpose() + DMatrix::identity(9, 9) * lambda * lambda).try_inverse().expect("spd") * &e,
+        };
+        for k in 0..10 {
+            assert!((updated[k] - values[k] - expected[k]).abs() < 1e-9, "{method:?} joint {k}: {} vs {}", updated[k] - values[k], expected[k]);
+        }
+    }
+}

@@ -82,6 +82,20 @@ pub struct ScriptSample {
 }
 
 impl ScriptSample {
+    /// The sample `weight` of the way from `self` to `other` (0 gives `self`,
+    /// 1 gives `other`), every target and the root height interpolated linearly.
+    #[must_use]
+    pub fn lerp(&self, other: &ScriptSample, weight: f64) -> ScriptSample {
+        let mut targets = self.targets;
+        for (target, to) in targets.iter_mut().zip(&other.targets) {
+            *target = target.lerp(*to, weight);
+        }
+        ScriptSample {
+            targets,
+            root_height_m: self.root_height_m + (other.root_height_m - self.root_height_m) * weight,
+        }
+    }
+
     /// The target of `limb`.
     #[must_use]
     pub fn target(&self, limb: Limb) -> DVec3 {

@@ -8,6 +8,7 @@ use std::sync::Arc;
 
 use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
 use gaitlab_core::ik::{IkOptions, JointWeight, Method, Targets};
+use gaitlab_core::preset::Creature;
 use gaitlab_core::preset::thesis::{EffectorRoles, ThesisMode, ThesisParams};
 use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
@@ -47,6 +48,10 @@ pub struct ThesisDriver {
     phase: f64,
     distance: f64,
     sample: ScriptSample,
+    /// The motion being blended out of (equal to `mode` when none is).
+    transition_from: ThesisMode,
+    /// Time at which the blend from `transition_from` to `mode` starts, seconds.
+    transition_start: f64,
 }
 
 impl ThesisDriver {
@@ -91,8 +96,32 @@ impl ThesisDriver {
             phase: 0.0,
             distance: 0.0,
             sample,
+            transition_from: mode,
+            transition_start: 0.0,
         };
         driver.apply_weights();
+        driver.reset();
+        Ok(driver)
+    }
+
+    /// A driver for a built preset: its skeleton, its scenario's thesis
+    /// parameters, mode and IK options, starting on the ground below the
+    /// preset's root position, facing +z.
+    ///
+    /// # Errors
+    /// As [`ThesisDriver::new`].
+    pub fn for_creature(creature: &Creature) -> Result<Self, DriverError> {
+        let scenario = &creature.scenario;
+        let mut driver = Self::new(
+            creature.skeleton.clone(),
+            scenario.thesis.clone(),
+            scenario.mode,
+            scenario.ik_options(),
+        )?;
+        driver.set_origin(RootTransform {
+            position: creature.root_position,
+            rotation: DMat3::IDENTITY,
+        });
         driver.reset();
         Ok(driver)
     }
@@ -123,7 +152,13 @@ impl ThesisDriver {
     }
 
     /// Switches the motion (live), applying or clearing the wounded weights.
+    /// The targets, cycle frequency and speed blend from the old motion to the
+    /// new one over `start_ramp_s` seconds (the wounded weights switch at once).
     pub fn set_mode(&mut self, mode: ThesisMode) {
+        if mode != self.mode {
+            self.transition_from = self.mode;
+            self.transition_start = self.time;
+        }
         self.mode = mode;
         self.apply_weights();
     }
@@ -180,10 +215,31 @@ impl ThesisDriver {
         self.roles[limb.index()]
     }
 
+    /// Weight of the current mode against `transition_from`, 0 to 1.
+    fn transition_weight(&self) -> f64 {
+        start_blend(self.time - self.transition_start, self.params.start_ramp_s)
+    }
+
+    /// Angular frequency and forward speed, blended across a mode transition.
+    fn rates(&self) -> (f64, f64) {
+        let to = ThesisScript::new(&self.params, self.mode);
+        let from = ThesisScript::new(&self.params, self.transition_from);
+        let w = self.transition_weight();
+        let omega =
+            from.angular_frequency() + (to.angular_frequency() - from.angular_frequency()) * w;
+        let speed = from.speed_mps() + (to.speed_mps() - from.speed_mps()) * w;
+        (omega, speed)
+    }
+
     /// Places the root and every target for the current phase and distance.
     fn place(&mut self) {
-        let script = ThesisScript::new(&self.params, self.mode);
-        self.sample = script.at_phase(self.phase);
+        let to = ThesisScript::new(&self.params, self.mode).at_phase(self.phase);
+        self.sample = if self.transition_from == self.mode {
+            to
+        } else {
+            let from = ThesisScript::new(&self.params, self.transition_from).at_phase(self.phase);
+            from.lerp(&to, self.transition_weight())
+        };
         let blend = start_blend(self.time, self.params.start_ramp_s);
         let heading = self.origin.rotation;
         let mut ground = self.origin.position + heading * DVec3::new(0.0, 0.0, self.distance);
@@ -207,11 +263,7 @@ impl ThesisDriver {
         for limb in Limb::ALL {
             let e = self.roles[limb.index()];
             let cycle = self.sample.target(limb) - root_height;
-            let mut relative = self.rest_offset[e].lerp(cycle, blend);
-            if limb.is_foot() {
-                let d: f64 = std::env::var("LEAN").ok().and_then(|s| s.parse().ok()).unwrap_or(0.0);
-                relative.z -= d * (std::f64::consts::PI * blend).sin();
-            }
+            let relative = self.rest_offset[e].lerp(cycle, blend);
             targets.position[e] = root_position + heading * relative;
         }
     }
@@ -232,9 +284,7 @@ impl Driver for ThesisDriver {
         if !(dt.is_finite() && dt > 0.0) {
             return;
         }
-        let script = ThesisScript::new(&self.params, self.mode);
-        let omega = script.angular_frequency();
-        let speed = script.speed_mps();
+        let (omega, speed) = self.rates();
         self.time += dt;
         self.phase = (self.phase + omega * dt) % std::f64::consts::TAU;
         self.distance += speed * start_blend(self.time, self.params.start_ramp_s) * dt;
@@ -261,6 +311,9 @@ impl Driver for ThesisDriver {
         self.time = 0.0;
         self.phase = 0.0;
         self.distance = 0.0;
+        // A run starts as a walk and breaks into the run after the start ramp.
+        self.transition_from = walking(self.mode);
+        self.transition_start = self.params.start_ramp_s;
         for (value, joint) in self.pose.joints.iter_mut().zip(self.skeleton.joints()) {
             *value = joint.rest;
         }
@@ -292,6 +345,15 @@ impl Driver for ThesisDriver {
 
     fn ik_metrics(&self) -> Option<&IkMetrics> {
         Some(&self.stage.metrics)
+    }
+}
+
+/// The walking counterpart of `mode` (itself for the walking modes).
+fn walking(mode: ThesisMode) -> ThesisMode {
+    match mode {
+        ThesisMode::Run => ThesisMode::Walk,
+        ThesisMode::WoundedRun => ThesisMode::WoundedWalk,
+        walk => walk,
     }
 }
 

@@ -7,6 +7,7 @@ use std::sync::Arc;
 use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
 use gaitlab_core::export::TargetTrack;
 use gaitlab_core::ik::{IkOptions, Method, Targets};
+use gaitlab_core::preset::Creature;
 use gaitlab_core::{Pose, RootTransform, Skeleton};
 use glam::DVec3;
 
@@ -96,6 +97,22 @@ impl Default for TrackOptions {
             ik: IkOptions::default(),
             iterations_per_frame: 4,
             root: RootTransform::default(),
+        }
+    }
+}
+
+impl TrackOptions {
+    /// Options for a built preset: its scenario's IK options and iterations per
+    /// frame, the root fixed at the preset's root position.
+    #[must_use]
+    pub fn for_creature(creature: &Creature) -> Self {
+        Self {
+            ik: creature.scenario.ik_options(),
+            iterations_per_frame: creature.scenario.thesis.iterations_per_frame,
+            root: RootTransform {
+                position: creature.root_position,
+                ..RootTransform::default()
+            },
         }
     }
 }

@@ -6,7 +6,7 @@ mod common;
 
 use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::{IkOptions, Method};
-use gaitlab_core::preset::thesis::{ThesisMode, ThesisParams};
+use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_motion::ThesisDriver;
 
 #[test]

@@ -4,7 +4,8 @@
 
 use nalgebra::DMatrix;
 
-use super::svd::{gram_cols, gram_rows};
+use super::svd::{gram_cols, gram_of_block};
+use crate::skeleton::TaskBlock;
 
 /// Workspace for the DLS solve.
 #[derive(Clone, Debug, Default)]
@@ -56,44 +57,72 @@ fn cholesky_solve(l: &[f64], n: usize, b: &mut [f64]) {
 }
 
 impl DlsWorkspace {
-    /// Writes the DLS step with damping `lambda` into `step`. Returns false (and a
-    /// zero step) if the damped system could not be factored (non-finite input).
-    pub fn step(&mut self, jacobian: &DMatrix<f64>, error: &[f64], lambda: f64, step: &mut [f64]) -> bool {
+    /// Writes the DLS step with damping `lambda` into `step`. `blocks` are the
+    /// Jacobian's independent blocks; each is solved on its own, which gives the
+    /// same step since no column spans two blocks.
+    /// Returns false (and a zero step) if a damped system could not be factored
+    /// (non-finite input).
+    pub fn step(&mut self, jacobian: &DMatrix<f64>, blocks: &[TaskBlock], error: &[f64], lambda: f64, step: &mut [f64]) -> bool {
         let (m, n) = jacobian.shape();
-        let data = jacobian.as_slice();
-        let side = m.min(n);
-        if self.gram.len() < side * side {
-            self.gram.resize(side * side, 0.0);
-        }
-        if self.rhs.len() < side {
-            self.rhs.resize(side, 0.0);
-        }
         let lambda2 = lambda * lambda;
-        let rhs = &mut self.rhs[..side];
-        if m <= n {
-            gram_rows(jacobian, &mut self.gram);
-            rhs.copy_from_slice(&error[..m]);
-        } else {
-            gram_cols(jacobian, &mut self.gram);
-            for (c, out) in rhs.iter_mut().enumerate() {
-                *out = data[c * m..(c + 1) * m].iter().zip(error).map(|(x, y)| x * y).sum();
+        step.fill(0.0);
+        if m == 0 || n == 0 {
+            return true;
+        }
+        if m > n && blocks.len() <= 1 {
+            return self.step_from_columns(jacobian, error, lambda2, step);
+        }
+        let data = jacobian.as_slice();
+        for block in blocks {
+            let rows = &block.rows;
+            let p = rows.len();
+            if self.gram.len() < p * p {
+                self.gram.resize(p * p, 0.0);
+            }
+            if self.rhs.len() < p {
+                self.rhs.resize(p, 0.0);
+            }
+            gram_of_block(jacobian, block, &mut self.gram);
+            for i in 0..p {
+                self.gram[i + i * p] += lambda2;
+            }
+            if !cholesky(&mut self.gram[..p * p], p) {
+                step.fill(0.0);
+                return false;
+            }
+            let rhs = &mut self.rhs[..p];
+            for (out, &r) in rhs.iter_mut().zip(rows) {
+                *out = error[r];
+            }
+            cholesky_solve(&self.gram[..p * p], p, rhs);
+            // Δθ += J[rows, :]ᵀ y.
+            for &c in &block.joints {
+                let col = &data[c * m..(c + 1) * m];
+                step[c] = rows.iter().zip(rhs.iter()).map(|(&r, &y)| col[r] * y).sum();
             }
         }
-        for i in 0..side {
-            self.gram[i + i * side] += lambda2;
+        true
+    }
+
+    /// The m > n form: Δθ = (JᵀJ + λ²I)⁻¹Jᵀe.
+    fn step_from_columns(&mut self, jacobian: &DMatrix<f64>, error: &[f64], lambda2: f64, step: &mut [f64]) -> bool {
+        let (m, n) = jacobian.shape();
+        if self.gram.len() < n * n {
+            self.gram.resize(n * n, 0.0);
         }
-        if !cholesky(&mut self.gram[..side * side], side) {
+        gram_cols(jacobian, &mut self.gram);
+        for i in 0..n {
+            self.gram[i + i * n] += lambda2;
+        }
+        if !cholesky(&mut self.gram[..n * n], n) {
             step.fill(0.0);
             return false;
         }
-        cholesky_solve(&self.gram[..side * side], side, rhs);
-        if m <= n {
-            for (c, out) in step.iter_mut().enumerate() {
-                *out = data[c * m..(c + 1) * m].iter().zip(rhs.iter()).map(|(x, y)| x * y).sum();
-            }
-        } else {
-            step[..n].copy_from_slice(rhs);
+        let data = jacobian.as_slice();
+        for (c, out) in step.iter_mut().enumerate() {
+            *out = data[c * m..(c + 1) * m].iter().zip(error).map(|(x, y)| x * y).sum();
         }
+        cholesky_solve(&self.gram[..n * n], n, step);
         true
     }
 }

@@ -23,6 +23,7 @@ use super::svd::ThinSvd;
 use super::transpose::transpose_step;
 use super::{IkOptions, JointWeight, Method};
 use crate::jacobian::fill_jacobian;
+use crate::skeleton::TaskBlock;
 use crate::{Kinematics, RootTransform, Skeleton};
 
 /// Targets for every effector: a position, and an orientation used only by
@@ -93,6 +94,8 @@ pub struct IkSolver {
     center_gradient: Vec<f64>,
     /// Null-space gradient scratch (n).
     gradient: Vec<f64>,
+    /// Independent blocks of J ([`Skeleton::task_blocks`]).
+    blocks: Vec<TaskBlock>,
     svd: ThinSvd,
     dls: DlsWorkspace,
     sdls: SdlsWorkspace,
@@ -119,6 +122,7 @@ impl IkSolver {
             active: vec![true; n],
             center_gradient: vec![0.0; n],
             gradient: vec![0.0; n],
+            blocks: skeleton.task_blocks(),
             svd: ThinSvd::default(),
             dls: DlsWorkspace::default(),
             sdls: SdlsWorkspace::default(),
@@ -312,7 +316,7 @@ impl IkSolver {
         let needs_svd = null_space || matches!(options.method, Method::Pinv | Method::Sdls);
         let mut rank = 0;
         if needs_svd {
-            self.svd.compute(&self.weighted, options.rank_tolerance).ok()?;
+            self.svd.compute(&self.weighted, &self.blocks, options.rank_tolerance).ok()?;
             rank = self.svd.rank();
         }
         match options.method {
@@ -323,7 +327,7 @@ impl IkSolver {
                 filtered_step(&self.svd, &self.residual, &mut self.free, |s| s / (s * s + lambda2));
             }
             Method::Dls => {
-                if !self.dls.step(&self.weighted, &self.residual, options.lambda, &mut self.free) {
+                if !self.dls.step(&self.weighted, &self.blocks, &self.residual, options.lambda, &mut self.free) {
                     return None;
                 }
                 rank = m.min(n);

@@ -7,6 +7,7 @@
 use nalgebra::DMatrix;
 
 use super::eigen::{NoConvergence, SymmetricEigen};
+use crate::skeleton::TaskBlock;
 
 /// The nonzero singular triplets of a Jacobian.
 #[derive(Clone, Debug, Default)]
@@ -17,31 +18,12 @@ pub struct ThinSvd {
     gram: Vec<f64>,
     eigen: SymmetricEigen,
     sigma: Vec<f64>,
+    /// Block of each kept singular triplet.
+    block_of: Vec<usize>,
     /// Left singular vectors, `rows × rank`, column-major.
     u: Vec<f64>,
     /// Right singular vectors, `cols × rank`, column-major.
     v: Vec<f64>,
-}
-
-/// Writes the lower triangle (and mirrors it) of `JJᵀ` (m×m) into `gram`.
-pub(crate) fn gram_rows(j: &DMatrix<f64>, gram: &mut [f64]) {
-    let m = j.nrows();
-    let gram = &mut gram[..m * m];
-    gram.fill(0.0);
-    for col in j.column_iter() {
-        let col = col.as_slice();
-        for a in 0..m {
-            let ca = col[a];
-            if ca == 0.0 {
-                continue;
-            }
-            let target = &mut gram[a * m..(a + 1) * m];
-            for b in a..m {
-                target[b] += ca * col[b];
-            }
-        }
-    }
-    mirror_lower(gram, m);
 }
 
 /// Writes `JᵀJ` (n×n) into `gram`.
@@ -68,95 +50,153 @@ fn mirror_lower(gram: &mut [f64], m: usize) {
     }
 }
 
+/// Writes the Gram matrix `J[rows, joints] J[rows, joints]ᵀ` (p×p, p = rows
+/// count) of one block into `gram`.
+pub(crate) fn gram_of_block(j: &DMatrix<f64>, block: &TaskBlock, gram: &mut [f64]) {
+    let m = j.nrows();
+    let rows = &block.rows[..];
+    let p = rows.len();
+    let gram = &mut gram[..p * p];
+    gram.fill(0.0);
+    let data = j.as_slice();
+    for &c in &block.joints {
+        let col = &data[c * m..(c + 1) * m];
+        for (a, &ra) in rows.iter().enumerate() {
+            let ca = col[ra];
+            if ca == 0.0 {
+                continue;
+            }
+            let target = &mut gram[a * p..(a + 1) * p];
+            for (b, &rb) in rows.iter().enumerate().skip(a) {
+                target[b] += ca * col[rb];
+            }
+        }
+    }
+    mirror_lower(gram, p);
+}
+
 impl ThinSvd {
     /// Decomposes `j`, keeping singular values above `rank_tolerance · σ_max`.
     ///
+    /// `blocks` are the Jacobian's independent blocks (see
+    /// [`Skeleton::task_blocks`](crate::Skeleton::task_blocks); use
+    /// [`TaskBlock::whole`] for a general matrix): no column has nonzeros in two
+    /// blocks, so each block is decomposed on its own.
+    ///
     /// # Errors
     /// [`NoConvergence`] when `j` holds non-finite values.
-    pub fn compute(&mut self, j: &DMatrix<f64>, rank_tolerance: f64) -> Result<(), NoConvergence> {
+    pub fn compute(&mut self, j: &DMatrix<f64>, blocks: &[TaskBlock], rank_tolerance: f64) -> Result<(), NoConvergence> {
         let (m, n) = j.shape();
         self.rows = m;
         self.cols = n;
         self.rank = 0;
-        let side = m.min(n);
-        if self.gram.len() < side * side {
-            self.gram.resize(side * side, 0.0);
-            self.eigen = SymmetricEigen::with_capacity(side);
-        }
-        if self.sigma.len() < side || self.u.len() < m * side || self.v.len() < n * side {
-            self.sigma.resize(side, 0.0);
-            self.u.resize(m * side, 0.0);
-            self.v.resize(n * side, 0.0);
-        }
-        if side == 0 {
+        if m == 0 || n == 0 {
             return Ok(());
         }
-        let rows_side = m <= n;
-        if rows_side {
-            gram_rows(j, &mut self.gram);
-        } else {
-            gram_cols(j, &mut self.gram);
+        if m > n && blocks.len() <= 1 {
+            return self.compute_from_columns(j, rank_tolerance);
         }
-        self.eigen.compute(&self.gram, side)?;
-        let largest = self.eigen.values().iter().fold(0.0_f64, |acc, &x| acc.max(x));
-        let sigma_max = largest.max(0.0).sqrt();
-        let threshold = (rank_tolerance * sigma_max).max(1e-150);
-        let data = j.as_slice();
-        // Keep the eigenpairs above the threshold; record their σ.
+        if self.sigma.len() < m || self.u.len() < m * m || self.v.len() < n * m {
+            self.block_of.resize(m, 0);
+            self.sigma.resize(m, 0.0);
+            self.u.resize(m * m, 0.0);
+            self.v.resize(n * m, 0.0);
+        }
+        // Every eigenpair of every group's JJᵀ block, uᵢ spread to full length m.
+        let mut count = 0;
+        let mut largest: f64 = 0.0;
+        for (block_index, block) in blocks.iter().enumerate() {
+            let rows = &block.rows;
+            let p = rows.len();
+            if self.gram.len() < p * p {
+                self.gram.resize(p * p, 0.0);
+            }
+            gram_of_block(j, block, &mut self.gram);
+            self.eigen.compute(&self.gram, p)?;
+            for i in 0..p {
+                let lambda = self.eigen.values()[i].max(0.0);
+                largest = largest.max(lambda);
+                self.sigma[count] = lambda.sqrt();
+                let u = &mut self.u[count * m..(count + 1) * m];
+                u.fill(0.0);
+                for (&r, &q) in rows.iter().zip(self.eigen.vector(i)) {
+                    u[r] = q;
+                }
+                self.block_of[count] = block_index;
+                count += 1;
+            }
+        }
+        // Keep the directions above the tolerance, compacting in place.
+        let threshold = (rank_tolerance * largest.sqrt()).max(1e-150);
         let mut kept = 0;
-        for i in 0..side {
-            let sigma = self.eigen.values()[i].max(0.0).sqrt();
-            if sigma > threshold {
-                self.sigma[kept] = sigma;
-                let q = self.eigen.vector(i);
-                if rows_side {
-                    self.u[kept * m..(kept + 1) * m].copy_from_slice(q);
-                } else {
-                    self.v[kept * n..(kept + 1) * n].copy_from_slice(q);
+        for i in 0..count {
+            if self.sigma[i] > threshold {
+                if kept != i {
+                    self.sigma[kept] = self.sigma[i];
+                    self.block_of[kept] = self.block_of[i];
+                    self.u.copy_within(i * m..(i + 1) * m, kept * m);
                 }
                 kept += 1;
             }
         }
         self.rank = kept;
-        if rows_side {
-            // vᵢ = Jᵀuᵢ/σᵢ, skipping the (many) zero entries of each column.
-            self.v[..n * kept].fill(0.0);
-            for c in 0..n {
+        // vᵢ = Jᵀuᵢ/σᵢ over the rows and joints of uᵢ's block (zero elsewhere).
+        let data = j.as_slice();
+        self.v[..n * kept].fill(0.0);
+        for i in 0..kept {
+            let block = &blocks[self.block_of[i]];
+            let inv = 1.0 / self.sigma[i];
+            let u = &self.u[i * m..(i + 1) * m];
+            let v = &mut self.v[i * n..(i + 1) * n];
+            for &c in &block.joints {
                 let col = &data[c * m..(c + 1) * m];
-                for (a, &x) in col.iter().enumerate() {
-                    if x == 0.0 {
-                        continue;
-                    }
-                    for i in 0..kept {
-                        self.v[i * n + c] += x * self.u[i * m + a];
-                    }
-                }
-            }
-            for i in 0..kept {
-                let inv = 1.0 / self.sigma[i];
-                for x in &mut self.v[i * n..(i + 1) * n] {
-                    *x *= inv;
-                }
-            }
-        } else {
-            // uᵢ = Jvᵢ/σᵢ.
-            self.u[..m * kept].fill(0.0);
-            for i in 0..kept {
-                let inv = 1.0 / self.sigma[i];
-                let (v, u) = (&self.v[i * n..(i + 1) * n], &mut self.u[i * m..(i + 1) * m]);
-                for (c, &vc) in v.iter().enumerate() {
-                    if vc == 0.0 {
-                        continue;
-                    }
-                    for (out, x) in u.iter_mut().zip(&data[c * m..(c + 1) * m]) {
-                        *out += x * vc;
-                    }
-                }
-                for out in u.iter_mut() {
-                    *out *= inv;
-                }
+                let dot: f64 = block.rows.iter().map(|&r| col[r] * u[r]).sum();
+                v[c] = dot * inv;
             }
         }
+        Ok(())
+    }
+
+    /// The m > n path: eigen-decompose JᵀJ = V Σ² Vᵀ, then uᵢ = Jvᵢ/σᵢ.
+    fn compute_from_columns(&mut self, j: &DMatrix<f64>, rank_tolerance: f64) -> Result<(), NoConvergence> {
+        let (m, n) = j.shape();
+        if self.gram.len() < n * n {
+            self.gram.resize(n * n, 0.0);
+        }
+        if self.sigma.len() < n || self.u.len() < m * n || self.v.len() < n * n {
+            self.sigma.resize(n, 0.0);
+            self.u.resize(m * n, 0.0);
+            self.v.resize(n * n, 0.0);
+        }
+        gram_cols(j, &mut self.gram);
+        self.eigen.compute(&self.gram, n)?;
+        let largest = self.eigen.values().iter().fold(0.0_f64, |acc, &x| acc.max(x));
+        let threshold = (rank_tolerance * largest.max(0.0).sqrt()).max(1e-150);
+        let data = j.as_slice();
+        let mut kept = 0;
+        for i in 0..n {
+            let sigma = self.eigen.values()[i].max(0.0).sqrt();
+            if sigma <= threshold {
+                continue;
+            }
+            self.sigma[kept] = sigma;
+            self.v[kept * n..(kept + 1) * n].copy_from_slice(self.eigen.vector(i));
+            let (v, u) = (&self.v[kept * n..(kept + 1) * n], &mut self.u[kept * m..(kept + 1) * m]);
+            u.fill(0.0);
+            for (c, &vc) in v.iter().enumerate() {
+                if vc == 0.0 {
+                    continue;
+                }
+                for (out, x) in u.iter_mut().zip(&data[c * m..(c + 1) * m]) {
+                    *out += x * vc;
+                }
+            }
+            for out in u.iter_mut() {
+                *out /= sigma;
+            }
+            kept += 1;
+        }
+        self.rank = kept;
         Ok(())
     }
 
@@ -202,7 +242,7 @@ mod tests {
         for &(m, n) in &[(3, 7), (12, 20), (9, 4), (15, 63), (1, 1)] {
             let j = random(m, n, &mut seed);
             let mut svd = ThinSvd::default();
-            svd.compute(&j, 1e-9).expect("converges");
+            svd.compute(&j, &[TaskBlock::whole(m, n)], 1e-9).expect("converges");
             assert_eq!(svd.rank(), m.min(n));
             let mut rebuilt = DMatrix::zeros(m, n);
             for i in 0..svd.rank() {
@@ -233,7 +273,7 @@ mod tests {
             j[(2, c)] = j[(0, c)] + j[(1, c)];
         }
         let mut svd = ThinSvd::default();
-        svd.compute(&j, 1e-6).expect("converges");
+        svd.compute(&j, &[TaskBlock::whole(3, 4)], 1e-6).expect("converges");
         assert_eq!(svd.rank(), 2);
     }
 }

@@ -9,4 +9,4 @@ mod tree;
 pub use dh::{DhJoint, DhLimb};
 pub use effector::Effector;
 pub use joint::{Joint, JointKind};
-pub use tree::{Skeleton, SkeletonError};
+pub use tree::{AxisKind, JointShape, Skeleton, SkeletonError, TaskBlock};

@@ -38,6 +38,69 @@ impl fmt::Display for SkeletonError {
 
 impl std::error::Error for SkeletonError {}
 
+/// One independent block of the Jacobian: the task rows of a group of
+/// effectors and the joints that move them. Rows of different blocks share no
+/// nonzero column.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct TaskBlock {
+    /// Task-row indices, ascending.
+    pub rows: Vec<usize>,
+    /// Joint (column) indices that move these rows, ascending.
+    pub joints: Vec<usize>,
+}
+
+impl TaskBlock {
+    /// One block holding every row and column of an `rows × cols` Jacobian.
+    #[must_use]
+    pub fn whole(rows: usize, cols: usize) -> Self {
+        Self {
+            rows: (0..rows).collect(),
+            joints: (0..cols).collect(),
+        }
+    }
+}
+
+/// Which fast path forward kinematics may take for a joint's axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum AxisKind {
+    /// ±x of the joint frame (the sign, ±1).
+    X(f64),
+    /// ±y of the joint frame.
+    Y(f64),
+    /// ±z of the joint frame.
+    Z(f64),
+    /// Any other direction.
+    General,
+}
+
+/// Facts about a joint's geometry that forward kinematics uses to skip work.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointShape {
+    /// The fixed frame rotation is exactly the identity.
+    pub identity_frame: bool,
+    /// The axis is a coordinate axis of the joint frame.
+    pub axis: AxisKind,
+}
+
+impl JointShape {
+    fn of(joint: &Joint) -> Self {
+        let a = joint.axis;
+        let axis = if a.y == 0.0 && a.z == 0.0 && a.x.abs() == 1.0 {
+            AxisKind::X(a.x)
+        } else if a.x == 0.0 && a.z == 0.0 && a.y.abs() == 1.0 {
+            AxisKind::Y(a.y)
+        } else if a.x == 0.0 && a.y == 0.0 && a.z.abs() == 1.0 {
+            AxisKind::Z(a.z)
+        } else {
+            AxisKind::General
+        };
+        Self {
+            identity_frame: joint.frame == glam::DMat3::IDENTITY,
+            axis,
+        }
+    }
+}
+
 /// An immutable articulated figure: joints (parents first) and end effectors.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Skeleton {
@@ -47,6 +110,8 @@ pub struct Skeleton {
     chains: Vec<Vec<usize>>,
     /// For each joint, its children.
     children: Vec<Vec<usize>>,
+    /// For each joint, the fast paths forward kinematics may take.
+    shapes: Vec<JointShape>,
 }
 
 impl Skeleton {
@@ -127,11 +192,13 @@ impl Skeleton {
                 chain
             })
             .collect();
+        let shapes = joints.iter().map(JointShape::of).collect();
         Ok(Self {
             joints,
             effectors,
             chains,
             children,
+            shapes,
         })
     }
 
@@ -165,6 +232,12 @@ impl Skeleton {
         &self.chains[e]
     }
 
+    /// Fast-path facts about joint `j`'s geometry.
+    #[must_use]
+    pub fn joint_shape(&self, j: usize) -> JointShape {
+        self.shapes[j]
+    }
+
     /// Children of joint `j`.
     #[must_use]
     pub fn children(&self, j: usize) -> &[usize] {
@@ -196,6 +269,66 @@ impl Skeleton {
             .iter()
             .map(|e| if e.orientation { 6 } else { 3 })
             .sum()
+    }
+
+    /// The Jacobian's independent blocks: effectors grouped so that no joint
+    /// moves effectors of two different groups. J is block diagonal over these
+    /// groups (up to row and column permutations), so JJᵀ and its decomposition
+    /// split into one small problem per group — e.g. one per leg of a creature
+    /// whose legs hang from the root.
+    #[must_use]
+    pub fn task_blocks(&self) -> Vec<TaskBlock> {
+        let k = self.effectors.len();
+        // Union-find over effectors; joints link the effectors whose chains contain them.
+        let mut parent: Vec<usize> = (0..k).collect();
+        fn find(parent: &mut [usize], mut x: usize) -> usize {
+            while parent[x] != x {
+                parent[x] = parent[parent[x]];
+                x = parent[x];
+            }
+            x
+        }
+        let mut owner: Vec<Option<usize>> = vec![None; self.joints.len()];
+        for (e, chain) in self.chains.iter().enumerate() {
+            for &j in chain {
+                match owner[j] {
+                    Some(other) => {
+                        let (a, b) = (find(&mut parent, e), find(&mut parent, other));
+                        parent[a] = b;
+                    }
+                    None => owner[j] = Some(e),
+                }
+            }
+        }
+        let mut first_row = Vec::with_capacity(k);
+        let mut row = 0;
+        for effector in &self.effectors {
+            first_row.push(row);
+            row += if effector.orientation { 6 } else { 3 };
+        }
+        let mut groups: Vec<(usize, TaskBlock)> = Vec::new();
+        for (e, effector) in self.effectors.iter().enumerate() {
+            let root = find(&mut parent, e);
+            let rows = first_row[e]..first_row[e] + if effector.orientation { 6 } else { 3 };
+            let index = match groups.iter().position(|(r, _)| *r == root) {
+                Some(index) => index,
+                None => {
+                    groups.push((root, TaskBlock::default()));
+                    groups.len() - 1
+                }
+            };
+            let block = &mut groups[index].1;
+            block.rows.extend(rows);
+            block.joints.extend_from_slice(&self.chains[e]);
+        }
+        groups
+            .into_iter()
+            .map(|(_, mut block)| {
+                block.joints.sort_unstable();
+                block.joints.dedup();
+                block
+            })
+            .collect()
     }
 }
 

@@ -1,0 +1,182 @@
+//! The `gaitlab` binary end to end: the DESIGN.md CLI contract, the issue's
+//! acceptance figures (walk + SDLS foot error), bad input handling, and the BVH
+//! round trip through the core's reader.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+use gaitlab_core::export::parse_bvh;
+use serde_json::Value;
+
+fn gaitlab(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gaitlab")).args(args).output().expect("the gaitlab binary runs")
+}
+
+fn fixture(name: &str) -> String {
+    let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "..", "core", "tests", "fixtures", name].iter().collect();
+    path.to_string_lossy().into_owned()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("gaitlab-cli-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir.join(name)
+}
+
+fn json_of(output: &Output) -> Value {
+    assert!(output.status.success(), "stderr: {}", String::from_utf8_lossy(&output.stderr));
+    serde_json::from_slice(&output.stdout).expect("one JSON object on stdout")
+}
+
+fn effector_mean(metrics: &Value, name: &str) -> f64 {
+    metrics["effectors"]
+        .as_array()
+        .expect("effectors")
+        .iter()
+        .find(|e| e["name"] == name)
+        .and_then(|e| e["mean_error_m"].as_f64())
+        .expect("mean error")
+}
+
+#[test]
+fn presets_lists_the_bundled_creatures() {
+    let output = gaitlab(&["presets"]);
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success());
+    let human = text.lines().find(|l| l.starts_with("human ")).expect("human listed");
+    assert!(human.contains("engine=ik") && human.contains("joints=20") && human.contains("legs=2"), "{human}");
+    let quad = text.lines().find(|l| l.starts_with("ik-quadruped")).expect("quadruped listed");
+    assert!(quad.contains("joints=63") && quad.contains("legs=4"), "{quad}");
+}
+
+#[test]
+fn walk_with_sdls_keeps_mean_foot_error_under_5_mm() {
+    let metrics = json_of(&gaitlab(&["run", "human", "--mode", "walk", "--method", "sdls", "--seconds", "20", "--json"]));
+    for key in ["preset", "engine", "frames", "sim_seconds", "wall_ms", "method", "us_per_iteration", "effectors"] {
+        assert!(metrics.get(key).is_some(), "missing key {key}");
+    }
+    assert_eq!(metrics["frames"], 1200);
+    assert!((metrics["sim_seconds"].as_f64().expect("seconds") - 20.0).abs() < 1e-6);
+    for foot in ["left_foot", "right_foot"] {
+        let mean = effector_mean(&metrics, foot);
+        assert!(mean <= 0.005, "{foot}: mean error {mean} m");
+    }
+    assert_eq!(metrics["within_limits"], true);
+    assert!(metrics["distance_m"].as_f64().expect("distance") > 10.0, "moving forward covers ground");
+}
+
+#[test]
+fn bad_presets_exit_2_with_the_json_path() {
+    let cases = [
+        ("bad-axis.json", "error: skeleton.joints[3].axis: must be a non-zero vector"),
+        ("bad-cycle.json", "error: skeleton.joints["),
+        ("bad-nan.json", "error: "),
+        ("bad-truncated.json", "error: "),
+        ("bad-huge-joints.json", "error: skeleton.joints: "),
+        ("bad-limits.json", "error: skeleton.joints["),
+    ];
+    for (file, prefix) in cases {
+        let output = gaitlab(&["validate", &fixture(file)]);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(2), "{file}: {stderr}");
+        assert!(stderr.starts_with(prefix), "{file}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{file}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{file}: one line: {stderr}");
+    }
+}
+
+#[test]
+fn oversized_and_missing_inputs_are_refused_cleanly() {
+    let big = scratch("big.json");
+    std::fs::write(&big, vec![b' '; 300 * 1024]).expect("write");
+    let output = gaitlab(&["validate", big.to_str().expect("utf-8 path")]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("larger than 256 KiB"));
+    let output = gaitlab(&["run", "no-such-preset"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("no such bundled preset"));
+    for args in [
+        &["run", "human", "--method", "magic"][..],
+        &["run", "human", "--mode", "fly"][..],
+        &["run", "human", "--seconds=-1"][..],
+        &["run", "human", "--seconds", "NaN"][..],
+        &["run", "human", "--fps", "0"][..],
+        &["run", "human", "--gait", "trot"][..],
+    ] {
+        let output = gaitlab(args);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.starts_with("error: --"), "{args:?}: {stderr}");
+    }
+}
+
+#[test]
+fn validate_accepts_the_bundled_presets() {
+    let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "..", "..", "presets", "human.json"].iter().collect();
+    let output = gaitlab(&["validate", path.to_str().expect("utf-8 path")]);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(text.starts_with("ok: human") && text.contains("20 joints") && text.contains("4 effectors"), "{text}");
+}
+
+#[test]
+fn bvh_of_a_5_second_walk_parses_back_with_every_joint_and_frame() {
+    let bvh = scratch("walk.bvh");
+    let csv = scratch("walk.csv");
+    let output = gaitlab(&[
+        "run", "human", "--mode", "walk", "--seconds", "5", "--fps", "30",
+        "--bvh", bvh.to_str().expect("utf-8"), "--csv", csv.to_str().expect("utf-8"),
+    ]);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let text = std::fs::read_to_string(&bvh).expect("bvh written");
+    let parsed = parse_bvh(&text).expect("the BVH parses");
+    // 20 joints plus the BVH root node.
+    assert_eq!(parsed.joints.len(), 21);
+    assert_eq!(parsed.frame_count, 150);
+    assert!((parsed.frame_time - 1.0 / 30.0).abs() < 1e-9);
+    // The root travels forward (+z) over the walk.
+    let first = parsed.world_positions(0).expect("frame 0");
+    let last = parsed.world_positions(149).expect("last frame");
+    assert!(last[0].z - first[0].z > 3.0, "root moved {} m", last[0].z - first[0].z);
+    let rows = std::fs::read_to_string(&csv).expect("csv written");
+    assert_eq!(rows.lines().count(), 151, "header + one row per frame");
+    assert!(rows.lines().next().expect("header").starts_with("t,root_x"));
+}
+
+#[test]
+fn track_follows_recorded_targets() {
+    // Targets: the human's rest effector positions plus a 3 s sinusoidal sway of
+    // a few centimetres, in world coordinates, as a marker recording would give.
+    let creature = gaitlab_core::preset::load_bundled("human").expect("bundled").expect("valid");
+    let rest = gaitlab_core::Kinematics::of(&creature.skeleton, &creature.rest_pose());
+    let mut targets = String::from("t");
+    for e in creature.skeleton.effectors() {
+        targets.push_str(&format!(",{0}_x,{0}_y,{0}_z", e.name));
+    }
+    targets.push('\n');
+    for row in 0..=90 {
+        let t = f64::from(row) / 30.0;
+        targets.push_str(&format!("{t}"));
+        for (k, p) in rest.effector_position.iter().enumerate() {
+            let phase = t * 3.0 + k as f64;
+            let sway = glam::DVec3::new(0.03 * phase.sin(), 0.02 * phase.cos(), 0.04 * (0.5 * phase).sin());
+            let q = *p + sway;
+            targets.push_str(&format!(",{},{},{}", q.x, q.y, q.z));
+        }
+        targets.push('\n');
+    }
+    let target_file = scratch("targets.csv");
+    std::fs::write(&target_file, targets).expect("write targets");
+    let metrics = json_of(&gaitlab(&["track", "human", "--targets", target_file.to_str().expect("utf-8"), "--method", "dls", "--json"]));
+    assert_eq!(metrics["method"], "dls");
+    assert_eq!(metrics["frames"], 180, "3 s at the preset's 60 fps");
+    for e in ["left_foot", "right_foot", "left_hand", "right_hand"] {
+        let mean = effector_mean(&metrics, e);
+        assert!(mean < 0.005, "{e}: mean error {mean} m");
+    }
+    // A malformed target file is refused with its line.
+    std::fs::write(&target_file, "t,a,b\n0,1,2\n").expect("write");
+    let output = gaitlab(&["track", "human", "--targets", target_file.to_str().expect("utf-8")]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("line 1"), "{}", String::from_utf8_lossy(&output.stderr));
+}
