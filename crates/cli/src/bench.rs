@@ -1,7 +1,8 @@
 //! `gaitlab bench [--json]`: the performance figures. For each preset and IK
-//! method, the µs one IK iteration takes (forward kinematics + Jacobian + solve
-//! + update, She 2006 §4.4), measured over the targets of the preset's own
-//! thesis walk, and the µs per animation frame of the whole driver.
+//! method it reports the µs one IK iteration takes (forward kinematics,
+//! Jacobian, solve and update; She 2006 §4.4), measured over the targets of
+//! the preset's own thesis walk, and the µs per animation frame of the whole
+//! driver.
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -35,7 +36,11 @@ pub struct BenchArgs {
 }
 
 /// Targets the issue sets for this machine, µs per iteration: (preset, method, budget).
-const BUDGETS: [(&str, Method, f64); 3] = [("human", Method::Sdls, 10.0), ("human", Method::Dls, 3.0), ("ik-quadruped", Method::Sdls, 65.0)];
+const BUDGETS: [(&str, Method, f64); 3] = [
+    ("human", Method::Sdls, 10.0),
+    ("human", Method::Dls, 3.0),
+    ("ik-quadruped", Method::Sdls, 65.0),
+];
 
 /// One frame of recorded targets.
 struct Frame {
@@ -46,13 +51,21 @@ struct Frame {
 /// Records 10 s of the preset's thesis walk (60 fps) as a target sequence.
 fn record(creature: &Creature) -> Result<Vec<Frame>, Failure> {
     let scenario = &creature.scenario;
-    let mut driver = ThesisDriver::new(creature.skeleton.clone(), scenario.thesis.clone(), ThesisMode::Walk, scenario.ik_options())
-        .map_err(|e| Failure::input(format!("{}: scenario.thesis.{e}", creature.name)))?;
+    let mut driver = ThesisDriver::new(
+        creature.skeleton.clone(),
+        scenario.thesis.clone(),
+        ThesisMode::Walk,
+        scenario.ik_options(),
+    )
+    .map_err(|e| Failure::input(format!("{}: scenario.thesis.{e}", creature.name)))?;
     let mut frames = Vec::with_capacity(600);
     for _ in 0..600 {
         driver.step(1.0 / 60.0);
         if let Some(targets) = driver.targets() {
-            frames.push(Frame { root: driver.pose().root, targets: targets.clone() });
+            frames.push(Frame {
+                root: driver.pose().root,
+                targets: targets.clone(),
+            });
         }
     }
     Ok(frames)
@@ -64,7 +77,13 @@ fn median(mut values: Vec<f64>) -> f64 {
 }
 
 /// µs per IK iteration of `method` over `frames`, `iterations` per frame.
-fn time_iterations(creature: &Creature, frames: &[Frame], method: Method, iterations: usize, repeats: usize) -> f64 {
+fn time_iterations(
+    creature: &Creature,
+    frames: &[Frame],
+    method: Method,
+    iterations: usize,
+    repeats: usize,
+) -> f64 {
     let mut options = creature.scenario.ik_options();
     options.method = method;
     let skeleton = &creature.skeleton;
@@ -95,8 +114,13 @@ fn time_frames(creature: &Creature, method: Method, repeats: usize) -> Result<f6
     let scenario = &creature.scenario;
     let mut options = scenario.ik_options();
     options.method = method;
-    let mut driver = ThesisDriver::new(creature.skeleton.clone(), scenario.thesis.clone(), ThesisMode::Walk, options)
-        .map_err(|e| Failure::input(format!("{}: scenario.thesis.{e}", creature.name)))?;
+    let mut driver = ThesisDriver::new(
+        creature.skeleton.clone(),
+        scenario.thesis.clone(),
+        ThesisMode::Walk,
+        options,
+    )
+    .map_err(|e| Failure::input(format!("{}: scenario.thesis.{e}", creature.name)))?;
     let samples = (0..repeats.max(1))
         .map(|_| {
             let start = Instant::now();
@@ -111,11 +135,18 @@ fn time_frames(creature: &Creature, method: Method, repeats: usize) -> Result<f6
 
 /// `gaitlab bench`.
 pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
-    let presets = if args.presets.is_empty() { vec!["human".to_owned(), "ik-quadruped".to_owned()] } else { args.presets.clone() };
+    let presets = if args.presets.is_empty() {
+        vec!["human".to_owned(), "ik-quadruped".to_owned()]
+    } else {
+        args.presets.clone()
+    };
     let methods = if args.methods.is_empty() {
         Method::ALL.to_vec()
     } else {
-        args.methods.iter().map(|m| crate::run::method(Some(m), Method::Sdls)).collect::<Result<Vec<_>, _>>()?
+        args.methods
+            .iter()
+            .map(|m| crate::run::method(Some(m), Method::Sdls))
+            .collect::<Result<Vec<_>, _>>()?
     };
     let mut rows = Vec::new();
     for name in &presets {
@@ -123,9 +154,13 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
         let frames = record(&creature)?;
         let iterations = creature.scenario.thesis.iterations_per_frame;
         for &method in &methods {
-            let us_per_iteration = time_iterations(&creature, &frames, method, iterations, args.repeats);
+            let us_per_iteration =
+                time_iterations(&creature, &frames, method, iterations, args.repeats);
             let us_per_frame = time_frames(&creature, method, args.repeats)?;
-            let budget = BUDGETS.iter().find(|(p, m, _)| p == name && *m == method).map(|(_, _, b)| *b);
+            let budget = BUDGETS
+                .iter()
+                .find(|(p, m, _)| p == name && *m == method)
+                .map(|(_, _, b)| *b);
             rows.push(json!({
                 "preset": creature.name,
                 "joints": creature.skeleton.joint_count(),
@@ -139,7 +174,8 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
             }));
         }
     }
-    let report = json!({ "ik": rows, "cpus": std::thread::available_parallelism().map_or(1, |n| n.get()) });
+    let report =
+        json!({ "ik": rows, "cpus": std::thread::available_parallelism().map_or(1, |n| n.get()) });
     if args.json {
         println!("{report}");
     } else {
@@ -149,9 +185,15 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
 }
 
 fn print_table(report: &Value) {
-    println!("{:<14} {:>6} {:>4} {:<10} {:>12} {:>12} {:>10}", "preset", "joints", "eff", "method", "µs/iter", "µs/frame", "budget");
+    println!(
+        "{:<14} {:>6} {:>4} {:<10} {:>12} {:>12} {:>10}",
+        "preset", "joints", "eff", "method", "µs/iter", "µs/frame", "budget"
+    );
     for row in report["ik"].as_array().into_iter().flatten() {
-        let budget = match (row["budget_us_per_iteration"].as_f64(), row["within_budget"].as_bool()) {
+        let budget = match (
+            row["budget_us_per_iteration"].as_f64(),
+            row["within_budget"].as_bool(),
+        ) {
             (Some(b), Some(true)) => format!("≤{b} ok"),
             (Some(b), _) => format!("≤{b} MISS"),
             _ => String::new(),

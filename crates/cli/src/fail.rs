@@ -15,11 +15,17 @@ pub struct Failure {
 impl Failure {
     /// Bad input from the user (exit code 2).
     pub fn input(message: impl Display) -> Self {
-        Self { message: message.to_string(), code: 2 }
+        Self {
+            message: message.to_string(),
+            code: 2,
+        }
     }
 
     /// A file could not be read or written (exit code 1).
     pub fn io(path: &str, error: impl Display) -> Self {
-        Self { message: format!("{path}: {error}"), code: 1 }
+        Self {
+            message: format!("{path}: {error}"),
+            code: 1,
+        }
     }
 }

@@ -13,9 +13,14 @@ use crate::fail::Failure;
 pub fn read_limited(path: &str, limit: usize, what: &str) -> Result<String, Failure> {
     let file = std::fs::File::open(path).map_err(|e| Failure::io(path, e))?;
     let mut bytes = Vec::new();
-    file.take(limit as u64 + 1).read_to_end(&mut bytes).map_err(|e| Failure::io(path, e))?;
+    file.take(limit as u64 + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| Failure::io(path, e))?;
     if bytes.len() > limit {
-        return Err(Failure::input(format!("{path}: {what} is larger than {} KiB", limit / 1024)));
+        return Err(Failure::input(format!(
+            "{path}: {what} is larger than {} KiB",
+            limit / 1024
+        )));
     }
     String::from_utf8(bytes).map_err(|e| Failure::input(format!("{path}: not UTF-8 text ({e})")))
 }
@@ -25,7 +30,9 @@ pub fn creature(name_or_path: &str) -> Result<Creature, Failure> {
     if let Some(loaded) = load_bundled(name_or_path) {
         return loaded.map_err(|e| Failure::input(format!("bundled preset {name_or_path}: {e}")));
     }
-    let looks_like_file = name_or_path.contains('/') || name_or_path.contains('.') || std::path::Path::new(name_or_path).exists();
+    let looks_like_file = name_or_path.contains('/')
+        || name_or_path.contains('.')
+        || std::path::Path::new(name_or_path).exists();
     if !looks_like_file {
         let names: Vec<&str> = bundled().iter().map(|(name, _)| *name).collect();
         return Err(Failure::input(format!(
@@ -59,7 +66,11 @@ pub fn legs(creature: &Creature) -> usize {
         .skeleton
         .effectors()
         .iter()
-        .filter(|e| ["foot", "paw", "hoof", "toe"].iter().any(|w| e.name.contains(w)))
+        .filter(|e| {
+            ["foot", "paw", "hoof", "toe"]
+                .iter()
+                .any(|w| e.name.contains(w))
+        })
         .count()
 }
 

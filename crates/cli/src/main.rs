@@ -14,7 +14,6 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
-
 /// gaitlab — legged figures animated by inverse kinematics (She 2006), PODA
 /// gait synthesis and Raibert–Hodgins dynamics.
 #[derive(Parser, Debug)]

@@ -33,24 +33,36 @@ pub struct Measured {
 
 /// Steps `driver` `frames` times at `1/fps`, writing every frame (including the
 /// start pose) to the requested outputs.
-pub fn drive(driver: &mut dyn Driver, frames: usize, fps: f64, outputs: &Outputs<'_>) -> Result<Measured, Failure> {
+pub fn drive(
+    driver: &mut dyn Driver,
+    frames: usize,
+    fps: f64,
+    outputs: &Outputs<'_>,
+) -> Result<Measured, Failure> {
     let dt = 1.0 / fps;
     let skeleton = driver.skeleton().clone();
     let mut bvh = match outputs.bvh {
         Some(path) => {
             let mut sink = FileSink::create(path)?;
             let mut writer = BvhWriter::new(&skeleton, fps).map_err(Failure::input)?;
-            writer.write_header(&mut sink, frames).map_err(|e| sink.fail(e))?;
+            writer
+                .write_header(&mut sink, frames)
+                .map_err(|e| sink.fail(e))?;
             Some((sink, writer))
         }
         None => None,
     };
-    let columns = PoseCsvColumns { effector_positions: true, effector_targets: driver.targets().is_some() };
+    let columns = PoseCsvColumns {
+        effector_positions: true,
+        effector_targets: driver.targets().is_some(),
+    };
     let csv_writer = PoseCsvWriter::new(&skeleton, columns);
     let mut csv = match outputs.csv {
         Some(path) => {
             let mut sink = FileSink::create(path)?;
-            csv_writer.write_header(&mut sink).map_err(|e| sink.fail(e))?;
+            csv_writer
+                .write_header(&mut sink)
+                .map_err(|e| sink.fail(e))?;
             Some(sink)
         }
         None => None,
@@ -64,7 +76,9 @@ pub fn drive(driver: &mut dyn Driver, frames: usize, fps: f64, outputs: &Outputs
         step_seconds += before.elapsed().as_secs_f64();
         let pose = driver.pose();
         for (value, joint) in pose.joints.iter().zip(skeleton.joints()) {
-            let inside = joint.limits.is_none_or(|(lo, hi)| *value >= lo - 1e-9 && *value <= hi + 1e-9);
+            let inside = joint
+                .limits
+                .is_none_or(|(lo, hi)| *value >= lo - 1e-9 && *value <= hi + 1e-9);
             within_limits &= value.is_finite() && inside;
         }
         if let Some((sink, writer)) = bvh.as_mut() {
@@ -73,7 +87,13 @@ pub fn drive(driver: &mut dyn Driver, frames: usize, fps: f64, outputs: &Outputs
         if let Some(sink) = csv.as_mut() {
             let targets = driver.targets().map_or(&[][..], |t| &t.position[..]);
             csv_writer
-                .write_row(sink, driver.time(), pose, driver.effector_positions(), targets)
+                .write_row(
+                    sink,
+                    driver.time(),
+                    pose,
+                    driver.effector_positions(),
+                    targets,
+                )
                 .map_err(|e| sink.fail(e))?;
         }
     }
@@ -92,7 +112,13 @@ pub fn drive(driver: &mut dyn Driver, frames: usize, fps: f64, outputs: &Outputs
 }
 
 /// The IK metric object: DESIGN.md's `always` and `IK` keys plus a few more.
-pub fn ik_json(preset: &str, engine: &str, method: &str, driver: &dyn Driver, measured: &Measured) -> Value {
+pub fn ik_json(
+    preset: &str,
+    engine: &str,
+    method: &str,
+    driver: &dyn Driver,
+    measured: &Measured,
+) -> Value {
     let skeleton = driver.skeleton();
     let (iterations, effectors, sim_seconds, restored) = match driver.ik_metrics() {
         Some(metrics) => (
@@ -114,7 +140,11 @@ pub fn ik_json(preset: &str, engine: &str, method: &str, driver: &dyn Driver, me
         ),
         None => (0, Vec::new(), driver.time(), 0),
     };
-    let us_per_iteration = if iterations > 0 { measured.step_ms * 1e3 / iterations as f64 } else { 0.0 };
+    let us_per_iteration = if iterations > 0 {
+        measured.step_ms * 1e3 / iterations as f64
+    } else {
+        0.0
+    };
     json!({
         "preset": preset,
         "engine": engine,
@@ -149,9 +179,17 @@ pub fn print(metrics: &Value, as_json: bool) {
         get("us_per_iteration").as_f64().unwrap_or(0.0),
     );
     if let Some(effectors) = metrics.get("effectors").and_then(Value::as_array) {
-        println!("  {:<14} {:>12} {:>12}", "effector", "mean err mm", "max err mm");
+        println!(
+            "  {:<14} {:>12} {:>12}",
+            "effector", "mean err mm", "max err mm"
+        );
         for effector in effectors {
-            let mm = |key: &str| effector.get(key).and_then(Value::as_f64).map_or("-".to_owned(), |m| format!("{:.2}", m * 1e3));
+            let mm = |key: &str| {
+                effector
+                    .get(key)
+                    .and_then(Value::as_f64)
+                    .map_or("-".to_owned(), |m| format!("{:.2}", m * 1e3))
+            };
             println!(
                 "  {:<14} {:>12} {:>12}",
                 effector.get("name").and_then(Value::as_str).unwrap_or("?"),

@@ -49,8 +49,11 @@ pub struct RunArgs {
 pub fn method(name: Option<&str>, default: Method) -> Result<Method, Failure> {
     match name {
         None => Ok(default),
-        Some(name) => Method::parse(name)
-            .ok_or_else(|| Failure::input(format!("--method: unknown method {name:?} (use transpose, pinv, dls or sdls)"))),
+        Some(name) => Method::parse(name).ok_or_else(|| {
+            Failure::input(format!(
+                "--method: unknown method {name:?} (use transpose, pinv, dls or sdls)"
+            ))
+        }),
     }
 }
 
@@ -58,12 +61,19 @@ pub fn method(name: Option<&str>, default: Method) -> Result<Method, Failure> {
 pub fn timing(fps: Option<u32>, preset_fps: u32, seconds: f64) -> Result<(f64, usize), Failure> {
     let fps = fps.unwrap_or(preset_fps);
     if fps == 0 || fps > MAX_FPS {
-        return Err(Failure::input(format!("--fps: must be between 1 and {MAX_FPS}")));
+        return Err(Failure::input(format!(
+            "--fps: must be between 1 and {MAX_FPS}"
+        )));
     }
     if !seconds.is_finite() || seconds <= 0.0 || seconds > MAX_SECONDS {
-        return Err(Failure::input(format!("--seconds: must be more than 0 and at most {MAX_SECONDS}")));
+        return Err(Failure::input(format!(
+            "--seconds: must be more than 0 and at most {MAX_SECONDS}"
+        )));
     }
-    Ok((f64::from(fps), (seconds * f64::from(fps)).round().max(1.0) as usize))
+    Ok((
+        f64::from(fps),
+        (seconds * f64::from(fps)).round().max(1.0) as usize,
+    ))
 }
 
 /// `gaitlab run`.
@@ -71,25 +81,45 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
     let creature = load::creature(&args.preset)?;
     let scenario = &creature.scenario;
     if let Some(gait) = &args.gait {
-        return Err(Failure::input(format!("--gait: engine {} has no gaits (asked for {gait:?}); use --mode", scenario.engine.name())));
+        return Err(Failure::input(format!(
+            "--gait: engine {} has no gaits (asked for {gait:?}); use --mode",
+            scenario.engine.name()
+        )));
     }
     match scenario.engine {
         Engine::Ik => {}
     }
     let mode = match &args.mode {
         None => scenario.mode,
-        Some(name) => ThesisMode::parse(name)
-            .ok_or_else(|| Failure::input(format!("--mode: unknown mode {name:?} (use walk, run, wounded-walk or wounded-run)")))?,
+        Some(name) => ThesisMode::parse(name).ok_or_else(|| {
+            Failure::input(format!(
+                "--mode: unknown mode {name:?} (use walk, run, wounded-walk or wounded-run)"
+            ))
+        })?,
     };
     let method = method(args.method.as_deref(), scenario.method)?;
     let (fps, frames) = timing(args.fps, scenario.fps, args.seconds)?;
     let mut options = scenario.ik_options();
     options.method = method;
-    let mut driver = ThesisDriver::new(creature.skeleton.clone(), scenario.thesis.clone(), mode, options)
-        .map_err(|e| Failure::input(format!("scenario.thesis.{e}")))?;
-    let outputs = Outputs { bvh: args.bvh.as_deref(), csv: args.csv.as_deref() };
+    let mut driver = ThesisDriver::new(
+        creature.skeleton.clone(),
+        scenario.thesis.clone(),
+        mode,
+        options,
+    )
+    .map_err(|e| Failure::input(format!("scenario.thesis.{e}")))?;
+    let outputs = Outputs {
+        bvh: args.bvh.as_deref(),
+        csv: args.csv.as_deref(),
+    };
     let measured = report::drive(&mut driver, frames, fps, &outputs)?;
-    let mut metrics = report::ik_json(&creature.name, scenario.engine.name(), method.name(), &driver, &measured);
+    let mut metrics = report::ik_json(
+        &creature.name,
+        scenario.engine.name(),
+        method.name(),
+        &driver,
+        &measured,
+    );
     metrics["mode"] = mode.name().into();
     metrics["fps"] = fps.into();
     metrics["speed_mps"] = driver.script().speed_mps().into();

@@ -17,7 +17,11 @@ impl FileSink {
     /// Creates (truncates) `path`.
     pub fn create(path: &str) -> Result<Self, Failure> {
         let file = std::fs::File::create(path).map_err(|e| Failure::io(path, e))?;
-        Ok(Self { path: path.to_owned(), out: BufWriter::new(file), error: None })
+        Ok(Self {
+            path: path.to_owned(),
+            out: BufWriter::new(file),
+            error: None,
+        })
     }
 
     /// Flushes, returning the first error met while writing.

@@ -45,7 +45,8 @@ pub fn track(args: &TrackArgs) -> Result<(), Failure> {
     let creature = load::creature(&args.preset)?;
     let scenario = &creature.scenario;
     let text = load::read_limited(&args.targets, MAX_TARGET_CSV_BYTES, "target file")?;
-    let track = parse_target_csv(&text, creature.skeleton.effector_count()).map_err(|e| Failure::input(format!("{}: {e}", args.targets)))?;
+    let track = parse_target_csv(&text, creature.skeleton.effector_count())
+        .map_err(|e| Failure::input(format!("{}: {e}", args.targets)))?;
     let method = run::method(args.method.as_deref(), scenario.method)?;
     let duration = track.duration_s();
     let fps = f64::from(args.fps.unwrap_or(scenario.fps));
@@ -54,11 +55,20 @@ pub fn track(args: &TrackArgs) -> Result<(), Failure> {
     ik.method = method;
     let options = TrackOptions {
         ik,
-        iterations_per_frame: args.iterations.unwrap_or(scenario.thesis.iterations_per_frame),
-        root: RootTransform { position: creature.root_position, ..RootTransform::default() },
+        iterations_per_frame: args
+            .iterations
+            .unwrap_or(scenario.thesis.iterations_per_frame),
+        root: RootTransform {
+            position: creature.root_position,
+            ..RootTransform::default()
+        },
     };
-    let mut driver = TrackDriver::new(creature.skeleton.clone(), track, options).map_err(|e| Failure::input(format!("--{e}")))?;
-    let outputs = Outputs { bvh: args.bvh.as_deref(), csv: args.csv.as_deref() };
+    let mut driver = TrackDriver::new(creature.skeleton.clone(), track, options)
+        .map_err(|e| Failure::input(format!("--{e}")))?;
+    let outputs = Outputs {
+        bvh: args.bvh.as_deref(),
+        csv: args.csv.as_deref(),
+    };
     let measured = report::drive(&mut driver, frames, fps, &outputs)?;
     let mut metrics = report::ik_json(&creature.name, "track", method.name(), &driver, &measured);
     metrics["targets_file"] = args.targets.clone().into();

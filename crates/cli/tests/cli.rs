@@ -9,11 +9,23 @@ use gaitlab_core::export::parse_bvh;
 use serde_json::Value;
 
 fn gaitlab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gaitlab")).args(args).output().expect("the gaitlab binary runs")
+    Command::new(env!("CARGO_BIN_EXE_gaitlab"))
+        .args(args)
+        .output()
+        .expect("the gaitlab binary runs")
 }
 
 fn fixture(name: &str) -> String {
-    let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "..", "core", "tests", "fixtures", name].iter().collect();
+    let path: PathBuf = [
+        env!("CARGO_MANIFEST_DIR"),
+        "..",
+        "core",
+        "tests",
+        "fixtures",
+        name,
+    ]
+    .iter()
+    .collect();
     path.to_string_lossy().into_owned()
 }
 
@@ -24,7 +36,11 @@ fn scratch(name: &str) -> PathBuf {
 }
 
 fn json_of(output: &Output) -> Value {
-    assert!(output.status.success(), "stderr: {}", String::from_utf8_lossy(&output.stderr));
+    assert!(
+        output.status.success(),
+        "stderr: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
     serde_json::from_slice(&output.stdout).expect("one JSON object on stdout")
 }
 
@@ -43,16 +59,47 @@ fn presets_lists_the_bundled_creatures() {
     let output = gaitlab(&["presets"]);
     let text = String::from_utf8_lossy(&output.stdout);
     assert!(output.status.success());
-    let human = text.lines().find(|l| l.starts_with("human ")).expect("human listed");
-    assert!(human.contains("engine=ik") && human.contains("joints=20") && human.contains("legs=2"), "{human}");
-    let quad = text.lines().find(|l| l.starts_with("ik-quadruped")).expect("quadruped listed");
-    assert!(quad.contains("joints=63") && quad.contains("legs=4"), "{quad}");
+    let human = text
+        .lines()
+        .find(|l| l.starts_with("human "))
+        .expect("human listed");
+    assert!(
+        human.contains("engine=ik") && human.contains("joints=20") && human.contains("legs=2"),
+        "{human}"
+    );
+    let quad = text
+        .lines()
+        .find(|l| l.starts_with("ik-quadruped"))
+        .expect("quadruped listed");
+    assert!(
+        quad.contains("joints=63") && quad.contains("legs=4"),
+        "{quad}"
+    );
 }
 
 #[test]
 fn walk_with_sdls_keeps_mean_foot_error_under_5_mm() {
-    let metrics = json_of(&gaitlab(&["run", "human", "--mode", "walk", "--method", "sdls", "--seconds", "20", "--json"]));
-    for key in ["preset", "engine", "frames", "sim_seconds", "wall_ms", "method", "us_per_iteration", "effectors"] {
+    let metrics = json_of(&gaitlab(&[
+        "run",
+        "human",
+        "--mode",
+        "walk",
+        "--method",
+        "sdls",
+        "--seconds",
+        "20",
+        "--json",
+    ]));
+    for key in [
+        "preset",
+        "engine",
+        "frames",
+        "sim_seconds",
+        "wall_ms",
+        "method",
+        "us_per_iteration",
+        "effectors",
+    ] {
         assert!(metrics.get(key).is_some(), "missing key {key}");
     }
     assert_eq!(metrics["frames"], 1200);
@@ -62,13 +109,19 @@ fn walk_with_sdls_keeps_mean_foot_error_under_5_mm() {
         assert!(mean <= 0.005, "{foot}: mean error {mean} m");
     }
     assert_eq!(metrics["within_limits"], true);
-    assert!(metrics["distance_m"].as_f64().expect("distance") > 10.0, "moving forward covers ground");
+    assert!(
+        metrics["distance_m"].as_f64().expect("distance") > 10.0,
+        "moving forward covers ground"
+    );
 }
 
 #[test]
 fn bad_presets_exit_2_with_the_json_path() {
     let cases = [
-        ("bad-axis.json", "error: skeleton.joints[3].axis: must be a non-zero vector"),
+        (
+            "bad-axis.json",
+            "error: skeleton.joints[3].axis: must be a non-zero vector",
+        ),
         ("bad-cycle.json", "error: skeleton.joints["),
         ("bad-nan.json", "error: "),
         ("bad-truncated.json", "error: "),
@@ -112,11 +165,26 @@ fn oversized_and_missing_inputs_are_refused_cleanly() {
 
 #[test]
 fn validate_accepts_the_bundled_presets() {
-    let path: PathBuf = [env!("CARGO_MANIFEST_DIR"), "..", "..", "presets", "human.json"].iter().collect();
+    let path: PathBuf = [
+        env!("CARGO_MANIFEST_DIR"),
+        "..",
+        "..",
+        "presets",
+        "human.json",
+    ]
+    .iter()
+    .collect();
     let output = gaitlab(&["validate", path.to_str().expect("utf-8 path")]);
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
     let text = String::from_utf8_lossy(&output.stdout);
-    assert!(text.starts_with("ok: human") && text.contains("20 joints") && text.contains("4 effectors"), "{text}");
+    assert!(
+        text.starts_with("ok: human") && text.contains("20 joints") && text.contains("4 effectors"),
+        "{text}"
+    );
 }
 
 #[test]
@@ -124,10 +192,24 @@ fn bvh_of_a_5_second_walk_parses_back_with_every_joint_and_frame() {
     let bvh = scratch("walk.bvh");
     let csv = scratch("walk.csv");
     let output = gaitlab(&[
-        "run", "human", "--mode", "walk", "--seconds", "5", "--fps", "30",
-        "--bvh", bvh.to_str().expect("utf-8"), "--csv", csv.to_str().expect("utf-8"),
+        "run",
+        "human",
+        "--mode",
+        "walk",
+        "--seconds",
+        "5",
+        "--fps",
+        "30",
+        "--bvh",
+        bvh.to_str().expect("utf-8"),
+        "--csv",
+        csv.to_str().expect("utf-8"),
     ]);
-    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
     let text = std::fs::read_to_string(&bvh).expect("bvh written");
     let parsed = parse_bvh(&text).expect("the BVH parses");
     // 20 joints plus the BVH root node.
@@ -137,7 +219,11 @@ fn bvh_of_a_5_second_walk_parses_back_with_every_joint_and_frame() {
     // The root travels forward (+z) over the walk.
     let first = parsed.world_positions(0).expect("frame 0");
     let last = parsed.world_positions(149).expect("last frame");
-    assert!(last[0].z - first[0].z > 3.0, "root moved {} m", last[0].z - first[0].z);
+    assert!(
+        last[0].z - first[0].z > 3.0,
+        "root moved {} m",
+        last[0].z - first[0].z
+    );
     let rows = std::fs::read_to_string(&csv).expect("csv written");
     assert_eq!(rows.lines().count(), 151, "header + one row per frame");
     assert!(rows.lines().next().expect("header").starts_with("t,root_x"));
@@ -147,7 +233,9 @@ fn bvh_of_a_5_second_walk_parses_back_with_every_joint_and_frame() {
 fn track_follows_recorded_targets() {
     // Targets: the human's rest effector positions plus a 3 s sinusoidal sway of
     // a few centimetres, in world coordinates, as a marker recording would give.
-    let creature = gaitlab_core::preset::load_bundled("human").expect("bundled").expect("valid");
+    let creature = gaitlab_core::preset::load_bundled("human")
+        .expect("bundled")
+        .expect("valid");
     let rest = gaitlab_core::Kinematics::of(&creature.skeleton, &creature.rest_pose());
     let mut targets = String::from("t");
     for e in creature.skeleton.effectors() {
@@ -159,7 +247,11 @@ fn track_follows_recorded_targets() {
         targets.push_str(&format!("{t}"));
         for (k, p) in rest.effector_position.iter().enumerate() {
             let phase = t * 3.0 + k as f64;
-            let sway = glam::DVec3::new(0.03 * phase.sin(), 0.02 * phase.cos(), 0.04 * (0.5 * phase).sin());
+            let sway = glam::DVec3::new(
+                0.03 * phase.sin(),
+                0.02 * phase.cos(),
+                0.04 * (0.5 * phase).sin(),
+            );
             let q = *p + sway;
             targets.push_str(&format!(",{},{},{}", q.x, q.y, q.z));
         }
@@ -167,7 +259,15 @@ fn track_follows_recorded_targets() {
     }
     let target_file = scratch("targets.csv");
     std::fs::write(&target_file, targets).expect("write targets");
-    let metrics = json_of(&gaitlab(&["track", "human", "--targets", target_file.to_str().expect("utf-8"), "--method", "dls", "--json"]));
+    let metrics = json_of(&gaitlab(&[
+        "track",
+        "human",
+        "--targets",
+        target_file.to_str().expect("utf-8"),
+        "--method",
+        "dls",
+        "--json",
+    ]));
     assert_eq!(metrics["method"], "dls");
     assert_eq!(metrics["frames"], 180, "3 s at the preset's 60 fps");
     for e in ["left_foot", "right_foot", "left_hand", "right_hand"] {
@@ -176,7 +276,16 @@ fn track_follows_recorded_targets() {
     }
     // A malformed target file is refused with its line.
     std::fs::write(&target_file, "t,a,b\n0,1,2\n").expect("write");
-    let output = gaitlab(&["track", "human", "--targets", target_file.to_str().expect("utf-8")]);
+    let output = gaitlab(&[
+        "track",
+        "human",
+        "--targets",
+        target_file.to_str().expect("utf-8"),
+    ]);
     assert_eq!(output.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&output.stderr).contains("line 1"), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(
+        String::from_utf8_lossy(&output.stderr).contains("line 1"),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
 }

@@ -91,7 +91,9 @@ impl Kinematics {
     pub fn update(&mut self, skeleton: &Skeleton, root: &RootTransform, values: &[f64]) {
         let n = skeleton.joint_count();
         assert!(values.len() >= n, "one value per joint");
-        if self.joint_position.len() != n || self.effector_position.len() != skeleton.effector_count() {
+        if self.joint_position.len() != n
+            || self.effector_position.len() != skeleton.effector_count()
+        {
             *self = Self::new(skeleton);
         }
         for (j, joint) in skeleton.joints().iter().enumerate() {
@@ -101,7 +103,11 @@ impl Kinematics {
             };
             let anchor = parent_position + parent_rotation * joint.offset;
             let shape = skeleton.joint_shape(j);
-            let frame = if shape.identity_frame { parent_rotation } else { parent_rotation * joint.frame };
+            let frame = if shape.identity_frame {
+                parent_rotation
+            } else {
+                parent_rotation * joint.frame
+            };
             let axis = frame * joint.axis;
             let value = values[j];
             let (rotation, position) = match joint.kind {
@@ -115,7 +121,8 @@ impl Kinematics {
         }
         for (e, effector) in skeleton.effectors().iter().enumerate() {
             let rotation = self.joint_rotation[effector.joint];
-            self.effector_position[e] = self.joint_position[effector.joint] + rotation * effector.offset;
+            self.effector_position[e] =
+                self.joint_position[effector.joint] + rotation * effector.offset;
             self.effector_rotation[e] = rotation;
         }
     }
@@ -141,7 +148,10 @@ mod tests {
             for angle in [-2.5, -0.3, 0.0, 0.7, 3.0] {
                 let fast = rotate_about(frame, kind, axis, angle);
                 let general = frame * axis_angle(axis, angle);
-                let worst = (fast - general).to_cols_array().iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+                let worst = (fast - general)
+                    .to_cols_array()
+                    .iter()
+                    .fold(0.0_f64, |m, x| m.max(x.abs()));
                 assert!(worst < 1e-15, "{kind:?} at {angle}: {worst:e}");
             }
         }

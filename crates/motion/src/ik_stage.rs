@@ -1,6 +1,7 @@
 //! The IK stage shared by the IK drivers: run the frame's iterations of She
 //! 2006 §5.1.2's calculation module, then measure each effector's distance to
-//! its target (§5.3's `d`) and accumulate the metrics. Allocation-free per frame.
+//! its target (§5.3's `d`) and accumulate the metrics; plus a posture
+//! relaxation toward PODA's center angles. Allocation-free per frame.
 
 use gaitlab_core::driver::{IkFrameReport, IkMetrics};
 use gaitlab_core::ik::{IkOptions, IkSolver, Targets};

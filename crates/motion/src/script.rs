@@ -83,12 +83,13 @@ pub struct ScriptSample {
 
 impl ScriptSample {
     /// The sample `weight` of the way from `self` to `other` (0 gives `self`,
-    /// 1 gives `other`), every target and the root height interpolated linearly.
+    /// 1 gives `other`), every target and the root height interpolated linearly
+    /// (as `a + (b − a)·weight`, so equal samples blend to themselves exactly).
     #[must_use]
     pub fn lerp(&self, other: &ScriptSample, weight: f64) -> ScriptSample {
         let mut targets = self.targets;
         for (target, to) in targets.iter_mut().zip(&other.targets) {
-            *target = target.lerp(*to, weight);
+            *target += (*to - *target) * weight;
         }
         ScriptSample {
             targets,

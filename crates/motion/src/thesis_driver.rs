@@ -17,8 +17,8 @@ use crate::error::DriverError;
 use crate::ik_stage::IkStage;
 use crate::script::{Limb, ScriptSample, ThesisScript};
 
-/// Most IK iterations per frame a parameter set may ask for.
-pub const MAX_ITERATIONS_PER_FRAME: usize = 256;
+/// Most IK iterations per frame a parameter set may ask for (the preset limit).
+pub use gaitlab_core::preset::MAX_ITERATIONS_PER_FRAME;
 
 /// Animates a skeleton with the thesis target script and Jacobian IK.
 ///
@@ -27,7 +27,11 @@ pub const MAX_ITERATIONS_PER_FRAME: usize = 256;
 /// the origin's orientation (use a heading, a rotation about y). Effectors
 /// other than the four roles track their rest position relative to the root.
 /// After a reset the four targets blend from their rest positions into the
-/// cycle over `start_ramp_s` (see [`ThesisParams::start_ramp_s`]).
+/// cycle over `start_ramp_s`, and a running mode starts as the matching
+/// walking mode and breaks into the run over the next `start_ramp_s`; live
+/// mode changes blend the same way (see [`ThesisParams::start_ramp_s`]).
+/// Before each frame's IK iterations the joints relax toward their PODA center
+/// angles by `posture_gain` (see [`ThesisParams::posture_gain`]).
 #[derive(Clone, Debug)]
 pub struct ThesisDriver {
     skeleton: Arc<Skeleton>,
@@ -368,10 +372,12 @@ fn start_blend(t: f64, ramp_s: f64) -> f64 {
     }
 }
 
-/// Checks that every number in `params` is usable: finite positions, heights
-/// and bounces; non-negative frequencies; a positive slowdown; a finite,
-/// non-negative speed and start ramp; a posture gain in [0, 1]; 1 to [`MAX_ITERATIONS_PER_FRAME`] iterations per frame;
-/// finite wounded weights.
+/// Checks that every number in `params` is usable by the driver: finite
+/// positions, heights and bounces; non-negative frequencies; a positive
+/// slowdown; a finite, non-negative speed and start ramp; a posture gain in
+/// [0, 1]; 1 to [`MAX_ITERATIONS_PER_FRAME`] iterations per frame; finite
+/// wounded weights. (Preset validation is stricter, e.g. slowdown ≥ 1, so
+/// that a UI may still go below it.)
 ///
 /// # Errors
 /// The first offending field, as a path (`run.front_foot`, `wounded[0].add`).

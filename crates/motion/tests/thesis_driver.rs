@@ -8,7 +8,7 @@ use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::{IkOptions, Method};
 use gaitlab_core::preset::thesis::{ThesisMode, ThesisParams, WoundedJoint};
 use gaitlab_core::{Pose, Skeleton};
-use gaitlab_motion::{Limb, ThesisDriver};
+use gaitlab_motion::{Limb, ThesisDriver, ThesisScript};
 
 const FPS: f64 = 60.0;
 
@@ -176,25 +176,29 @@ fn dls_and_sdls_track_the_walking_modes_closely() {
 }
 
 #[test]
-fn dls_and_sdls_track_the_running_modes_closely_from_bent_knees() {
-    let skeleton = common::human_bent_knees();
-    for method in [Method::Dls, Method::Sdls] {
-        for mode in [ThesisMode::Run, ThesisMode::WoundedRun] {
-            let bound = if mode.wounded() { 0.01 } else { 0.001 };
-            for (mean, max) in mean_foot_errors(&skeleton, mode, method) {
-                println!(
-                    "{} {}: foot mean {:.3} mm, max {:.1} mm",
-                    method.name(),
-                    mode.name(),
-                    mean * 1e3,
-                    max * 1e3
-                );
-                assert!(
-                    mean <= bound,
-                    "{} {}: foot mean error {mean} m",
-                    method.name(),
-                    mode.name()
-                );
+fn dls_and_sdls_track_the_running_modes_closely_from_either_knee_rest() {
+    for (name, skeleton) in [
+        ("human", common::human()),
+        ("bent-knee human", common::human_bent_knees()),
+    ] {
+        for method in [Method::Dls, Method::Sdls] {
+            for mode in [ThesisMode::Run, ThesisMode::WoundedRun] {
+                let bound = if mode.wounded() { 0.01 } else { 0.001 };
+                for (mean, max) in mean_foot_errors(&skeleton, mode, method) {
+                    println!(
+                        "{name} {} {}: foot mean {:.3} mm, max {:.1} mm",
+                        method.name(),
+                        mode.name(),
+                        mean * 1e3,
+                        max * 1e3
+                    );
+                    assert!(
+                        mean <= bound,
+                        "{name} {} {}: foot mean error {mean} m",
+                        method.name(),
+                        mode.name()
+                    );
+                }
             }
         }
     }
@@ -254,7 +258,7 @@ fn walking_bends_the_knees_keeps_the_torso_upright_and_swings_the_arms_against_t
 
 #[test]
 fn running_kicks_high_and_leaves_the_ground_between_stances() {
-    let skeleton = common::human_bent_knees();
+    let skeleton = common::human();
     let mut runner = driver(
         &skeleton,
         common::human_params(),
@@ -299,16 +303,17 @@ fn planted_foot_target_is_at_rest_in_the_world_at_mid_stance() {
         let period = driver.script().period_s();
         let mut previous = None;
         let mut checked = 0;
-        for _ in 0..frames(6.0 * period) {
+        for _ in 0..frames(2.0 + 4.0 * period) {
             driver.step(1.0 / FPS);
             let Some(targets) = driver.targets() else {
                 panic!("targets")
             };
             let z = targets.position[foot].z;
             // Left mid-stance is phase π (half a cycle into each period); the
-            // speed is full once the start ramp is over.
+            // speed is full once the start ramps are over.
             let phase = driver.phase();
-            let ramped = driver.time() > driver.params().start_ramp_s;
+            // (A run starts as a walk and blends into the run over a second ramp.)
+            let ramped = driver.time() > 2.0 * driver.params().start_ramp_s;
             if let Some(previous) = previous
                 && ramped
                 && (phase - std::f64::consts::PI).abs() < 0.1
@@ -336,11 +341,7 @@ fn wounded_modes_change_the_wounded_joints_and_keep_the_feet_on_target() {
     );
     for (skeleton, plain, wounded) in [
         (common::human(), ThesisMode::Walk, ThesisMode::WoundedWalk),
-        (
-            common::human_bent_knees(),
-            ThesisMode::Run,
-            ThesisMode::WoundedRun,
-        ),
+        (common::human(), ThesisMode::Run, ThesisMode::WoundedRun),
     ] {
         let mut a = driver(&skeleton, params.clone(), plain, Method::Sdls);
         let mut b = driver(&skeleton, params.clone(), wounded, Method::Sdls);
@@ -439,8 +440,13 @@ fn reset_returns_to_the_rest_pose_at_time_zero() {
         panic!("metrics")
     };
     assert_eq!(metrics.frames, 0);
-    // The root stands at the script's height for phase 0.
-    let expected = driver.script().at_time(0.0).root_height_m;
+    // The root stands at the script's height for phase 0, and a run starts
+    // as a walk.
+    let params = common::human_params();
+    let expected = ThesisScript::new(&params, ThesisMode::Walk)
+        .at_time(0.0)
+        .root_height_m;
+    assert_ne!(expected, driver.script().at_time(0.0).root_height_m);
     assert!((driver.pose().root.position.y - expected).abs() < 1e-12);
 }
 
@@ -556,4 +562,49 @@ fn a_driver_for_the_bundled_human_uses_its_scenario() {
         (root.x, root.z),
         (creature.root_position.x, creature.root_position.z)
     );
+}
+
+#[test]
+fn a_run_starts_as_a_walk_and_mode_changes_blend() {
+    let skeleton = common::human();
+    let params = common::human_params();
+    let ramp = params.start_ramp_s;
+    let walk = ThesisScript::new(&params, ThesisMode::Walk);
+    let run = ThesisScript::new(&params, ThesisMode::Run);
+    let mut runner = driver(&skeleton, params.clone(), ThesisMode::Run, Method::Sdls);
+    // Walking while the start ramp lasts, running after twice its length.
+    let mut previous_phase = 0.0;
+    let mut largest_jump: f64 = 0.0;
+    let mut previous_targets = runner.targets().cloned();
+    for _ in 0..frames(3.0 * ramp) {
+        runner.step(1.0 / FPS);
+        let omega = (runner.phase() - previous_phase).rem_euclid(std::f64::consts::TAU) * FPS;
+        previous_phase = runner.phase();
+        if runner.time() < ramp {
+            assert!((omega - walk.angular_frequency()).abs() < 1e-6);
+        }
+        if runner.time() > 2.0 * ramp + 0.02 {
+            assert!((omega - run.angular_frequency()).abs() < 1e-6);
+            let expected = run.at_phase(runner.phase());
+            assert!((runner.sample().root_height_m - expected.root_height_m).abs() < 1e-12);
+        }
+        if let (Some(before), Some(now)) = (&previous_targets, runner.targets()) {
+            for (a, b) in before.position.iter().zip(&now.position) {
+                largest_jump = largest_jump.max(a.distance(*b) - runner.script().speed_mps() / FPS);
+            }
+        }
+        previous_targets = runner.targets().cloned();
+    }
+    // No target jumps: at most a swing foot's speed (about 4·ω·stroke/2) per frame.
+    assert!(
+        largest_jump < 0.2,
+        "a target jumped {largest_jump} m in a frame"
+    );
+    // Switching back to walking live blends over the ramp too.
+    runner.set_mode(ThesisMode::Walk);
+    let before = runner.sample().root_height_m;
+    runner.step(1.0 / FPS);
+    let expected_run = run.at_phase(runner.phase()).root_height_m;
+    assert!((runner.sample().root_height_m - expected_run).abs() < 0.01);
+    assert!((runner.sample().root_height_m - before).abs() < 0.01);
 }

@@ -62,7 +62,14 @@ impl DlsWorkspace {
     /// same step since no column spans two blocks.
     /// Returns false (and a zero step) if a damped system could not be factored
     /// (non-finite input).
-    pub fn step(&mut self, jacobian: &DMatrix<f64>, blocks: &[TaskBlock], error: &[f64], lambda: f64, step: &mut [f64]) -> bool {
+    pub fn step(
+        &mut self,
+        jacobian: &DMatrix<f64>,
+        blocks: &[TaskBlock],
+        error: &[f64],
+        lambda: f64,
+        step: &mut [f64],
+    ) -> bool {
         let (m, n) = jacobian.shape();
         let lambda2 = lambda * lambda;
         step.fill(0.0);
@@ -105,7 +112,13 @@ impl DlsWorkspace {
     }
 
     /// The m > n form: Δθ = (JᵀJ + λ²I)⁻¹Jᵀe.
-    fn step_from_columns(&mut self, jacobian: &DMatrix<f64>, error: &[f64], lambda2: f64, step: &mut [f64]) -> bool {
+    fn step_from_columns(
+        &mut self,
+        jacobian: &DMatrix<f64>,
+        error: &[f64],
+        lambda2: f64,
+        step: &mut [f64],
+    ) -> bool {
         let (m, n) = jacobian.shape();
         if self.gram.len() < n * n {
             self.gram.resize(n * n, 0.0);
@@ -120,7 +133,11 @@ impl DlsWorkspace {
         }
         let data = jacobian.as_slice();
         for (c, out) in step.iter_mut().enumerate() {
-            *out = data[c * m..(c + 1) * m].iter().zip(error).map(|(x, y)| x * y).sum();
+            *out = data[c * m..(c + 1) * m]
+                .iter()
+                .zip(error)
+                .map(|(x, y)| x * y)
+                .sum();
         }
         cholesky_solve(&self.gram[..n * n], n, step);
         true

@@ -265,7 +265,11 @@ mod tests {
         for i in 0..n {
             let q = nalgebra::DVector::from_column_slice(eig.vector(i));
             let residual = a * &q - &q * eig.values()[i];
-            assert!(residual.norm() < 1e-10 * (1.0 + a.norm()), "residual {}", residual.norm());
+            assert!(
+                residual.norm() < 1e-10 * (1.0 + a.norm()),
+                "residual {}",
+                residual.norm()
+            );
             assert!((q.norm() - 1.0).abs() < 1e-12);
             for j in 0..i {
                 let other = nalgebra::DVector::from_column_slice(eig.vector(j));
@@ -273,7 +277,13 @@ mod tests {
             }
         }
         let mut ours: Vec<f64> = eig.values().to_vec();
-        let mut reference: Vec<f64> = a.clone().symmetric_eigen().eigenvalues.iter().copied().collect();
+        let mut reference: Vec<f64> = a
+            .clone()
+            .symmetric_eigen()
+            .eigenvalues
+            .iter()
+            .copied()
+            .collect();
         ours.sort_by(f64::total_cmp);
         reference.sort_by(f64::total_cmp);
         for (x, y) in ours.iter().zip(&reference) {
@@ -285,7 +295,9 @@ mod tests {
     fn matches_nalgebra_on_gram_matrices() {
         let mut seed = 12345_u64;
         let mut next = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             ((seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
         };
         for &(m, n) in &[(1, 1), (2, 5), (3, 3), (12, 20), (15, 63), (6, 4)] {

@@ -12,7 +12,7 @@ mod solver;
 mod svd;
 mod transpose;
 
-pub use options::{IkOptions, JointWeight, Method};
 pub use eigen::{NoConvergence, SymmetricEigen};
+pub use options::{IkOptions, JointWeight, Method};
 pub use solver::{IkSolver, IkStatus, Targets};
 pub use svd::ThinSvd;

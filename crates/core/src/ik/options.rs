@@ -58,7 +58,10 @@ pub struct JointWeight {
 
 impl Default for JointWeight {
     fn default() -> Self {
-        Self { multiply: 1.0, add: 0.0 }
+        Self {
+            multiply: 1.0,
+            add: 0.0,
+        }
     }
 }
 

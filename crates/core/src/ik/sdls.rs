@@ -31,7 +31,14 @@ impl SdlsWorkspace {
     /// Writes the SDLS step into `step`. The rows of `jacobian` come in 3-row
     /// blocks (one per effector position, one more per effector orientation);
     /// each block counts as one "end effector" in Nᵢ and ρⱼ.
-    pub fn step(&mut self, jacobian: &DMatrix<f64>, svd: &ThinSvd, error: &[f64], gamma_max: f64, step: &mut [f64]) {
+    pub fn step(
+        &mut self,
+        jacobian: &DMatrix<f64>,
+        svd: &ThinSvd,
+        error: &[f64],
+        gamma_max: f64,
+        step: &mut [f64],
+    ) {
         let (m, n) = jacobian.shape();
         let data = jacobian.as_slice();
         self.rho.resize(n, 0.0);
@@ -39,7 +46,10 @@ impl SdlsWorkspace {
         // ρⱼ = Σℓ ‖∂sℓ/∂θⱼ‖ over the 3-row blocks of column j.
         for (c, rho) in self.rho.iter_mut().enumerate() {
             let col = &data[c * m..(c + 1) * m];
-            *rho = col.chunks_exact(3).map(|b| (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]).sqrt()).sum();
+            *rho = col
+                .chunks_exact(3)
+                .map(|b| (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]).sqrt())
+                .sum();
         }
         step.fill(0.0);
         for i in 0..svd.rank() {
@@ -47,9 +57,21 @@ impl SdlsWorkspace {
             let u = svd.u(i);
             let v = svd.v(i);
             let alpha: f64 = u.iter().zip(error).map(|(x, y)| x * y).sum();
-            let n_i: f64 = u.chunks_exact(3).map(|b| (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]).sqrt()).sum();
-            let m_i: f64 = v.iter().zip(&self.rho).map(|(x, r)| x.abs() * r).sum::<f64>() / sigma;
-            let gamma = if m_i > 0.0 { (n_i / m_i).min(1.0) * gamma_max } else { gamma_max };
+            let n_i: f64 = u
+                .chunks_exact(3)
+                .map(|b| (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]).sqrt())
+                .sum();
+            let m_i: f64 = v
+                .iter()
+                .zip(&self.rho)
+                .map(|(x, r)| x.abs() * r)
+                .sum::<f64>()
+                / sigma;
+            let gamma = if m_i > 0.0 {
+                (n_i / m_i).min(1.0) * gamma_max
+            } else {
+                gamma_max
+            };
             let scale = alpha / sigma;
             for (p, x) in self.phi.iter_mut().zip(v) {
                 *p = scale * x;

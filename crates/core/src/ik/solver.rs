@@ -182,10 +182,19 @@ impl IkSolver {
     /// # Panics
     /// If `values` or `targets.position` are shorter than the skeleton's joint and
     /// effector counts (a programming error, not an input error).
-    pub fn iterate(&mut self, skeleton: &Skeleton, root: &RootTransform, values: &mut [f64], targets: &Targets) -> IkStatus {
+    pub fn iterate(
+        &mut self,
+        skeleton: &Skeleton,
+        root: &RootTransform,
+        values: &mut [f64],
+        targets: &Targets,
+    ) -> IkStatus {
         let n = skeleton.joint_count();
         assert!(values.len() >= n, "one value per joint");
-        assert!(targets.position.len() >= skeleton.effector_count(), "one target per effector");
+        assert!(
+            targets.position.len() >= skeleton.effector_count(),
+            "one target per effector"
+        );
         if self.step.len() != n || self.error.len() != skeleton.task_rows() {
             *self = Self::new(skeleton, self.options.clone());
         }
@@ -199,7 +208,11 @@ impl IkSolver {
             self.active[j] = self.weights[j].multiply != 0.0;
             self.center_gradient[j] = 2.0 * joint.gain * (values[j] - joint.center);
         }
-        let passes = if self.options.enforce_limits { self.options.limit_passes.max(1) } else { 1 };
+        let passes = if self.options.enforce_limits {
+            self.options.limit_passes.max(1)
+        } else {
+            1
+        };
         for _ in 0..passes {
             match self.solve_active() {
                 Some(rank) => status.rank = rank,
@@ -237,8 +250,16 @@ impl IkSolver {
         let mut largest: f64 = 0.0;
         for (j, joint) in joints.iter().enumerate() {
             let step = self.step[j] + self.weights[j].add;
-            let updated = if self.options.enforce_limits { joint.clamp(values[j] + step) } else { values[j] + step };
-            if self.options.enforce_limits && joint.limits.is_some_and(|(lo, hi)| updated <= lo || updated >= hi) {
+            let updated = if self.options.enforce_limits {
+                joint.clamp(values[j] + step)
+            } else {
+                values[j] + step
+            };
+            if self.options.enforce_limits
+                && joint
+                    .limits
+                    .is_some_and(|(lo, hi)| updated <= lo || updated >= hi)
+            {
                 status.clamped_joints += 1;
             }
             largest = largest.max((updated - values[j]).abs());
@@ -312,27 +333,49 @@ impl IkSolver {
             }
         }
         let options = &self.options;
-        let null_space = options.null_space_gain > 0.0 && matches!(options.method, Method::Pinv | Method::Dls);
+        let null_space =
+            options.null_space_gain > 0.0 && matches!(options.method, Method::Pinv | Method::Dls);
         let needs_svd = null_space || matches!(options.method, Method::Pinv | Method::Sdls);
         let mut rank = 0;
         if needs_svd {
-            self.svd.compute(&self.weighted, &self.blocks, options.rank_tolerance).ok()?;
+            self.svd
+                .compute(&self.weighted, &self.blocks, options.rank_tolerance)
+                .ok()?;
             rank = self.svd.rank();
         }
         match options.method {
-            Method::Transpose => transpose_step(&self.weighted, &self.residual, &mut self.scratch, &mut self.free),
+            Method::Transpose => transpose_step(
+                &self.weighted,
+                &self.residual,
+                &mut self.scratch,
+                &mut self.free,
+            ),
             Method::Pinv => pinv_step(&self.svd, &self.residual, &mut self.free),
             Method::Dls if null_space => {
                 let lambda2 = options.lambda * options.lambda;
-                filtered_step(&self.svd, &self.residual, &mut self.free, |s| s / (s * s + lambda2));
+                filtered_step(&self.svd, &self.residual, &mut self.free, |s| {
+                    s / (s * s + lambda2)
+                });
             }
             Method::Dls => {
-                if !self.dls.step(&self.weighted, &self.blocks, &self.residual, options.lambda, &mut self.free) {
+                if !self.dls.step(
+                    &self.weighted,
+                    &self.blocks,
+                    &self.residual,
+                    options.lambda,
+                    &mut self.free,
+                ) {
                     return None;
                 }
                 rank = m.min(n);
             }
-            Method::Sdls => self.sdls.step(&self.weighted, &self.svd, &self.residual, options.gamma_max, &mut self.free),
+            Method::Sdls => self.sdls.step(
+                &self.weighted,
+                &self.svd,
+                &self.residual,
+                options.gamma_max,
+                &mut self.free,
+            ),
         }
         let (method, max_step) = (options.method, options.max_step);
         if null_space {
@@ -345,7 +388,11 @@ impl IkSolver {
             return None;
         }
         for j in 0..n {
-            self.step[j] = if self.active[j] { self.free[j] * self.weights[j].multiply } else { self.fixed[j] };
+            self.step[j] = if self.active[j] {
+                self.free[j] * self.weights[j].multiply
+            } else {
+                self.fixed[j]
+            };
         }
         Some(rank)
     }

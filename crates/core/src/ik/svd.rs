@@ -85,7 +85,12 @@ impl ThinSvd {
     ///
     /// # Errors
     /// [`NoConvergence`] when `j` holds non-finite values.
-    pub fn compute(&mut self, j: &DMatrix<f64>, blocks: &[TaskBlock], rank_tolerance: f64) -> Result<(), NoConvergence> {
+    pub fn compute(
+        &mut self,
+        j: &DMatrix<f64>,
+        blocks: &[TaskBlock],
+        rank_tolerance: f64,
+    ) -> Result<(), NoConvergence> {
         let (m, n) = j.shape();
         self.rows = m;
         self.cols = n;
@@ -158,7 +163,11 @@ impl ThinSvd {
     }
 
     /// The m > n path: eigen-decompose JᵀJ = V Σ² Vᵀ, then uᵢ = Jvᵢ/σᵢ.
-    fn compute_from_columns(&mut self, j: &DMatrix<f64>, rank_tolerance: f64) -> Result<(), NoConvergence> {
+    fn compute_from_columns(
+        &mut self,
+        j: &DMatrix<f64>,
+        rank_tolerance: f64,
+    ) -> Result<(), NoConvergence> {
         let (m, n) = j.shape();
         if self.gram.len() < n * n {
             self.gram.resize(n * n, 0.0);
@@ -170,7 +179,11 @@ impl ThinSvd {
         }
         gram_cols(j, &mut self.gram);
         self.eigen.compute(&self.gram, n)?;
-        let largest = self.eigen.values().iter().fold(0.0_f64, |acc, &x| acc.max(x));
+        let largest = self
+            .eigen
+            .values()
+            .iter()
+            .fold(0.0_f64, |acc, &x| acc.max(x));
         let threshold = (rank_tolerance * largest.max(0.0).sqrt()).max(1e-150);
         let data = j.as_slice();
         let mut kept = 0;
@@ -181,7 +194,10 @@ impl ThinSvd {
             }
             self.sigma[kept] = sigma;
             self.v[kept * n..(kept + 1) * n].copy_from_slice(self.eigen.vector(i));
-            let (v, u) = (&self.v[kept * n..(kept + 1) * n], &mut self.u[kept * m..(kept + 1) * m]);
+            let (v, u) = (
+                &self.v[kept * n..(kept + 1) * n],
+                &mut self.u[kept * m..(kept + 1) * m],
+            );
             u.fill(0.0);
             for (c, &vc) in v.iter().enumerate() {
                 if vc == 0.0 {
@@ -231,7 +247,9 @@ mod tests {
 
     fn random(m: usize, n: usize, seed: &mut u64) -> DMatrix<f64> {
         DMatrix::from_fn(m, n, |_, _| {
-            *seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            *seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             ((*seed >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
         })
     }
@@ -242,7 +260,8 @@ mod tests {
         for &(m, n) in &[(3, 7), (12, 20), (9, 4), (15, 63), (1, 1)] {
             let j = random(m, n, &mut seed);
             let mut svd = ThinSvd::default();
-            svd.compute(&j, &[TaskBlock::whole(m, n)], 1e-9).expect("converges");
+            svd.compute(&j, &[TaskBlock::whole(m, n)], 1e-9)
+                .expect("converges");
             assert_eq!(svd.rank(), m.min(n));
             let mut rebuilt = DMatrix::zeros(m, n);
             for i in 0..svd.rank() {
@@ -250,9 +269,19 @@ mod tests {
                 let v = nalgebra::DVector::from_column_slice(svd.v(i));
                 rebuilt += &u * v.transpose() * svd.sigma(i);
             }
-            assert!((&rebuilt - &j).norm() < 1e-9, "{m}x{n}: {}", (&rebuilt - &j).norm());
+            assert!(
+                (&rebuilt - &j).norm() < 1e-9,
+                "{m}x{n}: {}",
+                (&rebuilt - &j).norm()
+            );
             let mut ours: Vec<f64> = (0..svd.rank()).map(|i| svd.sigma(i)).collect();
-            let mut reference: Vec<f64> = j.clone().svd(false, false).singular_values.iter().copied().collect();
+            let mut reference: Vec<f64> = j
+                .clone()
+                .svd(false, false)
+                .singular_values
+                .iter()
+                .copied()
+                .collect();
             ours.sort_by(f64::total_cmp);
             reference.sort_by(f64::total_cmp);
             for (a, b) in ours.iter().zip(&reference) {
@@ -273,7 +302,8 @@ mod tests {
             j[(2, c)] = j[(0, c)] + j[(1, c)];
         }
         let mut svd = ThinSvd::default();
-        svd.compute(&j, &[TaskBlock::whole(3, 4)], 1e-6).expect("converges");
+        svd.compute(&j, &[TaskBlock::whole(3, 4)], 1e-6)
+            .expect("converges");
         assert_eq!(svd.rank(), 2);
     }
 }

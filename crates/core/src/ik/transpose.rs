@@ -6,7 +6,12 @@ use nalgebra::DMatrix;
 
 /// Writes the transpose step for `jacobian` and task error `error` into `step`,
 /// using `scratch` (length m) for JJᵀe.
-pub fn transpose_step(jacobian: &DMatrix<f64>, error: &[f64], scratch: &mut [f64], step: &mut [f64]) {
+pub fn transpose_step(
+    jacobian: &DMatrix<f64>,
+    error: &[f64],
+    scratch: &mut [f64],
+    step: &mut [f64],
+) {
     let m = jacobian.nrows();
     let data = jacobian.as_slice();
     // g = Jᵀ e
@@ -28,7 +33,11 @@ pub fn transpose_step(jacobian: &DMatrix<f64>, error: &[f64], scratch: &mut [f64
     }
     let numerator: f64 = error.iter().zip(scratch.iter()).map(|(x, y)| x * y).sum();
     let denominator: f64 = scratch.iter().map(|x| x * x).sum();
-    let alpha = if denominator > 1e-300 { numerator / denominator } else { 0.0 };
+    let alpha = if denominator > 1e-300 {
+        numerator / denominator
+    } else {
+        0.0
+    };
     for g in step.iter_mut() {
         *g *= alpha;
     }

@@ -211,7 +211,11 @@ pub struct ThesisParams {
     /// Seconds over which, after a reset, the targets blend (smoothstep) from
     /// the rest pose's effector positions into the cycle and the speed rises
     /// from 0, so the figure starts from standing instead of snapping to the
-    /// first targets. 0 starts the cycle at once. Default 0.5.
+    /// first targets; a running mode then starts as a walk and blends into the
+    /// run over the next `start_ramp_s` (running straight from standing asks
+    /// the legs to shorten by up to 30 cm at once, which can drive a knee that
+    /// starts nearly straight into its limit). Live mode changes blend over the
+    /// same time. 0 starts the cycle at once. Default 1.0.
     pub start_ramp_s: f64,
     /// Joints weighted in the wounded modes.
     pub wounded: Vec<WoundedJoint>,
@@ -229,7 +233,7 @@ impl Default for ThesisParams {
             speed_mps: None,
             iterations_per_frame: 4,
             posture_gain: 0.1,
-            start_ramp_s: 0.5,
+            start_ramp_s: 1.0,
             wounded: Vec::new(),
             roles: EffectorRoles::default(),
         }

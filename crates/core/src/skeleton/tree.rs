@@ -125,18 +125,27 @@ impl Skeleton {
     /// missing joint.
     pub fn new(joints: Vec<Joint>, effectors: Vec<Effector>) -> Result<Self, SkeletonError> {
         if joints.is_empty() {
-            return Err(SkeletonError::new("joints", "a skeleton needs at least one joint"));
+            return Err(SkeletonError::new(
+                "joints",
+                "a skeleton needs at least one joint",
+            ));
         }
         if joints.len() > MAX_JOINTS {
             return Err(SkeletonError::new(
                 "joints",
-                format!("{} joints is more than the limit of {MAX_JOINTS}", joints.len()),
+                format!(
+                    "{} joints is more than the limit of {MAX_JOINTS}",
+                    joints.len()
+                ),
             ));
         }
         if effectors.len() > MAX_EFFECTORS {
             return Err(SkeletonError::new(
                 "effectors",
-                format!("{} effectors is more than the limit of {MAX_EFFECTORS}", effectors.len()),
+                format!(
+                    "{} effectors is more than the limit of {MAX_EFFECTORS}",
+                    effectors.len()
+                ),
             ));
         }
         let mut names = std::collections::HashSet::new();
@@ -164,7 +173,10 @@ impl Skeleton {
                 ));
             }
             if effector.name.is_empty() {
-                return Err(SkeletonError::new(format!("effectors[{e}].name"), "must not be empty"));
+                return Err(SkeletonError::new(
+                    format!("effectors[{e}].name"),
+                    "must not be empty",
+                ));
             }
             if !effector_names.insert(effector.name.as_str()) {
                 return Err(SkeletonError::new(
@@ -363,7 +375,12 @@ fn check_joint(i: usize, joint: &Joint) -> Result<(), SkeletonError> {
     if !orthonormal {
         return Err(SkeletonError::new(at("frame"), "must be a rotation matrix"));
     }
-    for (field, value) in [("rest", joint.rest), ("center", joint.center), ("gain", joint.gain), ("size", joint.size)] {
+    for (field, value) in [
+        ("rest", joint.rest),
+        ("center", joint.center),
+        ("gain", joint.gain),
+        ("size", joint.size),
+    ] {
         if !value.is_finite() {
             return Err(SkeletonError::new(at(field), "must be finite"));
         }
@@ -379,14 +396,23 @@ fn check_joint(i: usize, joint: &Joint) -> Result<(), SkeletonError> {
             return Err(SkeletonError::new(at("limits"), "must be finite"));
         }
         if lo > hi {
-            return Err(SkeletonError::new(at("limits"), "minimum must not exceed maximum"));
+            return Err(SkeletonError::new(
+                at("limits"),
+                "minimum must not exceed maximum",
+            ));
         }
         if joint.kind == JointKind::Revolute && hi - lo > 4.0 * std::f64::consts::PI {
-            return Err(SkeletonError::new(at("limits"), "a revolute range wider than two turns is not a limit"));
+            return Err(SkeletonError::new(
+                at("limits"),
+                "a revolute range wider than two turns is not a limit",
+            ));
         }
         for (field, value) in [("rest", joint.rest), ("center", joint.center)] {
             if value < lo || value > hi {
-                return Err(SkeletonError::new(at(field), format!("{value} is outside the limits [{lo}, {hi}]")));
+                return Err(SkeletonError::new(
+                    at(field),
+                    format!("{value} is outside the limits [{lo}, {hi}]"),
+                ));
             }
         }
     }

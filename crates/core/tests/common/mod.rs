@@ -14,7 +14,10 @@ impl Rng {
     }
     /// Uniform in [0, 1).
     pub fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (self.0 >> 11) as f64 / (1u64 << 53) as f64
     }
     /// Uniform in [lo, hi).
@@ -22,7 +25,11 @@ impl Rng {
         lo + (hi - lo) * self.unit()
     }
     pub fn vec3(&mut self, scale: f64) -> DVec3 {
-        DVec3::new(self.range(-scale, scale), self.range(-scale, scale), self.range(-scale, scale))
+        DVec3::new(
+            self.range(-scale, scale),
+            self.range(-scale, scale),
+            self.range(-scale, scale),
+        )
     }
     pub fn unit_vec3(&mut self) -> DVec3 {
         loop {
@@ -54,10 +61,20 @@ pub fn planar_arm(lengths: &[f64]) -> Skeleton {
 
 /// A random tree of `n` joints (mixed revolute / prismatic, random axes, frames
 /// and offsets) with `k` effectors on leaves or random joints, limits ±`limit`.
-pub fn random_tree(rng: &mut Rng, n: usize, k: usize, limit: Option<f64>, orientation: bool) -> Skeleton {
+pub fn random_tree(
+    rng: &mut Rng,
+    n: usize,
+    k: usize,
+    limit: Option<f64>,
+    orientation: bool,
+) -> Skeleton {
     let mut joints = Vec::new();
     for i in 0..n {
-        let parent = if i == 0 { None } else { Some((rng.unit() * i as f64) as usize) };
+        let parent = if i == 0 {
+            None
+        } else {
+            Some((rng.unit() * i as f64) as usize)
+        };
         let axis = rng.unit_vec3();
         let offset = rng.vec3(0.3);
         let mut joint = if rng.unit() < 0.15 && i > 0 {

@@ -25,8 +25,7 @@ pub fn human_params() -> ThesisParams {
     creature().scenario.thesis
 }
 
-/// Knee rest and center angle below which the human's knees start on the wrong
-/// side of the straight-knee singularity (see [`human_bent_knees`]).
+/// Knee rest and center angle of [`human_bent_knees`], radians.
 pub const BENT_KNEE_RAD: f64 = 0.35;
 
 /// The human with its knees' rest and center angles raised to at least
@@ -34,11 +33,8 @@ pub const BENT_KNEE_RAD: f64 = 0.35;
 ///
 /// The foot effector sits 0.1 m ahead of the ankle, so the leg is "effectively
 /// straight" (hip, knee and effector in line) at a knee angle of about 0.2 rad,
-/// exactly the preset's rest angle. From there, any request to shorten the leg
-/// (the running targets ask for 10–30 cm) makes every Jacobian method
-/// straighten the knee into its 0 limit, where it stays. Starting from a knee
-/// bent past that line avoids the trap; this fixture is what the running
-/// figures are measured on until the preset's rest knee is raised.
+/// which is the preset's rest angle: the drivers must work from both sides of
+/// that line, so the figures are checked on this variant too.
 pub fn human_bent_knees() -> Skeleton {
     let skeleton = human();
     let mut joints = skeleton.joints().to_vec();
