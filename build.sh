@@ -20,6 +20,7 @@ need_rust() {
   if command -v rustup >/dev/null 2>&1; then
     rustup component list --installed 2>/dev/null | grep -q '^rustfmt' || rustup component add rustfmt
     rustup component list --installed 2>/dev/null | grep -q '^clippy' || rustup component add clippy
+    rustup target list --installed 2>/dev/null | grep -q '^wasm32-unknown-unknown$' || rustup target add wasm32-unknown-unknown
   fi
 }
 
@@ -29,6 +30,8 @@ cmd_test() {
   cargo fmt --all -- --check
   echo "== cargo clippy (native, all targets, warnings are errors)"
   cargo clippy --workspace --all-targets --quiet -- -D warnings
+  echo "== cargo clippy (wasm32: the crates the browser app will use)"
+  cargo clippy -p gaitlab-core -p gaitlab-motion --target wasm32-unknown-unknown --quiet -- -D warnings
   echo "== cargo test"
   cargo test --workspace
 }

@@ -17,7 +17,7 @@ pub fn fill_jacobian(skeleton: &Skeleton, kin: &Kinematics, jacobian: &mut DMatr
     if jacobian.shape() != (rows, cols) {
         *jacobian = DMatrix::zeros(rows, cols);
     } else {
-        jacobian.fill(0.0);
+        jacobian.as_mut_slice().fill(0.0);
     }
     let joints = skeleton.joints();
     let data = jacobian.as_mut_slice();

@@ -12,6 +12,7 @@ use crate::skeleton::TaskBlock;
 pub struct DlsWorkspace {
     gram: Vec<f64>,
     rhs: Vec<f64>,
+    gathered: Vec<f64>,
 }
 
 /// In-place Cholesky factorisation of the symmetric positive definite column-major
@@ -79,7 +80,6 @@ impl DlsWorkspace {
         if m > n && blocks.len() <= 1 {
             return self.step_from_columns(jacobian, error, lambda2, step);
         }
-        let data = jacobian.as_slice();
         for block in blocks {
             let rows = &block.rows;
             let p = rows.len();
@@ -89,7 +89,7 @@ impl DlsWorkspace {
             if self.rhs.len() < p {
                 self.rhs.resize(p, 0.0);
             }
-            gram_of_block(jacobian, block, &mut self.gram);
+            gram_of_block(jacobian, block, &mut self.gram, &mut self.gathered);
             for i in 0..p {
                 self.gram[i + i * p] += lambda2;
             }
@@ -103,9 +103,18 @@ impl DlsWorkspace {
             }
             cholesky_solve(&self.gram[..p * p], p, rhs);
             // Δθ += J[rows, :]ᵀ y.
+            // Δθ[joints] = Bᵀy with B row-major in `gathered`.
+            let q = block.joints.len();
             for &c in &block.joints {
-                let col = &data[c * m..(c + 1) * m];
-                step[c] = rows.iter().zip(rhs.iter()).map(|(&r, &y)| col[r] * y).sum();
+                step[c] = 0.0;
+            }
+            for (row, &y) in self.gathered[..p * q]
+                .chunks_exact(q.max(1))
+                .zip(rhs.iter())
+            {
+                for (&c, &x) in block.joints.iter().zip(row) {
+                    step[c] += x * y;
+                }
             }
         }
         true

@@ -310,7 +310,9 @@ impl IkSolver {
     fn solve_active(&mut self) -> Option<usize> {
         let (m, n) = self.jacobian.shape();
         self.residual.copy_from_slice(&self.error);
-        {
+        // With every joint active at weight 1 the weighted Jacobian is J itself.
+        let plain = (0..n).all(|j| self.active[j] && self.weights[j].multiply == 1.0);
+        if !plain {
             let source = self.jacobian.as_slice();
             let weighted = self.weighted.as_mut_slice();
             for j in 0..n {
@@ -332,6 +334,11 @@ impl IkSolver {
                 }
             }
         }
+        let matrix = if plain {
+            &self.jacobian
+        } else {
+            &self.weighted
+        };
         let options = &self.options;
         let null_space =
             options.null_space_gain > 0.0 && matches!(options.method, Method::Pinv | Method::Dls);
@@ -339,17 +346,14 @@ impl IkSolver {
         let mut rank = 0;
         if needs_svd {
             self.svd
-                .compute(&self.weighted, &self.blocks, options.rank_tolerance)
+                .compute(matrix, &self.blocks, options.rank_tolerance)
                 .ok()?;
             rank = self.svd.rank();
         }
         match options.method {
-            Method::Transpose => transpose_step(
-                &self.weighted,
-                &self.residual,
-                &mut self.scratch,
-                &mut self.free,
-            ),
+            Method::Transpose => {
+                transpose_step(matrix, &self.residual, &mut self.scratch, &mut self.free)
+            }
             Method::Pinv => pinv_step(&self.svd, &self.residual, &mut self.free),
             Method::Dls if null_space => {
                 let lambda2 = options.lambda * options.lambda;
@@ -359,7 +363,7 @@ impl IkSolver {
             }
             Method::Dls => {
                 if !self.dls.step(
-                    &self.weighted,
+                    matrix,
                     &self.blocks,
                     &self.residual,
                     options.lambda,
@@ -370,7 +374,7 @@ impl IkSolver {
                 rank = m.min(n);
             }
             Method::Sdls => self.sdls.step(
-                &self.weighted,
+                matrix,
                 &self.svd,
                 &self.residual,
                 options.gamma_max,

@@ -18,6 +18,8 @@ pub struct ThinSvd {
     gram: Vec<f64>,
     eigen: SymmetricEigen,
     sigma: Vec<f64>,
+    /// Scratch for a block's gathered submatrix.
+    gathered: Vec<f64>,
     /// Block of each kept singular triplet.
     block_of: Vec<usize>,
     /// Left singular vectors, `rows × rank`, column-major.
@@ -42,37 +44,38 @@ pub(crate) fn gram_cols(j: &DMatrix<f64>, gram: &mut [f64]) {
     }
 }
 
-fn mirror_lower(gram: &mut [f64], m: usize) {
-    for a in 0..m {
-        for b in a + 1..m {
-            gram[a + b * m] = gram[b + a * m];
-        }
-    }
-}
-
-/// Writes the Gram matrix `J[rows, joints] J[rows, joints]ᵀ` (p×p, p = rows
-/// count) of one block into `gram`.
-pub(crate) fn gram_of_block(j: &DMatrix<f64>, block: &TaskBlock, gram: &mut [f64]) {
+/// Gathers the block's submatrix `B = J[rows, joints]` (p×q) into `gathered`,
+/// row-major (row a of B is `gathered[a*q..(a+1)*q]`), and writes its Gram
+/// matrix `BBᵀ` (p×p) into `gram` as dot products of those contiguous rows.
+pub(crate) fn gram_of_block(
+    j: &DMatrix<f64>,
+    block: &TaskBlock,
+    gram: &mut [f64],
+    gathered: &mut Vec<f64>,
+) {
     let m = j.nrows();
-    let rows = &block.rows[..];
-    let p = rows.len();
-    let gram = &mut gram[..p * p];
-    gram.fill(0.0);
+    let p = block.rows.len();
+    let q = block.joints.len();
+    if gathered.len() < p * q {
+        gathered.resize(p * q, 0.0);
+    }
     let data = j.as_slice();
-    for &c in &block.joints {
-        let col = &data[c * m..(c + 1) * m];
-        for (a, &ra) in rows.iter().enumerate() {
-            let ca = col[ra];
-            if ca == 0.0 {
-                continue;
-            }
-            let target = &mut gram[a * p..(a + 1) * p];
-            for (b, &rb) in rows.iter().enumerate().skip(a) {
-                target[b] += ca * col[rb];
-            }
+    for (a, &r) in block.rows.iter().enumerate() {
+        let out = &mut gathered[a * q..(a + 1) * q];
+        for (o, &c) in out.iter_mut().zip(&block.joints) {
+            *o = data[c * m + r];
         }
     }
-    mirror_lower(gram, p);
+    let gram = &mut gram[..p * p];
+    for a in 0..p {
+        let row_a = &gathered[a * q..(a + 1) * q];
+        for b in a..p {
+            let row_b = &gathered[b * q..(b + 1) * q];
+            let dot: f64 = row_a.iter().zip(row_b).map(|(x, y)| x * y).sum();
+            gram[a * p + b] = dot;
+            gram[b * p + a] = dot;
+        }
+    }
 }
 
 impl ThinSvd {
@@ -116,7 +119,7 @@ impl ThinSvd {
             if self.gram.len() < p * p {
                 self.gram.resize(p * p, 0.0);
             }
-            gram_of_block(j, block, &mut self.gram);
+            gram_of_block(j, block, &mut self.gram, &mut self.gathered);
             self.eigen.compute(&self.gram, p)?;
             for i in 0..p {
                 let lambda = self.eigen.values()[i].max(0.0);
