@@ -22,7 +22,7 @@ fn bad_axis_names_the_zero_axis() {
 fn bad_nan_names_the_token_and_its_line() {
     assert_eq!(
         error_of(include_str!("fixtures/bad-nan.json")),
-        "skeleton.joints[2].rest: expected value at line 10 column 152"
+        "skeleton.joints[2].rest: every number must be finite: NaN and Infinity are not JSON numbers (expected value at line 10 column 152)"
     );
 }
 

@@ -61,6 +61,8 @@ pub struct IkStatus {
     pub clamped_joints: usize,
     /// Numerical rank of the (weighted) Jacobian; 0 for the transpose method.
     pub rank: usize,
+    /// Linear solves this iteration: 1, plus one per clamp-and-re-solve pass.
+    pub solves: usize,
     /// Whether the linear algebra failed (non-finite input); no step was taken.
     pub failed: bool,
 }
@@ -214,6 +216,7 @@ impl IkSolver {
             1
         };
         for _ in 0..passes {
+            status.solves += 1;
             match self.solve_active() {
                 Some(rank) => status.rank = rank,
                 None => {

@@ -71,7 +71,7 @@ impl Preset {
         }
         let mut deserializer = serde_json::Deserializer::from_str(json);
         let mut preset: Preset = serde_path_to_error::deserialize(&mut deserializer)
-            .map_err(|e| PresetError::from_serde(&e))?;
+            .map_err(|e| PresetError::from_serde(&e).with_non_finite_hint(json, e.inner()))?;
         deserializer
             .end()
             .map_err(|e| PresetError::new(ROOT_PATH, e.to_string()))?;

@@ -47,6 +47,30 @@ impl PresetError {
     }
 }
 
+impl PresetError {
+    /// JSON has no NaN or Infinity: when serde stops at such a token, say so
+    /// instead of the bare "expected value".
+    pub(crate) fn with_non_finite_hint(mut self, json: &str, error: &serde_json::Error) -> Self {
+        let (line, column) = (error.line(), error.column());
+        let token = json
+            .lines()
+            .nth(line.saturating_sub(1))
+            .and_then(|text| text.get(column.saturating_sub(1)..))
+            .unwrap_or("")
+            .trim_start_matches(['-', '+']);
+        if ["NaN", "nan", "Infinity", "inf"]
+            .iter()
+            .any(|t| token.starts_with(t))
+        {
+            self.reason = format!(
+                "every number must be finite: NaN and Infinity are not JSON numbers ({})",
+                self.reason
+            );
+        }
+        self
+    }
+}
+
 /// Writes a serde path as `a.b[3].c`, stopping at the first segment serde could
 /// not name (after the last key of an object, for example). Empty for the root.
 fn json_path(path: &serde_path_to_error::Path) -> String {
