@@ -191,7 +191,7 @@ pub fn print(metrics: &Value, as_json: bool) {
                     .map_or("-".to_owned(), |m| format!("{:.2}", m * 1e3))
             };
             println!(
-                "  {:<14} {:>12} {:>12}",
+                "  {:<20} {:>12} {:>12}",
                 effector.get("name").and_then(Value::as_str).unwrap_or("?"),
                 mm("mean_error_m"),
                 mm("max_error_m")

@@ -289,3 +289,67 @@ fn track_follows_recorded_targets() {
         String::from_utf8_lossy(&output.stderr)
     );
 }
+
+#[test]
+fn ten_thousand_joints_and_other_nonsense_exit_2_without_panicking() {
+    let chain = |count: usize| {
+        let joints: Vec<String> = (0..count)
+            .map(|i| {
+                let parent = if i == 0 {
+                    "null".to_owned()
+                } else {
+                    format!("\"j{}\"", i - 1)
+                };
+                format!(
+                    r#"{{"name":"j{i}","parent":{parent},"axis":[1,0,0],"offset":[0,-0.01,0]}}"#
+                )
+            })
+            .collect();
+        format!(
+            r#"{{"format":"gaitlab-preset/1","name":"chain","skeleton":{{"root":{{"position":[0,1,0]}},"joints":[{}],"effectors":[]}},"scenario":{{"engine":"ik"}}}}"#,
+            joints.join(",")
+        )
+    };
+    let cases = [
+        ("ten-thousand.json", chain(10_000), "larger than 256 KiB"),
+        (
+            "too-many.json",
+            chain(513),
+            "skeleton.joints: 513 joints is more than the limit of 512",
+        ),
+        (
+            "gain.json",
+            chain(3).replace(r#""name":"j1","#, r#""name":"j1","gain":5,"#),
+            "skeleton.joints[1].gain",
+        ),
+        (
+            "size.json",
+            chain(3).replace(r#""name":"j2","#, r#""name":"j2","size":-1,"#),
+            "skeleton.joints[2].size",
+        ),
+        (
+            "not-json.json",
+            "🦕 definitely not a preset".to_owned(),
+            "error: $:",
+        ),
+        ("empty.json", String::new(), "error: $:"),
+    ];
+    for (name, text, expected) in cases {
+        let path = scratch(name);
+        std::fs::write(&path, text).expect("write");
+        let output = gaitlab(&["validate", path.to_str().expect("utf-8")]);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(2), "{name}: {stderr}");
+        assert!(stderr.contains(expected), "{name}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{name}: {stderr}");
+    }
+    // A valid small chain passes.
+    let path = scratch("chain.json");
+    std::fs::write(&path, chain(5)).expect("write");
+    let output = gaitlab(&["validate", path.to_str().expect("utf-8")]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+}

@@ -76,11 +76,8 @@ fn malformed_json_names_the_path_reached_and_the_line() {
     );
     assert!(error.reason.contains("column 40"), "{error}");
     assert_rejected("", "$", "EOF while parsing a value at line 1 column 0");
-    assert_rejected(
-        "\"a preset\"",
-        "$",
-        "invalid type: string \"a preset\", expected struct Preset",
-    );
+    assert_rejected("\"a preset\"", "$", "a preset must be a JSON object");
+    assert_rejected("[1, 2]", "$", "a preset must be a JSON object");
     assert_rejected(
         &format!("{} {{}}", human_json()),
         "$",

@@ -69,6 +69,13 @@ impl Preset {
                 ),
             ));
         }
+        let start = json.trim_start().chars().next();
+        if start.is_some_and(|c| c != '{') {
+            return Err(PresetError::new(
+                ROOT_PATH,
+                "a preset must be a JSON object ({ … })",
+            ));
+        }
         let mut deserializer = serde_json::Deserializer::from_str(json);
         let mut preset: Preset = serde_path_to_error::deserialize(&mut deserializer)
             .map_err(|e| PresetError::from_serde(&e).with_non_finite_hint(json, e.inner()))?;
