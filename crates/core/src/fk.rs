@@ -28,7 +28,7 @@ pub struct Kinematics {
 /// Rotation by `angle` radians about the unit vector `axis` (Rodrigues), one `sin_cos`.
 #[must_use]
 pub fn axis_angle(axis: DVec3, angle: f64) -> DMat3 {
-    let (s, c) = angle.sin_cos();
+    let (s, c) = crate::trig::sin_cos(angle);
     let t = 1.0 - c;
     let (x, y, z) = (axis.x, axis.y, axis.z);
     DMat3::from_cols(
@@ -41,7 +41,7 @@ pub fn axis_angle(axis: DVec3, angle: f64) -> DMat3 {
 /// `frame · R(axis, angle)`, with the cheap column rotations when the axis is a
 /// (signed) coordinate axis of the joint frame.
 fn rotate_about(frame: DMat3, kind: AxisKind, axis: DVec3, angle: f64) -> DMat3 {
-    let (s, c) = angle.sin_cos();
+    let (s, c) = crate::trig::sin_cos(angle);
     let (f0, f1, f2) = (frame.x_axis, frame.y_axis, frame.z_axis);
     match kind {
         AxisKind::X(sign) => {
@@ -96,9 +96,14 @@ impl Kinematics {
         {
             *self = Self::new(skeleton);
         }
-        for (j, joint) in skeleton.joints().iter().enumerate() {
+        let joints = skeleton.joints();
+        let rotations = &mut self.joint_rotation[..n];
+        let positions = &mut self.joint_position[..n];
+        let axes = &mut self.joint_axis[..n];
+        let anchors = &mut self.joint_anchor[..n];
+        for (j, (joint, &value)) in joints.iter().zip(values).enumerate() {
             let (parent_rotation, parent_position) = match joint.parent {
-                Some(p) => (self.joint_rotation[p], self.joint_position[p]),
+                Some(p) => (rotations[p], positions[p]),
                 None => (root.rotation, root.position),
             };
             let anchor = parent_position + parent_rotation * joint.offset;
@@ -108,16 +113,20 @@ impl Kinematics {
             } else {
                 parent_rotation * joint.frame
             };
-            let axis = frame * joint.axis;
-            let value = values[j];
+            let axis = match shape.axis {
+                AxisKind::X(sign) => frame.x_axis * sign,
+                AxisKind::Y(sign) => frame.y_axis * sign,
+                AxisKind::Z(sign) => frame.z_axis * sign,
+                AxisKind::General => frame * joint.axis,
+            };
             let (rotation, position) = match joint.kind {
                 JointKind::Revolute => (rotate_about(frame, shape.axis, joint.axis, value), anchor),
                 JointKind::Prismatic => (frame, anchor + axis * value),
             };
-            self.joint_anchor[j] = anchor;
-            self.joint_axis[j] = axis;
-            self.joint_rotation[j] = rotation;
-            self.joint_position[j] = position;
+            anchors[j] = anchor;
+            axes[j] = axis;
+            rotations[j] = rotation;
+            positions[j] = position;
         }
         for (e, effector) in skeleton.effectors().iter().enumerate() {
             let rotation = self.joint_rotation[effector.joint];

@@ -20,6 +20,7 @@ pub mod jacobian;
 pub mod pose;
 pub mod preset;
 pub mod skeleton;
+pub mod trig;
 
 pub use fk::Kinematics;
 pub use pose::{Pose, RootTransform};

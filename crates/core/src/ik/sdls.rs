@@ -8,6 +8,7 @@
 use nalgebra::DMatrix;
 
 use super::svd::ThinSvd;
+use crate::skeleton::TaskBlock;
 
 /// Scales `values` so that its largest magnitude is at most `limit`.
 pub fn clamp_max_abs(values: &mut [f64], limit: f64) {
@@ -20,11 +21,49 @@ pub fn clamp_max_abs(values: &mut [f64], limit: f64) {
     }
 }
 
-/// Workspace for SDLS: per-joint ρⱼ and one direction's φᵢ.
+/// One singular direction's contribution φᵢ.
+struct Direction<'a> {
+    v: &'a [f64],
+    sigma: f64,
+    alpha: f64,
+    n_i: f64,
+    gamma_max: f64,
+}
+
+impl Direction<'_> {
+    /// Adds φᵢ = ClampMaxAbs(σᵢ⁻¹αᵢvᵢ, γᵢ) to `step`, visiting only `joints`
+    /// (vᵢ is zero elsewhere).
+    fn add_to(&self, joints: impl Iterator<Item = usize> + Clone, rho: &[f64], step: &mut [f64]) {
+        // One pass for Mᵢσᵢ = Σⱼ |vⱼᵢ| ρⱼ and max |vⱼᵢ|.
+        let mut m_sigma = 0.0;
+        let mut v_max: f64 = 0.0;
+        for j in joints.clone() {
+            let x = self.v[j].abs();
+            m_sigma += x * rho[j];
+            v_max = v_max.max(x);
+        }
+        let m_i = m_sigma / self.sigma;
+        let gamma = if m_i > 0.0 {
+            (self.n_i / m_i).min(1.0) * self.gamma_max
+        } else {
+            self.gamma_max
+        };
+        // ClampMaxAbs of a scaled vector is one scale factor.
+        let mut scale = self.alpha / self.sigma;
+        let largest = scale.abs() * v_max;
+        if largest > gamma {
+            scale *= gamma / largest;
+        }
+        for j in joints {
+            step[j] += scale * self.v[j];
+        }
+    }
+}
+
+/// Workspace for SDLS: per-joint ρⱼ.
 #[derive(Clone, Debug, Default)]
 pub struct SdlsWorkspace {
     rho: Vec<f64>,
-    phi: Vec<f64>,
 }
 
 impl SdlsWorkspace {
@@ -35,6 +74,7 @@ impl SdlsWorkspace {
         &mut self,
         jacobian: &DMatrix<f64>,
         svd: &ThinSvd,
+        blocks: &[TaskBlock],
         error: &[f64],
         gamma_max: f64,
         step: &mut [f64],
@@ -42,7 +82,6 @@ impl SdlsWorkspace {
         let (m, n) = jacobian.shape();
         let data = jacobian.as_slice();
         self.rho.resize(n, 0.0);
-        self.phi.resize(n, 0.0);
         // ρⱼ = Σℓ ‖∂sℓ/∂θⱼ‖ over the 3-row blocks of column j.
         for (c, rho) in self.rho.iter_mut().enumerate() {
             let col = &data[c * m..(c + 1) * m];
@@ -61,24 +100,16 @@ impl SdlsWorkspace {
                 .chunks_exact(3)
                 .map(|b| (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]).sqrt())
                 .sum();
-            let m_i: f64 = v
-                .iter()
-                .zip(&self.rho)
-                .map(|(x, r)| x.abs() * r)
-                .sum::<f64>()
-                / sigma;
-            let gamma = if m_i > 0.0 {
-                (n_i / m_i).min(1.0) * gamma_max
-            } else {
-                gamma_max
+            let direction = Direction {
+                v,
+                sigma,
+                alpha,
+                n_i,
+                gamma_max,
             };
-            let scale = alpha / sigma;
-            for (p, x) in self.phi.iter_mut().zip(v) {
-                *p = scale * x;
-            }
-            clamp_max_abs(&mut self.phi, gamma);
-            for (out, p) in step.iter_mut().zip(&self.phi) {
-                *out += p;
+            match svd.support(i, blocks) {
+                Some(joints) => direction.add_to(joints.iter().copied(), &self.rho, step),
+                None => direction.add_to(0..n, &self.rho, step),
             }
         }
         clamp_max_abs(step, gamma_max);

@@ -379,6 +379,7 @@ impl IkSolver {
             Method::Sdls => self.sdls.step(
                 matrix,
                 &self.svd,
+                &self.blocks,
                 &self.residual,
                 options.gamma_max,
                 &mut self.free,

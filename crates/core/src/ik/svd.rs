@@ -20,8 +20,10 @@ pub struct ThinSvd {
     sigma: Vec<f64>,
     /// Scratch for a block's gathered submatrix.
     gathered: Vec<f64>,
-    /// Block of each kept singular triplet.
+    /// Block of each kept singular triplet (when `by_blocks`).
     block_of: Vec<usize>,
+    /// Whether the last decomposition went block by block.
+    by_blocks: bool,
     /// Left singular vectors, `rows × rank`, column-major.
     u: Vec<f64>,
     /// Right singular vectors, `cols × rank`, column-major.
@@ -101,9 +103,11 @@ impl ThinSvd {
         if m == 0 || n == 0 {
             return Ok(());
         }
+        self.by_blocks = false;
         if m > n && blocks.len() <= 1 {
             return self.compute_from_columns(j, rank_tolerance);
         }
+        self.by_blocks = true;
         if self.sigma.len() < m || self.u.len() < m * m || self.v.len() < n * m {
             self.block_of.resize(m, 0);
             self.sigma.resize(m, 0.0);
@@ -235,6 +239,16 @@ impl ThinSvd {
     #[must_use]
     pub fn u(&self, i: usize) -> &[f64] {
         &self.u[i * self.rows..(i + 1) * self.rows]
+    }
+
+    /// The joints (columns) where vᵢ can be nonzero, given the `blocks` passed to
+    /// the last [`ThinSvd::compute`]; `None` means every joint.
+    #[must_use]
+    pub fn support<'b>(&self, i: usize, blocks: &'b [TaskBlock]) -> Option<&'b [usize]> {
+        if !self.by_blocks {
+            return None;
+        }
+        blocks.get(*self.block_of.get(i)?).map(|b| &b.joints[..])
     }
 
     /// Right singular vector vᵢ (length n).
