@@ -33,7 +33,16 @@ cmd_test() {
   echo "== cargo clippy (wasm32: the crates the browser app will use)"
   cargo clippy -p gaitlab-core -p gaitlab-motion --target wasm32-unknown-unknown --quiet -- -D warnings
   echo "== cargo test"
-  cargo test --workspace
+  local log
+  log=$(mktemp)
+  set +e
+  cargo test --workspace 2>&1 | tee "$log"
+  local status=${PIPESTATUS[0]}
+  set -e
+  # One closing line for the whole run: the sum over every test binary.
+  awk '/^test result:/ { passed += $4; failed += $6 } END { printf "tests: %d passed, %d failed\n", passed, failed }' "$log"
+  rm -f "$log"
+  return "$status"
 }
 
 cmd_bench() {
