@@ -19,6 +19,7 @@ use crate::script::{Limb, ScriptSample, ThesisScript};
 
 /// Most IK iterations per frame a parameter set may ask for (the preset limit).
 pub use gaitlab_core::preset::MAX_ITERATIONS_PER_FRAME;
+use gaitlab_core::preset::check_thesis_values;
 
 /// Animates a skeleton with the thesis target script and Jacobian IK.
 ///
@@ -372,82 +373,15 @@ fn start_blend(t: f64, ramp_s: f64) -> f64 {
     }
 }
 
-/// Checks that every number in `params` is usable by the driver: finite
-/// positions, heights and bounces; non-negative frequencies; a positive
-/// slowdown; a finite, non-negative speed and start ramp; a posture gain in
-/// [0, 1]; 1 to [`MAX_ITERATIONS_PER_FRAME`] iterations per frame; finite
-/// wounded weights. (Preset validation is stricter, e.g. slowdown ≥ 1, so
-/// that a UI may still go below it.)
+/// Checks every value of `params` against the same ranges a preset must meet
+/// ([`check_thesis_values`]: cycle shapes, slowdown, speed, iterations per frame,
+/// posture gain, start ramp, wounded weights), so that a live edit and a shared
+/// link accept exactly the same parameters.
 ///
 /// # Errors
-/// The first offending field, as a path (`run.front_foot`, `wounded[0].add`).
+/// A [`DriverError`] whose path is relative to the parameters (`walk.frequency_hz`).
 pub fn validate_params(params: &ThesisParams) -> Result<(), DriverError> {
-    for (name, shape) in [("walk", &params.walk), ("run", &params.run)] {
-        let path = |field: &str| format!("{name}.{field}");
-        if !(shape.frequency_hz.is_finite() && shape.frequency_hz >= 0.0) {
-            return Err(DriverError::new(
-                path("frequency_hz"),
-                "must be a finite number ≥ 0",
-            ));
-        }
-        for (field, value) in [
-            ("front_foot", shape.front_foot),
-            ("back_foot", shape.back_foot),
-            ("front_hand", shape.front_hand),
-            ("back_hand", shape.back_hand),
-        ] {
-            if !value.is_finite() {
-                return Err(DriverError::new(path(field), "must be finite"));
-            }
-        }
-        for (field, value) in [
-            ("step_height_m", shape.step_height_m),
-            ("root_height_m", shape.root_height_m),
-            ("bounce_m", shape.bounce_m),
-        ] {
-            if !value.is_finite() {
-                return Err(DriverError::new(path(field), "must be finite"));
-            }
-        }
-    }
-    if !(params.slowdown.is_finite() && params.slowdown > 0.0) {
-        return Err(DriverError::new("slowdown", "must be a finite number > 0"));
-    }
-    if !(0.0..=1.0).contains(&params.posture_gain) {
-        return Err(DriverError::new("posture_gain", "must be between 0 and 1"));
-    }
-    if !(params.start_ramp_s.is_finite() && params.start_ramp_s >= 0.0) {
-        return Err(DriverError::new(
-            "start_ramp_s",
-            "must be a finite number ≥ 0",
-        ));
-    }
-    if let Some(speed) = params.speed_mps
-        && !(speed.is_finite() && speed >= 0.0)
-    {
-        return Err(DriverError::new("speed_mps", "must be a finite number ≥ 0"));
-    }
-    if !(1..=MAX_ITERATIONS_PER_FRAME).contains(&params.iterations_per_frame) {
-        return Err(DriverError::new(
-            "iterations_per_frame",
-            format!("must be between 1 and {MAX_ITERATIONS_PER_FRAME}"),
-        ));
-    }
-    for (i, wounded) in params.wounded.iter().enumerate() {
-        if !wounded.multiply.is_finite() {
-            return Err(DriverError::new(
-                format!("wounded[{i}].multiply"),
-                "must be finite",
-            ));
-        }
-        if !wounded.add.is_finite() {
-            return Err(DriverError::new(
-                format!("wounded[{i}].add"),
-                "must be finite",
-            ));
-        }
-    }
-    Ok(())
+    check_thesis_values("", params).map_err(|e| DriverError::new(e.path, e.reason))
 }
 
 type Resolved = ([usize; 4], Vec<(usize, JointWeight)>);

@@ -613,40 +613,7 @@ fn check_thesis(
     names: &HashMap<&str, NamePlace>,
     thesis: &ThesisParams,
 ) -> Result<(), PresetError> {
-    check_cycle("scenario.thesis.walk", &thesis.walk)?;
-    check_cycle("scenario.thesis.run", &thesis.run)?;
-    if !(MIN_SLOWDOWN..=MAX_SLOWDOWN).contains(&thesis.slowdown) {
-        return Err(PresetError::new(
-            "scenario.thesis.slowdown",
-            format!("must be between {MIN_SLOWDOWN} and {MAX_SLOWDOWN}"),
-        ));
-    }
-    if let Some(speed) = thesis.speed_mps
-        && !(0.0..=MAX_SPEED_MPS).contains(&speed)
-    {
-        return Err(PresetError::new(
-            "scenario.thesis.speed_mps",
-            format!("must be between 0 and {MAX_SPEED_MPS} m/s"),
-        ));
-    }
-    if !(1..=MAX_ITERATIONS_PER_FRAME).contains(&thesis.iterations_per_frame) {
-        return Err(PresetError::new(
-            "scenario.thesis.iterations_per_frame",
-            format!("must be between 1 and {MAX_ITERATIONS_PER_FRAME}"),
-        ));
-    }
-    if !(0.0..=1.0).contains(&thesis.posture_gain) {
-        return Err(PresetError::new(
-            "scenario.thesis.posture_gain",
-            "must be between 0 and 1",
-        ));
-    }
-    if !(0.0..=MAX_START_RAMP_S).contains(&thesis.start_ramp_s) {
-        return Err(PresetError::new(
-            "scenario.thesis.start_ramp_s",
-            format!("must be between 0 and {MAX_START_RAMP_S} seconds"),
-        ));
-    }
+    check_thesis_values("scenario.thesis", thesis)?;
     let mut wounded_seen: HashMap<&str, usize> = HashMap::new();
     for (i, wounded) in thesis.wounded.iter().enumerate() {
         let at = |field: &str| format!("scenario.thesis.wounded[{i}].{field}");
@@ -665,6 +632,61 @@ fn check_thesis(
                 ),
             ));
         }
+    }
+    check_thesis_roles(skeleton, thesis)
+}
+
+/// The ranges of every thesis parameter that does not depend on the skeleton
+/// (cycle shapes, slowdown, speed, iterations, posture gain, start ramp and the
+/// wounded weights), shared by presets and by live edits of a running driver.
+/// Paths start with `prefix` (e.g. `scenario.thesis`; empty for none).
+///
+/// # Errors
+/// A [`PresetError`] naming the first value out of range.
+pub fn check_thesis_values(prefix: &str, thesis: &ThesisParams) -> Result<(), PresetError> {
+    let at = |field: &str| {
+        if prefix.is_empty() {
+            field.to_owned()
+        } else {
+            format!("{prefix}.{field}")
+        }
+    };
+    check_cycle(&at("walk"), &thesis.walk)?;
+    check_cycle(&at("run"), &thesis.run)?;
+    if !(MIN_SLOWDOWN..=MAX_SLOWDOWN).contains(&thesis.slowdown) {
+        return Err(PresetError::new(
+            at("slowdown"),
+            format!("must be between {MIN_SLOWDOWN} and {MAX_SLOWDOWN}"),
+        ));
+    }
+    if let Some(speed) = thesis.speed_mps
+        && !(0.0..=MAX_SPEED_MPS).contains(&speed)
+    {
+        return Err(PresetError::new(
+            at("speed_mps"),
+            format!("must be between 0 and {MAX_SPEED_MPS} m/s"),
+        ));
+    }
+    if !(1..=MAX_ITERATIONS_PER_FRAME).contains(&thesis.iterations_per_frame) {
+        return Err(PresetError::new(
+            at("iterations_per_frame"),
+            format!("must be between 1 and {MAX_ITERATIONS_PER_FRAME}"),
+        ));
+    }
+    if !(0.0..=1.0).contains(&thesis.posture_gain) {
+        return Err(PresetError::new(
+            at("posture_gain"),
+            "must be between 0 and 1",
+        ));
+    }
+    if !(0.0..=MAX_START_RAMP_S).contains(&thesis.start_ramp_s) {
+        return Err(PresetError::new(
+            at("start_ramp_s"),
+            format!("must be between 0 and {MAX_START_RAMP_S} seconds"),
+        ));
+    }
+    for (i, wounded) in thesis.wounded.iter().enumerate() {
+        let at = |field: &str| at(&format!("wounded[{i}].{field}"));
         if !(0.0..=MAX_WOUNDED_MULTIPLY).contains(&wounded.multiply) {
             return Err(PresetError::new(
                 at("multiply"),
@@ -678,6 +700,11 @@ fn check_thesis(
             ));
         }
     }
+    Ok(())
+}
+
+/// The four thesis roles name distinct effectors (see [`check_thesis`]).
+fn check_thesis_roles(skeleton: &SkeletonSpec, thesis: &ThesisParams) -> Result<(), PresetError> {
     let (_, effector_count) = totals(skeleton);
     if effector_count >= THESIS_ROLE_COUNT {
         let effector_names: Vec<&str> = skeleton
