@@ -3,6 +3,8 @@
 
 use std::time::Instant;
 
+use clap::Args;
+
 use gaitlab_core::driver::Driver;
 use gaitlab_core::export::{BvhWriter, PoseCsvColumns, PoseCsvWriter};
 use serde_json::{Value, json};
@@ -10,13 +12,18 @@ use serde_json::{Value, json};
 use crate::fail::Failure;
 use crate::sink::FileSink;
 
-/// Where frames go besides the metrics.
-#[derive(Default)]
-pub struct Outputs<'a> {
-    /// BVH file path.
-    pub bvh: Option<&'a str>,
-    /// Pose CSV file path.
-    pub csv: Option<&'a str>,
+/// Output options shared by `run` and `track`.
+#[derive(Args, Debug, Default)]
+pub struct Outputs {
+    /// Write the motion as BVH to this file.
+    #[arg(long)]
+    pub bvh: Option<String>,
+    /// Write per-frame joint values, effector positions and targets as CSV to this file.
+    #[arg(long)]
+    pub csv: Option<String>,
+    /// Print one JSON object of metrics.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// Figures measured by [`drive`].
@@ -37,11 +44,11 @@ pub fn drive(
     driver: &mut dyn Driver,
     frames: usize,
     fps: f64,
-    outputs: &Outputs<'_>,
+    outputs: &Outputs,
 ) -> Result<Measured, Failure> {
     let dt = 1.0 / fps;
     let skeleton = driver.skeleton().clone();
-    let mut bvh = match outputs.bvh {
+    let mut bvh = match outputs.bvh.as_deref() {
         Some(path) => {
             let mut sink = FileSink::create(path)?;
             let mut writer = BvhWriter::new(&skeleton, fps).map_err(Failure::input)?;
@@ -57,7 +64,7 @@ pub fn drive(
         effector_targets: driver.targets().is_some(),
     };
     let csv_writer = PoseCsvWriter::new(&skeleton, columns);
-    let mut csv = match outputs.csv {
+    let mut csv = match outputs.csv.as_deref() {
         Some(path) => {
             let mut sink = FileSink::create(path)?;
             csv_writer

@@ -34,15 +34,9 @@ pub struct RunArgs {
     /// Frames per second (default: the preset's).
     #[arg(long)]
     pub fps: Option<u32>,
-    /// Write the motion as BVH to this file.
-    #[arg(long)]
-    pub bvh: Option<String>,
-    /// Write per-frame joint values, effector positions and targets as CSV to this file.
-    #[arg(long)]
-    pub csv: Option<String>,
-    /// Print one JSON object of metrics.
-    #[arg(long)]
-    pub json: bool,
+    /// BVH, CSV and JSON output.
+    #[command(flatten)]
+    pub outputs: Outputs,
 }
 
 /// Parses `--method`.
@@ -108,11 +102,7 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
         options,
     )
     .map_err(|e| Failure::input(format!("scenario.thesis.{e}")))?;
-    let outputs = Outputs {
-        bvh: args.bvh.as_deref(),
-        csv: args.csv.as_deref(),
-    };
-    let measured = report::drive(&mut driver, frames, fps, &outputs)?;
+    let measured = report::drive(&mut driver, frames, fps, &args.outputs)?;
     let mut metrics = report::ik_json(
         &creature.name,
         scenario.engine.name(),
@@ -124,6 +114,6 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
     metrics["fps"] = fps.into();
     metrics["speed_mps"] = driver.script().speed_mps().into();
     metrics["distance_m"] = driver.distance_m().into();
-    report::print(&metrics, args.json);
+    report::print(&metrics, args.outputs.json);
     Ok(())
 }

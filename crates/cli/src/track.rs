@@ -29,15 +29,9 @@ pub struct TrackArgs {
     /// IK iterations per frame (default: the preset's thesis setting).
     #[arg(long)]
     pub iterations: Option<usize>,
-    /// Write the motion as BVH to this file.
-    #[arg(long)]
-    pub bvh: Option<String>,
-    /// Write per-frame joint values, effector positions and targets as CSV to this file.
-    #[arg(long)]
-    pub csv: Option<String>,
-    /// Print one JSON object of metrics.
-    #[arg(long)]
-    pub json: bool,
+    /// BVH, CSV and JSON output.
+    #[command(flatten)]
+    pub outputs: Outputs,
 }
 
 /// `gaitlab track`.
@@ -65,14 +59,10 @@ pub fn track(args: &TrackArgs) -> Result<(), Failure> {
     };
     let mut driver = TrackDriver::new(creature.skeleton.clone(), track, options)
         .map_err(|e| Failure::input(format!("--{e}")))?;
-    let outputs = Outputs {
-        bvh: args.bvh.as_deref(),
-        csv: args.csv.as_deref(),
-    };
-    let measured = report::drive(&mut driver, frames, fps, &outputs)?;
+    let measured = report::drive(&mut driver, frames, fps, &args.outputs)?;
     let mut metrics = report::ik_json(&creature.name, "track", method.name(), &driver, &measured);
     metrics["targets_file"] = args.targets.clone().into();
     metrics["fps"] = fps.into();
-    report::print(&metrics, args.json);
+    report::print(&metrics, args.outputs.json);
     Ok(())
 }
