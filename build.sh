@@ -1,11 +1,30 @@
 #!/usr/bin/env bash
 # gaitlab build entry point.
-#   ./build.sh test     formatting, lints and every native test (what CI runs)
-#   ./build.sh bench    the performance figures (`gaitlab bench`)
-#   ./build.sh serve    build and serve the browser app (arrives with the app crate)
-#   ./build.sh cli ...  run the gaitlab CLI in release mode with the given arguments
+#   ./build.sh [build] [--opt]  release wasm build of the browser app, assembled in dist/
+#                               (--opt: also run wasm-opt from npm's binaryen; slow, 4-8 min)
+#   ./build.sh serve [PORT]     build, then serve dist/ on http://127.0.0.1:PORT/ (default 8080)
+#                               in the foreground; Ctrl-C stops it
+#   ./build.sh test [--native]  formatting, lints (native and wasm32), every native test, the wasm
+#                               build and the browser tests (what CI runs); --native skips the
+#                               last two
+#   ./build.sh bench            the performance figures (`gaitlab bench`)
+#   ./build.sh cli ...          run the gaitlab CLI in release mode with the given arguments
+# Missing tools are installed on the way: Rust (rustup) with rustfmt, clippy and the wasm32 target,
+# wasm-bindgen-cli at the version in Cargo.lock, and for the browser tests Debian's chromium and
+# the npm packages pinned in tests/e2e/package-lock.json.
 set -euo pipefail
 cd "$(dirname "$0")"
+
+WASM_TARGET=wasm32-unknown-unknown
+WASM_PROFILE=wasm-release
+TARGET_DIR=${CARGO_TARGET_DIR:-target}
+E2E_DIR=tests/e2e
+
+die() { echo "build.sh: $*" >&2; exit 1; }
+
+as_root() {
+  if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi
+}
 
 need_rust() {
   if ! command -v cargo >/dev/null 2>&1; then
@@ -20,28 +39,196 @@ need_rust() {
   if command -v rustup >/dev/null 2>&1; then
     rustup component list --installed 2>/dev/null | grep -q '^rustfmt' || rustup component add rustfmt
     rustup component list --installed 2>/dev/null | grep -q '^clippy' || rustup component add clippy
-    rustup target list --installed 2>/dev/null | grep -q '^wasm32-unknown-unknown$' || rustup target add wasm32-unknown-unknown
+    rustup target list --installed 2>/dev/null | grep -q "^$WASM_TARGET\$" || rustup target add "$WASM_TARGET"
   fi
 }
 
+# The version of a package in Cargo.lock (the first entry of that name).
+lock_version() {
+  awk -v want="name = \"$1\"" '
+    $0 == want { getline; if ($1 == "version") { gsub(/"/, "", $3); print $3; exit } }' Cargo.lock
+}
+
+# wasm-bindgen's CLI must match the wasm-bindgen crate in Cargo.lock exactly.
+need_wasm_bindgen() {
+  local want=$1 have
+  # Another shell may be installing it right now: let it finish rather than build it twice.
+  while pgrep -f 'cargo install wasm-bindgen-cli' >/dev/null 2>&1; do
+    echo "build.sh: waiting for a running 'cargo install wasm-bindgen-cli'" >&2
+    sleep 10
+  done
+  have=$(wasm-bindgen --version 2>/dev/null | awk '{ print $2 }' || true)
+  if [ "$have" != "$want" ]; then
+    echo "build.sh: installing wasm-bindgen-cli $want (found: ${have:-none}; takes a few minutes)" >&2
+    # Without --locked: its lockfile pins a crate version this registry lacks (TOOLCHAIN.md).
+    cargo install wasm-bindgen-cli --version "$want"
+    have=$(wasm-bindgen --version 2>/dev/null | awk '{ print $2 }' || true)
+    [ "$have" = "$want" ] || die "wasm-bindgen is $have after installing $want (is ~/.cargo/bin first in PATH?)"
+  fi
+}
+
+need_node() {
+  if ! command -v node >/dev/null 2>&1; then
+    echo "build.sh: installing node and npm" >&2
+    as_root apt-get -o DPkg::Lock::Timeout=600 update
+    as_root apt-get -o DPkg::Lock::Timeout=600 install -y nodejs npm
+  fi
+  local major
+  major=$(node -p 'process.versions.node.split(".")[0]')
+  [ "$major" -ge 20 ] || die "node $(node --version) is too old: the browser tests need node >= 20"
+}
+
+need_chromium() {
+  if [ ! -x /usr/bin/chromium ]; then
+    echo "build.sh: installing chromium (Debian package)" >&2
+    as_root apt-get -o DPkg::Lock::Timeout=600 update
+    as_root apt-get -o DPkg::Lock::Timeout=600 install -y chromium
+  fi
+}
+
+# playwright-core and pngjs exactly as tests/e2e/package-lock.json pins them (no browser download).
+need_e2e_modules() {
+  need_node
+  if [ ! -f "$E2E_DIR/node_modules/.package-lock.json" ] ||
+     [ "$E2E_DIR/package-lock.json" -nt "$E2E_DIR/node_modules/.package-lock.json" ]; then
+    echo "== npm ci ($E2E_DIR)"
+    (cd "$E2E_DIR" && PLAYWRIGHT_SKIP_BROWSER_DOWNLOAD=1 npm ci --no-audit --no-fund --loglevel=error)
+  fi
+}
+
+# wasm-opt from npm's binaryen (Debian's v108 produces a broken module), installed under target/.
+wasm_opt() {
+  local file=$1 tools="$TARGET_DIR/npm-tools"
+  need_node
+  if [ ! -x "$tools/node_modules/.bin/wasm-opt" ]; then
+    echo "== npm install binaryen (for wasm-opt)"
+    mkdir -p "$tools"
+    npm install --prefix "$tools" --no-save --no-audit --no-fund --loglevel=error binaryen@132.0.0
+  fi
+  echo "== wasm-opt -Os (slow)"
+  # The features rustc enables by default for wasm32-unknown-unknown.
+  "$tools/node_modules/.bin/wasm-opt" -Os \
+    --enable-bulk-memory --enable-mutable-globals --enable-nontrapping-float-to-int \
+    --enable-sign-ext --enable-reference-types --enable-multivalue \
+    "$file" -o "$file.opt"
+  mv "$file.opt" "$file"
+}
+
+report_size() {
+  local file=$1 raw gz
+  raw=$(stat -c %s "$file")
+  gz=$(gzip -9 -c "$file" | wc -c)
+  awk -v f="$file" -v r="$raw" -v g="$gz" \
+    'BEGIN { printf "gaitlab: %s: %d bytes (%.2f MiB) raw, %d bytes (%.2f MiB) gzipped\n", f, r, r / 1048576, g, g / 1048576 }'
+}
+
+cmd_build() {
+  local opt=0 arg
+  for arg in "$@"; do
+    case $arg in
+      --opt) opt=1 ;;
+      *) die "build: unknown option '$arg' (usage: ./build.sh build [--opt])" ;;
+    esac
+  done
+  need_rust
+  echo "== cargo build -p gaitlab-app --target $WASM_TARGET --profile $WASM_PROFILE"
+  cargo build -p gaitlab-app --target "$WASM_TARGET" --profile "$WASM_PROFILE"
+  local wasm="$TARGET_DIR/$WASM_TARGET/$WASM_PROFILE/gaitlab_app.wasm"
+  [ -f "$wasm" ] || die "$wasm was not produced (is gaitlab-app a cdylib?)"
+
+  local version
+  version=$(lock_version wasm-bindgen)
+  [ -n "$version" ] || die "wasm-bindgen is not in Cargo.lock"
+  need_wasm_bindgen "$version"
+
+  echo "== wasm-bindgen $version --target web → dist/"
+  rm -rf dist.tmp
+  mkdir -p dist.tmp
+  wasm-bindgen --target web --no-typescript --out-dir dist.tmp/pkg "$wasm"
+  if [ "$opt" = 1 ]; then wasm_opt dist.tmp/pkg/gaitlab_app_bg.wasm; fi
+  cp index.html dist.tmp/
+  cp -R web dist.tmp/web
+  rm -rf dist
+  mv dist.tmp dist
+  report_size dist/pkg/gaitlab_app_bg.wasm
+}
+
+cmd_serve() {
+  local port=${1:-8080}
+  case $port in
+    '' | *[!0-9]*) die "serve: PORT must be a number (usage: ./build.sh serve [PORT])" ;;
+  esac
+  cmd_build
+  if command -v node >/dev/null 2>&1; then
+    # Prints "gaitlab: http://127.0.0.1:PORT/" once it listens.
+    exec node "$E2E_DIR/static-server.mjs" dist "$port"
+  fi
+  # The real interpreter, not pyenv's shim, so the server owns this PID (TOOLCHAIN.md).
+  local python
+  python=$(python3 -c 'import sys; print(sys.executable)')
+  echo "gaitlab: http://127.0.0.1:$port/"
+  exec "$python" -m http.server "$port" --bind 127.0.0.1 --directory dist
+}
+
 cmd_test() {
+  local browser=1 arg
+  for arg in "$@"; do
+    case $arg in
+      --native) browser=0 ;;
+      *) die "test: unknown option '$arg' (usage: ./build.sh test [--native])" ;;
+    esac
+  done
   need_rust
   echo "== cargo fmt --check"
   cargo fmt --all -- --check
   echo "== cargo clippy (native, all targets, warnings are errors)"
   cargo clippy --workspace --all-targets --quiet -- -D warnings
-  echo "== cargo clippy (wasm32: the crates the browser app will use)"
-  cargo clippy -p gaitlab-core -p gaitlab-motion --target wasm32-unknown-unknown --quiet -- -D warnings
-  echo "== cargo test"
-  local log
+  echo "== cargo clippy (wasm32: the crates the browser app uses, and the app)"
+  cargo clippy -p gaitlab-core -p gaitlab-motion -p gaitlab-app --target "$WASM_TARGET" --quiet -- -D warnings
+
+  local status=0 log e2e_log
   log=$(mktemp)
+  e2e_log=$(mktemp)
+
+  echo "== cargo test"
   set +e
   cargo test --workspace 2>&1 | tee "$log"
-  local status=${PIPESTATUS[0]}
+  [ "${PIPESTATUS[0]}" = 0 ] || status=1
   set -e
-  # One closing line for the whole run: the sum over every test binary.
-  awk '/^test result:/ { passed += $4; failed += $6 } END { printf "tests: %d passed, %d failed\n", passed, failed }' "$log"
-  rm -f "$log"
+
+  local e2e_pass=0 e2e_fail=0
+  if [ "$browser" = 1 ]; then
+    # A separate shell, so that `set -e` still stops the build at its first failure.
+    if bash ./build.sh build; then
+      need_chromium
+      need_e2e_modules
+      echo "== browser tests (node --test, playwright-core, $(/usr/bin/chromium --version 2>/dev/null | head -1))"
+      set +e
+      (cd "$E2E_DIR" && node --test --test-concurrency=1 --test-reporter=tap ./*.test.mjs) 2>&1 | tee "$e2e_log"
+      local e2e_status=${PIPESTATUS[0]}
+      set -e
+      e2e_pass=$(awk '/^# pass / { n = $3 } END { print n + 0 }' "$e2e_log")
+      e2e_fail=$(awk '/^# (fail|cancelled) / { n += $3 } END { print n + 0 }' "$e2e_log")
+      local skipped
+      skipped=$(awk '/^# skipped / { n = $3 } END { print n + 0 }' "$e2e_log")
+      [ "$skipped" = 0 ] || echo "browser tests: $skipped skipped (see '# SKIP' above)"
+      if [ "$e2e_status" != 0 ]; then
+        status=1
+        # A run that died before its summary still counts as a failure.
+        [ "$e2e_fail" != 0 ] || e2e_fail=1
+      fi
+    else
+      echo "build.sh: the wasm build failed; browser tests not run" >&2
+      status=1
+      e2e_fail=1
+    fi
+  fi
+
+  # One closing line for the whole run: every test binary plus the browser tests.
+  awk -v ep="$e2e_pass" -v ef="$e2e_fail" '
+    /^test result:/ { passed += $4; failed += $6 }
+    END { printf "tests: %d passed, %d failed\n", passed + ep, failed + ef }' "$log"
+  rm -f "$log" "$e2e_log"
   return "$status"
 }
 
@@ -55,17 +242,12 @@ cmd_cli() {
   cargo run --release --quiet -p gaitlab-cli -- "$@"
 }
 
-cmd_serve() {
-  echo "The browser app is not built yet (it is the next milestone)." >&2
-  echo "Meanwhile the engine runs from the command line, e.g.:" >&2
-  echo "  ./build.sh cli run human --mode walk --method sdls --seconds 20 --json" >&2
-  exit 1
-}
-
-case "${1:-test}" in
-  test) shift || true; cmd_test "$@" ;;
+case "${1:-build}" in
+  build) shift || true; cmd_build "$@" ;;
+  --opt) cmd_build "$@" ;;
+  test) shift; cmd_test "$@" ;;
   bench) shift; cmd_bench "$@" ;;
   cli) shift; cmd_cli "$@" ;;
   serve) shift; cmd_serve "$@" ;;
-  *) echo "usage: ./build.sh [test|bench|serve|cli ARGS...]" >&2; exit 2 ;;
+  *) echo "usage: ./build.sh [build [--opt] | serve [PORT] | test [--native] | bench | cli ARGS...]" >&2; exit 2 ;;
 esac

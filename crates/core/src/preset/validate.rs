@@ -535,8 +535,12 @@ fn check_scenario(preset: &Preset, names: &HashMap<&str, NamePlace>) -> Result<(
 }
 
 /// IK options: λ in (0, 10], γmax and max_step in (0, π], rank tolerance in
-/// (0, 1), null-space gain in [0, 10], 1..=16 limit passes.
-fn check_ik_options(prefix: &str, ik: &IkOptions) -> Result<(), PresetError> {
+/// (0, 1), null-space gain in [0, 10], 1..=16 limit passes. Shared by presets
+/// and by settings restored from storage.
+///
+/// # Errors
+/// A [`PresetError`] naming the first value out of range under `prefix`.
+pub fn check_ik_options(prefix: &str, ik: &IkOptions) -> Result<(), PresetError> {
     let at = |field: &str| format!("{prefix}.{field}");
     if !(ik.lambda > 0.0 && ik.lambda <= 10.0) {
         return Err(PresetError::new(at("lambda"), "must be in (0, 10] metres"));

@@ -1,0 +1,218 @@
+//! The JS state API (DESIGN.md "Browser"): `state()` as one JSON object and
+//! `command(json)` applying the same changes a person can make in the panels.
+//! Commands are plain data; nothing in them is evaluated.
+
+use gaitlab_core::driver::Driver;
+use gaitlab_core::ik::Method;
+use gaitlab_core::preset::thesis::ThesisMode;
+use serde_json::{Map, Value, json};
+
+use crate::lab::Lab;
+use crate::view::ViewOptions;
+
+/// Longest command text accepted, bytes (a custom preset rides in `preset_json`).
+pub const MAX_COMMAND_BYTES: usize = 300 * 1024;
+
+fn number(key: &str, value: &Value, lo: f64, hi: f64) -> Result<f64, String> {
+    let x = value
+        .as_f64()
+        .ok_or_else(|| format!("{key}: expected a number"))?;
+    if !(lo..=hi).contains(&x) {
+        return Err(format!("{key}: {x} is outside [{lo}, {hi}]"));
+    }
+    Ok(x)
+}
+
+fn flag(key: &str, value: &Value) -> Result<bool, String> {
+    value
+        .as_bool()
+        .ok_or_else(|| format!("{key}: expected true or false"))
+}
+
+fn text<'a>(key: &str, value: &'a Value) -> Result<&'a str, String> {
+    value
+        .as_str()
+        .ok_or_else(|| format!("{key}: expected a string"))
+}
+
+fn apply_views(views: &mut ViewOptions, value: &Value) -> Result<(), String> {
+    let object = value.as_object().ok_or("views: expected an object")?;
+    for (key, value) in object {
+        let path = format!("views.{key}");
+        let slot = match key.as_str() {
+            "world_axes" => &mut views.world_axes,
+            "joint_axes" => &mut views.joint_axes,
+            "targets" => &mut views.targets,
+            "perspective" => &mut views.perspective,
+            "follow" => &mut views.follow,
+            "grid" => &mut views.grid,
+            "shadow" => &mut views.shadow,
+            _ => return Err(format!("{path}: unknown view option")),
+        };
+        *slot = flag(&path, value)?;
+    }
+    Ok(())
+}
+
+impl Lab {
+    /// Applies a JSON command object, e.g. `{"mode":"run","method":"dls"}`.
+    /// Keys: `preset`, `preset_json`, `mode`, `method`, `paused` (or `pause`),
+    /// `reset`, `step`, `lambda`, `gamma_max`, `max_step`, `null_space_gain`,
+    /// `enforce_limits`, `heading_deg`, `plots`, `views` (an object of view flags).
+    /// Keys apply in that order; the first bad key stops the command with an
+    /// error naming it, and what came before it stays applied.
+    ///
+    /// # Errors
+    /// A readable `key: reason` text.
+    pub fn command(&mut self, json: &str) -> Result<(), String> {
+        if json.len() > MAX_COMMAND_BYTES {
+            return Err(format!(
+                "command is larger than {} KiB",
+                MAX_COMMAND_BYTES / 1024
+            ));
+        }
+        let value: Value =
+            serde_json::from_str(json).map_err(|e| format!("command is not JSON: {e}"))?;
+        let object: &Map<String, Value> =
+            value.as_object().ok_or("command must be a JSON object")?;
+        const KNOWN: [&str; 15] = [
+            "preset",
+            "preset_json",
+            "mode",
+            "method",
+            "paused",
+            "pause",
+            "reset",
+            "step",
+            "lambda",
+            "gamma_max",
+            "max_step",
+            "null_space_gain",
+            "enforce_limits",
+            "heading_deg",
+            "plots",
+        ];
+        if let Some(unknown) = object
+            .keys()
+            .find(|k| !KNOWN.contains(&k.as_str()) && k.as_str() != "views")
+        {
+            return Err(format!("{unknown}: unknown command"));
+        }
+        let get = |key: &str| object.get(key);
+        if let Some(v) = get("preset") {
+            self.set_preset(text("preset", v)?)?;
+        }
+        if let Some(v) = get("preset_json") {
+            self.set_custom_preset(text("preset_json", v)?)?;
+        }
+        if let Some(v) = get("mode") {
+            let name = text("mode", v)?;
+            let mode = ThesisMode::parse(name).ok_or_else(|| {
+                format!("mode: unknown mode {name:?} (walk, run, wounded-walk, wounded-run)")
+            })?;
+            self.set_mode(mode);
+        }
+        if let Some(v) = get("method") {
+            let name = text("method", v)?;
+            let method = Method::parse(name).ok_or_else(|| {
+                format!("method: unknown method {name:?} (transpose, pinv, dls, sdls)")
+            })?;
+            self.set_method(method);
+        }
+        for key in ["paused", "pause"] {
+            if let Some(v) = get(key) {
+                self.set_paused(flag(key, v)?);
+            }
+        }
+        if let Some(v) = get("reset")
+            && flag("reset", v)?
+        {
+            self.reset();
+        }
+        if let Some(v) = get("step")
+            && flag("step", v)?
+        {
+            self.single_step();
+        }
+        let mut ik_changed = false;
+        for (key, lo, hi) in [
+            ("lambda", 1e-6, 10.0),
+            ("gamma_max", 1e-3, std::f64::consts::PI),
+            ("max_step", 1e-3, std::f64::consts::PI),
+            ("null_space_gain", 0.0, 10.0),
+        ] {
+            if let Some(v) = get(key) {
+                let x = number(key, v, lo, hi)?;
+                let ik = &mut self.settings.ik;
+                match key {
+                    "lambda" => ik.lambda = x,
+                    "gamma_max" => ik.gamma_max = x,
+                    "max_step" => ik.max_step = x,
+                    _ => ik.null_space_gain = x,
+                }
+                ik_changed = true;
+            }
+        }
+        if let Some(v) = get("enforce_limits") {
+            self.settings.ik.enforce_limits = flag("enforce_limits", v)?;
+            ik_changed = true;
+        }
+        if ik_changed {
+            self.apply_ik_options();
+        }
+        if let Some(v) = get("heading_deg") {
+            self.set_heading_deg(number("heading_deg", v, -180.0, 180.0)?);
+        }
+        if let Some(v) = get("plots") {
+            self.settings.plots = flag("plots", v)?;
+        }
+        if let Some(v) = get("views") {
+            let mut views = self.settings.view.clone();
+            apply_views(&mut views, v)?;
+            self.settings.view = views;
+        }
+        Ok(())
+    }
+
+    /// The state as one JSON object: preset, engine, mode, gait, method(s),
+    /// paused, frame, fps, per-view error metrics, last error.
+    #[must_use]
+    pub fn state_json(&self) -> String {
+        let skeleton = &self.creature.skeleton;
+        let report = self.driver.ik_report();
+        let metrics = self.driver.ik_metrics();
+        let effectors: Vec<Value> = skeleton
+            .effectors()
+            .iter()
+            .enumerate()
+            .map(|(e, effector)| {
+                json!({
+                    "name": effector.name,
+                    "error_m": report.and_then(|r| r.effector_error_m.get(e).copied()),
+                    "mean_error_m": metrics.and_then(|m| m.mean_error_m(e)),
+                    "max_error_m": metrics.and_then(|m| m.max_error_m(e)),
+                })
+            })
+            .collect();
+        json!({
+            "preset": self.creature.name,
+            "custom_preset": self.custom_preset.is_some(),
+            "engine": self.creature.scenario.engine.name(),
+            "mode": self.settings.mode.name(),
+            "gait": Value::Null,
+            "method": self.settings.method.name(),
+            "methods": [self.settings.method.name()],
+            "paused": self.paused,
+            "frame": self.frame,
+            "time_s": self.driver.time(),
+            "fps": self.fps,
+            "sim_us_per_frame": self.sim_us_per_frame,
+            "joints": skeleton.joint_count(),
+            "views": [{ "method": self.settings.method.name(), "effectors": effectors }],
+            "view_options": self.settings.view,
+            "heading_deg": self.settings.heading_deg,
+            "last_error": self.last_error,
+        })
+        .to_string()
+    }
+}

@@ -1,0 +1,381 @@
+//! The lab: one figure animated by a driver (She 2006's thesis motions for the
+//! IK engine), the settings a person changes, the 3-D scene and camera, the plot
+//! history, and the last error to show. Front ends (eframe on the web, egui_kittest
+//! natively) call [`Lab::ui`] once per frame.
+
+use gaitlab_core::driver::Driver;
+use gaitlab_core::ik::Method;
+use gaitlab_core::preset::thesis::ThesisMode;
+use gaitlab_core::preset::{Creature, load_bundled};
+use gaitlab_core::{Kinematics, RootTransform};
+use gaitlab_motion::ThesisDriver;
+use glam::DMat3;
+
+use crate::history::History;
+use crate::render::{Camera, Scene};
+use crate::settings::Settings;
+
+/// Longest real time one UI frame may advance the animation, seconds (a tab
+/// that was hidden does not fast-forward).
+const MAX_FRAME_ADVANCE_S: f64 = 0.1;
+
+/// A monotonic clock in milliseconds, supplied by the platform (the core and the
+/// lab read no clocks themselves).
+pub type Clock = Box<dyn Fn() -> f64>;
+
+/// The whole state of the lab.
+pub struct Lab {
+    /// What a person chose (persisted).
+    pub settings: Settings,
+    pub(crate) creature: Creature,
+    pub(crate) driver: ThesisDriver,
+    pub(crate) camera: Camera,
+    pub(crate) scene: Scene,
+    pub(crate) kinematics: Kinematics,
+    pub(crate) history: History,
+    /// Frames advanced since the last reset.
+    pub(crate) frame: u64,
+    pub(crate) paused: bool,
+    pending_steps: u32,
+    accumulator_s: f64,
+    /// The last problem to show (bad link, bad command, bad preset).
+    pub(crate) last_error: Option<String>,
+    /// Smoothed display frame rate, frames per second.
+    pub(crate) fps: f64,
+    /// Smoothed time spent advancing the driver per animation frame, µs.
+    pub(crate) sim_us_per_frame: f64,
+    clock: Option<Clock>,
+    /// JSON of a preset loaded from a link or file rather than the bundle.
+    pub(crate) custom_preset: Option<String>,
+    /// Set when the state a link shows has changed (the web glue updates the URL).
+    pub(crate) link_changed: bool,
+    /// Set when the preset changed (the web glue pushes a history entry).
+    pub(crate) preset_changed: bool,
+}
+
+fn bundled_or_default(name: &str) -> Result<Creature, String> {
+    match load_bundled(name) {
+        Some(Ok(creature)) => Ok(creature),
+        Some(Err(error)) => Err(format!("bundled preset {name}: {error}")),
+        None => Err(format!("no bundled preset named {name:?}")),
+    }
+}
+
+fn default_creature() -> Creature {
+    match bundled_or_default(gaitlab_core::preset::DEFAULT_PRESET) {
+        Ok(creature) => creature,
+        // The bundled default is checked by the core's tests; this cannot happen.
+        Err(error) => unreachable!("{error}"),
+    }
+}
+
+fn driver_for(creature: &Creature, settings: &Settings) -> Result<ThesisDriver, String> {
+    gaitlab_core::preset::check_ik_options("settings.ik", &settings.ik)
+        .map_err(|e| e.to_string())?;
+    if !settings.heading_deg.is_finite() {
+        return Err("settings.heading_deg: must be finite".to_owned());
+    }
+    let mut options = settings.ik.clone();
+    options.method = settings.method;
+    let mut driver = ThesisDriver::new(
+        creature.skeleton.clone(),
+        creature.scenario.thesis.clone(),
+        settings.mode,
+        options,
+    )
+    .map_err(|e| format!("preset {}: scenario.thesis.{e}", creature.name))?;
+    driver.set_origin(RootTransform {
+        rotation: DMat3::from_rotation_y(settings.heading_deg.to_radians()),
+        ..RootTransform::default()
+    });
+    driver.reset();
+    Ok(driver)
+}
+
+impl Lab {
+    /// A lab with `settings`; an unknown preset falls back to the default one and
+    /// leaves a message.
+    #[must_use]
+    pub fn new(settings: Settings) -> Self {
+        let mut settings = settings;
+        let mut last_error = None;
+        let creature = match bundled_or_default(&settings.preset) {
+            Ok(creature) => creature,
+            Err(error) => {
+                last_error = Some(error);
+                settings.preset = gaitlab_core::preset::DEFAULT_PRESET.to_owned();
+                default_creature()
+            }
+        };
+        let driver = match driver_for(&creature, &settings) {
+            Ok(driver) => driver,
+            Err(error) => {
+                last_error = Some(error);
+                settings = Settings::default();
+                match driver_for(&default_creature(), &settings) {
+                    Ok(driver) => driver,
+                    Err(error) => unreachable!("the default preset drives: {error}"),
+                }
+            }
+        };
+        let kinematics = Kinematics::new(&creature.skeleton);
+        let mut lab = Self {
+            settings,
+            history: History::default(),
+            creature,
+            driver,
+            camera: Camera::default(),
+            scene: Scene::default(),
+            kinematics,
+            frame: 0,
+            paused: false,
+            pending_steps: 0,
+            accumulator_s: 0.0,
+            last_error,
+            fps: 0.0,
+            sim_us_per_frame: 0.0,
+            clock: None,
+            custom_preset: None,
+            link_changed: false,
+            preset_changed: false,
+        };
+        lab.after_reset();
+        lab
+    }
+
+    /// Supplies the platform clock used to time the simulation.
+    pub fn set_clock(&mut self, clock: Clock) {
+        self.clock = Some(clock);
+    }
+
+    /// The creature being animated.
+    #[must_use]
+    pub fn creature(&self) -> &Creature {
+        &self.creature
+    }
+
+    /// The driver animating it.
+    #[must_use]
+    pub fn driver(&self) -> &ThesisDriver {
+        &self.driver
+    }
+
+    /// Frames advanced since the last reset.
+    #[must_use]
+    pub fn frame(&self) -> u64 {
+        self.frame
+    }
+
+    /// Whether the animation is paused.
+    #[must_use]
+    pub fn paused(&self) -> bool {
+        self.paused
+    }
+
+    /// The last error message, if any.
+    #[must_use]
+    pub fn last_error(&self) -> Option<&str> {
+        self.last_error.as_deref()
+    }
+
+    /// Records a problem to show.
+    pub fn report_error(&mut self, message: impl Into<String>) {
+        self.last_error = Some(message.into());
+    }
+
+    /// Clears the shown problem.
+    pub fn clear_error(&mut self) {
+        self.last_error = None;
+    }
+
+    /// Smoothed µs per animation frame spent in the driver (needs a clock).
+    #[must_use]
+    pub fn sim_us_per_frame(&self) -> f64 {
+        self.sim_us_per_frame
+    }
+
+    /// Switches to a bundled preset (its own default scenario, keeping the chosen mode and method).
+    ///
+    /// # Errors
+    /// If no bundled preset has that name or it cannot drive the thesis motions;
+    /// the current preset stays.
+    pub fn set_preset(&mut self, name: &str) -> Result<(), String> {
+        let creature = bundled_or_default(name)?;
+        self.install(creature, None)?;
+        self.settings.preset = name.to_owned();
+        Ok(())
+    }
+
+    /// Switches to a preset given as JSON (a `#p=` link or a pasted file).
+    ///
+    /// # Errors
+    /// The preset's `path: reason`; the current preset stays.
+    pub fn set_custom_preset(&mut self, json: &str) -> Result<(), String> {
+        let creature = Creature::from_json(json).map_err(|e| format!("preset: {e}"))?;
+        self.install(creature, Some(json.to_owned()))
+    }
+
+    fn install(&mut self, creature: Creature, custom: Option<String>) -> Result<(), String> {
+        let driver = driver_for(&creature, &self.settings)?;
+        self.kinematics = Kinematics::new(&creature.skeleton);
+        self.creature = creature;
+        self.driver = driver;
+        self.custom_preset = custom;
+        // Frame the new creature from scratch.
+        self.camera.framed = false;
+        self.preset_changed = true;
+        self.link_changed = true;
+        self.after_reset();
+        Ok(())
+    }
+
+    /// Sets the thesis motion.
+    pub fn set_mode(&mut self, mode: ThesisMode) {
+        self.settings.mode = mode;
+        self.driver.set_mode(mode);
+        self.link_changed = true;
+    }
+
+    /// Sets the IK method.
+    pub fn set_method(&mut self, method: Method) {
+        self.settings.method = method;
+        self.settings.ik.method = method;
+        self.driver.set_method(method);
+        self.link_changed = true;
+    }
+
+    /// Replaces the thesis parameters (speed, shapes, wounded weights) live.
+    ///
+    /// # Errors
+    /// The parameter's `path: reason`; the driver keeps its parameters.
+    pub fn set_params(
+        &mut self,
+        params: gaitlab_core::preset::thesis::ThesisParams,
+    ) -> Result<(), String> {
+        self.driver
+            .set_params(params)
+            .map_err(|e| format!("scenario.thesis.{e}"))
+    }
+
+    /// Applies the IK options in the settings (after a panel edit).
+    pub fn apply_ik_options(&mut self) {
+        let mut options = self.settings.ik.clone();
+        options.method = self.settings.method;
+        self.driver.set_options(options);
+    }
+
+    /// Applies a new figure heading (restarts the motion facing that way).
+    pub fn set_heading_deg(&mut self, degrees: f64) {
+        self.settings.heading_deg = degrees.clamp(-180.0, 180.0);
+        self.driver.set_origin(RootTransform {
+            rotation: DMat3::from_rotation_y(self.settings.heading_deg.to_radians()),
+            ..RootTransform::default()
+        });
+        self.reset();
+    }
+
+    /// Pauses or resumes.
+    pub fn set_paused(&mut self, paused: bool) {
+        self.paused = paused;
+    }
+
+    /// Advances exactly one animation frame on the next update, even when paused.
+    pub fn single_step(&mut self) {
+        self.pending_steps = self.pending_steps.saturating_add(1).min(600);
+    }
+
+    /// Back to time 0 and the rest pose.
+    pub fn reset(&mut self) {
+        self.driver.reset();
+        self.after_reset();
+    }
+
+    fn after_reset(&mut self) {
+        self.frame = 0;
+        self.accumulator_s = 0.0;
+        let names = self
+            .creature
+            .skeleton
+            .effectors()
+            .iter()
+            .map(|e| e.name.clone())
+            .collect();
+        self.history = History::new(names);
+        self.refresh_scene();
+    }
+
+    /// Frame length of the animation, seconds (the preset's fps).
+    #[must_use]
+    pub fn frame_seconds(&self) -> f64 {
+        self.creature.scenario.frame_seconds()
+    }
+
+    /// Advances the animation by `real_dt` seconds of wall time in fixed frames
+    /// of [`Lab::frame_seconds`]; paused labs only take requested single steps.
+    pub fn advance(&mut self, real_dt: f64) {
+        let dt = self.frame_seconds();
+        let mut steps = 0;
+        if self.paused {
+            steps = self.pending_steps;
+            self.accumulator_s = 0.0;
+        } else if real_dt.is_finite() && real_dt > 0.0 {
+            self.accumulator_s += real_dt.min(MAX_FRAME_ADVANCE_S);
+            while self.accumulator_s >= dt {
+                self.accumulator_s -= dt;
+                steps += 1;
+            }
+            steps += self.pending_steps;
+        }
+        self.pending_steps = 0;
+        if steps == 0 {
+            return;
+        }
+        let started = self.clock.as_ref().map(|clock| clock());
+        for _ in 0..steps {
+            self.driver.step(dt);
+            self.frame += 1;
+            let errors = self
+                .driver
+                .ik_report()
+                .map(|r| &r.effector_error_m[..])
+                .unwrap_or(&[]);
+            self.history
+                .push(self.driver.time(), errors.iter().copied());
+        }
+        if let (Some(started), Some(clock)) = (started, self.clock.as_ref()) {
+            let per_frame_us = (clock() - started) * 1e3 / f64::from(steps);
+            self.sim_us_per_frame = if self.sim_us_per_frame == 0.0 {
+                per_frame_us
+            } else {
+                0.9 * self.sim_us_per_frame + 0.1 * per_frame_us
+            };
+        }
+        self.refresh_scene();
+    }
+
+    /// Rebuilds the 3-D scene from the driver's current pose.
+    fn refresh_scene(&mut self) {
+        let pose = self.driver.pose();
+        self.kinematics
+            .update(&self.creature.skeleton, &pose.root, &pose.joints);
+        self.scene.fill(
+            &self.creature.skeleton,
+            &self.kinematics,
+            pose.root.position,
+            self.driver.targets(),
+            &self.settings.view,
+        );
+    }
+
+    /// Records the display frame rate from the UI's frame time.
+    pub(crate) fn note_frame_time(&mut self, dt: f64) {
+        if dt > 0.0 && dt.is_finite() {
+            let fps = 1.0 / dt;
+            self.fps = if self.fps == 0.0 {
+                fps
+            } else {
+                0.95 * self.fps + 0.05 * fps
+            };
+        }
+    }
+}

@@ -1,0 +1,19 @@
+//! gaitlab-app: the browser lab (DESIGN.md "Layout"): a wgpu 3-D view and egui
+//! panels over the gaitlab drivers, with links, a JS state API and persisted
+//! settings. The logic builds and tests natively; the eframe/web glue is wasm-only.
+
+pub mod render;
+pub mod view;
+
+pub mod command;
+pub mod history;
+pub mod lab;
+pub mod link;
+mod panels;
+pub mod settings;
+mod ui;
+#[cfg(target_arch = "wasm32")]
+mod web;
+
+pub use lab::Lab;
+pub use settings::Settings;

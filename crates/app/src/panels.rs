@@ -1,0 +1,253 @@
+//! The control panels, after She 2006 §6.2's workbench: Method (with λ, γmax
+//! and the step clamp), Motion, Motion control (wounded, moving forward), View,
+//! Object transformation, Speed, Target positions, and the Reset / Pause / Step
+//! buttons; plus a preset picker and the live error plot.
+
+use gaitlab_core::ik::Method;
+use gaitlab_core::preset::bundled_names;
+use gaitlab_core::preset::thesis::ThesisMode;
+use gaitlab_motion::validate_params;
+
+use crate::lab::Lab;
+
+/// Human labels of the methods, in the thesis' order.
+fn method_label(method: Method) -> &'static str {
+    match method {
+        Method::Transpose => "Jacobian transpose",
+        Method::Pinv => "Pseudoinverse",
+        Method::Dls => "Damped least squares",
+        Method::Sdls => "Selectively damped LS",
+    }
+}
+
+fn mode_label(mode: ThesisMode) -> &'static str {
+    match mode {
+        ThesisMode::Walk => "Walking",
+        ThesisMode::Run => "Running",
+        ThesisMode::WoundedWalk => "Wounded walking",
+        ThesisMode::WoundedRun => "Wounded running",
+    }
+}
+
+/// The preset picker.
+pub fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
+    let current = lab.creature().name.clone();
+    let mut chosen = None;
+    egui::ComboBox::from_label("Preset")
+        .selected_text(current.as_str())
+        .show_ui(ui, |ui| {
+            for name in bundled_names() {
+                if ui.selectable_label(name == current, name).clicked() {
+                    chosen = Some(name);
+                }
+            }
+        });
+    if let Some(name) = chosen
+        && name != current
+        && let Err(error) = lab.set_preset(name)
+    {
+        lab.report_error(error);
+    }
+}
+
+/// Method panel: the four IK methods and their parameters.
+pub fn method(ui: &mut egui::Ui, lab: &mut Lab) {
+    ui.collapsing("Method", |ui| {
+        let mut method = lab.settings.method;
+        for m in Method::ALL {
+            ui.radio_value(&mut method, m, method_label(m));
+        }
+        if method != lab.settings.method {
+            lab.set_method(method);
+        }
+        let ik = &mut lab.settings.ik;
+        let mut changed = false;
+        changed |= ui
+            .add(
+                egui::Slider::new(&mut ik.lambda, 0.001..=1.0)
+                    .logarithmic(true)
+                    .text("DLS λ (m)"),
+            )
+            .changed();
+        let mut gamma_deg = ik.gamma_max.to_degrees();
+        if ui
+            .add(egui::Slider::new(&mut gamma_deg, 1.0..=180.0).text("SDLS γmax (°)"))
+            .changed()
+        {
+            ik.gamma_max = gamma_deg.to_radians();
+            changed = true;
+        }
+        let mut step_deg = ik.max_step.to_degrees();
+        if ui
+            .add(egui::Slider::new(&mut step_deg, 0.5..=90.0).text("Step clamp (°)"))
+            .changed()
+        {
+            ik.max_step = step_deg.to_radians();
+            changed = true;
+        }
+        changed |= ui
+            .add(egui::Slider::new(&mut ik.null_space_gain, 0.0..=2.0).text("Center pull (PODA)"))
+            .on_hover_text(
+                "Gain of the null-space term pulling joints to their center angles (pinv, DLS)",
+            )
+            .changed();
+        changed |= ui
+            .checkbox(&mut ik.enforce_limits, "Joint limits")
+            .changed();
+        if changed {
+            lab.apply_ik_options();
+        }
+    });
+}
+
+/// Motion and motion-control panels.
+pub fn motion(ui: &mut egui::Ui, lab: &mut Lab) {
+    ui.collapsing("Motion", |ui| {
+        let mut mode = lab.settings.mode;
+        for m in ThesisMode::ALL {
+            ui.radio_value(&mut mode, m, mode_label(m));
+        }
+        if mode != lab.settings.mode {
+            lab.set_mode(mode);
+        }
+        let mut params = lab.driver().params().clone();
+        let mut changed = ui
+            .checkbox(&mut params.moving_forward, "Moving forward")
+            .changed();
+        if !params.wounded.is_empty() {
+            ui.label("Wounded joints (multiply weight):");
+            for wounded in &mut params.wounded {
+                changed |= ui
+                    .add(
+                        egui::Slider::new(&mut wounded.multiply, 0.0..=2.0)
+                            .text(wounded.joint.as_str()),
+                    )
+                    .changed();
+            }
+        }
+        if changed {
+            apply_params(lab, params);
+        }
+    });
+}
+
+fn apply_params(lab: &mut Lab, params: gaitlab_core::preset::thesis::ThesisParams) {
+    let result = validate_params(&params)
+        .map_err(|e| e.to_string())
+        .and_then(|()| lab.set_params(params));
+    if let Err(error) = result {
+        lab.report_error(error);
+    }
+}
+
+/// Speed and target-position panels: the thesis' step frequency, slowdown and
+/// speed, and the front/back extremes of the feet and hands.
+pub fn speed_and_targets(ui: &mut egui::Ui, lab: &mut Lab) {
+    let mut params = lab.driver().params().clone();
+    let running = lab.settings.mode.running();
+    let mut changed = false;
+    ui.collapsing("Speed", |ui| {
+        let shape = if running {
+            &mut params.run
+        } else {
+            &mut params.walk
+        };
+        changed |= ui
+            .add(egui::Slider::new(&mut shape.frequency_hz, 0.2..=3.0).text("Step frequency (Hz)"))
+            .changed();
+        changed |= ui
+            .add(egui::Slider::new(&mut params.slowdown, 1.0..=20.0).text("Slowdown"))
+            .changed();
+        let mut matched = params.speed_mps.is_none();
+        if ui
+            .checkbox(&mut matched, "Speed matched to stride")
+            .changed()
+        {
+            params.speed_mps = if matched {
+                None
+            } else {
+                Some(lab.driver().script().speed_mps())
+            };
+            changed = true;
+        }
+        if let Some(speed) = params.speed_mps.as_mut() {
+            changed |= ui
+                .add(egui::Slider::new(speed, 0.0..=6.0).text("Speed (m/s)"))
+                .changed();
+        }
+    });
+    ui.collapsing("Target positions", |ui| {
+        let shape = if running {
+            &mut params.run
+        } else {
+            &mut params.walk
+        };
+        for (label, vector) in [
+            ("Front foot", &mut shape.front_foot),
+            ("Back foot", &mut shape.back_foot),
+            ("Front hand", &mut shape.front_hand),
+            ("Back hand", &mut shape.back_hand),
+        ] {
+            ui.horizontal(|ui| {
+                ui.label(label);
+                for component in [&mut vector.x, &mut vector.y, &mut vector.z] {
+                    changed |= ui
+                        .add(
+                            egui::DragValue::new(component)
+                                .speed(0.005)
+                                .range(-2.0..=2.0)
+                                .suffix(" m"),
+                        )
+                        .changed();
+                }
+            });
+        }
+        changed |= ui
+            .add(egui::Slider::new(&mut shape.step_height_m, 0.0..=0.4).text("Step height (m)"))
+            .changed();
+    });
+    if changed {
+        apply_params(lab, params);
+    }
+}
+
+/// View and object-transformation panels.
+pub fn view(ui: &mut egui::Ui, lab: &mut Lab) {
+    ui.collapsing("View", |ui| {
+        let view = &mut lab.settings.view;
+        ui.checkbox(&mut view.world_axes, "Axes");
+        ui.checkbox(&mut view.perspective, "Perspective");
+        ui.checkbox(&mut view.joint_axes, "Rotation axes");
+        ui.checkbox(&mut view.targets, "Draw targets");
+        ui.checkbox(&mut view.grid, "Ground grid");
+        ui.checkbox(&mut view.shadow, "Shadow");
+        ui.checkbox(&mut view.follow, "Follow the figure");
+        ui.checkbox(&mut lab.settings.plots, "Plots");
+    });
+    ui.collapsing("Object transformation", |ui| {
+        let mut heading = lab.settings.heading_deg;
+        if ui
+            .add(egui::Slider::new(&mut heading, -180.0..=180.0).text("Heading (°)"))
+            .changed()
+        {
+            lab.set_heading_deg(heading);
+        }
+    });
+}
+
+/// Reset / Pause / Step, with the keyboard shortcuts (space, R, .).
+pub fn buttons(ui: &mut egui::Ui, lab: &mut Lab) {
+    ui.horizontal(|ui| {
+        if ui.button("Reset").on_hover_text("R").clicked() {
+            lab.reset();
+        }
+        let label = if lab.paused() { "Play" } else { "Pause" };
+        if ui.button(label).on_hover_text("Space").clicked() {
+            lab.set_paused(!lab.paused());
+        }
+        if ui.button("Step").on_hover_text(".").clicked() {
+            lab.set_paused(true);
+            lab.single_step();
+        }
+    });
+}

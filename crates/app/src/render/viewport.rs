@@ -1,0 +1,238 @@
+//! The 3-D view as an egui widget: takes the remaining space, turns mouse and
+//! touch gestures into camera moves, keeps a walking figure in view (follow
+//! mode), and draws the scene — with wgpu through a paint callback when the
+//! renderer is installed ([`super::gpu::install`]), otherwise as a painter's-
+//! algorithm 2-D projection with egui shapes (tests, software fallbacks).
+
+use egui::{Color32, Pos2, Rect, Shape, Stroke};
+use glam::{Mat4, Vec3, Vec4};
+
+use super::camera::Camera;
+use super::gpu::{self, SceneCallback, ViewStyle};
+use super::scene::{GROUND_Y, Scene, SceneFrame};
+use crate::view::ViewOptions;
+
+/// Follow mode keeps asking for frames until the camera is this close to its goal, metres.
+const FOLLOW_SETTLED: f32 = 0.005;
+
+/// Shows `scene` through `camera` in all the space left in `ui`.
+///
+/// Gestures: drag to orbit; right / middle drag, shift + drag or two fingers
+/// to pan; wheel, ctrl + wheel or pinch to zoom; double click to frame the
+/// figure again. The camera frames the figure the first time it sees one (and
+/// whenever `camera.framed` is cleared), takes `view.perspective`, and follows
+/// the figure's centre when `view.follow` is on.
+pub fn show(
+    ui: &mut egui::Ui,
+    scene: &Scene,
+    camera: &mut Camera,
+    view: &ViewOptions,
+) -> egui::Response {
+    // All the space left; a sensible size where that is unbounded (a scroll area).
+    let available = ui.available_size();
+    let size = egui::vec2(
+        if available.x.is_finite() {
+            available.x
+        } else {
+            640.0
+        },
+        if available.y.is_finite() {
+            available.y
+        } else {
+            400.0
+        },
+    )
+    .max(egui::vec2(1.0, 1.0));
+    let (rect, response) = ui.allocate_exact_size(size, egui::Sense::click_and_drag());
+
+    camera.perspective = view.perspective;
+    if camera.handle_input(&response) {
+        ui.ctx().request_repaint();
+    }
+    if response.dragged() {
+        ui.ctx().set_cursor_icon(egui::CursorIcon::Grabbing);
+    }
+    if !camera.framed
+        && let Some(bounds) = scene.bounds()
+    {
+        camera.frame(&bounds);
+    }
+    if view.follow
+        && let Some(centre) = scene.centre()
+    {
+        let centre = centre.as_vec3();
+        let dt = ui.input(|i| i.stable_dt).clamp(0.0, 0.1);
+        camera.follow(centre, dt);
+        let gap = (centre + camera.follow_offset - camera.target) * Vec3::new(1.0, 0.0, 1.0);
+        if gap.length() > FOLLOW_SETTLED {
+            ui.ctx().request_repaint();
+        }
+    }
+
+    if ui.is_rect_visible(rect) {
+        let style = ViewStyle::from_visuals(ui.visuals());
+        if gpu::is_installed(ui.ctx()) {
+            let callback = SceneCallback::new(
+                response.id.value(),
+                ui.ctx().cumulative_frame_nr(),
+                rect,
+                *camera,
+                std::sync::Arc::clone(scene.frame()),
+                view,
+                style,
+            );
+            ui.painter()
+                .add(egui_wgpu::Callback::new_paint_callback(rect, callback));
+        } else {
+            let mut shapes = Vec::new();
+            fallback_shapes(rect, scene.frame(), camera, view, &style, &mut shapes);
+            ui.painter().extend(shapes);
+        }
+    }
+    response
+}
+
+fn color32(c: [f32; 4]) -> Color32 {
+    let byte = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
+    Color32::from_rgba_unmultiplied(byte(c[0]), byte(c[1]), byte(c[2]), byte(c[3]))
+}
+
+/// World → screen for one view.
+struct Projector {
+    view_proj: Mat4,
+    rect: Rect,
+    /// Projection's y scale (`1 / tan(fov/2)`, or `1 / half height` orthographic).
+    y_scale: f32,
+}
+
+impl Projector {
+    fn new(rect: Rect, camera: &Camera) -> Self {
+        let aspect = rect.width() / rect.height().max(1.0);
+        Self {
+            view_proj: camera.view_projection(aspect),
+            rect,
+            y_scale: camera.projection(aspect).y_axis.y,
+        }
+    }
+
+    fn clip(&self, p: Vec3) -> Vec4 {
+        self.view_proj * p.extend(1.0)
+    }
+
+    fn to_screen(&self, clip: Vec4) -> Pos2 {
+        let ndc = clip.truncate() / clip.w;
+        let centre = self.rect.center();
+        Pos2::new(
+            centre.x + ndc.x * 0.5 * self.rect.width(),
+            centre.y - ndc.y * 0.5 * self.rect.height(),
+        )
+    }
+
+    /// Screen position and depth (clip w) of `p`, if in front of the near plane.
+    fn point(&self, p: Vec3) -> Option<(Pos2, f32)> {
+        let clip = self.clip(p);
+        (clip.z >= 0.0 && clip.w > 0.0).then(|| (self.to_screen(clip), clip.w))
+    }
+
+    /// The segment a–b clipped to the near plane, on screen.
+    fn segment(&self, a: Vec3, b: Vec3) -> Option<[Pos2; 2]> {
+        let (mut ca, mut cb) = (self.clip(a), self.clip(b));
+        if ca.z < 0.0 && cb.z < 0.0 {
+            return None;
+        }
+        if ca.z < 0.0 {
+            ca = ca.lerp(cb, ca.z / (ca.z - cb.z));
+        } else if cb.z < 0.0 {
+            cb = cb.lerp(ca, cb.z / (cb.z - ca.z));
+        }
+        (ca.w > 0.0 && cb.w > 0.0).then(|| [self.to_screen(ca), self.to_screen(cb)])
+    }
+
+    /// On-screen size, points, of `radius` metres at depth `w`.
+    fn radius(&self, radius: f32, w: f32) -> f32 {
+        radius * self.y_scale / w * 0.5 * self.rect.height()
+    }
+}
+
+/// The scene as egui shapes: background, ground grid, bones and spheres sorted
+/// far to near, then segments. Used when wgpu is not available; allocates
+/// (this is not the hot path).
+pub fn fallback_shapes(
+    rect: Rect,
+    frame: &SceneFrame,
+    camera: &Camera,
+    view: &ViewOptions,
+    style: &ViewStyle,
+    shapes: &mut Vec<Shape>,
+) {
+    shapes.push(Shape::rect_filled(rect, 0.0, color32(style.background)));
+    if rect.width() < 1.0 || rect.height() < 1.0 {
+        return;
+    }
+    let projector = Projector::new(rect, camera);
+
+    if view.grid {
+        let stroke = Stroke::new(1.0, color32(style.grid));
+        let (cx, cz) = (camera.target.x.round(), camera.target.z.round());
+        let reach = 10.0;
+        for k in -10..=10 {
+            let k = k as f32;
+            let lines = [
+                (
+                    Vec3::new(cx + k, GROUND_Y, cz - reach),
+                    Vec3::new(cx + k, GROUND_Y, cz + reach),
+                ),
+                (
+                    Vec3::new(cx - reach, GROUND_Y, cz + k),
+                    Vec3::new(cx + reach, GROUND_Y, cz + k),
+                ),
+            ];
+            for (a, b) in lines {
+                if let Some(points) = projector.segment(a, b) {
+                    shapes.push(Shape::line_segment(points, stroke));
+                }
+            }
+        }
+    }
+
+    // Solids, painter's algorithm: farthest first.
+    let mut solids: Vec<(f32, Shape)> =
+        Vec::with_capacity(frame.capsules.len() + frame.spheres.len());
+    for capsule in &frame.capsules {
+        let (a, b) = (Vec3::from_array(capsule.a), Vec3::from_array(capsule.b));
+        let (Some((pa, wa)), Some((pb, wb))) = (projector.point(a), projector.point(b)) else {
+            continue;
+        };
+        let width = 2.0 * projector.radius(capsule.radius, 0.5 * (wa + wb));
+        let color = color32(capsule.color);
+        let shape = Shape::Vec(vec![
+            Shape::line_segment([pa, pb], Stroke::new(width, color)),
+            Shape::circle_filled(pa, 0.5 * width, color),
+            Shape::circle_filled(pb, 0.5 * width, color),
+        ]);
+        solids.push((0.5 * (wa + wb), shape));
+    }
+    for sphere in &frame.spheres {
+        let Some((p, w)) = projector.point(Vec3::from_array(sphere.centre)) else {
+            continue;
+        };
+        let radius = projector.radius(sphere.radius, w);
+        // Spheres sit on bone ends: nudge them in front of their bones.
+        solids.push((
+            w - sphere.radius,
+            Shape::circle_filled(p, radius, color32(sphere.color)),
+        ));
+    }
+    solids.sort_by(|a, b| b.0.total_cmp(&a.0));
+    shapes.extend(solids.into_iter().map(|(_, shape)| shape));
+
+    for segment in &frame.segments {
+        let (a, b) = (Vec3::from_array(segment.a), Vec3::from_array(segment.b));
+        if let Some(points) = projector.segment(a, b) {
+            shapes.push(Shape::line_segment(
+                points,
+                Stroke::new(segment.width, color32(segment.color)),
+            ));
+        }
+    }
+}

@@ -1,0 +1,127 @@
+//! The lab's layout: controls on the left, live plots at the bottom, the 3-D
+//! view in the middle, an error banner on top when something went wrong, and
+//! the keyboard shortcuts (space pause, R reset, . single step).
+
+use egui_plot::{Legend, Line, Plot, PlotPoints};
+
+use crate::lab::Lab;
+use crate::panels;
+use crate::render::viewport;
+
+impl Lab {
+    /// Shows the whole lab in `ui` and advances the animation by the frame's time.
+    pub fn ui(&mut self, ui: &mut egui::Ui) {
+        let dt = ui.input(|i| f64::from(i.stable_dt));
+        self.note_frame_time(dt);
+        self.keyboard(ui);
+        self.advance(dt);
+
+        egui::Panel::left("gaitlab-controls")
+            .resizable(true)
+            .default_size(290.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    ui.heading("gaitlab");
+                    panels::preset(ui, self);
+                    panels::buttons(ui, self);
+                    ui.separator();
+                    panels::method(ui, self);
+                    panels::motion(ui, self);
+                    panels::speed_and_targets(ui, self);
+                    panels::view(ui, self);
+                    ui.separator();
+                    self.readout(ui);
+                });
+            });
+        if self.settings.plots {
+            egui::Panel::bottom("gaitlab-plots")
+                .resizable(true)
+                .default_size(170.0)
+                .show(ui, |ui| self.plots(ui));
+        }
+        egui::CentralPanel::default().show(ui, |ui| {
+            if let Some(error) = self.last_error.clone() {
+                ui.horizontal(|ui| {
+                    ui.colored_label(
+                        egui::Color32::from_rgb(230, 90, 70),
+                        format!("Problem: {error}"),
+                    );
+                    if ui.small_button("Dismiss").clicked() {
+                        self.clear_error();
+                    }
+                });
+            }
+            viewport::show(ui, &self.scene, &mut self.camera, &self.settings.view);
+        });
+        if !self.paused {
+            ui.ctx().request_repaint();
+        }
+    }
+
+    fn keyboard(&mut self, ui: &egui::Ui) {
+        if ui.ctx().egui_wants_keyboard_input() {
+            return;
+        }
+        let (space, reset, step) = ui.input(|i| {
+            (
+                i.key_pressed(egui::Key::Space),
+                i.key_pressed(egui::Key::R),
+                i.key_pressed(egui::Key::Period),
+            )
+        });
+        if space {
+            self.set_paused(!self.paused);
+        }
+        if reset {
+            self.reset();
+        }
+        if step {
+            self.set_paused(true);
+            self.single_step();
+        }
+    }
+
+    fn readout(&self, ui: &mut egui::Ui) {
+        ui.label(format!(
+            "frame {} · t = {:.2} s · {:.0} fps",
+            self.frame,
+            gaitlab_core::driver::Driver::time(&self.driver),
+            self.fps
+        ));
+        if self.sim_us_per_frame > 0.0 {
+            ui.label(format!(
+                "simulation + IK: {:.1} µs per frame",
+                self.sim_us_per_frame
+            ));
+        }
+        if let Some(report) = gaitlab_core::driver::Driver::ik_report(&self.driver) {
+            for (effector, error) in self
+                .creature
+                .skeleton
+                .effectors()
+                .iter()
+                .zip(&report.effector_error_m)
+            {
+                ui.label(format!("{}: {:.2} mm", effector.name, error * 1e3));
+            }
+        }
+    }
+
+    fn plots(&self, ui: &mut egui::Ui) {
+        ui.label("Effector error (mm)");
+        Plot::new("gaitlab-error-plot")
+            .legend(Legend::default())
+            .allow_drag(false)
+            .allow_zoom(false)
+            .allow_scroll(false)
+            .include_y(0.0)
+            .include_y(1.0)
+            .show(ui, |plot| {
+                for (s, name) in self.history.names.iter().enumerate() {
+                    let points: Vec<[f64; 2]> =
+                        self.history.points(s).map(|[t, e]| [t, e * 1e3]).collect();
+                    plot.line(Line::new(name.as_str(), PlotPoints::from(points)));
+                }
+            });
+    }
+}

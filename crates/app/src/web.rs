@@ -1,0 +1,248 @@
+//! The web glue (wasm32 only): starts eframe on a canvas, publishes
+//! `window.gaitlab.state()` / `window.gaitlab.command(json)` (DESIGN.md
+//! "Browser"), reads the link on load, keeps the URL in step with
+//! `history.replaceState` (and `pushState` for preset changes, so Back works),
+//! persists the settings, and signals the page once the first frame is drawn.
+
+use std::cell::Cell;
+use std::rc::Rc;
+
+use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::*;
+
+use crate::lab::Lab;
+use crate::link;
+use crate::settings::Settings;
+
+/// Depth buffer bits requested from eframe (the 3-D view's pass matches it).
+const DEPTH_BITS: u8 = 24;
+
+/// Storage key of the persisted settings.
+const SETTINGS_KEY: &str = "gaitlab-settings";
+
+fn window() -> Option<web_sys::Window> {
+    web_sys::window()
+}
+
+fn now_ms() -> f64 {
+    window()
+        .and_then(|w| w.performance())
+        .map_or(0.0, |p| p.now())
+}
+
+/// The eframe app: the lab plus the page plumbing.
+struct WebApp {
+    lab: Lab,
+    egui_ctx: egui::Context,
+    first_frame_done: bool,
+    /// Set by the `popstate` listener: the URL changed under us (Back/Forward).
+    url_changed: Rc<Cell<bool>>,
+}
+
+impl WebApp {
+    fn new(cc: &eframe::CreationContext<'_>, url_changed: Rc<Cell<bool>>) -> Self {
+        let settings: Settings = cc
+            .storage
+            .and_then(|storage| eframe::get_value(storage, SETTINGS_KEY))
+            .unwrap_or_default();
+        if let Some(render_state) = cc.wgpu_render_state.as_ref() {
+            crate::render::gpu::install(
+                &cc.egui_ctx,
+                render_state,
+                crate::render::gpu::PassFormat::eframe(render_state, DEPTH_BITS),
+            );
+        }
+        let mut lab = Lab::new(settings);
+        lab.set_clock(Box::new(now_ms));
+        let mut app = Self {
+            lab,
+            egui_ctx: cc.egui_ctx.clone(),
+            first_frame_done: false,
+            url_changed,
+        };
+        app.apply_url();
+        app
+    }
+
+    /// Applies the page's `?query` and `#p=` link; a bad link leaves a message
+    /// and the defaults.
+    fn apply_url(&mut self) {
+        let Some(location) = window().map(|w| w.location()) else {
+            return;
+        };
+        let query = location.search().unwrap_or_default();
+        let fragment = location.hash().unwrap_or_default();
+        let request = link::parse(&query, &fragment);
+        let mut errors = request.errors.clone();
+        if let Some(json) = &request.custom_preset {
+            if let Err(error) = self.lab.set_custom_preset(json) {
+                errors.push(format!("link: {error}"));
+            }
+        } else if let Some(name) = &request.preset
+            && name != &self.lab.creature().name
+            && let Err(error) = self.lab.set_preset(name)
+        {
+            errors.push(format!("link: {error}"));
+            if let Err(error) = self.lab.set_preset(gaitlab_core::preset::DEFAULT_PRESET) {
+                errors.push(error);
+            }
+        }
+        for (key, value) in [("mode", &request.mode), ("method", &request.method)] {
+            if let Some(value) = value {
+                let command = serde_json::json!({ key: value }).to_string();
+                if let Err(error) = self.lab.command(&command) {
+                    errors.push(format!("link: {error}"));
+                }
+            }
+        }
+        if !errors.is_empty() {
+            self.lab.report_error(errors.join("; "));
+        }
+        // The link has been applied: don't rewrite it on the first frame.
+        self.lab.link_changed = false;
+        self.lab.preset_changed = false;
+    }
+
+    /// Mirrors the lab's state in the address bar.
+    fn update_url(&mut self) {
+        if !self.lab.link_changed {
+            return;
+        }
+        let push = self.lab.preset_changed;
+        self.lab.link_changed = false;
+        self.lab.preset_changed = false;
+        let Some(history) = window().and_then(|w| w.history().ok()) else {
+            return;
+        };
+        let mut url = link::query(
+            &self.lab.settings.preset,
+            self.lab.settings.mode.name(),
+            self.lab.settings.method.name(),
+        );
+        if let Some(json) = &self.lab.custom_preset {
+            url.push_str("#p=");
+            url.push_str(&link::encode_preset(json));
+        }
+        let result = if push {
+            history.push_state_with_url(&JsValue::NULL, "", Some(&url))
+        } else {
+            history.replace_state_with_url(&JsValue::NULL, "", Some(&url))
+        };
+        if result.is_err() {
+            self.lab.report_error("could not update the address bar");
+        }
+    }
+
+    /// Tells the page the first frame is on screen.
+    fn signal_first_frame(&mut self) {
+        if self.first_frame_done {
+            return;
+        }
+        self.first_frame_done = true;
+        let Some(window) = window() else { return };
+        if let Some(document) = window.document() {
+            if let Some(loading) = document.get_element_by_id("loading") {
+                loading.remove();
+            }
+            if let Some(body) = document.body() {
+                let _ = body.dataset().set("ready", "1");
+            }
+        }
+        let _ = js_sys::Reflect::set(
+            &window,
+            &JsValue::from_str("__gaitlabFirstFrameMs"),
+            &JsValue::from_f64(now_ms()),
+        );
+    }
+}
+
+impl eframe::App for WebApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        if self.url_changed.replace(false) {
+            self.apply_url();
+        }
+        self.lab.ui(ui);
+        self.update_url();
+        self.signal_first_frame();
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        eframe::set_value(storage, SETTINGS_KEY, &self.lab.settings);
+    }
+
+    fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
+        Some(&mut *self)
+    }
+}
+
+/// Publishes `window.gaitlab = { state(), command(json) }` over the running app.
+fn publish_api(runner: &Rc<eframe::WebRunner>) -> Result<(), JsValue> {
+    let window = window().ok_or("no window")?;
+    let api = js_sys::Object::new();
+    let state_runner = Rc::clone(runner);
+    let state =
+        Closure::<dyn Fn() -> String>::new(move || match state_runner.app_mut::<WebApp>() {
+            Some(app) => app.lab.state_json(),
+            None => serde_json::json!({ "last_error": "the app is not running" }).to_string(),
+        });
+    let command_runner = Rc::clone(runner);
+    let command = Closure::<dyn Fn(JsValue) -> String>::new(move |json: JsValue| {
+        let Some(json) = json.as_string() else {
+            return "command: expected a JSON string".to_owned();
+        };
+        match command_runner.app_mut::<WebApp>() {
+            Some(mut app) => {
+                let result = app.lab.command(&json);
+                // A command from JS changes the state without any input event: draw it.
+                app.egui_ctx.request_repaint();
+                match result {
+                    Ok(()) => "ok".to_owned(),
+                    Err(error) => error,
+                }
+            }
+            None => "the app is not running".to_owned(),
+        }
+    });
+    js_sys::Reflect::set(&api, &"state".into(), state.as_ref().unchecked_ref())?;
+    js_sys::Reflect::set(&api, &"command".into(), command.as_ref().unchecked_ref())?;
+    js_sys::Reflect::set(&window, &"gaitlab".into(), &api)?;
+    // The page lives as long as the app: the closures stay alive with it.
+    state.forget();
+    command.forget();
+    Ok(())
+}
+
+/// Starts gaitlab on the canvas with id `canvas_id`.
+///
+/// # Errors
+/// If the page has no such canvas, or eframe cannot start (no WebGPU/WebGL2).
+#[wasm_bindgen]
+pub async fn start(canvas_id: String) -> Result<(), JsValue> {
+    let window = window().ok_or("no window")?;
+    let document = window.document().ok_or("no document")?;
+    let canvas = document
+        .get_element_by_id(&canvas_id)
+        .ok_or_else(|| JsValue::from_str(&format!("no element with id {canvas_id:?}")))?
+        .dyn_into::<web_sys::HtmlCanvasElement>()
+        .map_err(|_| JsValue::from_str(&format!("#{canvas_id} is not a canvas")))?;
+    let url_changed = Rc::new(Cell::new(false));
+    let flag = Rc::clone(&url_changed);
+    let on_popstate = Closure::<dyn Fn()>::new(move || flag.set(true));
+    window.add_event_listener_with_callback("popstate", on_popstate.as_ref().unchecked_ref())?;
+    on_popstate.forget();
+
+    let runner = Rc::new(eframe::WebRunner::new());
+    let options = eframe::WebOptions {
+        depth_buffer: DEPTH_BITS,
+        ..eframe::WebOptions::default()
+    };
+    runner
+        .start(
+            canvas,
+            options,
+            Box::new(move |cc| Ok(Box::new(WebApp::new(cc, url_changed)))),
+        )
+        .await?;
+    publish_api(&runner)?;
+    Ok(())
+}

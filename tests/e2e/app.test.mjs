@@ -1,0 +1,302 @@
+// Browser tests for the gaitlab web app (DESIGN.md "Contracts": window.gaitlab.state()/command(),
+// URL parameters, first-frame signal from index.html). Run through ./build.sh test, or after
+// ./build.sh: `cd tests/e2e && npm test -- *.test.mjs`.
+//
+// Each test fails on any console error/warning or page error that is not known noise, and every
+// rendering test checks pixels, not only state: a wrong GPU setup can run without drawing.
+
+import { after, before, describe, it } from 'node:test';
+import assert from 'node:assert/strict';
+import {
+  backendOf, canvasContextKind, command, lastErrorOf, launch, methodOf, pngDiff, pngStats, saveArtifact,
+  saveReadmeScreenshot, serveDist, sleep, state, waitReady,
+} from './harness.mjs';
+
+// Where the 3-D view is expected: right of the side panel, clear of top and bottom bars
+// (fractions of the canvas).
+const VIEW_REGION = { x0: 0.4, y0: 0.2, x1: 0.95, y1: 0.8 };
+// A blank or uniformly cleared view has stddev 0 and a handful of colours; a lit figure over a
+// floor is far above both.
+const MIN_VIEW_STDDEV = 8;
+const MIN_VIEW_COLOURS = 64;
+
+const T = { timeout: 120_000 };
+
+let server;
+before(async () => { server = await serveDist(); });
+after(async () => { await server?.close(); });
+
+/** Waits (up to `timeout` ms) until state().frame > `frame`; false if it never does. */
+async function frameExceeds(page, frame, timeout = 15_000) {
+  try {
+    await page.waitForFunction((f) => JSON.parse(window.gaitlab.state()).frame > f, frame, { timeout, polling: 100 });
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+/** Resolves after the page has displayed `n` more animation frames. */
+function animationFrames(page, n) {
+  return page.evaluate((count) => new Promise((done) => {
+    let left = count;
+    const tick = () => (--left <= 0 ? done() : requestAnimationFrame(tick));
+    requestAnimationFrame(tick);
+  }), n);
+}
+
+/** Loads the app at `query` in a fresh page and waits for its first frame. */
+async function load(browser, query = '', opts = {}) {
+  const p = await browser.open(opts);
+  await p.page.goto(server.url + query, { waitUntil: 'load' });
+  try {
+    await waitReady(p.page);
+  } catch (e) {
+    e.message += `\n--- page console ---\n${p.log.slice(-30).join('\n')}\n--- problems ---\n${p.problems.join('\n')}`;
+    throw e;
+  }
+  return p;
+}
+
+/** Loads the app at `query`, runs `fn(p)`, and always closes the page (open pages compete for CPU). */
+async function withApp(browser, query, opts, fn) {
+  const p = await load(browser, query, opts);
+  try {
+    await fn(p);
+    p.assertClean();
+  } finally {
+    await p.page.close().catch(() => {});
+  }
+}
+
+/** Screenshot of the canvas, its statistics, and an artifact file. */
+async function shootCanvas(page, name) {
+  const png = await page.locator('#gaitlab-canvas').screenshot({ animations: 'allow', timeout: 30_000 });
+  const file = saveArtifact(name, png);
+  return { png, file, whole: pngStats(png), view: pngStats(png, VIEW_REGION) };
+}
+
+function assertDrawn(shot, label) {
+  const { whole, view, file } = shot;
+  const fmt = (s) => `stddev ${s.stddev.toFixed(2)}, ${s.distinct} colours`;
+  assert.ok(whole.distinct > 1 && whole.stddev > 0.5, `${label}: the canvas is uniform (${fmt(whole)}); see ${file}`);
+  assert.ok(view.stddev >= MIN_VIEW_STDDEV && view.distinct >= MIN_VIEW_COLOURS,
+    `${label}: the 3-D view region looks blank (${fmt(view)}; want stddev >= ${MIN_VIEW_STDDEV} and >= ${MIN_VIEW_COLOURS} colours); see ${file}`);
+}
+
+describe('WebGL2 path (SwiftShader, no WebGPU adapter)', () => {
+  let browser;
+  let app; // one page shared by the tests that drive it through commands
+  let defaults; // state of an app loaded without parameters
+
+  before(async () => { browser = await launch('webgl2'); });
+  after(async () => {
+    await app?.page.close().catch(() => {});
+    await browser?.close();
+  });
+
+  it('starts, reports its first frame and a JSON state for the default preset', T, async () => {
+    app = await load(browser);
+    const { page } = app;
+    const firstFrame = await page.evaluate(() => window.__gaitlabFirstFrameMs);
+    assert.equal(typeof firstFrame, 'number', 'window.__gaitlabFirstFrameMs is set');
+    assert.ok(firstFrame > 0, `first frame at ${firstFrame} ms`);
+    const s = await state(page);
+    defaults = s;
+    assert.equal(s.preset, 'human');
+    for (const key of ['engine', 'mode', 'paused', 'frame']) assert.ok(key in s, `state has "${key}": ${JSON.stringify(s)}`);
+    assert.equal(typeof methodOf(s), 'string', `state names a method: ${JSON.stringify(s)}`);
+    assert.equal(s.paused, false);
+    assert.equal(lastErrorOf(s), '', 'no error on a plain load');
+    const hasAdapter = await page.evaluate(async () => !!(navigator.gpu && await navigator.gpu.requestAdapter()));
+    assert.equal(hasAdapter, false, 'this launch must not offer a WebGPU adapter (it tests the WebGL2 fallback)');
+    assert.equal(await canvasContextKind(page), 'webgl2', 'the canvas renders through WebGL2');
+    const backend = backendOf(s);
+    if (backend !== undefined) assert.match(backend, /gl/i, `renderer backend on this path: ${backend}`);
+    app.assertClean();
+  });
+
+  it('applies mode and method commands and rejects bad ones', T, async () => {
+    assert.ok(app, 'needs the app page from the first test');
+    const { page } = app;
+    app.problems.length = 0;
+    assert.equal(await command(page, '{"mode":"run"}'), 'ok');
+    assert.equal((await state(page)).mode, 'run');
+    assert.equal(await command(page, '{"method":"dls"}'), 'ok');
+    let s = await state(page);
+    assert.equal(methodOf(s), 'dls');
+    assert.equal(s.mode, 'run', 'a method change keeps the mode');
+    // Bad input answers with an error text and changes nothing.
+    for (const bad of ['{"mode":"fly"}', '{"method":"magic"}', 'not json']) {
+      const answer = await command(page, bad);
+      assert.equal(typeof answer, 'string');
+      assert.notEqual(answer, 'ok', `command(${bad}) must be refused`);
+      assert.ok(answer.length > 0, `command(${bad}) explains the refusal`);
+    }
+    s = await state(page);
+    assert.equal(s.mode, 'run');
+    assert.equal(methodOf(s), 'dls');
+    // Refused commands may warn about the bad value; anything else is a problem.
+    app.problems.splice(0, app.problems.length,
+      ...app.problems.filter((p) => !(p.startsWith('console.warning') && /fly|magic|not json|json/i.test(p))));
+    app.assertClean();
+  });
+
+  it('draws the 3-D view (canvas pixels are far from blank)', T, async () => {
+    assert.ok(app, 'needs the app page from the first test');
+    const { page } = app;
+    // Back to the defaults from the start, for a representative picture (also the README's).
+    const reset = { mode: defaults?.mode ?? 'walk', method: methodOf(defaults ?? {}) ?? 'sdls', reset: true };
+    assert.equal(await command(page, reset), 'ok', `command(${JSON.stringify(reset)})`);
+    await sleep(2000); // mid-stride rather than the first pose
+    const shot = await shootCanvas(page, 'webgl2.png');
+    assertDrawn(shot, 'WebGL2');
+    // The figure moves: a later frame differs inside the 3-D view.
+    let changed = 0;
+    let later;
+    const until = Date.now() + 10_000;
+    while (changed <= 0.0005 && Date.now() < until) {
+      await animationFrames(page, 5);
+      later = await shootCanvas(page, 'webgl2-later.png');
+      changed = pngDiff(shot.png, later.png, VIEW_REGION);
+    }
+    assert.ok(changed > 0.0005,
+      `WebGL2: the 3-D view does not animate (${(changed * 100).toFixed(3)}% of its pixels changed); see ${later.file}`);
+    saveReadmeScreenshot(shot.png);
+    app.assertClean();
+  });
+
+  it('pause freezes the frame counter and unpause resumes it', T, async () => {
+    assert.ok(app, 'needs the app page from the first test');
+    const { page } = app;
+    // Software rendering on a busy machine can be slow: wait for progress instead of fixed sleeps.
+    const f0 = (await state(page)).frame;
+    assert.ok(await frameExceeds(page, f0), `frames advance while running (stuck at ${f0})`);
+
+    assert.equal(await command(page, '{"pause":true}'), 'ok');
+    assert.equal((await state(page)).paused, true);
+    await animationFrames(page, 2);
+    const fa = (await state(page)).frame;
+    await animationFrames(page, 8);
+    await sleep(300);
+    const fb = (await state(page)).frame;
+    assert.equal(fb, fa, `paused: the frame counter stays (${fa} → ${fb} over 8 display frames)`);
+
+    assert.equal(await command(page, '{"pause":false}'), 'ok');
+    assert.equal((await state(page)).paused, false);
+    assert.ok(await frameExceeds(page, fb), `unpaused: frames advance again (stuck at ${fb})`);
+    app.assertClean();
+  });
+
+  it('applies ?preset=human&mode=run&method=dls', T, async () => {
+    await app?.page.close().catch(() => {}); // done with the shared page
+    await withApp(browser, '?preset=human&mode=run&method=dls', {}, async (p) => {
+      const s = await state(p.page);
+      assert.equal(s.preset, 'human');
+      assert.equal(s.mode, 'run');
+      assert.equal(methodOf(s), 'dls');
+      assert.equal(lastErrorOf(s), '', 'a good link raises no error');
+    });
+  });
+
+  it('a bad query (?preset=nope&mode=fly) shows a message and falls back to the defaults', T, async () => {
+    // The app may warn about the bad link on the console; errors still fail the test.
+    await withApp(browser, '?preset=nope&mode=fly', { allow: [/nope|fly/i] }, async (p) => {
+      const s = await state(p.page);
+      assert.ok(lastErrorOf(s).length > 0, `state carries the error: ${JSON.stringify(s)}`);
+      assert.equal(s.preset, defaults?.preset ?? 'human', 'falls back to the default preset');
+      assert.notEqual(s.mode, 'fly');
+      if (defaults) assert.equal(s.mode, defaults.mode, 'falls back to the default mode');
+      // Still alive: it keeps animating.
+      assert.ok(await frameExceeds(p.page, s.frame), 'the app keeps running after a bad link');
+    });
+  });
+
+  it('a garbled #p= preset link shows a message and falls back to the default preset', T, async () => {
+    await withApp(browser, '#p=%%%not-base64%%%', { allow: [/preset|base64|link|deflate|#p/i] }, async (p) => {
+      const s = await state(p.page);
+      assert.ok(lastErrorOf(s).length > 0, `state carries the error: ${JSON.stringify(s)}`);
+      assert.equal(s.preset, defaults?.preset ?? 'human');
+    });
+  });
+});
+
+describe('page shell (index.html)', () => {
+  let browser;
+  before(async () => { browser = await launch('webgl2'); });
+  after(async () => { await browser?.close(); });
+
+  /** Opens the page with `prepare(page)` applied first; resolves to the error box text. */
+  async function failedStart(prepare) {
+    const p = await browser.open();
+    try {
+      await prepare(p.page);
+      await p.page.goto(server.url, { waitUntil: 'load' });
+      await p.page.waitForFunction(() => document.body.dataset.failed === '1', null, { timeout: 30_000 });
+      const shown = await p.page.evaluate(() => ({
+        loading: !!document.getElementById('loading'),
+        error: document.getElementById('error').hidden ? '' : document.getElementById('error').innerText,
+      }));
+      assert.equal(shown.loading, false, 'the loader is replaced by the message');
+      p.assertClean();
+      return shown.error;
+    } finally {
+      await p.page.close().catch(() => {});
+    }
+  }
+
+  it('says so when the WebAssembly module cannot start', T, async () => {
+    const text = await failedStart((page) => page.route('**/*.wasm', (route) => route.fulfill({
+      status: 200, contentType: 'application/wasm', body: Buffer.from([0, 0x61, 0x73, 0x6d, 1, 0, 0, 0, 1, 0x7f]),
+    })));
+    assert.match(text, /failed to load or start/);
+    assert.match(text, /CompileError|WebAssembly/, `the message includes the cause: ${text}`);
+  });
+
+  it('says so when the browser has no WebAssembly', T, async () => {
+    const text = await failedStart((page) => page.addInitScript(() => { delete globalThis.WebAssembly; }));
+    assert.match(text, /does not support WebAssembly/);
+  });
+});
+
+describe('WebGPU path (SwiftShader Vulkan)', () => {
+  let browser;
+  before(async () => { browser = await launch('webgpu'); });
+  after(async () => { await browser?.close(); });
+
+  it('renders through WebGPU', T, async (t) => {
+    const p = await browser.open();
+    try {
+      await p.page.goto(server.url, { waitUntil: 'load' });
+      await webgpuChecks(t, p);
+    } finally {
+      await p.page.close().catch(() => {});
+    }
+  });
+});
+
+async function webgpuChecks(t, p) {
+  const adapter = await p.page.evaluate(async () => {
+    if (!navigator.gpu) return 'navigator.gpu is missing';
+    const a = await navigator.gpu.requestAdapter();
+    return a ? '' : 'requestAdapter() gave no adapter';
+  });
+  if (adapter) {
+    t.skip(`no WebGPU in this Chromium: ${adapter}`);
+    return;
+  }
+  try {
+    await waitReady(p.page);
+  } catch (e) {
+    e.message += `\n--- page console ---\n${p.log.slice(-30).join('\n')}`;
+    throw e;
+  }
+  const s = await state(p.page);
+  assert.equal(s.preset, 'human');
+  assert.equal(await canvasContextKind(p.page), 'webgpu', 'the canvas renders through WebGPU');
+  const backend = backendOf(s);
+  if (backend !== undefined) assert.match(backend, /webgpu/i, `renderer backend on this path: ${backend}`);
+  await sleep(1000);
+  assertDrawn(await shootCanvas(p.page, 'webgpu.png'), 'WebGPU');
+  p.assertClean();
+}
