@@ -8,6 +8,7 @@
 #                               build and the browser tests (what CI runs); --native skips the
 #                               last two
 #   ./build.sh bench            the performance figures (`gaitlab bench`)
+#   ./build.sh bench --browser  wasm vs native per-frame time, and the time to first frame
 #   ./build.sh cli ...          run the gaitlab CLI in release mode with the given arguments
 # Missing tools are installed on the way: Rust (rustup) with rustfmt, clippy and the wasm32 target,
 # wasm-bindgen-cli at the version in Cargo.lock, and for the browser tests Debian's chromium and
@@ -234,7 +235,29 @@ cmd_test() {
 
 cmd_bench() {
   need_rust
-  cargo run --release --quiet -p gaitlab-cli -- bench "$@"
+  if [ "${1:-}" != "--browser" ]; then
+    cargo run --release --quiet -p gaitlab-cli -- bench "$@"
+    return
+  fi
+  # The wasm/native ratio: the same per-frame work (human, walk, SDLS, 600 frames x 15) timed by
+  # `gaitlab bench` natively and by window.gaitlab.bench() in headless Chromium, plus the time
+  # from navigation to the first frame.
+  cmd_build
+  need_node; need_chromium; need_e2e_modules
+  local native browser
+  native=$(cargo run --release --quiet -p gaitlab-cli -- bench --preset human --method sdls --json)
+  browser=$(cd "$E2E_DIR" && node bench.mjs)
+  NATIVE="$native" BROWSER="$browser" node -e '
+    const n = JSON.parse(process.env.NATIVE).ik[0];
+    const b = JSON.parse(process.env.BROWSER);
+    const w = b.wasm;
+    console.log(`per frame (human, walk, sdls, ${w.iterations_per_frame} IK iterations):`);
+    console.log(`  native  ${n.us_per_frame.toFixed(1)} us median, ${n.us_per_frame_best.toFixed(1)} best`);
+    console.log(`  wasm    ${w.us_per_frame.toFixed(1)} us median, ${w.us_per_frame_best.toFixed(1)} best`);
+    console.log(`  ratio   ${(w.us_per_frame / n.us_per_frame).toFixed(2)}x median, ${(w.us_per_frame_best / n.us_per_frame_best).toFixed(2)}x best (target <= 2x)`);
+    const f = b.first_frame_ms;
+    console.log(`navigation -> first frame: ${f.first_load.toFixed(0)} ms first load, ${f.median.toFixed(0)} ms median of ${f.all.length} (target <= 2000 ms)`);
+    console.log(JSON.stringify({ native: n, browser: b }));'
 }
 
 cmd_cli() {
@@ -249,5 +272,5 @@ case "${1:-build}" in
   bench) shift; cmd_bench "$@" ;;
   cli) shift; cmd_cli "$@" ;;
   serve) shift; cmd_serve "$@" ;;
-  *) echo "usage: ./build.sh [build [--opt] | serve [PORT] | test [--native] | bench | cli ARGS...]" >&2; exit 2 ;;
+  *) echo "usage: ./build.sh [build [--opt] | serve [PORT] | test [--native] | bench [--browser] | cli ARGS...]" >&2; exit 2 ;;
 esac

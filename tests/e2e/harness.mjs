@@ -6,6 +6,7 @@ import { existsSync, mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import assert from 'node:assert/strict';
 import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
 import { serveDir } from './static-server.mjs';
@@ -58,18 +59,30 @@ const PATH_NOISE = {
 };
 
 /**
- * Launches headless Chromium with a fresh profile for `path` ('webgl2' or 'webgpu').
+ * Launches headless Chromium with a fresh profile for `path` ('webgl2' or 'webgpu'), optionally
+ * with a high-DPI screen (`deviceScaleFactor`), a touch screen (`hasTouch`) and a window size
+ * (`viewport`, CSS pixels).
  * Resolves to { context, open(opts), close() }; `open` is openPage with the path's expected noise.
  */
-export async function launch(path) {
+export async function launch(path, { deviceScaleFactor = 1, hasTouch = false, viewport = VIEWPORT } = {}) {
+  // Playwright's emulated scale factor leaves ResizeObserver's devicePixelContentBoxSize (what
+  // eframe sizes the canvas by) at CSS pixels; a real high-DPI screen needs Chromium's own flag
+  // and no emulated viewport.
+  const hiDpi = deviceScaleFactor !== 1;
+  const args = hiDpi
+    ? [...FLAGS[path], `--force-device-scale-factor=${deviceScaleFactor}`,
+      `--window-size=${viewport.width},${viewport.height}`]
+    : FLAGS[path];
   if (!existsSync(chromiumPath)) throw new Error(`${chromiumPath} is missing (apt-get install chromium)`);
   const userDataDir = mkdtempSync(join(tmpdir(), 'gaitlab-e2e-'));
   const context = await chromium.launchPersistentContext(userDataDir, {
     executablePath: chromiumPath,
     headless: true,
-    args: FLAGS[path],
-    viewport: VIEWPORT,
-    deviceScaleFactor: 1,
+    args,
+    viewport: hiDpi ? null : viewport,
+    ...(hiDpi ? {} : { deviceScaleFactor }),
+    hasTouch,
+    acceptDownloads: true,
     timeout: 60_000,
   });
   return {
@@ -266,3 +279,59 @@ export function saveReadmeScreenshot(buf) {
   writeFileSync(file, buf);
   return file;
 }
+
+// Where the 3-D view is expected: right of the side panel, clear of top and bottom bars
+// (fractions of the canvas).
+export const VIEW_REGION = { x0: 0.4, y0: 0.2, x1: 0.95, y1: 0.8 };
+// A blank or uniformly cleared view has stddev 0 and a handful of colours; a lit figure over a
+// floor is far above both.
+export const MIN_VIEW_STDDEV = 8;
+export const MIN_VIEW_COLOURS = 64;
+
+/** Waits (up to `timeout` ms) until state().frame > `frame`; false if it never does. */
+export async function frameExceeds(page, frame, timeout = 15_000) {
+  try {
+    await page.waitForFunction((f) => JSON.parse(window.gaitlab.state()).frame > f, frame, { timeout, polling: 100 });
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+/** Resolves after the page has displayed `n` more animation frames. */
+export function animationFrames(page, n) {
+  return page.evaluate((count) => new Promise((done) => {
+    let left = count;
+    const tick = () => (--left <= 0 ? done() : requestAnimationFrame(tick));
+    requestAnimationFrame(tick);
+  }), n);
+}
+
+/** Opens `url` in a fresh page of `browser` and waits for the app's first frame; a timeout carries the page's console. */
+export async function loadApp(browser, url, opts = {}) {
+  const p = await browser.open(opts);
+  await p.page.goto(url, { waitUntil: 'load' });
+  try {
+    await waitReady(p.page);
+  } catch (e) {
+    e.message += `\n--- page console ---\n${p.log.slice(-30).join('\n')}\n--- problems ---\n${p.problems.join('\n')}`;
+    throw e;
+  }
+  return p;
+}
+
+/** Screenshot of the canvas, its statistics, and an artifact file. */
+export async function shootCanvas(page, name) {
+  const png = await page.locator('#gaitlab-canvas').screenshot({ animations: 'allow', timeout: 30_000 });
+  const file = saveArtifact(name, png);
+  return { png, file, whole: pngStats(png), view: pngStats(png, VIEW_REGION) };
+}
+
+export function assertDrawn(shot, label) {
+  const { whole, view, file } = shot;
+  const fmt = (s) => `stddev ${s.stddev.toFixed(2)}, ${s.distinct} colours`;
+  assert.ok(whole.distinct > 1 && whole.stddev > 0.5, `${label}: the canvas is uniform (${fmt(whole)}); see ${file}`);
+  assert.ok(view.stddev >= MIN_VIEW_STDDEV && view.distinct >= MIN_VIEW_COLOURS,
+    `${label}: the 3-D view region looks blank (${fmt(view)}; want stddev >= ${MIN_VIEW_STDDEV} and >= ${MIN_VIEW_COLOURS} colours); see ${file}`);
+}
+

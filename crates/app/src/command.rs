@@ -8,6 +8,7 @@ use gaitlab_core::preset::thesis::ThesisMode;
 use serde_json::{Map, Value, json};
 
 use crate::lab::Lab;
+use crate::settings::VideoSize;
 use crate::view::ViewOptions;
 
 /// Longest command text accepted, bytes (a custom preset rides in `preset_json`).
@@ -58,7 +59,9 @@ impl Lab {
     /// Applies a JSON command object, e.g. `{"mode":"run","method":"dls"}`.
     /// Keys: `preset`, `preset_json`, `mode`, `method`, `paused` (or `pause`),
     /// `reset`, `step`, `lambda`, `gamma_max`, `max_step`, `null_space_gain`,
-    /// `enforce_limits`, `heading_deg`, `plots`, `views` (an object of view flags).
+    /// `enforce_limits`, `heading_deg`, `plots`, `plot_joints` (joint names),
+    /// `record` (motion take on/off), `save` (`"bvh"` or `"csv"`: download the
+    /// take), `video_size`, `record_video` (on/off), `views` (an object of view flags).
     /// Keys apply in that order; the first bad key stops the command with an
     /// error naming it, and what came before it stays applied.
     ///
@@ -75,7 +78,7 @@ impl Lab {
             serde_json::from_str(json).map_err(|e| format!("command is not JSON: {e}"))?;
         let object: &Map<String, Value> =
             value.as_object().ok_or("command must be a JSON object")?;
-        const KNOWN: [&str; 15] = [
+        const KNOWN: [&str; 20] = [
             "preset",
             "preset_json",
             "mode",
@@ -91,6 +94,11 @@ impl Lab {
             "enforce_limits",
             "heading_deg",
             "plots",
+            "plot_joints",
+            "record",
+            "save",
+            "record_video",
+            "video_size",
         ];
         if let Some(unknown) = object
             .keys()
@@ -166,6 +174,35 @@ impl Lab {
         if let Some(v) = get("plots") {
             self.settings.plots = flag("plots", v)?;
         }
+        if let Some(v) = get("plot_joints") {
+            let names = v
+                .as_array()
+                .ok_or("plot_joints: expected an array of joint names")?
+                .iter()
+                .enumerate()
+                .map(|(i, name)| text(&format!("plot_joints[{i}]"), name).map(str::to_owned))
+                .collect::<Result<Vec<_>, _>>()?;
+            self.set_plot_joints(&names)?;
+        }
+        if let Some(v) = get("record") {
+            if flag("record", v)? {
+                self.start_recording();
+            } else {
+                self.stop_recording();
+            }
+        }
+        if let Some(v) = get("save") {
+            self.save_take(text("save", v)?)?;
+        }
+        if let Some(v) = get("video_size") {
+            let name = text("video_size", v)?;
+            self.settings.video_size = VideoSize::parse(name).ok_or_else(|| {
+                format!("video_size: unknown size {name:?} (view, p360, p720, p1080)")
+            })?;
+        }
+        if let Some(v) = get("record_video") {
+            self.set_video_recording(flag("record_video", v)?);
+        }
         if let Some(v) = get("views") {
             let mut views = self.settings.view.clone();
             apply_views(&mut views, v)?;
@@ -211,6 +248,27 @@ impl Lab {
             "views": [{ "method": self.settings.method.name(), "effectors": effectors }],
             "view_options": self.settings.view,
             "heading_deg": self.settings.heading_deg,
+            "backend": self.backend,
+            "camera": {
+                "yaw_deg": f64::from(self.camera.yaw.to_degrees()),
+                "pitch_deg": f64::from(self.camera.pitch.to_degrees()),
+                "distance_m": f64::from(self.camera.distance),
+            },
+            "plot_joints": self
+                .plot_joints
+                .iter()
+                .map(|&j| skeleton.joints()[j].name.as_str())
+                .collect::<Vec<_>>(),
+            "recording": {
+                "active": self.recording,
+                "frames": self.take.as_ref().map_or(0, crate::recording::Take::frames),
+                "seconds": self.take.as_ref().map_or(0.0, crate::recording::Take::seconds),
+            },
+            "video": {
+                "recording": self.video_recording,
+                "frames": self.video_frames,
+                "size": self.settings.video_size.name(),
+            },
             "last_error": self.last_error,
         })
         .to_string()

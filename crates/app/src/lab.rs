@@ -12,6 +12,7 @@ use gaitlab_motion::ThesisDriver;
 use glam::DMat3;
 
 use crate::history::History;
+use crate::recording::Take;
 use crate::render::{Camera, Scene};
 use crate::settings::Settings;
 
@@ -22,6 +23,24 @@ const MAX_FRAME_ADVANCE_S: f64 = 0.1;
 /// A monotonic clock in milliseconds, supplied by the platform (the core and the
 /// lab read no clocks themselves).
 pub type Clock = Box<dyn Fn() -> f64>;
+
+/// Most joints plotted at once.
+pub const MAX_PLOT_JOINTS: usize = 8;
+
+/// Joints plotted when the settings name none the creature has.
+const DEFAULT_PLOT_JOINTS: [&str; 4] =
+    ["left_hip_flex", "left_knee", "right_hip_flex", "right_knee"];
+
+/// A file for the person: name, MIME type and contents.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Download {
+    /// Suggested file name.
+    pub file_name: String,
+    /// MIME type.
+    pub mime: &'static str,
+    /// Contents.
+    pub text: String,
+}
 
 /// The whole state of the lab.
 pub struct Lab {
@@ -51,6 +70,41 @@ pub struct Lab {
     pub(crate) link_changed: bool,
     /// Set when the preset changed (the web glue pushes a history entry).
     pub(crate) preset_changed: bool,
+    /// Joint-angle history for the plots (the joints in `plot_joints`).
+    pub(crate) joint_history: History,
+    /// Skeleton indices of the plotted joints.
+    pub(crate) plot_joints: Vec<usize>,
+    /// The motion take being recorded or last recorded.
+    pub(crate) take: Option<Take>,
+    /// Whether simulated frames are being appended to `take`.
+    pub(crate) recording: bool,
+    /// Whether the web glue should be recording video of the 3-D view.
+    pub(crate) video_recording: bool,
+    /// Frames the video recorder has copied (reported by the web front end).
+    pub(crate) video_frames: u64,
+    /// The 3-D view's rectangle on the canvas, physical pixels `[x, y, w, h]`.
+    pub(crate) view_rect_px: [f32; 4],
+    /// A file the front end should hand to the person (web: a download).
+    pub(crate) pending_download: Option<Download>,
+    /// The graphics path drawing the view ("webgpu (…)" or "webgl2 (…)"), when known.
+    pub backend: Option<String>,
+}
+
+/// A joint value as plotted: degrees for revolute joints, millimetres for prismatic ones.
+fn display_value(skeleton: &gaitlab_core::Skeleton, joint: usize, value: f64) -> f64 {
+    match skeleton.joints()[joint].kind {
+        gaitlab_core::JointKind::Revolute => value.to_degrees(),
+        gaitlab_core::JointKind::Prismatic => value * 1e3,
+    }
+}
+
+/// A plotted joint's legend label with its unit.
+fn plot_label(skeleton: &gaitlab_core::Skeleton, joint: usize) -> String {
+    let j = &skeleton.joints()[joint];
+    match j.kind {
+        gaitlab_core::JointKind::Revolute => format!("{} (°)", j.name),
+        gaitlab_core::JointKind::Prismatic => format!("{} (mm)", j.name),
+    }
 }
 
 fn bundled_or_default(name: &str) -> Result<Creature, String> {
@@ -138,6 +192,15 @@ impl Lab {
             custom_preset: None,
             link_changed: false,
             preset_changed: false,
+            backend: None,
+            joint_history: History::default(),
+            plot_joints: Vec::new(),
+            take: None,
+            recording: false,
+            video_recording: false,
+            video_frames: 0,
+            view_rect_px: [0.0; 4],
+            pending_download: None,
         };
         lab.after_reset();
         lab
@@ -221,6 +284,9 @@ impl Lab {
         self.creature = creature;
         self.driver = driver;
         self.custom_preset = custom;
+        // A take belongs to its skeleton.
+        self.take = None;
+        self.recording = false;
         // Frame the new creature from scratch.
         self.camera.framed = false;
         self.preset_changed = true;
@@ -301,6 +367,7 @@ impl Lab {
             .map(|e| e.name.clone())
             .collect();
         self.history = History::new(names);
+        self.resolve_plot_joints();
         self.refresh_scene();
     }
 
@@ -341,6 +408,17 @@ impl Lab {
                 .unwrap_or(&[]);
             self.history
                 .push(self.driver.time(), errors.iter().copied());
+            let joints = &self.driver.pose().joints;
+            let skeleton = &self.creature.skeleton;
+            self.joint_history.push(
+                self.driver.time(),
+                self.plot_joints
+                    .iter()
+                    .map(|&j| display_value(skeleton, j, joints[j])),
+            );
+            if self.recording {
+                self.record_frame();
+            }
         }
         if let (Some(started), Some(clock)) = (started, self.clock.as_ref()) {
             let per_frame_us = (clock() - started) * 1e3 / f64::from(steps);
@@ -351,6 +429,157 @@ impl Lab {
             };
         }
         self.refresh_scene();
+    }
+
+    fn record_frame(&mut self) {
+        let Some(take) = self.take.as_mut() else {
+            self.recording = false;
+            return;
+        };
+        let targets = self
+            .driver
+            .targets()
+            .map(|t| &t.position[..])
+            .unwrap_or(&[]);
+        let pushed = take.push(
+            self.driver.time(),
+            self.driver.pose(),
+            self.driver.effector_positions(),
+            targets,
+        );
+        if !pushed {
+            self.recording = false;
+            if take.is_full() {
+                self.last_error = Some(format!(
+                    "recording: stopped at the {:.0} s limit",
+                    crate::recording::MAX_TAKE_S
+                ));
+            }
+        }
+    }
+
+    /// Starts a new motion take (the previous one is dropped).
+    pub fn start_recording(&mut self) {
+        self.take = Some(Take::new(
+            &self.creature.skeleton,
+            1.0 / self.frame_seconds(),
+        ));
+        self.recording = true;
+    }
+
+    /// Stops appending to the take (it stays available to save).
+    pub fn stop_recording(&mut self) {
+        self.recording = false;
+    }
+
+    /// Whether a motion take is being recorded.
+    #[must_use]
+    pub fn recording(&self) -> bool {
+        self.recording
+    }
+
+    /// The current or last take.
+    #[must_use]
+    pub fn take(&self) -> Option<&Take> {
+        self.take.as_ref()
+    }
+
+    /// Queues the take as a `bvh` or `csv` file for the person.
+    ///
+    /// # Errors
+    /// An unknown format, no take, or the writer's reason.
+    pub fn save_take(&mut self, format: &str) -> Result<(), String> {
+        let take = self
+            .take
+            .as_ref()
+            .ok_or("save: nothing recorded yet (start a recording first)")?;
+        let skeleton = &self.creature.skeleton;
+        let (text, mime) = match format {
+            "bvh" => (take.to_bvh(skeleton)?, "text/plain"),
+            "csv" => (take.to_csv(skeleton)?, "text/csv"),
+            other => return Err(format!("save: unknown format {other:?} (bvh, csv)")),
+        };
+        let file_name = format!(
+            "gaitlab-{}-{}-{}.{format}",
+            self.creature.name,
+            self.settings.mode.name(),
+            self.settings.method.name()
+        );
+        self.pending_download = Some(Download {
+            file_name,
+            mime,
+            text,
+        });
+        Ok(())
+    }
+
+    /// Takes the file queued for the person, if any.
+    pub fn take_download(&mut self) -> Option<Download> {
+        self.pending_download.take()
+    }
+
+    /// Starts or stops the video recording of the 3-D view (carried out by the
+    /// web front end).
+    pub fn set_video_recording(&mut self, on: bool) {
+        self.video_recording = on;
+    }
+
+    /// Whether video of the 3-D view should be recording.
+    #[must_use]
+    pub fn video_recording(&self) -> bool {
+        self.video_recording
+    }
+
+    /// The 3-D view's rectangle on the canvas, physical pixels `[x, y, w, h]`.
+    #[must_use]
+    pub fn view_rect_px(&self) -> [f32; 4] {
+        self.view_rect_px
+    }
+
+    /// Sets the plotted joints by name.
+    ///
+    /// # Errors
+    /// A name the creature lacks, or more than [`MAX_PLOT_JOINTS`]; nothing changes then.
+    pub fn set_plot_joints(&mut self, names: &[String]) -> Result<(), String> {
+        if names.len() > MAX_PLOT_JOINTS {
+            return Err(format!(
+                "plot_joints: at most {MAX_PLOT_JOINTS} joints, got {}",
+                names.len()
+            ));
+        }
+        for (i, name) in names.iter().enumerate() {
+            if self.creature.skeleton.joint_index(name).is_none() {
+                return Err(format!(
+                    "plot_joints[{i}]: {} has no joint named {name:?}",
+                    self.creature.name
+                ));
+            }
+        }
+        self.settings.plot_joints = names.to_vec();
+        self.resolve_plot_joints();
+        Ok(())
+    }
+
+    /// The plotted joints' indices from the settings' names; falls back to the
+    /// hips and knees, or the first joints, when none of the names exist.
+    fn resolve_plot_joints(&mut self) {
+        let skeleton = &self.creature.skeleton;
+        let find = |names: &mut dyn Iterator<Item = &str>| -> Vec<usize> {
+            let mut found: Vec<usize> = names.filter_map(|n| skeleton.joint_index(n)).collect();
+            found.dedup();
+            found.truncate(MAX_PLOT_JOINTS);
+            found
+        };
+        let mut joints = find(&mut self.settings.plot_joints.iter().map(String::as_str));
+        if joints.is_empty() {
+            joints = find(&mut DEFAULT_PLOT_JOINTS.into_iter());
+        }
+        if joints.is_empty() {
+            joints = (0..skeleton.joint_count().min(4)).collect();
+        }
+        let names = joints.iter().map(|&j| plot_label(skeleton, j)).collect();
+        self.plot_joints = joints;
+        self.joint_history = History::new(names);
     }
 
     /// Rebuilds the 3-D scene from the driver's current pose.

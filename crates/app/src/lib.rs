@@ -5,15 +5,21 @@
 pub mod render;
 pub mod view;
 
+pub mod bench;
 pub mod command;
 pub mod history;
 pub mod lab;
 pub mod link;
 mod panels;
+pub mod recording;
 pub mod settings;
 mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;
+#[cfg(target_arch = "wasm32")]
+mod web_download;
+#[cfg(target_arch = "wasm32")]
+mod web_video;
 
 pub use lab::Lab;
 pub use settings::Settings;

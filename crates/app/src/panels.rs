@@ -1,7 +1,7 @@
 //! The control panels, after She 2006 §6.2's workbench: Method (with λ, γmax
 //! and the step clamp), Motion, Motion control (wounded, moving forward), View,
-//! Object transformation, Speed, Target positions, and the Reset / Pause / Step
-//! buttons; plus a preset picker and the live error plot.
+//! Object transformation, Speed, Target positions, Recording, and the Reset /
+//! Pause / Step buttons; plus a preset picker and the live error plot.
 
 use gaitlab_core::ik::Method;
 use gaitlab_core::preset::bundled_names;
@@ -9,6 +9,7 @@ use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_motion::validate_params;
 
 use crate::lab::Lab;
+use crate::settings::VideoSize;
 
 /// Human labels of the methods, in the thesis' order.
 fn method_label(method: Method) -> &'static str {
@@ -232,6 +233,81 @@ pub fn view(ui: &mut egui::Ui, lab: &mut Lab) {
         {
             lab.set_heading_deg(heading);
         }
+    });
+}
+
+/// Recording panel (She 2006 §6.2): a motion take saved as BVH or CSV, and a
+/// video of the 3-D view at a chosen frame size (in the browser).
+pub fn recording(ui: &mut egui::Ui, lab: &mut Lab) {
+    ui.collapsing("Recording", |ui| {
+        ui.horizontal(|ui| {
+            if lab.recording() {
+                if ui.button("Stop motion").clicked() {
+                    lab.stop_recording();
+                }
+            } else if ui
+                .button("Record motion")
+                .on_hover_text("Record every animation frame: pose, effectors and targets")
+                .clicked()
+            {
+                lab.start_recording();
+            }
+            if let Some(take) = lab.take() {
+                ui.label(format!(
+                    "{} frames · {:.1} s",
+                    take.frames(),
+                    take.seconds()
+                ));
+            }
+        });
+        let has_take = lab.take().is_some_and(|t| t.frames() > 0);
+        ui.horizontal(|ui| {
+            for (label, format, hint) in [
+                (
+                    "Save BVH",
+                    "bvh",
+                    "Motion capture file for Blender, Maya and friends",
+                ),
+                (
+                    "Save CSV",
+                    "csv",
+                    "Time, root, joint values, effectors and targets",
+                ),
+            ] {
+                if ui
+                    .add_enabled(has_take, egui::Button::new(label))
+                    .on_hover_text(hint)
+                    .clicked()
+                    && let Err(error) = lab.save_take(format)
+                {
+                    lab.report_error(error);
+                }
+            }
+        });
+        ui.separator();
+        let mut size = lab.settings.video_size;
+        egui::ComboBox::from_label("Video frame size")
+            .selected_text(size.label())
+            .show_ui(ui, |ui| {
+                for s in VideoSize::ALL {
+                    ui.selectable_value(&mut size, s, s.label());
+                }
+            });
+        lab.settings.video_size = size;
+        let video_supported = cfg!(target_arch = "wasm32");
+        ui.add_enabled_ui(video_supported, |ui| {
+            if lab.video_recording() {
+                if ui.button("Stop video").clicked() {
+                    lab.set_video_recording(false);
+                }
+            } else if ui
+                .button("Record video")
+                .on_hover_text("Record the 3-D view as a WebM video")
+                .clicked()
+            {
+                lab.set_video_recording(true);
+            }
+        });
     });
 }
 

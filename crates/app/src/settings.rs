@@ -26,6 +26,69 @@ pub struct Settings {
     pub heading_deg: f64,
     /// Show the error and joint-angle plots.
     pub plots: bool,
+    /// Joints whose angles are plotted, by name (empty: the hips and knees).
+    pub plot_joints: Vec<String>,
+    /// Frame size of video recordings of the 3-D view.
+    pub video_size: VideoSize,
+}
+
+/// Frame size of a video recording (She 2006 §6.2: "users can set the frame size").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum VideoSize {
+    /// The 3-D view's own size on screen.
+    #[default]
+    View,
+    /// 640 × 360.
+    P360,
+    /// 1280 × 720.
+    P720,
+    /// 1920 × 1080.
+    P1080,
+}
+
+impl VideoSize {
+    /// Every size, in menu order.
+    pub const ALL: [Self; 4] = [Self::View, Self::P360, Self::P720, Self::P1080];
+
+    /// Width and height in pixels, or `None` for the view's own size.
+    #[must_use]
+    pub fn pixels(self) -> Option<(u32, u32)> {
+        match self {
+            Self::View => None,
+            Self::P360 => Some((640, 360)),
+            Self::P720 => Some((1280, 720)),
+            Self::P1080 => Some((1920, 1080)),
+        }
+    }
+
+    /// Name used in commands and settings.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::View => "view",
+            Self::P360 => "p360",
+            Self::P720 => "p720",
+            Self::P1080 => "p1080",
+        }
+    }
+
+    /// Menu label.
+    #[must_use]
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::View => "View size",
+            Self::P360 => "640 × 360",
+            Self::P720 => "1280 × 720",
+            Self::P1080 => "1920 × 1080",
+        }
+    }
+
+    /// The size named `name`.
+    #[must_use]
+    pub fn parse(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|s| s.name() == name)
+    }
 }
 
 impl Default for Settings {
@@ -38,6 +101,8 @@ impl Default for Settings {
             view: ViewOptions::default(),
             heading_deg: 0.0,
             plots: true,
+            plot_joints: Vec::new(),
+            video_size: VideoSize::View,
         }
     }
 }

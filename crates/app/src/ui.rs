@@ -4,7 +4,8 @@
 
 use egui_plot::{Legend, Line, Plot, PlotPoints};
 
-use crate::lab::Lab;
+use crate::history::History;
+use crate::lab::{Lab, MAX_PLOT_JOINTS};
 use crate::panels;
 use crate::render::viewport;
 
@@ -29,6 +30,7 @@ impl Lab {
                     panels::motion(ui, self);
                     panels::speed_and_targets(ui, self);
                     panels::view(ui, self);
+                    panels::recording(ui, self);
                     ui.separator();
                     self.readout(ui);
                 });
@@ -51,7 +53,14 @@ impl Lab {
                     }
                 });
             }
-            viewport::show(ui, &self.scene, &mut self.camera, &self.settings.view);
+            let rect = viewport::show(ui, &self.scene, &mut self.camera, &self.settings.view).rect;
+            let ppp = ui.ctx().pixels_per_point();
+            self.view_rect_px = [
+                rect.min.x * ppp,
+                rect.min.y * ppp,
+                rect.width() * ppp,
+                rect.height() * ppp,
+            ];
         });
         if !self.paused {
             ui.ctx().request_repaint();
@@ -107,21 +116,82 @@ impl Lab {
         }
     }
 
-    fn plots(&self, ui: &mut egui::Ui) {
-        ui.label("Effector error (mm)");
-        Plot::new("gaitlab-error-plot")
-            .legend(Legend::default())
-            .allow_drag(false)
-            .allow_zoom(false)
-            .allow_scroll(false)
-            .include_y(0.0)
-            .include_y(1.0)
-            .show(ui, |plot| {
-                for (s, name) in self.history.names.iter().enumerate() {
-                    let points: Vec<[f64; 2]> =
-                        self.history.points(s).map(|[t, e]| [t, e * 1e3]).collect();
-                    plot.line(Line::new(name.as_str(), PlotPoints::from(points)));
-                }
+    fn plots(&mut self, ui: &mut egui::Ui) {
+        let half = (ui.available_width() - ui.spacing().item_spacing.x).max(0.0) / 2.0;
+        let height = ui.available_height();
+        ui.horizontal(|ui| {
+            ui.allocate_ui(egui::vec2(half, height), |ui| {
+                ui.vertical(|ui| {
+                    ui.label("Effector error (mm)");
+                    series_plot(ui, "gaitlab-error-plot", &self.history, 1e3, 1.0);
+                });
             });
+            ui.allocate_ui(egui::vec2(half, height), |ui| {
+                ui.vertical(|ui| {
+                    ui.horizontal(|ui| {
+                        ui.label("Joint angles");
+                        self.joint_picker(ui);
+                    });
+                    series_plot(ui, "gaitlab-joint-plot", &self.joint_history, 1.0, 10.0);
+                });
+            });
+        });
     }
+
+    /// A menu of the creature's joints with a checkbox each (at most
+    /// [`MAX_PLOT_JOINTS`] plotted).
+    fn joint_picker(&mut self, ui: &mut egui::Ui) {
+        let mut chosen: Option<Vec<String>> = None;
+        ui.menu_button("Joints…", |ui| {
+            egui::ScrollArea::vertical()
+                .max_height(300.0)
+                .show(ui, |ui| {
+                    let joints = self.creature.skeleton.joints();
+                    for (j, joint) in joints.iter().enumerate() {
+                        let mut on = self.plot_joints.contains(&j);
+                        let full = self.plot_joints.len() >= MAX_PLOT_JOINTS;
+                        let enabled = on || !full;
+                        if ui
+                            .add_enabled(enabled, egui::Checkbox::new(&mut on, joint.name.as_str()))
+                            .changed()
+                        {
+                            let mut names: Vec<String> = self
+                                .plot_joints
+                                .iter()
+                                .filter(|&&k| k != j)
+                                .map(|&k| joints[k].name.clone())
+                                .collect();
+                            if on {
+                                names.push(joint.name.clone());
+                            }
+                            chosen = Some(names);
+                        }
+                    }
+                });
+        });
+        if let Some(names) = chosen
+            && let Err(error) = self.set_plot_joints(&names)
+        {
+            self.report_error(error);
+        }
+    }
+}
+
+/// One live plot of every series in `history`, values scaled by `scale`; the
+/// y range always includes [0, `min_span`].
+fn series_plot(ui: &mut egui::Ui, id: &str, history: &History, scale: f64, min_span: f64) {
+    Plot::new(id)
+        .legend(Legend::default())
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_scroll(false)
+        .include_y(0.0)
+        .include_y(min_span)
+        .show(ui, |plot| {
+            for (s, name) in history.names.iter().enumerate() {
+                let points: Vec<[f64; 2]> =
+                    history.points(s).map(|[t, v]| [t, v * scale]).collect();
+                plot.line(Line::new(name.as_str(), PlotPoints::from(points)));
+            }
+        });
 }

@@ -13,6 +13,8 @@ use wasm_bindgen::prelude::*;
 use crate::lab::Lab;
 use crate::link;
 use crate::settings::Settings;
+use crate::web_download::offer_text;
+use crate::web_video::VideoRecorder;
 
 /// Depth buffer bits requested from eframe (the 3-D view's pass matches it).
 const DEPTH_BITS: u8 = 24;
@@ -24,10 +26,36 @@ fn window() -> Option<web_sys::Window> {
     web_sys::window()
 }
 
+/// A `performance.mark` for the start-up breakdown (ignored where unsupported).
+fn mark(name: &str) {
+    if let Some(performance) = window().and_then(|w| w.performance()) {
+        let _ = performance.mark(name);
+    }
+}
+
 fn now_ms() -> f64 {
     window()
         .and_then(|w| w.performance())
         .map_or(0.0, |p| p.now())
+}
+
+/// "webgpu" or "webgl2", then the adapter's name and driver as the browser reports them.
+fn backend_name(info: &egui_wgpu::wgpu::AdapterInfo) -> String {
+    let kind = match info.backend {
+        egui_wgpu::wgpu::Backend::BrowserWebGpu => "webgpu",
+        egui_wgpu::wgpu::Backend::Gl => "webgl2",
+        other => return format!("{other:?}").to_lowercase(),
+    };
+    let detail = [info.name.as_str(), info.driver.as_str()]
+        .into_iter()
+        .filter(|s| !s.is_empty())
+        .collect::<Vec<_>>()
+        .join(", ");
+    if detail.is_empty() {
+        kind.to_owned()
+    } else {
+        format!("{kind} ({detail})")
+    }
 }
 
 /// The eframe app: the lab plus the page plumbing.
@@ -37,28 +65,43 @@ struct WebApp {
     first_frame_done: bool,
     /// Set by the `popstate` listener: the URL changed under us (Back/Forward).
     url_changed: Rc<Cell<bool>>,
+    /// The app's canvas (the video recorder copies the 3-D view from it).
+    canvas: web_sys::HtmlCanvasElement,
+    /// The video recording in progress, if any.
+    video: Option<VideoRecorder>,
 }
 
 impl WebApp {
-    fn new(cc: &eframe::CreationContext<'_>, url_changed: Rc<Cell<bool>>) -> Self {
+    fn new(
+        cc: &eframe::CreationContext<'_>,
+        url_changed: Rc<Cell<bool>>,
+        canvas: web_sys::HtmlCanvasElement,
+    ) -> Self {
         let settings: Settings = cc
             .storage
             .and_then(|storage| eframe::get_value(storage, SETTINGS_KEY))
             .unwrap_or_default();
+        mark("gaitlab-graphics-ready");
+        let mut backend = None;
         if let Some(render_state) = cc.wgpu_render_state.as_ref() {
+            backend = Some(backend_name(&render_state.adapter.get_info()));
             crate::render::gpu::install(
                 &cc.egui_ctx,
                 render_state,
                 crate::render::gpu::PassFormat::eframe(render_state, DEPTH_BITS),
             );
         }
+        mark("gaitlab-pipelines-ready");
         let mut lab = Lab::new(settings);
         lab.set_clock(Box::new(now_ms));
+        lab.backend = backend;
         let mut app = Self {
             lab,
             egui_ctx: cc.egui_ctx.clone(),
             first_frame_done: false,
             url_changed,
+            canvas,
+            video: None,
         };
         app.apply_url();
         app
@@ -133,12 +176,62 @@ impl WebApp {
         }
     }
 
+    /// Hands a saved take to the person as a download.
+    fn deliver_download(&mut self) {
+        if let Some(download) = self.lab.take_download()
+            && let Err(error) = offer_text(&download.text, &download.file_name, download.mime)
+        {
+            self.lab
+                .report_error(format!("save: the browser refused the download: {error:?}"));
+        }
+    }
+
+    /// Starts, follows or stops the video recorder as the lab asks.
+    fn sync_video(&mut self, ctx: &egui::Context) {
+        match (self.lab.video_recording(), self.video.take()) {
+            (true, Some(video)) => {
+                video.set_rect(self.lab.view_rect_px());
+                self.lab.video_frames = video.frames();
+                self.video = Some(video);
+                // Every frame must be painted for the recording to be smooth.
+                ctx.request_repaint();
+            }
+            (true, None) => {
+                let name = format!(
+                    "gaitlab-{}-{}-{}",
+                    self.lab.creature().name,
+                    self.lab.settings.mode.name(),
+                    self.lab.settings.method.name()
+                );
+                match VideoRecorder::start(
+                    self.canvas.clone(),
+                    self.lab.view_rect_px(),
+                    self.lab.settings.video_size.pixels(),
+                    name,
+                ) {
+                    Ok(video) => {
+                        self.lab.video_frames = 0;
+                        self.video = Some(video);
+                        ctx.request_repaint();
+                    }
+                    Err(error) => {
+                        self.lab.set_video_recording(false);
+                        self.lab.report_error(format!("video: {error}"));
+                    }
+                }
+            }
+            (false, Some(video)) => video.stop(),
+            (false, None) => {}
+        }
+    }
+
     /// Tells the page the first frame is on screen.
     fn signal_first_frame(&mut self) {
         if self.first_frame_done {
             return;
         }
         self.first_frame_done = true;
+        mark("gaitlab-first-frame");
         let Some(window) = window() else { return };
         if let Some(document) = window.document() {
             if let Some(loading) = document.get_element_by_id("loading") {
@@ -162,6 +255,9 @@ impl eframe::App for WebApp {
             self.apply_url();
         }
         self.lab.ui(ui);
+        self.deliver_download();
+        let ctx = ui.ctx().clone();
+        self.sync_video(&ctx);
         self.update_url();
         self.signal_first_frame();
     }
@@ -175,7 +271,7 @@ impl eframe::App for WebApp {
     }
 }
 
-/// Publishes `window.gaitlab = { state(), command(json) }` over the running app.
+/// Publishes `window.gaitlab = { state(), command(json), bench(json) }` over the running app.
 fn publish_api(runner: &Rc<eframe::WebRunner>) -> Result<(), JsValue> {
     let window = window().ok_or("no window")?;
     let api = js_sys::Object::new();
@@ -203,12 +299,24 @@ fn publish_api(runner: &Rc<eframe::WebRunner>) -> Result<(), JsValue> {
             None => "the app is not running".to_owned(),
         }
     });
+    // The benchmark runs in the page's main thread and owns its own driver: the
+    // running lab is untouched.
+    let bench = Closure::<dyn Fn(JsValue) -> String>::new(move |json: JsValue| {
+        let json = json.as_string().unwrap_or_default();
+        let mut clock = now_ms;
+        match crate::bench::run(&json, &mut clock) {
+            Ok(result) => result,
+            Err(error) => serde_json::json!({ "error": error }).to_string(),
+        }
+    });
     js_sys::Reflect::set(&api, &"state".into(), state.as_ref().unchecked_ref())?;
+    js_sys::Reflect::set(&api, &"bench".into(), bench.as_ref().unchecked_ref())?;
     js_sys::Reflect::set(&api, &"command".into(), command.as_ref().unchecked_ref())?;
     js_sys::Reflect::set(&window, &"gaitlab".into(), &api)?;
     // The page lives as long as the app: the closures stay alive with it.
     state.forget();
     command.forget();
+    bench.forget();
     Ok(())
 }
 
@@ -231,6 +339,7 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
     window.add_event_listener_with_callback("popstate", on_popstate.as_ref().unchecked_ref())?;
     on_popstate.forget();
 
+    let app_canvas = canvas.clone();
     let runner = Rc::new(eframe::WebRunner::new());
     let options = eframe::WebOptions {
         depth_buffer: DEPTH_BITS,
@@ -240,7 +349,7 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
         .start(
             canvas,
             options,
-            Box::new(move |cc| Ok(Box::new(WebApp::new(cc, url_changed)))),
+            Box::new(move |cc| Ok(Box::new(WebApp::new(cc, url_changed, app_canvas)))),
         )
         .await?;
     publish_api(&runner)?;

@@ -1,5 +1,6 @@
 //! The panels through egui_kittest: they exist, choosing a method or a motion
-//! in the UI changes the lab, and Pause stops the frame counter.
+//! in the UI changes the lab, Pause stops the frame counter, and the
+//! recording panel records and saves a take.
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
@@ -25,6 +26,9 @@ fn the_thesis_panels_are_there() {
         "Target positions",
         "View",
         "Object transformation",
+        "Recording",
+        "Effector error (mm)",
+        "Joint angles",
         "Reset",
         "Play",
     ] {
@@ -67,4 +71,40 @@ fn pause_stops_the_frame_counter_and_step_advances_one_frame() {
     harness.get_by_label("Step").click();
     harness.run();
     assert_eq!(harness.state().frame(), before + 1, "one step");
+}
+
+#[test]
+fn the_recording_panel_records_a_take_and_saves_it() {
+    let mut harness = harness();
+    harness.run();
+    harness.get_by_label("Recording").click();
+    harness.run();
+    harness.get_by_label("Record motion").click();
+    harness.run();
+    assert!(harness.state().recording(), "Record motion starts a take");
+    for _ in 0..5 {
+        harness.get_by_label("Step").click();
+        harness.run();
+    }
+    harness.get_by_label("Stop motion").click();
+    harness.run();
+    assert!(!harness.state().recording());
+    assert_eq!(harness.state().take().map(|t| t.frames()), Some(5));
+    harness.get_by_label("Save BVH").click();
+    harness.run();
+    let download = harness.state_mut().take_download().expect("a BVH to save");
+    assert!(
+        download.text.starts_with("HIERARCHY"),
+        "{}",
+        &download.text[..20]
+    );
+    assert_eq!(
+        download
+            .text
+            .lines()
+            .filter(|l| l.starts_with("Frames:"))
+            .count(),
+        1
+    );
+    assert!(download.text.contains("Frames: 5"));
 }

@@ -6,6 +6,7 @@
 //! read the [`Pose`](gaitlab_core::Pose), the targets and the IK metrics.
 
 mod error;
+pub mod frame_bench;
 mod ik_stage;
 mod script;
 mod thesis_driver;

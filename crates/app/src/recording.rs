@@ -1,0 +1,166 @@
+//! The recording panel's motion take (She 2006 §6.2 "Recording panel", which
+//! records every animation frame): each simulated frame's pose, effector
+//! positions and targets, kept in flat buffers and written out on demand as
+//! BVH or as the pose CSV of the core's exporters. A take is capped at
+//! [`MAX_TAKE_S`] of animation so memory stays bounded; buffers are reserved
+//! up front, so recording does not allocate every frame.
+
+use gaitlab_core::export::{BvhWriter, PoseCsvColumns, PoseCsvWriter};
+use gaitlab_core::{Pose, RootTransform, Skeleton};
+use glam::DVec3;
+
+/// Longest take, seconds of animation.
+pub const MAX_TAKE_S: f64 = 600.0;
+/// Animation reserved for when a take starts, seconds.
+const RESERVE_S: f64 = 60.0;
+
+/// One recorded take.
+#[derive(Clone, Debug)]
+pub struct Take {
+    fps: f64,
+    joints: usize,
+    effectors: usize,
+    max_frames: usize,
+    times: Vec<f64>,
+    roots: Vec<RootTransform>,
+    values: Vec<f64>,
+    positions: Vec<DVec3>,
+    targets: Vec<DVec3>,
+}
+
+fn frames_for(seconds: f64, fps: f64) -> usize {
+    // fps is a validated preset rate (1..=1000), so this is a small whole number.
+    (seconds * fps).ceil().max(1.0) as usize
+}
+
+impl Take {
+    /// An empty take for `skeleton` animated at `fps` frames per second.
+    #[must_use]
+    pub fn new(skeleton: &Skeleton, fps: f64) -> Self {
+        let fps = if fps.is_finite() && fps > 0.0 {
+            fps
+        } else {
+            60.0
+        };
+        let joints = skeleton.joint_count();
+        let effectors = skeleton.effector_count();
+        let reserve = frames_for(RESERVE_S, fps);
+        Self {
+            fps,
+            joints,
+            effectors,
+            max_frames: frames_for(MAX_TAKE_S, fps),
+            times: Vec::with_capacity(reserve),
+            roots: Vec::with_capacity(reserve),
+            values: Vec::with_capacity(reserve * joints),
+            positions: Vec::with_capacity(reserve * effectors),
+            targets: Vec::with_capacity(reserve * effectors),
+        }
+    }
+
+    /// Frames recorded.
+    #[must_use]
+    pub fn frames(&self) -> usize {
+        self.times.len()
+    }
+
+    /// Animation recorded, seconds.
+    #[must_use]
+    pub fn seconds(&self) -> f64 {
+        self.frames() as f64 / self.fps
+    }
+
+    /// Whether the take reached [`MAX_TAKE_S`].
+    #[must_use]
+    pub fn is_full(&self) -> bool {
+        self.frames() >= self.max_frames
+    }
+
+    /// Appends one frame; returns false (and records nothing) once full or if
+    /// the sizes do not match the skeleton.
+    pub fn push(&mut self, time: f64, pose: &Pose, positions: &[DVec3], targets: &[DVec3]) -> bool {
+        if self.is_full() || pose.joints.len() != self.joints || positions.len() != self.effectors {
+            return false;
+        }
+        self.times.push(time);
+        self.roots.push(pose.root);
+        self.values.extend_from_slice(&pose.joints);
+        self.positions.extend_from_slice(positions);
+        if targets.len() == self.effectors {
+            self.targets.extend_from_slice(targets);
+        } else {
+            self.targets.extend_from_slice(positions);
+        }
+        true
+    }
+
+    fn pose_into(&self, frame: usize, pose: &mut Pose) {
+        pose.root = self.roots[frame];
+        pose.joints.clear();
+        pose.joints
+            .extend_from_slice(&self.values[frame * self.joints..(frame + 1) * self.joints]);
+    }
+
+    /// The take as a BVH file (degrees, `Zrotation Xrotation Yrotation`).
+    ///
+    /// # Errors
+    /// The writer's reason (an empty take, a non-finite pose).
+    pub fn to_bvh(&self, skeleton: &Skeleton) -> Result<String, String> {
+        if self.frames() == 0 {
+            return Err("recording: nothing recorded yet".to_owned());
+        }
+        let fail = |e: gaitlab_core::export::WriteError| format!("recording: BVH: {e}");
+        let mut writer = BvhWriter::new(skeleton, self.fps).map_err(fail)?;
+        let mut out = String::new();
+        writer.write_header(&mut out, self.frames()).map_err(fail)?;
+        let mut pose = Pose {
+            root: RootTransform::default(),
+            joints: Vec::with_capacity(self.joints),
+        };
+        for frame in 0..self.frames() {
+            self.pose_into(frame, &mut pose);
+            writer.write_frame(&mut out, &pose).map_err(fail)?;
+        }
+        writer.finish().map_err(fail)?;
+        Ok(out)
+    }
+
+    /// The take as a pose CSV with effector positions and targets.
+    ///
+    /// # Errors
+    /// The writer's reason.
+    pub fn to_csv(&self, skeleton: &Skeleton) -> Result<String, String> {
+        if self.frames() == 0 {
+            return Err("recording: nothing recorded yet".to_owned());
+        }
+        let fail = |e: gaitlab_core::export::WriteError| format!("recording: CSV: {e}");
+        let writer = PoseCsvWriter::new(
+            skeleton,
+            PoseCsvColumns {
+                effector_positions: true,
+                effector_targets: true,
+            },
+        );
+        let mut out = String::new();
+        writer.write_header(&mut out).map_err(fail)?;
+        let mut pose = Pose {
+            root: RootTransform::default(),
+            joints: Vec::with_capacity(self.joints),
+        };
+        let k = self.effectors;
+        for frame in 0..self.frames() {
+            self.pose_into(frame, &mut pose);
+            let span = frame * k..(frame + 1) * k;
+            writer
+                .write_row(
+                    &mut out,
+                    self.times[frame],
+                    &pose,
+                    &self.positions[span.clone()],
+                    &self.targets[span],
+                )
+                .map_err(fail)?;
+        }
+        Ok(out)
+    }
+}

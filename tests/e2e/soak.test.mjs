@@ -1,0 +1,58 @@
+// The long run of issue 3's acceptance: for GAITLAB_SOAK_S seconds (default 120) the app cycles
+// every preset × mode × method while animating; it must stay silent on the console, keep
+// animating, apply every switch, and keep every effector error finite.
+
+import { after, before, describe, it } from 'node:test';
+import assert from 'node:assert/strict';
+import { command, frameExceeds, launch, loadApp, saveArtifact, serveDist, state } from './harness.mjs';
+
+const SOAK_S = Number(process.env.GAITLAB_SOAK_S ?? 120);
+const PRESETS = ['human', 'ik-quadruped'];
+const MODES = ['walk', 'run', 'wounded-walk', 'wounded-run'];
+const METHODS = ['transpose', 'pinv', 'dls', 'sdls'];
+
+let server;
+before(async () => { server = await serveDist(); });
+after(async () => { await server?.close(); });
+
+describe(`soak: ${SOAK_S} s cycling every preset, mode and method (WebGL2)`, () => {
+  let browser;
+  before(async () => { browser = await launch('webgl2'); });
+  after(async () => { await browser?.close(); });
+
+  it('stays clean and keeps animating', { timeout: (SOAK_S + 180) * 1000 }, async () => {
+    const p = await loadApp(browser, server.url);
+    try {
+      const combos = PRESETS.flatMap((preset) => MODES.flatMap((mode) => METHODS.map((method) => ({ preset, mode, method }))));
+      const slotMs = (SOAK_S * 1000) / combos.length;
+      const started = Date.now();
+      const log = [];
+      let preset = '';
+      for (const [i, combo] of combos.entries()) {
+        // Switching preset restarts the figure; mode and method switch live, mid-stride.
+        const change = combo.preset === preset ? { mode: combo.mode, method: combo.method } : combo;
+        preset = combo.preset;
+        const answer = await command(p.page, change);
+        assert.equal(answer, 'ok', `command(${JSON.stringify(combo)}) → ${answer}`);
+        const s0 = await state(p.page);
+        assert.deepEqual([s0.preset, s0.mode, s0.method], [combo.preset, combo.mode, combo.method]);
+        assert.ok(await frameExceeds(p.page, s0.frame + 2, 30_000),
+          `${JSON.stringify(combo)}: the animation advances (stuck at frame ${s0.frame})`);
+        const until = started + (i + 1) * slotMs;
+        while (Date.now() < until) await new Promise((ok) => setTimeout(ok, Math.min(500, until - Date.now())));
+        const s = await state(p.page);
+        assert.equal(s.last_error, null, `${JSON.stringify(combo)}: ${s.last_error}`);
+        const errors = s.views[0].effectors.map((e) => e.error_m);
+        assert.ok(errors.every((e) => Number.isFinite(e)), `${JSON.stringify(combo)}: effector errors ${errors}`);
+        log.push({ ...combo, frame: s.frame, fps: s.fps, sim_us_per_frame: s.sim_us_per_frame,
+          max_error_mm: Math.max(...errors) * 1e3 });
+      }
+      const elapsed = (Date.now() - started) / 1000;
+      saveArtifact('soak.json', Buffer.from(JSON.stringify({ seconds: elapsed, combos: log }, null, 1)));
+      assert.ok(elapsed >= SOAK_S, `ran ${elapsed.toFixed(1)} s`);
+      p.assertClean();
+    } finally {
+      await p.page.close().catch(() => {});
+    }
+  });
+});
