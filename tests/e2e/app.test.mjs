@@ -244,7 +244,11 @@ async function webgpuChecks(t, p) {
   assert.equal(await canvasContextKind(p.page), 'webgpu', 'the canvas renders through WebGPU');
   const backend = backendOf(s);
   assert.match(backend ?? '', /^webgpu/, `state().backend on this path: ${backend}`);
-  await sleep(1000);
+  // Let it walk a moment, then hold still: on a loaded machine a constantly repainting canvas
+  // can keep Playwright's element screenshot waiting for a stable frame.
+  await frameExceeds(p.page, s.frame + 10, 30_000);
+  assert.equal(await command(p.page, { paused: true }), 'ok');
+  await sleep(500);
   assertDrawn(await shootCanvas(p.page, 'webgpu.png'), 'WebGPU');
   p.assertClean();
 }

