@@ -8,7 +8,7 @@
 #                               build and the browser tests (what CI runs); --native skips the
 #                               last two
 #   ./build.sh bench            the performance figures (`gaitlab bench`)
-#   ./build.sh bench --browser  wasm vs native per-frame time, and the time to first frame
+#   ./build.sh bench --browser [--path webgpu]  wasm vs native per-frame time, and the time to first frame
 #   ./build.sh cli ...          run the gaitlab CLI in release mode with the given arguments
 # Missing tools are installed on the way: Rust (rustup) with rustfmt, clippy and the wasm32 target,
 # wasm-bindgen-cli at the version in Cargo.lock, and for the browser tests Debian's chromium and
@@ -246,7 +246,7 @@ cmd_bench() {
   need_node; need_chromium; need_e2e_modules
   local native browser
   native=$(cargo run --release --quiet -p gaitlab-cli -- bench --preset human --method sdls --json)
-  browser=$(cd "$E2E_DIR" && node bench.mjs)
+  browser=$(cd "$E2E_DIR" && node bench.mjs "${@:2}")
   NATIVE="$native" BROWSER="$browser" node -e '
     const n = JSON.parse(process.env.NATIVE).ik[0];
     const b = JSON.parse(process.env.BROWSER);
@@ -256,7 +256,7 @@ cmd_bench() {
     console.log(`  wasm    ${w.us_per_frame.toFixed(1)} us median, ${w.us_per_frame_best.toFixed(1)} best`);
     console.log(`  ratio   ${(w.us_per_frame / n.us_per_frame).toFixed(2)}x median, ${(w.us_per_frame_best / n.us_per_frame_best).toFixed(2)}x best (target <= 2x)`);
     const f = b.first_frame_ms;
-    console.log(`navigation -> first frame: ${f.first_load.toFixed(0)} ms first load, ${f.median.toFixed(0)} ms median of ${f.all.length} (target <= 2000 ms)`);
+    console.log(`navigation -> first frame (${b.path}): ${f.first_load.toFixed(0)} ms first load, ${f.median.toFixed(0)} ms median of ${f.all.length} (target <= 2000 ms)`);
     console.log(JSON.stringify({ native: n, browser: b }));'
 }
 

@@ -1,7 +1,8 @@
 // Browser figures for `./build.sh bench --browser`: the time from navigation to the app's first
 // frame on the local server (first load and later loads), and window.gaitlab.bench() — the
 // per-frame simulation + IK of the walking human with SDLS, the same routine `gaitlab bench` times
-// natively. Prints one JSON object. Usage: node bench.mjs [--loads N] [--frames N] [--repeats N]
+// natively. Prints one JSON object.
+// Usage: node bench.mjs [--loads N] [--frames N] [--repeats N] [--path webgl2|webgpu]
 
 import { launch, loadApp, serveDist } from './harness.mjs';
 
@@ -13,9 +14,11 @@ function option(name, fallback) {
 const loads = option('loads', 5);
 const frames = option('frames', 600);
 const repeats = option('repeats', 15);
+const pathArg = process.argv.indexOf('--path');
+const path = pathArg >= 0 ? process.argv[pathArg + 1] : 'webgl2';
 
 const server = await serveDist();
-const browser = await launch('webgl2');
+const browser = await launch(path);
 try {
   const firstFrameMs = [];
   for (let i = 0; i < loads; i++) {
@@ -32,6 +35,7 @@ try {
       const marks = await p.page.evaluate(() => Object.fromEntries(
         performance.getEntriesByType('mark').map((m) => [m.name, Math.round(m.startTime)])));
       console.log(JSON.stringify({
+        path,
         startup_marks_ms: marks,
         first_frame_ms: { first_load: firstFrameMs[0], median: sorted[Math.floor(sorted.length / 2)], all: firstFrameMs },
         wasm,
