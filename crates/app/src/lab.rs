@@ -564,15 +564,24 @@ impl Lab {
     /// hips and knees, or the first joints, when none of the names exist.
     fn resolve_plot_joints(&mut self) {
         let skeleton = &self.creature.skeleton;
-        let find = |names: &mut dyn Iterator<Item = &str>| -> Vec<usize> {
-            let mut found: Vec<usize> = names.filter_map(|n| skeleton.joint_index(n)).collect();
+        let find = |names: Vec<&str>| -> Vec<usize> {
+            let mut found: Vec<usize> = names
+                .into_iter()
+                .filter_map(|n| skeleton.joint_index(n))
+                .collect();
             found.dedup();
             found.truncate(MAX_PLOT_JOINTS);
             found
         };
-        let mut joints = find(&mut self.settings.plot_joints.iter().map(String::as_str));
+        let mut joints = find(
+            self.settings
+                .plot_joints
+                .iter()
+                .map(String::as_str)
+                .collect(),
+        );
         if joints.is_empty() {
-            joints = find(&mut DEFAULT_PLOT_JOINTS.into_iter());
+            joints = find(DEFAULT_PLOT_JOINTS.to_vec());
         }
         if joints.is_empty() {
             joints = (0..skeleton.joint_count().min(4)).collect();

@@ -36,3 +36,19 @@ impl Default for ViewOptions {
         }
     }
 }
+
+impl ViewOptions {
+    /// The figure alone in perspective: no axes, targets, grid, shadow or follow.
+    #[must_use]
+    pub fn figure_only() -> Self {
+        Self {
+            world_axes: false,
+            joint_axes: false,
+            targets: false,
+            perspective: true,
+            follow: false,
+            grid: false,
+            shadow: false,
+        }
+    }
+}

@@ -402,18 +402,6 @@ fn front_camera() -> Camera {
     }
 }
 
-fn plain_view() -> ViewOptions {
-    ViewOptions {
-        world_axes: false,
-        joint_axes: false,
-        targets: false,
-        perspective: true,
-        follow: false,
-        grid: false,
-        shadow: false,
-    }
-}
-
 /// Whether channel `c` of `p` is bright and at least twice each other channel.
 fn dominant(p: [u8; 3], c: usize) -> bool {
     let v = u16::from(p[c]);
@@ -446,7 +434,7 @@ fn render_places_the_scene_where_the_camera_puts_it_with_depth_and_high_dpi() {
         let mut frame = Frame::with_samples(&gpu, samples);
         let scene = depth_scene();
         let mut camera = front_camera();
-        let view = plain_view();
+        let view = ViewOptions::figure_only();
         let ppp = 1.5;
         let panel = 120.0;
         let image = frame.render(&gpu, egui::vec2(520.0, 300.0), ppp, |ui| {

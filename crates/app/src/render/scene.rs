@@ -592,18 +592,6 @@ mod tests {
         (Kinematics::of(skeleton, &pose), root)
     }
 
-    fn none() -> ViewOptions {
-        ViewOptions {
-            world_axes: false,
-            joint_axes: false,
-            targets: false,
-            perspective: true,
-            follow: false,
-            grid: false,
-            shadow: false,
-        }
-    }
-
     fn v(p: [f32; 3]) -> DVec3 {
         Vec3::from_array(p).as_dvec3()
     }
@@ -613,7 +601,7 @@ mod tests {
         let skeleton = legs();
         let (kin, root) = pose(&skeleton);
         let mut scene = Scene::new();
-        scene.fill(&skeleton, &kin, root, None, &none());
+        scene.fill(&skeleton, &kin, root, None, &ViewOptions::figure_only());
         // The pelvis sits on the root: no bone, but a sphere. Two hip bones and
         // two foot bones; spheres for the three joints and two effectors.
         assert_eq!(scene.capsules().len(), 4, "{:?}", scene.capsules());
@@ -626,7 +614,7 @@ mod tests {
             joint_axes: true,
             targets: true,
             shadow: true,
-            ..none()
+            ..ViewOptions::figure_only()
         };
         let mut targets = Targets::at(&kin);
         targets.position[0].z += 0.1;
@@ -647,7 +635,7 @@ mod tests {
         let mut scene = Scene::new();
         let view = ViewOptions {
             targets: true,
-            ..none()
+            ..ViewOptions::figure_only()
         };
         let mut targets = Targets::at(&kin);
         targets.position[1] += DVec3::new(0.05, 0.02, -0.03);
@@ -693,7 +681,13 @@ mod tests {
         let (kin, root) = pose(&skeleton);
         let targets = Targets::at(&kin);
         let mut scene = Scene::new();
-        scene.fill(&skeleton, &kin, root, Some(&targets), &none());
+        scene.fill(
+            &skeleton,
+            &kin,
+            root,
+            Some(&targets),
+            &ViewOptions::figure_only(),
+        );
         assert!(scene.segments().is_empty(), "no axes, no error segments");
         assert!(scene.ground_marks().is_empty(), "no shadows");
         assert!(
@@ -718,7 +712,7 @@ mod tests {
         let mut scene = Scene::new();
         let view = ViewOptions {
             shadow: true,
-            ..none()
+            ..ViewOptions::figure_only()
         };
         scene.fill(&skeleton, &kin, root, None, &view);
         let contacts = scene
