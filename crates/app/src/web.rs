@@ -320,12 +320,32 @@ fn publish_api(runner: &Rc<eframe::WebRunner>) -> Result<(), JsValue> {
     Ok(())
 }
 
+/// The wgpu set-up for the page: eframe's default (WebGPU, else WebGL2), or
+/// WebGL2 alone when the page already knows there is no WebGPU adapter.
+///
+/// Asking the browser for an adapter it does not have costs 0.1–1.2 s in
+/// Chromium; `index.html` asks while the wasm downloads and compiles, so wgpu
+/// need not ask again on the WebGL2 path.
+fn wgpu_options(webgpu_adapter: Option<bool>) -> egui_wgpu::WgpuConfiguration {
+    let mut config = egui_wgpu::WgpuConfiguration::default();
+    if webgpu_adapter == Some(false)
+        && let egui_wgpu::WgpuSetup::CreateNew(create_new) = &mut config.wgpu_setup
+    {
+        create_new.instance_descriptor.backends = egui_wgpu::wgpu::Backends::GL;
+    }
+    config
+}
+
 /// Starts gaitlab on the canvas with id `canvas_id`.
+///
+/// `webgpu_adapter` is what the page learned from
+/// `navigator.gpu.requestAdapter()`: `false` skips wgpu's own WebGPU probe and
+/// goes straight to WebGL2; `true` or absent lets wgpu decide.
 ///
 /// # Errors
 /// If the page has no such canvas, or eframe cannot start (no WebGPU/WebGL2).
 #[wasm_bindgen]
-pub async fn start(canvas_id: String) -> Result<(), JsValue> {
+pub async fn start(canvas_id: String, webgpu_adapter: Option<bool>) -> Result<(), JsValue> {
     let window = window().ok_or("no window")?;
     let document = window.document().ok_or("no document")?;
     let canvas = document
@@ -343,6 +363,7 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
     let runner = Rc::new(eframe::WebRunner::new());
     let options = eframe::WebOptions {
         depth_buffer: DEPTH_BITS,
+        wgpu_options: wgpu_options(webgpu_adapter),
         ..eframe::WebOptions::default()
     };
     runner

@@ -43,9 +43,7 @@ use wgpu::util::DeviceExt as _;
 
 use super::camera::Camera;
 use super::mesh;
-use super::scene::{
-    Capsule, GROUND_Y, GroundMark, SHADOW_FADE_HEIGHT, SceneFrame, Segment, Sphere,
-};
+use super::scene::{Capsule, GROUND_Y, GroundMark, SHADOW_FADE_HEIGHT, SceneFrame, Segment};
 use crate::view::ViewOptions;
 
 /// Colour format of the offscreen scene target (holds sRGB-encoded values).
@@ -280,8 +278,8 @@ struct ViewTargets {
     composite: wgpu::BindGroup,
     globals: wgpu::Buffer,
     globals_group: wgpu::BindGroup,
-    capsules: InstanceBuffer,
-    spheres: InstanceBuffer,
+    /// Capsules, then the spheres as zero-length capsules.
+    solids: InstanceBuffer,
     segments: InstanceBuffer,
     marks: InstanceBuffer,
     /// egui frame number of the last prepare.
@@ -298,7 +296,6 @@ pub struct SceneRenderer {
     composite_layout: wgpu::BindGroupLayout,
     sampler: wgpu::Sampler,
     capsule_pipeline: wgpu::RenderPipeline,
-    sphere_pipeline: wgpu::RenderPipeline,
     ground_pipeline: wgpu::RenderPipeline,
     mark_pipeline: wgpu::RenderPipeline,
     line_pipeline: wgpu::RenderPipeline,
@@ -307,6 +304,8 @@ pub struct SceneRenderer {
     mesh_indices: wgpu::Buffer,
     mesh_index_count: u32,
     views: HashMap<u64, ViewTargets>,
+    /// Scratch list of the frame's solids (capsules and spheres), reused.
+    solids: Vec<Capsule>,
 }
 
 /// Whether `format` can be rendered 4× multisampled (and resolved) on `device`
@@ -424,7 +423,6 @@ impl SceneRenderer {
         );
         let capsule_attributes =
             wgpu::vertex_attr_array![1 => Float32x4, 2 => Float32x4, 3 => Float32x4];
-        let sphere_attributes = wgpu::vertex_attr_array![1 => Float32x4, 2 => Float32x4];
         let pair_attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4];
         let line_attributes =
             wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4];
@@ -432,11 +430,6 @@ impl SceneRenderer {
             size_of::<Capsule>(),
             wgpu::VertexStepMode::Instance,
             &capsule_attributes,
-        );
-        let sphere_layout = vertex_layout(
-            size_of::<Sphere>(),
-            wgpu::VertexStepMode::Instance,
-            &sphere_attributes,
         );
         let mark_layout = vertex_layout(
             size_of::<GroundMark>(),
@@ -514,18 +507,10 @@ impl SceneRenderer {
             })
         };
         let capsule_pipeline = scene_pipeline(
-            "gaitlab capsules",
+            "gaitlab solids",
             "vs_capsule",
             "fs_solid",
-            &[Some(mesh_layout.clone()), Some(capsule_layout)],
-            true,
-            None,
-        );
-        let sphere_pipeline = scene_pipeline(
-            "gaitlab spheres",
-            "vs_sphere",
-            "fs_solid",
-            &[Some(mesh_layout), Some(sphere_layout)],
+            &[Some(mesh_layout), Some(capsule_layout)],
             true,
             None,
         );
@@ -619,7 +604,6 @@ impl SceneRenderer {
             composite_layout,
             sampler,
             capsule_pipeline,
-            sphere_pipeline,
             ground_pipeline,
             mark_pipeline,
             line_pipeline,
@@ -628,6 +612,7 @@ impl SceneRenderer {
             mesh_indices,
             mesh_index_count: u32::try_from(indices.len()).unwrap_or(0),
             views: HashMap::new(),
+            solids: Vec::new(),
         }
     }
 
@@ -685,8 +670,7 @@ impl SceneRenderer {
             composite,
             globals,
             globals_group,
-            capsules: InstanceBuffer::new(device, "gaitlab capsules"),
-            spheres: InstanceBuffer::new(device, "gaitlab spheres"),
+            solids: InstanceBuffer::new(device, "gaitlab solids"),
             segments: InstanceBuffer::new(device, "gaitlab segments"),
             marks: InstanceBuffer::new(device, "gaitlab ground marks"),
             last_frame: 0,
@@ -817,8 +801,12 @@ impl SceneRenderer {
         );
         queue.write_buffer(&view.globals, 0, bytemuck::bytes_of(&globals));
         let frame = &callback.frame;
-        view.capsules.upload(device, queue, &frame.capsules);
-        view.spheres.upload(device, queue, &frame.spheres);
+        // One draw for every solid: a pipeline fewer to compile at start-up
+        // (slow on software WebGL2). The scratch list keeps its capacity.
+        self.solids.clear();
+        self.solids.extend_from_slice(&frame.capsules);
+        self.solids.extend(frame.spheres.iter().map(Capsule::from));
+        view.solids.upload(device, queue, &self.solids);
         view.segments.upload(device, queue, &frame.segments);
         if callback.shadow {
             view.marks.upload(device, queue, &frame.ground_marks);
@@ -859,15 +847,10 @@ impl SceneRenderer {
         // Opaque, depth-writing solids first.
         pass.set_vertex_buffer(0, self.mesh_vertices.slice(..));
         pass.set_index_buffer(self.mesh_indices.slice(..), wgpu::IndexFormat::Uint16);
-        if view.capsules.count > 0 {
+        if view.solids.count > 0 {
             pass.set_pipeline(&self.capsule_pipeline);
-            pass.set_vertex_buffer(1, view.capsules.slice::<Capsule>());
-            pass.draw_indexed(0..self.mesh_index_count, 0, 0..view.capsules.count);
-        }
-        if view.spheres.count > 0 {
-            pass.set_pipeline(&self.sphere_pipeline);
-            pass.set_vertex_buffer(1, view.spheres.slice::<Sphere>());
-            pass.draw_indexed(0..self.mesh_index_count, 0, 0..view.spheres.count);
+            pass.set_vertex_buffer(1, view.solids.slice::<Capsule>());
+            pass.draw_indexed(0..self.mesh_index_count, 0, 0..view.solids.count);
         }
         // The ground behind them (depth-tested, not written), then its marks.
         if callback.grid {

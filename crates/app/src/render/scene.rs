@@ -101,6 +101,19 @@ impl Capsule {
     }
 }
 
+impl From<&Sphere> for Capsule {
+    /// The sphere as a capsule of zero length (the renderer draws both with one pipeline).
+    fn from(sphere: &Sphere) -> Self {
+        Self {
+            a: sphere.centre,
+            radius: sphere.radius,
+            b: sphere.centre,
+            padding: 0.0,
+            color: sphere.color,
+        }
+    }
+}
+
 /// A sphere: a joint, an effector or a target.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]

@@ -87,15 +87,6 @@ fn vs_capsule(
     return solid(mesh, a.xyz, b.xyz, a.w, color);
 }
 
-@vertex
-fn vs_sphere(
-    @location(0) mesh: vec4<f32>,
-    @location(1) centre: vec4<f32>,
-    @location(2) color: vec4<f32>,
-) -> SolidOut {
-    return solid(mesh, centre.xyz, centre.xyz, centre.w, color);
-}
-
 @fragment
 fn fs_solid(in: SolidOut) -> @location(0) vec4<f32> {
     let n = normalize(in.normal);
