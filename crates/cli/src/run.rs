@@ -74,14 +74,20 @@ pub fn timing(fps: Option<u32>, preset_fps: u32, seconds: f64) -> Result<(f64, u
 pub fn run(args: &RunArgs) -> Result<(), Failure> {
     let creature = load::creature(&args.preset)?;
     let scenario = &creature.scenario;
+    match scenario.engine {
+        Engine::Ik => {}
+        Engine::Poda => {
+            return Err(Failure::input(format!(
+                "{}: engine poda validates but cannot run yet (the PODA driver is in progress)",
+                creature.name
+            )));
+        }
+    }
     if let Some(gait) = &args.gait {
         return Err(Failure::input(format!(
             "--gait: engine {} has no gaits (asked for {gait:?}); use --mode",
             scenario.engine.name()
         )));
-    }
-    match scenario.engine {
-        Engine::Ik => {}
     }
     let mode = match &args.mode {
         None => scenario.mode,

@@ -8,6 +8,7 @@
 mod error;
 pub mod frame_bench;
 mod ik_stage;
+pub mod poda;
 mod script;
 mod thesis_driver;
 mod track;

@@ -14,6 +14,7 @@
 mod build;
 mod bundled;
 mod error;
+pub mod poda;
 mod scenario;
 mod schema;
 pub mod thesis;
@@ -22,6 +23,7 @@ mod validate;
 pub use build::Creature;
 pub use bundled::{DEFAULT_PRESET, bundled, bundled_json, bundled_names, load_bundled};
 pub use error::{PresetError, ROOT_PATH};
+pub use poda::{PathKindSpec, PathSpec, PodaLegSpec, PodaParams};
 pub use scenario::{DEFAULT_FPS, Engine, MAX_FPS, Scenario};
 pub use schema::{
     DhJointSpec, EffectorSpec, FORMAT, Format, JointSpec, JointType, LimbSpec, MAX_EFFECTORS,

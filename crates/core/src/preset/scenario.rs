@@ -9,6 +9,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::poda::PodaParams;
 use super::thesis::{ThesisMode, ThesisParams};
 use crate::ik::{IkOptions, Method};
 
@@ -25,17 +26,20 @@ pub enum Engine {
     /// She 2006: sinusoidal effector targets tracked by Jacobian IK.
     #[default]
     Ik,
+    /// Girard & Maciejewski 1985 (PODA): gait-driven footholds and foot splines.
+    Poda,
 }
 
 impl Engine {
     /// Every engine.
-    pub const ALL: [Engine; 1] = [Engine::Ik];
+    pub const ALL: [Engine; 2] = [Engine::Ik, Engine::Poda];
 
     /// The name used in presets, URLs and the CLI.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
             Engine::Ik => "ik",
+            Engine::Poda => "poda",
         }
     }
 
@@ -78,6 +82,9 @@ pub struct Scenario {
     /// Target-script parameters (She 2006 §5.1.1); every field optional.
     #[serde(default)]
     pub thesis: ThesisParams,
+    /// PODA gait parameters (engine `poda` only); every field optional.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub poda: Option<PodaParams>,
 }
 
 impl Default for Scenario {
@@ -89,6 +96,7 @@ impl Default for Scenario {
             ik: IkOptions::default(),
             fps: DEFAULT_FPS,
             thesis: ThesisParams::default(),
+            poda: None,
         }
     }
 }
@@ -101,6 +109,12 @@ impl Scenario {
             method: self.method,
             ..self.ik.clone()
         }
+    }
+
+    /// The PODA parameters: the preset's `poda` section or the defaults.
+    #[must_use]
+    pub fn poda_params(&self) -> PodaParams {
+        self.poda.clone().unwrap_or_default()
     }
 
     /// Seconds per animation frame, `1 / fps`.

@@ -1,0 +1,272 @@
+//! `scenario.poda`: the parameters of Girard & Maciejewski 1985's kinematic
+//! locomotion model (PODA) as they appear in a preset — which effectors are
+//! legs, the gait (period P, duty factor, relative phases Rᵢ; eq. 7–9), body
+//! speed, step height, the key leg positions of the transfer trajectory,
+//! the body path, and the simple dynamics' body mass and leg forces
+//! (eq. 12–15).
+//!
+//! Only values that need no gait model are checked here (ranges, names,
+//! finiteness); the gait engine in `gaitlab-motion` checks the relations
+//! between them (eq. 7–8) and the gait name when it is built.
+
+use serde::{Deserialize, Serialize};
+
+use super::PresetError;
+
+/// Most IK iterations per frame for one leg.
+pub const MAX_LEG_ITERATIONS: usize = 64;
+/// Most key leg positions in a transfer trajectory.
+pub const MAX_TRANSFER_KEYS: usize = 16;
+/// Most control points of a body path.
+pub const MAX_PATH_POINTS: usize = 64;
+
+/// One leg: the effector that is its foot and the first joint that belongs
+/// to the leg (the hip). The leg's joints are the foot's chain from the hip
+/// down; joints above the hip (a spine) belong to the body.
+///
+/// ```json
+/// {"name": "left_front", "effector": "left_front_foot", "hip": "left_front_shoulder_x"}
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PodaLegSpec {
+    /// Leg name for metrics and the UI; default: the effector's name.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub name: Option<String>,
+    /// The foot effector.
+    pub effector: String,
+    /// The leg's first joint.
+    pub hip: String,
+}
+
+/// Spline family of a body path (PODA "Horizontal Control": "a cubic spline
+/// (Catmull-Rom or B-spline)").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PathKindSpec {
+    /// Interpolating: the path passes through every control point.
+    #[default]
+    CatmullRom,
+    /// Approximating uniform cubic B-spline.
+    BSpline,
+}
+
+/// `scenario.poda.path`: the desired body path on the ground plane.
+///
+/// ```json
+/// {"kind": "catmull_rom", "points": [[0, 0], [0, 3], [2, 5]], "closed": false}
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PathSpec {
+    /// Catmull-Rom (default) or B-spline.
+    #[serde(default)]
+    pub kind: PathKindSpec,
+    /// Control points `[x, z]` on the ground, metres; 2 to 64.
+    pub points: Vec<[f64; 2]>,
+    /// Whether the path is a loop. Default false.
+    #[serde(default)]
+    pub closed: bool,
+}
+
+/// `scenario.poda`: every field optional.
+///
+/// ```json
+/// {"gait": "trot", "period_s": 0.6, "speed_mps": 1.0, "step_height_m": 0.08,
+///  "legs": [{"effector": "left_front_foot", "hip": "left_front_shoulder_x"}]}
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct PodaParams {
+    /// The legs, in the named-gait leg order. Default: every limb that has an
+    /// effector, in limb order (hip = the limb's first joint).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub legs: Vec<PodaLegSpec>,
+    /// Named gait (relative phases and duty factor). Default: the first gait
+    /// known for the leg count (walk, tripod, wave).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gait: Option<String>,
+    /// Gait cycle period P, seconds. Default 1.
+    pub period_s: f64,
+    /// Duty factor override; default the named gait's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub duty_factor: Option<f64>,
+    /// Relative phase override, one per leg in [0, 1); default the named gait's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub phases: Option<Vec<f64>>,
+    /// Desired body speed along the path, m/s. Default 0.5.
+    pub speed_mps: f64,
+    /// Highest point of the transfer trajectory above the ground, metres. Default 0.06.
+    pub step_height_m: f64,
+    /// Height of the root above the ground when standing, metres. Default: the
+    /// root's rest height.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stand_height_m: Option<f64>,
+    /// Key leg positions of the transfer trajectory between lift-off and
+    /// touchdown, each `[along, height]`: the fraction of the step travelled
+    /// (0 lift-off … 1 foothold) and the height as a fraction of
+    /// `step_height_m`. Default `[[0.1, 0.7], [0.5, 1.0], [0.9, 0.5]]`.
+    pub transfer_keys: Vec<[f64; 2]>,
+    /// The body path; default a straight line ahead from the root.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub path: Option<PathSpec>,
+    /// Body mass, kg (eq. 12, 14). Default 30.
+    pub body_mass_kg: f64,
+    /// Largest horizontal force one supporting leg can apply, N (eq. 14).
+    /// Default: the body's weight.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_leg_force_n: Option<f64>,
+    /// Scale of the vertical leg-force superposition (eq. 12–13): 0 keeps the
+    /// body level, 1 is the full ballistic model. Default 1.
+    pub vertical_gain: f64,
+    /// Largest IK iterations per leg per frame. Default 12.
+    pub iterations_per_frame: usize,
+    /// Stop iterating a leg once its foot is this close to its target, metres. Default 1e-6.
+    pub tolerance_m: f64,
+    /// Gain k of the null-space term toward the joints' center angles (eq. 6). Default 0.5.
+    pub center_gain: f64,
+}
+
+impl Default for PodaParams {
+    fn default() -> Self {
+        Self {
+            legs: Vec::new(),
+            gait: None,
+            period_s: 1.0,
+            duty_factor: None,
+            phases: None,
+            speed_mps: 0.5,
+            step_height_m: 0.06,
+            stand_height_m: None,
+            transfer_keys: vec![[0.1, 0.7], [0.5, 1.0], [0.9, 0.5]],
+            path: None,
+            body_mass_kg: 30.0,
+            max_leg_force_n: None,
+            vertical_gain: 1.0,
+            iterations_per_frame: 12,
+            tolerance_m: 1e-6,
+            center_gain: 0.5,
+        }
+    }
+}
+
+fn positive(path: String, value: f64, max: f64, unit: &str) -> Result<(), PresetError> {
+    if value.is_finite() && value > 0.0 && value <= max {
+        Ok(())
+    } else {
+        Err(PresetError::new(
+            path,
+            format!("must be a number of {unit} in (0, {max}]"),
+        ))
+    }
+}
+
+impl PodaParams {
+    /// Checks every value that needs no skeleton or gait model. Paths start with `prefix`.
+    ///
+    /// # Errors
+    /// A [`PresetError`] naming the first bad value.
+    pub fn check_values(&self, prefix: &str) -> Result<(), PresetError> {
+        let at = |field: &str| format!("{prefix}.{field}");
+        positive(at("period_s"), self.period_s, 10.0, "seconds")?;
+        if self.period_s < 0.1 {
+            return Err(PresetError::new(
+                at("period_s"),
+                "must be at least 0.1 seconds",
+            ));
+        }
+        if let Some(duty) = self.duty_factor
+            && !(duty.is_finite() && (0.05..=0.95).contains(&duty))
+        {
+            return Err(PresetError::new(
+                at("duty_factor"),
+                "must be between 0.05 and 0.95",
+            ));
+        }
+        if let Some(phases) = &self.phases {
+            for (i, phase) in phases.iter().enumerate() {
+                if !phase.is_finite() {
+                    return Err(PresetError::new(
+                        format!("{prefix}.phases[{i}]"),
+                        "must be a finite fraction of the period",
+                    ));
+                }
+            }
+        }
+        positive(at("speed_mps"), self.speed_mps, 20.0, "m/s")?;
+        if self.speed_mps < 0.01 {
+            return Err(PresetError::new(
+                at("speed_mps"),
+                "must be at least 0.01 m/s",
+            ));
+        }
+        positive(at("step_height_m"), self.step_height_m, 5.0, "metres")?;
+        if let Some(height) = self.stand_height_m {
+            positive(at("stand_height_m"), height, 100.0, "metres")?;
+        }
+        if self.transfer_keys.len() > MAX_TRANSFER_KEYS {
+            return Err(PresetError::new(
+                at("transfer_keys"),
+                format!("at most {MAX_TRANSFER_KEYS} key positions"),
+            ));
+        }
+        let mut previous = 0.0;
+        for (i, [along, height]) in self.transfer_keys.iter().copied().enumerate() {
+            let key = format!("{prefix}.transfer_keys[{i}]");
+            if !(along.is_finite() && along > previous && along < 1.0) {
+                return Err(PresetError::new(
+                    key,
+                    "the step fraction must increase strictly between 0 and 1",
+                ));
+            }
+            if !(height.is_finite() && (0.0..=2.0).contains(&height)) {
+                return Err(PresetError::new(
+                    key,
+                    "the height fraction must be between 0 and 2",
+                ));
+            }
+            previous = along;
+        }
+        if let Some(path) = &self.path {
+            let n = path.points.len();
+            if !(2..=MAX_PATH_POINTS).contains(&n) {
+                return Err(PresetError::new(
+                    at("path.points"),
+                    format!("needs 2 to {MAX_PATH_POINTS} points"),
+                ));
+            }
+            for (i, point) in path.points.iter().enumerate() {
+                if !point.iter().all(|v| v.is_finite() && v.abs() <= 1e6) {
+                    return Err(PresetError::new(
+                        format!("{prefix}.path.points[{i}]"),
+                        "must be two finite coordinates in metres",
+                    ));
+                }
+            }
+        }
+        positive(at("body_mass_kg"), self.body_mass_kg, 1e6, "kg")?;
+        if let Some(force) = self.max_leg_force_n {
+            positive(at("max_leg_force_n"), force, 1e9, "newtons")?;
+        }
+        if !(self.vertical_gain.is_finite() && (0.0..=4.0).contains(&self.vertical_gain)) {
+            return Err(PresetError::new(
+                at("vertical_gain"),
+                "must be between 0 and 4",
+            ));
+        }
+        if !(1..=MAX_LEG_ITERATIONS).contains(&self.iterations_per_frame) {
+            return Err(PresetError::new(
+                at("iterations_per_frame"),
+                format!("must be between 1 and {MAX_LEG_ITERATIONS}"),
+            ));
+        }
+        positive(at("tolerance_m"), self.tolerance_m, 0.1, "metres")?;
+        if !(self.center_gain.is_finite() && (0.0..=10.0).contains(&self.center_gain)) {
+            return Err(PresetError::new(
+                at("center_gain"),
+                "must be between 0 and 10",
+            ));
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,15 @@
+//! PODA (Girard & Maciejewski 1985): kinematic locomotion for any number of
+//! legs — the gait model (eq. 7–9), named gaits, Catmull-Rom splines for foot
+//! transfer trajectories and body paths, and per-leg pseudoinverse IK with
+//! null-space center angles (eq. 5–6).
+
+pub mod gait;
+pub mod gaits;
+pub mod leg_ik;
+pub mod path;
+pub mod spline;
+
+pub use gait::{Derived, GaitError, GaitParams, LegPhase};
+pub use gaits::{gait_names, named_gait};
+pub use leg_ik::{LegIk, LegIkOptions};
+pub use path::{BodyPath, PathError, PathKind, PathSample};
