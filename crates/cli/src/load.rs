@@ -60,8 +60,12 @@ pub fn print_presets() {
     }
 }
 
-/// Legs of a creature: effectors whose name says foot, paw or hoof.
+/// Legs of a creature: a PODA creature's legs, otherwise effectors whose
+/// name says foot, paw or hoof.
 pub fn legs(creature: &Creature) -> usize {
+    if let Some(poda) = &creature.scenario.poda {
+        return poda.legs.len();
+    }
     creature
         .skeleton
         .effectors()
@@ -77,6 +81,21 @@ pub fn legs(creature: &Creature) -> usize {
 /// `gaitlab validate FILE`.
 pub fn validate(file: &str) -> Result<(), Failure> {
     let creature = creature(file)?;
+    if creature.scenario.engine == gaitlab_core::preset::Engine::Poda {
+        // The gait name and the relations between gait values need the gait model.
+        let driver = gaitlab_motion::PodaDriver::new(&creature).map_err(Failure::input)?;
+        println!(
+            "ok: {} — engine poda, {} joints, {} legs, gait {}, period {} s, duty factor {}, speed {} m/s",
+            creature.name,
+            creature.skeleton.joint_count(),
+            legs(&creature),
+            driver.gait_name(),
+            driver.gait().period_s(),
+            driver.gait().duty_factor(),
+            driver.gait().speed_mps()
+        );
+        return Ok(());
+    }
     println!(
         "ok: {} — engine {}, {} joints, {} effectors, {} legs, mode {}, method {}",
         creature.name,

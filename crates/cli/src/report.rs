@@ -206,3 +206,48 @@ pub fn print(metrics: &Value, as_json: bool) {
         }
     }
 }
+
+/// Prints gait metrics as one JSON line, or as a short table of legs.
+pub fn print_gait(metrics: &Value, as_json: bool) {
+    if as_json {
+        println!("{metrics}");
+        return;
+    }
+    let get = |key: &str| metrics.get(key).cloned().unwrap_or(Value::Null);
+    let number = |key: &str| get(key).as_f64().unwrap_or(f64::NAN);
+    println!(
+        "{} · engine poda · gait {} · {} frames ({:.2} s simulated) in {:.1} ms · {:.1} µs per frame",
+        get("preset").as_str().unwrap_or("?"),
+        get("gait").as_str().unwrap_or("?"),
+        get("frames"),
+        number("sim_seconds"),
+        number("wall_ms"),
+        number("us_per_frame"),
+    );
+    println!(
+        "  foot slip max {:.3} mm · period {:.3} s · stride {:.3} m · body speed {:.3} m/s",
+        number("foot_slip_max_m") * 1e3,
+        number("period_s"),
+        number("stride_length_m"),
+        number("body_speed_mps"),
+    );
+    println!(
+        "  {:<14} {:>10} {:>10} {:>10} {:>10}",
+        "leg", "duty", "(set)", "phase", "(set)"
+    );
+    for leg in get("legs").as_array().into_iter().flatten() {
+        let value = |key: &str| {
+            leg.get(key)
+                .and_then(Value::as_f64)
+                .map_or("-".to_owned(), |v| format!("{v:.3}"))
+        };
+        println!(
+            "  {:<14} {:>10} {:>10} {:>10} {:>10}",
+            leg.get("name").and_then(Value::as_str).unwrap_or("?"),
+            value("duty_factor"),
+            value("duty_factor_set"),
+            value("relative_phase"),
+            value("relative_phase_set"),
+        );
+    }
+}

@@ -1,5 +1,6 @@
 //! `gaitlab run PRESET_OR_FILE [--mode M] [--method K] [--seconds S] [--fps N]
-//! [--bvh FILE] [--csv FILE] [--json]`: the She 2006 motions, headless.
+//! [--bvh FILE] [--csv FILE] [--json]`: the She 2006 motions, headless; PODA
+//! presets go to [`crate::run_poda`] (`--gait G`, `--path FILE`).
 
 use clap::Args;
 use gaitlab_core::ik::Method;
@@ -25,6 +26,9 @@ pub struct RunArgs {
     /// Gait (PODA and physics engines; the IK engine has none).
     #[arg(long)]
     pub gait: Option<String>,
+    /// Body path file for PODA: `{"kind": "catmull_rom", "points": [[x, z], …], "closed": false}`.
+    #[arg(long)]
+    pub path: Option<String>,
     /// IK method: transpose, pinv, dls, sdls (default: the preset's).
     #[arg(long)]
     pub method: Option<String>,
@@ -76,12 +80,13 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
     let scenario = &creature.scenario;
     match scenario.engine {
         Engine::Ik => {}
-        Engine::Poda => {
-            return Err(Failure::input(format!(
-                "{}: engine poda validates but cannot run yet (the PODA driver is in progress)",
-                creature.name
-            )));
-        }
+        Engine::Poda => return crate::run_poda::run(&creature, args),
+    }
+    if args.path.is_some() {
+        return Err(Failure::input(format!(
+            "--path: engine {} follows its own script; --path is for engine poda",
+            scenario.engine.name()
+        )));
     }
     if let Some(gait) = &args.gait {
         return Err(Failure::input(format!(

@@ -40,7 +40,17 @@ fn effector(creature: &Creature, positions: &[DVec3], name: &str) -> DVec3 {
 #[test]
 fn every_bundled_preset_builds_and_is_named_after_itself() {
     let names: Vec<&str> = preset::bundled_names().collect();
-    assert_eq!(names, ["human", "ik-quadruped"]);
+    assert_eq!(
+        names,
+        [
+            "human",
+            "ik-quadruped",
+            "poda-quadruped",
+            "poda-biped",
+            "hexapod",
+            "insect-14"
+        ]
+    );
     assert_eq!(names[0], preset::DEFAULT_PRESET);
     for (name, json) in preset::bundled() {
         let creature = Creature::from_json(json).unwrap_or_else(|e| panic!("{name}: {e}"));
@@ -366,5 +376,30 @@ fn a_preset_round_trips_through_serde() {
             parsed.build().expect("builds"),
             again.build().expect("builds")
         );
+    }
+}
+
+#[test]
+fn poda_creatures_have_the_papers_leg_and_joint_counts() {
+    use gaitlab_core::preset::Engine;
+    // (preset, legs, joints): PODA Figure 2's animal has four 9-DOF legs, a
+    // 9-DOF neck and an 18-DOF spine; Figure 11's insect has 14 legs.
+    let expected = [
+        ("poda-quadruped", 4, 63),
+        ("poda-biped", 2, 20),
+        ("hexapod", 6, 19),
+        ("insect-14", 14, 43),
+    ];
+    for (name, legs, joints) in expected {
+        let creature = preset::load_bundled(name)
+            .expect("bundled")
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(creature.scenario.engine, Engine::Poda, "{name}");
+        assert_eq!(
+            creature.scenario.poda_params().legs.len(),
+            legs,
+            "{name} legs"
+        );
+        assert_eq!(creature.skeleton.joint_count(), joints, "{name} joints");
     }
 }

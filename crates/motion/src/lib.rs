@@ -14,6 +14,7 @@ mod thesis_driver;
 mod track;
 
 pub use error::DriverError;
+pub use poda::PodaDriver;
 pub use script::{Limb, ScriptSample, ThesisScript};
 pub use thesis_driver::{MAX_ITERATIONS_PER_FRAME, ThesisDriver, validate_params};
 pub use track::{FnTargets, TargetSource, TrackDriver, TrackOptions};

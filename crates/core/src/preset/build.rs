@@ -8,7 +8,8 @@ use std::collections::HashMap;
 
 use glam::{DMat3, DQuat, DVec3};
 
-use super::scenario::Scenario;
+use super::poda::PodaLegSpec;
+use super::scenario::{Engine, Scenario};
 use super::schema::{MAX_PRESET_BYTES, Preset};
 use super::validate::{self, Unit};
 use super::{PresetError, ROOT_PATH};
@@ -226,8 +227,34 @@ impl Preset {
             description: self.description.clone(),
             skeleton,
             root_position: spec.root.position,
-            scenario: self.scenario.clone(),
+            scenario: self.built_scenario(),
         })
+    }
+
+    /// The scenario with defaults that depend on the skeleton filled in: a
+    /// PODA scenario without listed legs gets one leg per limb with an
+    /// effector (hip = the limb's first joint), in limb order.
+    fn built_scenario(&self) -> Scenario {
+        let mut scenario = self.scenario.clone();
+        if scenario.engine == Engine::Poda {
+            let mut poda = scenario.poda_params();
+            if poda.legs.is_empty() {
+                poda.legs = self
+                    .skeleton
+                    .limbs
+                    .iter()
+                    .filter_map(|limb| {
+                        Some(PodaLegSpec {
+                            name: Some(limb.name.clone()),
+                            effector: limb.effector.clone()?,
+                            hip: limb.joints.first()?.name.clone(),
+                        })
+                    })
+                    .collect();
+            }
+            scenario.poda = Some(poda);
+        }
+        scenario
     }
 }
 

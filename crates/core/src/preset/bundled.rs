@@ -12,6 +12,19 @@ const BUNDLED: &[(&str, &str)] = &[
         "ik-quadruped",
         include_str!("../../../../presets/ik-quadruped.json"),
     ),
+    (
+        "poda-quadruped",
+        include_str!("../../../../presets/poda-quadruped.json"),
+    ),
+    (
+        "poda-biped",
+        include_str!("../../../../presets/poda-biped.json"),
+    ),
+    ("hexapod", include_str!("../../../../presets/hexapod.json")),
+    (
+        "insect-14",
+        include_str!("../../../../presets/insect-14.json"),
+    ),
 ];
 
 /// Name of the preset a front end opens when none is asked for.

@@ -3,13 +3,17 @@
 //! transfer trajectories and body paths, and per-leg pseudoinverse IK with
 //! null-space center angles (eq. 5–6).
 
+pub mod driver;
 pub mod gait;
+pub mod gait_metrics;
 pub mod gaits;
 pub mod leg_ik;
 pub mod path;
 pub mod spline;
 
+pub use driver::{GroundPose, PodaDriver};
 pub use gait::{Derived, GaitError, GaitParams, LegPhase};
+pub use gait_metrics::{GaitMetrics, LegMetrics};
 pub use gaits::{gait_names, named_gait};
 pub use leg_ik::{LegIk, LegIkOptions};
 pub use path::{BodyPath, PathError, PathKind, PathSample};

@@ -1,0 +1,539 @@
+//! The PODA driver (Girard & Maciejewski 1985, "Modeling the Kinematics of
+//! Legged Locomotion"). Each frame runs the stages
+//! `body → leg_states → footholds → foot_targets → ik`:
+//! - **body**: the ground-plane pose from the body path at the desired speed
+//!   (arc length, heading along the path), raised by the superposition of
+//!   each leg's vertical push / fall / restore (eq. 12–13);
+//! - **leg_states**: eq. 9 for every leg;
+//! - **footholds**: at lift-off (time t), eq. 11 — the body's predicted pose at
+//!   f₁ = t + transfer + support/2 carries the leg's reference position into
+//!   the world, and the body's pose at f₂ = t + transfer expresses that
+//!   foothold in the body frame;
+//! - **foot_targets**: a supporting foot stays where it landed (eq. 10); a
+//!   transferring foot follows the Catmull-Rom spline through the key leg
+//!   positions — the spline's "along" fraction moves it from its lift-off
+//!   point to its foothold in the body frame, its "height" sets the world
+//!   height;
+//! - **ik**: every leg by pseudoinverse with null-space centering (eq. 5–6).
+
+use std::sync::Arc;
+
+use gaitlab_core::driver::Driver;
+use gaitlab_core::ik::Targets;
+use gaitlab_core::preset::{Creature, PodaParams};
+use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
+use glam::{DMat3, DVec2, DVec3};
+
+use super::gait::{GaitError, GaitParams, LegPhase, vertical_offset_m};
+use super::gait_metrics::GaitMetrics;
+use super::gaits::{gait_names, named_gait};
+use super::leg_ik::{LegIk, LegIkOptions};
+use super::path::BodyPath;
+use super::spline::eval_open;
+use crate::DriverError;
+
+/// Gravity, m/s².
+pub const GRAVITY_MPS2: f64 = 9.81;
+/// Length of the default straight path, metres (beyond it the path extrapolates).
+const DEFAULT_PATH_M: f64 = 1000.0;
+/// Samples per period for centring the vertical motion.
+const CENTRE_SAMPLES: u32 = 240;
+/// IK iterations per leg when a reset settles the pose.
+const RESET_ITERATIONS: usize = 60;
+
+/// The body's pose on the ground plane: position `(x, z)` and yaw (0 faces +z).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct GroundPose {
+    /// Position `(x, z)`, metres.
+    pub position: DVec2,
+    /// Heading, radians (0 faces +z, positive turns toward +x).
+    pub yaw_rad: f64,
+}
+
+impl GroundPose {
+    /// Rotation from the body frame to the world.
+    #[must_use]
+    pub fn rotation(self) -> DMat3 {
+        DMat3::from_rotation_y(self.yaw_rad)
+    }
+
+    fn origin(self) -> DVec3 {
+        DVec3::new(self.position.x, 0.0, self.position.y)
+    }
+
+    /// A body-frame point in the world.
+    #[must_use]
+    pub fn to_world(self, p: DVec3) -> DVec3 {
+        self.origin() + self.rotation() * p
+    }
+
+    /// A world point in the body frame.
+    #[must_use]
+    pub fn to_body(self, p: DVec3) -> DVec3 {
+        self.rotation().transpose() * (p - self.origin())
+    }
+}
+
+/// A leg of the creature.
+#[derive(Clone, Debug)]
+struct Leg {
+    name: String,
+    ik: LegIk,
+    /// Reference (mid-stance) foot position in the body frame, on the ground.
+    reference_body: DVec3,
+}
+
+/// A leg's running state.
+#[derive(Clone, Copy, Debug, Default)]
+struct LegRun {
+    support: bool,
+    /// Where the foot stands while supporting, world metres.
+    planted: DVec3,
+    /// Lift-off point in the body frame at lift-off.
+    liftoff_body: DVec3,
+    /// Planned foothold in the body frame at touchdown (eq. 11, f₂).
+    foothold_body: DVec3,
+    /// Planned foothold in the world (eq. 11, f₁).
+    foothold_world: DVec3,
+    /// The foot's target this frame, world metres.
+    target: DVec3,
+}
+
+/// Animates a creature with PODA's gait model, footholds and foot splines.
+#[derive(Clone, Debug)]
+pub struct PodaDriver {
+    skeleton: Arc<Skeleton>,
+    params: PodaParams,
+    gait: GaitParams,
+    gait_name: String,
+    path: BodyPath,
+    legs: Vec<Leg>,
+    runs: Vec<LegRun>,
+    /// Key leg positions `(along, height fraction, 0)` from lift-off `(0, 0)` to foothold `(1, 0)`.
+    keys: Vec<DVec3>,
+    stand_height_m: f64,
+    rest: Pose,
+    centering: LegIkOptions,
+    exact: LegIkOptions,
+    pose: Pose,
+    kin: Kinematics,
+    targets: Targets,
+    effectors: Vec<DVec3>,
+    time: f64,
+    metrics: GaitMetrics,
+    /// Gait values `([P, β], phases)` the vertical centre was computed for.
+    centre_key: ([f64; 2], Vec<f64>),
+    centre_m: f64,
+}
+
+fn gait_error(error: GaitError) -> DriverError {
+    DriverError::new(format!("scenario.poda.{}", error.path), error.reason)
+}
+
+impl PodaDriver {
+    /// A driver for `creature` with its preset's PODA scenario.
+    ///
+    /// # Errors
+    /// A [`DriverError`] naming the scenario value that cannot be used (an
+    /// unknown gait for the leg count, gait values out of range, a bad path).
+    pub fn new(creature: &Creature) -> Result<Self, DriverError> {
+        Self::with_params(creature, creature.scenario.poda_params())
+    }
+
+    /// A driver for `creature` with `params` instead of the preset's.
+    ///
+    /// # Errors
+    /// As [`PodaDriver::new`].
+    pub fn with_params(creature: &Creature, params: PodaParams) -> Result<Self, DriverError> {
+        let skeleton = Arc::new(creature.skeleton.clone());
+        let rest = creature.rest_pose();
+        let stand_height_m = params.stand_height_m.unwrap_or(rest.root.position.y);
+        let rest_kin = Kinematics::of(&skeleton, &rest);
+        let mut legs = Vec::with_capacity(params.legs.len());
+        for (i, spec) in params.legs.iter().enumerate() {
+            let at = |field: &str| format!("scenario.poda.legs[{i}].{field}");
+            let effector = skeleton
+                .effector_index(&spec.effector)
+                .ok_or_else(|| DriverError::new(at("effector"), "no such effector"))?;
+            let hip = skeleton
+                .joint_index(&spec.hip)
+                .ok_or_else(|| DriverError::new(at("hip"), "no such joint"))?;
+            let chain = skeleton.chain(effector);
+            let start = chain.iter().position(|&j| j == hip).ok_or_else(|| {
+                DriverError::new(at("hip"), "not on the chain of the leg's effector")
+            })?;
+            let foot = rest_kin.effector_position[effector] - rest.root.position;
+            legs.push(Leg {
+                name: spec.name.clone().unwrap_or_else(|| spec.effector.clone()),
+                ik: LegIk::new(chain[start..].to_vec(), effector),
+                reference_body: DVec3::new(foot.x, -stand_height_m, foot.z),
+            });
+        }
+        if legs.is_empty() {
+            return Err(DriverError::new("scenario.poda.legs", "no legs"));
+        }
+        let n = legs.len();
+        let gait_name = match &params.gait {
+            Some(name) => name.clone(),
+            None => gait_names(n).next().unwrap_or("walk").to_owned(),
+        };
+        let (mut phases, mut duty) = named_gait(&gait_name, n).map_err(gait_error)?;
+        if let Some(custom) = &params.phases {
+            phases.clone_from(custom);
+        }
+        if let Some(custom) = params.duty_factor {
+            duty = custom;
+        }
+        let gait =
+            GaitParams::new(params.period_s, duty, phases, params.speed_mps).map_err(gait_error)?;
+        let path = match &params.path {
+            Some(spec) => BodyPath::try_from(spec).map_err(|e| {
+                DriverError::new(format!("scenario.poda.path.{}", e.path), e.reason)
+            })?,
+            None => BodyPath::straight(
+                DVec2::new(rest.root.position.x, rest.root.position.z),
+                0.0,
+                DEFAULT_PATH_M,
+            )
+            .map_err(|e| DriverError::new("scenario.poda.path", e.to_string()))?,
+        };
+        let mut keys = Vec::with_capacity(params.transfer_keys.len() + 2);
+        keys.push(DVec3::ZERO);
+        keys.extend(
+            params
+                .transfer_keys
+                .iter()
+                .map(|&[along, height]| DVec3::new(along, height, 0.0)),
+        );
+        keys.push(DVec3::X);
+        let centering = LegIkOptions {
+            center_gain: params.center_gain,
+            ..LegIkOptions::default()
+        };
+        let exact = LegIkOptions {
+            center_gain: 0.0,
+            ..LegIkOptions::default()
+        };
+        let metrics = GaitMetrics::new(legs.iter().map(|l| l.name.as_str()));
+        let mut driver = Self {
+            effectors: vec![DVec3::ZERO; skeleton.effector_count()],
+            targets: Targets {
+                position: vec![DVec3::ZERO; skeleton.effector_count()],
+                rotation: Vec::new(),
+            },
+            kin: Kinematics::new(&skeleton),
+            runs: vec![LegRun::default(); n],
+            pose: rest.clone(),
+            skeleton,
+            params,
+            gait,
+            gait_name,
+            path,
+            legs,
+            keys,
+            stand_height_m,
+            rest,
+            centering,
+            exact,
+            time: 0.0,
+            metrics,
+            centre_key: ([f64::NAN; 2], Vec::new()),
+            centre_m: 0.0,
+        };
+        driver.reset();
+        Ok(driver)
+    }
+
+    /// The gait model (period, duty factor, phases, stroke, speed).
+    #[must_use]
+    pub fn gait(&self) -> &GaitParams {
+        &self.gait
+    }
+
+    /// Mutable gait model: edits keep eq. 7–8 true and take effect at the next frame.
+    pub fn gait_mut(&mut self) -> &mut GaitParams {
+        &mut self.gait
+    }
+
+    /// Name of the named gait in use.
+    #[must_use]
+    pub fn gait_name(&self) -> &str {
+        &self.gait_name
+    }
+
+    /// Switches to the named gait, blending phases and duty factor over one cycle.
+    ///
+    /// # Errors
+    /// `gait` when the name is unknown for this leg count.
+    pub fn set_gait(&mut self, name: &str) -> Result<(), DriverError> {
+        let (phases, duty) =
+            named_gait(name, self.legs.len()).map_err(|e| DriverError::new("gait", e.reason))?;
+        self.gait
+            .blend_to(&phases, duty, self.time)
+            .map_err(|e| DriverError::new("gait", e.to_string()))?;
+        name.clone_into(&mut self.gait_name);
+        Ok(())
+    }
+
+    /// The figures measured since the last reset.
+    #[must_use]
+    pub fn metrics(&self) -> &GaitMetrics {
+        &self.metrics
+    }
+
+    /// Leg names, in leg order.
+    pub fn leg_names(&self) -> impl Iterator<Item = &str> {
+        self.legs.iter().map(|l| l.name.as_str())
+    }
+
+    /// The body path.
+    #[must_use]
+    pub fn path(&self) -> &BodyPath {
+        &self.path
+    }
+
+    /// Each leg's foot target this frame and whether it is supporting.
+    pub fn foot_targets(&self) -> impl Iterator<Item = (DVec3, bool)> + '_ {
+        self.runs.iter().map(|r| (r.target, r.support))
+    }
+
+    /// The body's ground pose at time `t_s` (the path at the desired speed).
+    #[must_use]
+    pub fn ground_pose(&self, t_s: f64) -> GroundPose {
+        let sample = self.path.sample(self.gait.speed_mps() * t_s);
+        GroundPose {
+            position: sample.position,
+            yaw_rad: sample.heading_rad,
+        }
+    }
+
+    /// The superposition of every leg's vertical push / fall / restore
+    /// (eq. 12–13), uncentred, metres.
+    fn vertical_sum_m(&self, t_s: f64) -> f64 {
+        let (support, transfer) = (self.gait.support_s(), self.gait.transfer_s());
+        let g_n = self.gait.gravity_share_mps2(GRAVITY_MPS2);
+        (0..self.legs.len())
+            .filter_map(|i| self.gait.leg_phase(i, t_s))
+            .map(|p| vertical_offset_m(support, transfer, g_n, p.state_s - 0.5 * support))
+            .sum()
+    }
+
+    /// The constant that centres [`Self::vertical_sum_m`] so that, averaged over
+    /// every leg's support phase, the body stands at its standing height (the
+    /// legs then reach the ground however high the flights are). Recomputed
+    /// only when the gait changes.
+    fn vertical_centre_m(&mut self, t_s: f64) -> f64 {
+        let key = [self.gait.period_s(), self.gait.duty_factor()];
+        let unchanged = self.centre_key.0 == key && self.centre_key.1 == self.gait.phases();
+        if !unchanged {
+            self.centre_key.0 = key;
+            self.centre_key.1.clear();
+            self.centre_key.1.extend_from_slice(self.gait.phases());
+            let period = self.gait.period_s();
+            let (mut sum, mut count) = (0.0, 0u32);
+            for k in 0..CENTRE_SAMPLES {
+                let t = t_s + period * (f64::from(k) + 0.5) / f64::from(CENTRE_SAMPLES);
+                let height = self.vertical_sum_m(t);
+                for i in 0..self.legs.len() {
+                    if self.gait.leg_phase(i, t).is_some_and(|p| p.support) {
+                        sum += height;
+                        count += 1;
+                    }
+                }
+            }
+            self.centre_m = if count > 0 {
+                sum / f64::from(count)
+            } else {
+                0.0
+            };
+        }
+        self.centre_m
+    }
+
+    fn body_height(&mut self, t_s: f64) -> f64 {
+        let centre = self.vertical_centre_m(t_s);
+        self.stand_height_m + self.params.vertical_gain * (self.vertical_sum_m(t_s) - centre)
+    }
+
+    /// Eq. 11: the foothold of leg `i` for a lift-off at `t_lo`.
+    fn plan_foothold(&mut self, i: usize, t_lo: f64) {
+        let transfer = self.gait.transfer_s();
+        let f1 = t_lo + transfer + 0.5 * self.gait.support_s();
+        let f2 = t_lo + transfer;
+        let foothold_world = self.ground_pose(f1).to_world(self.legs[i].reference_body);
+        let liftoff_body = self.ground_pose(t_lo).to_body(self.runs[i].planted);
+        let foothold_body = self.ground_pose(f2).to_body(foothold_world);
+        let run = &mut self.runs[i];
+        run.liftoff_body = liftoff_body;
+        run.foothold_body = foothold_body;
+        run.foothold_world = foothold_world;
+    }
+
+    /// The transfer target of leg `i` at time `t` with transfer progress `u`.
+    fn transfer_target(&self, i: usize, t: f64, u: f64) -> DVec3 {
+        let run = &self.runs[i];
+        let key = eval_open(&self.keys, u);
+        let body = run.liftoff_body.lerp(run.foothold_body, key.x);
+        let mut world = self.ground_pose(t).to_world(body);
+        world.y = key.y * self.params.step_height_m;
+        world
+    }
+
+    /// Where leg `i` stands when supporting at mid-stance time `t_mid`.
+    fn reference_world(&self, i: usize, t_mid: f64) -> DVec3 {
+        self.ground_pose(t_mid)
+            .to_world(self.legs[i].reference_body)
+    }
+
+    /// The leg-state stage for leg `i` between `t_prev` and `t`: lift-offs plan
+    /// footholds, touchdowns plant the foot.
+    fn advance_leg(&mut self, i: usize, t_prev: f64, phase: &LegPhase) {
+        let run = self.runs[i];
+        if run.support && phase.last_liftoff_s > t_prev {
+            self.plan_foothold(i, phase.last_liftoff_s);
+            self.runs[i].support = false;
+        }
+        if !self.runs[i].support && phase.support {
+            let landed = self.transfer_target(i, phase.last_touchdown_s, 1.0);
+            self.runs[i].planted = DVec3::new(landed.x, 0.0, landed.z);
+            self.runs[i].support = true;
+        }
+        self.runs[i].target = if self.runs[i].support {
+            self.runs[i].planted
+        } else {
+            self.transfer_target(i, self.time, phase.fraction)
+        };
+    }
+
+    /// The IK stage: iterate every leg toward its target (one FK per iteration
+    /// for the whole body), centering first, then exact steps.
+    fn solve(&mut self, iterations: usize) {
+        let tolerance = self.params.tolerance_m;
+        for it in 0..iterations {
+            self.kin
+                .update(&self.skeleton, &self.pose.root, &self.pose.joints);
+            let worst = self
+                .legs
+                .iter()
+                .zip(&self.runs)
+                .map(|(leg, run)| {
+                    (self.kin.effector_position[leg.ik.effector()] - run.target).length()
+                })
+                .fold(0.0, f64::max);
+            if it > 0 && worst < tolerance {
+                break;
+            }
+            let options = if it == 0 {
+                &self.centering
+            } else {
+                &self.exact
+            };
+            for (leg, run) in self.legs.iter_mut().zip(&self.runs) {
+                leg.ik.iterate(
+                    &self.skeleton,
+                    &self.kin,
+                    &mut self.pose.joints,
+                    run.target,
+                    options,
+                );
+            }
+        }
+        self.kin
+            .update(&self.skeleton, &self.pose.root, &self.pose.joints);
+        self.effectors.copy_from_slice(&self.kin.effector_position);
+        self.targets.position.copy_from_slice(&self.effectors);
+        for (leg, run) in self.legs.iter().zip(&self.runs) {
+            self.targets.position[leg.ik.effector()] = run.target;
+        }
+    }
+
+    fn place_body(&mut self, t: f64) {
+        let ground = self.ground_pose(t);
+        let height = self.body_height(t);
+        self.pose.root = RootTransform {
+            position: DVec3::new(ground.position.x, height, ground.position.y),
+            rotation: ground.rotation(),
+        };
+    }
+
+    fn record_metrics(&mut self, t_prev: f64, t: f64, first: bool) {
+        let legs = &self.legs;
+        let runs = &self.runs;
+        let effectors = &self.effectors;
+        let feet = legs
+            .iter()
+            .zip(runs)
+            .map(|(leg, run)| (effectors[leg.ik.effector()], run.support));
+        if first {
+            self.metrics = GaitMetrics::new(legs.iter().map(|l| l.name.as_str()));
+        }
+        self.metrics
+            .record(t_prev, t, feet, self.pose.root.position);
+    }
+}
+
+impl Driver for PodaDriver {
+    fn step(&mut self, dt: f64) {
+        if !(dt.is_finite() && dt > 0.0) {
+            return;
+        }
+        let t_prev = self.time;
+        let t = t_prev + dt;
+        self.time = t;
+        self.gait.update(t);
+        for i in 0..self.legs.len() {
+            if let Some(phase) = self.gait.leg_phase(i, t) {
+                self.advance_leg(i, t_prev, &phase);
+            }
+        }
+        self.place_body(t);
+        self.solve(self.params.iterations_per_frame);
+        self.record_metrics(t_prev, t, false);
+    }
+
+    fn time(&self) -> f64 {
+        self.time
+    }
+
+    fn reset(&mut self) {
+        self.time = 0.0;
+        self.pose.clone_from(&self.rest);
+        let support = self.gait.support_s();
+        for i in 0..self.legs.len() {
+            let Some(phase) = self.gait.leg_phase(i, 0.0) else {
+                continue;
+            };
+            if phase.support {
+                let planted = self.reference_world(i, phase.last_touchdown_s + 0.5 * support);
+                self.runs[i].planted = DVec3::new(planted.x, 0.0, planted.z);
+                self.runs[i].support = true;
+                self.runs[i].target = self.runs[i].planted;
+            } else {
+                let planted = self.reference_world(i, phase.last_liftoff_s - 0.5 * support);
+                self.runs[i].planted = DVec3::new(planted.x, 0.0, planted.z);
+                self.plan_foothold(i, phase.last_liftoff_s);
+                self.runs[i].support = false;
+                self.runs[i].target = self.transfer_target(i, 0.0, phase.fraction);
+            }
+        }
+        self.place_body(0.0);
+        self.solve(RESET_ITERATIONS);
+        self.record_metrics(0.0, 0.0, true);
+    }
+
+    fn skeleton(&self) -> &Skeleton {
+        &self.skeleton
+    }
+
+    fn pose(&self) -> &Pose {
+        &self.pose
+    }
+
+    fn effector_positions(&self) -> &[DVec3] {
+        &self.effectors
+    }
+
+    fn targets(&self) -> Option<&Targets> {
+        Some(&self.targets)
+    }
+}

@@ -1,0 +1,216 @@
+//! PODA on every bundled creature and every named gait (Girard & Maciejewski
+//! 1985): planted feet do not slip, and the duty factor and relative phase
+//! measured from the feet match the gait's parameters, on a straight and on a
+//! curved body path; the body's vertical motion repeats with the gait period
+//! and a strong pronk leaves the ground.
+
+use gaitlab_core::driver::Driver;
+use gaitlab_core::preset::{Creature, PathSpec, PodaParams, load_bundled};
+use gaitlab_motion::PodaDriver;
+use gaitlab_motion::poda::gait_names;
+
+const PODA_PRESETS: [&str; 4] = ["poda-quadruped", "poda-biped", "hexapod", "insect-14"];
+const FPS: f64 = 60.0;
+
+fn creature(name: &str) -> Creature {
+    load_bundled(name)
+        .expect("bundled preset")
+        .expect("valid preset")
+}
+
+/// A closed circular path of radius `r` through the creature's start point,
+/// turning left.
+fn circle(r: f64) -> PathSpec {
+    let points = (0..16)
+        .map(|k| {
+            let a = f64::from(k) / 16.0 * std::f64::consts::TAU;
+            [r * a.cos() - r, r * a.sin()]
+        })
+        .collect();
+    PathSpec {
+        kind: Default::default(),
+        points,
+        closed: true,
+    }
+}
+
+fn run(creature: &Creature, params: PodaParams, seconds: f64) -> PodaDriver {
+    let mut driver = PodaDriver::with_params(creature, params).expect("driver");
+    let frames = (seconds * FPS).round() as usize;
+    for _ in 0..frames {
+        driver.step(1.0 / FPS);
+    }
+    driver
+}
+
+/// Circular distance between two phases (fractions of a cycle).
+fn phase_distance(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(1.0);
+    d.min(1.0 - d)
+}
+
+#[test]
+fn every_gait_of_every_creature_keeps_feet_planted_and_its_timing() {
+    let mut checked = 0;
+    for preset in PODA_PRESETS {
+        let creature = creature(preset);
+        let legs = creature.scenario.poda_params().legs.len();
+        for gait in gait_names(legs) {
+            for curved in [false, true] {
+                let mut params = creature.scenario.poda_params();
+                params.gait = Some(gait.to_owned());
+                if curved {
+                    // A turn of radius 4 s of travel: about 1.4 rad per 10 s.
+                    params.path = Some(circle(4.0 * params.speed_mps));
+                }
+                let driver = run(&creature, params, 8.0);
+                let metrics = driver.metrics();
+                let label = format!(
+                    "{preset} {gait} {}",
+                    if curved { "curved" } else { "straight" }
+                );
+                let slip = metrics.foot_slip_max_m();
+                assert!(slip <= 0.001, "{label}: foot slip {:.3} mm", slip * 1e3);
+                let gait_params = driver.gait();
+                let period = metrics.period_s().expect("touchdowns measured");
+                assert!(
+                    (period - gait_params.period_s()).abs() < 0.005,
+                    "{label}: period {period} s"
+                );
+                for (leg, &phase) in metrics.legs.iter().zip(gait_params.phases()) {
+                    let duty = leg.duty_factor().expect("duty measured");
+                    assert!(
+                        (duty - gait_params.duty_factor()).abs() <= 0.02,
+                        "{label} {}: duty {duty} vs {}",
+                        leg.name,
+                        gait_params.duty_factor()
+                    );
+                    let measured = leg.relative_phase(period).expect("phase measured");
+                    assert!(
+                        phase_distance(measured, phase) <= 0.02,
+                        "{label} {}: phase {measured} vs {phase}",
+                        leg.name
+                    );
+                }
+                if curved {
+                    let end = driver.pose().root.position;
+                    assert!(
+                        end.x < -0.5,
+                        "{label}: the body turned left (x = {})",
+                        end.x
+                    );
+                }
+                checked += 1;
+            }
+        }
+    }
+    // 9 quadruped gaits (with the 4-leg wave), 2 biped, 3 hexapod, 1 insect; two paths each.
+    assert_eq!(checked, 30);
+}
+
+/// Root heights sampled every frame for `seconds` after `settle` seconds.
+fn heights(driver: &mut PodaDriver, settle: f64, seconds: f64) -> Vec<f64> {
+    for _ in 0..(settle * FPS).round() as usize {
+        driver.step(1.0 / FPS);
+    }
+    (0..(seconds * FPS).round() as usize)
+        .map(|_| {
+            driver.step(1.0 / FPS);
+            driver.pose().root.position.y
+        })
+        .collect()
+}
+
+#[test]
+fn vertical_motion_repeats_with_the_gait_period() {
+    let creature = creature("poda-quadruped");
+    for gait in ["bound", "pronk", "transverse_gallop", "canter"] {
+        // A bound's front and hind pairs push half a cycle apart with equal
+        // forces: its body bobs twice a cycle (period P/2).
+        let fundamental_is_p = gait != "bound";
+        let mut params = creature.scenario.poda_params();
+        params.gait = Some(gait.to_owned());
+        // P = 0.6 s = 36 frames at 60 fps.
+        let mut driver = PodaDriver::with_params(&creature, params).expect("driver");
+        let y = heights(&mut driver, 1.0, 3.0);
+        let lag = 36;
+        let amplitude = y.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+            - y.iter().copied().fold(f64::INFINITY, f64::min);
+        assert!(amplitude > 0.01, "{gait}: the body bobs ({amplitude} m)");
+        let repeat = (0..y.len() - lag)
+            .map(|k| (y[k + lag] - y[k]).abs())
+            .fold(0.0, f64::max);
+        assert!(repeat < 1e-9, "{gait}: y(t + P) − y(t) up to {repeat} m");
+        // Not periodic in half the period: the fundamental is P itself.
+        let half = (0..y.len() - lag / 2)
+            .map(|k| (y[k + lag / 2] - y[k]).abs())
+            .fold(0.0, f64::max);
+        if fundamental_is_p {
+            assert!(half > 0.1 * amplitude, "{gait}: y(t + P/2) ≈ y(t)");
+        } else {
+            assert!(half < 1e-9, "{gait}: y(t + P/2) − y(t) up to {half} m");
+        }
+    }
+}
+
+#[test]
+fn a_pronk_with_high_leg_force_flies() {
+    let creature = creature("poda-quadruped");
+    let mut params = creature.scenario.poda_params();
+    params.gait = Some("pronk".into());
+    params.duty_factor = Some(0.9);
+    let mass = params.body_mass_kg;
+    let stand = params.stand_height_m.unwrap_or(0.0);
+    // Rise of the body above its standing height and the longest time with
+    // every foot off the ground, over 3 s.
+    let hop = |driver: &mut PodaDriver| {
+        let mut highest = f64::NEG_INFINITY;
+        for _ in 0..180 {
+            driver.step(1.0 / FPS);
+            highest = highest.max(driver.pose().root.position.y);
+        }
+        (highest - stand, driver.metrics().flight_max_s)
+    };
+    let mut weak = PodaDriver::with_params(&creature, params.clone()).expect("driver");
+    let (weak_rise, weak_flight) = hop(&mut weak);
+    // Three times the balance force (eq. 12–13): transfer lengthens, duty drops below 0.5.
+    let mut strong = PodaDriver::with_params(&creature, params).expect("driver");
+    let force = 3.0 * strong.gait().leg_force_for_balance_n(mass, 9.81);
+    strong
+        .gait_mut()
+        .set_leg_force(force, mass, 9.81)
+        .expect("stronger legs");
+    let duty = strong.gait().duty_factor();
+    assert!(duty < 0.5, "duty {duty}");
+    let (strong_rise, strong_flight) = hop(&mut strong);
+    assert!(weak_rise < 0.05, "weak pronk rises {weak_rise} m");
+    assert!(
+        strong_rise > 0.1 && strong_rise > 3.0 * weak_rise,
+        "strong pronk rises {strong_rise} m (weak {weak_rise} m)"
+    );
+    assert!(
+        strong_flight > 0.5 * strong.gait().period_s() && strong_flight > 4.0 * weak_flight,
+        "flight {strong_flight} s (weak {weak_flight} s)"
+    );
+}
+
+#[test]
+fn switching_gait_mid_stride_blends_without_slipping() {
+    let creature = creature("poda-quadruped");
+    let mut driver = PodaDriver::new(&creature).expect("driver");
+    for _ in 0..100 {
+        driver.step(1.0 / FPS);
+    }
+    driver
+        .set_gait("transverse_gallop")
+        .expect("quadruped gait");
+    assert_eq!(driver.gait_name(), "transverse_gallop");
+    for _ in 0..240 {
+        driver.step(1.0 / FPS);
+    }
+    let slip = driver.metrics().foot_slip_max_m();
+    assert!(slip <= 0.001, "slip {:.3} mm", slip * 1e3);
+    let error = driver.set_gait("tripod").expect_err("no tripod for 4 legs");
+    assert_eq!(error.path, "gait");
+    assert!(error.reason.contains("trot"), "{error}");
+}
