@@ -57,7 +57,9 @@ fn apply_views(views: &mut ViewOptions, value: &Value) -> Result<(), String> {
 
 impl Lab {
     /// Applies a JSON command object, e.g. `{"mode":"run","method":"dls"}`.
-    /// Keys: `preset`, `preset_json`, `mode`, `method`, `paused` (or `pause`),
+    /// Keys: `preset`, `preset_json`, `gait`, `period_s`, `duty_factor`,
+    /// `speed_mps`, `stroke_m` (PODA gait values; each edit keeps eq. 7–8 true),
+    /// `mode`, `method`, `paused` (or `pause`),
     /// `reset`, `step`, `lambda`, `gamma_max`, `max_step`, `null_space_gain`,
     /// `enforce_limits`, `heading_deg`, `plots`, `plot_joints` (joint names),
     /// `record` (motion take on/off), `save` (`"bvh"` or `"csv"`: download the
@@ -78,9 +80,14 @@ impl Lab {
             serde_json::from_str(json).map_err(|e| format!("command is not JSON: {e}"))?;
         let object: &Map<String, Value> =
             value.as_object().ok_or("command must be a JSON object")?;
-        const KNOWN: [&str; 20] = [
+        const KNOWN: [&str; 25] = [
             "preset",
             "preset_json",
+            "gait",
+            "period_s",
+            "duty_factor",
+            "speed_mps",
+            "stroke_m",
             "mode",
             "method",
             "paused",
@@ -112,6 +119,17 @@ impl Lab {
         }
         if let Some(v) = get("preset_json") {
             self.set_custom_preset(text("preset_json", v)?)?;
+        }
+        if let Some(v) = get("gait") {
+            self.set_gait(text("gait", v)?)?;
+        }
+        for key in ["period_s", "duty_factor", "speed_mps", "stroke_m"] {
+            if let Some(v) = get(key) {
+                let value = v
+                    .as_f64()
+                    .ok_or_else(|| format!("{key}: expected a number"))?;
+                self.edit_gait(key, value)?;
+            }
         }
         if let Some(v) = get("mode") {
             let name = text("mode", v)?;
@@ -236,7 +254,23 @@ impl Lab {
             "custom_preset": self.custom_preset.is_some(),
             "engine": self.creature.scenario.engine.name(),
             "mode": self.settings.mode.name(),
-            "gait": Value::Null,
+            "gait": self.driver.poda().map(gaitlab_motion::PodaDriver::gait_name),
+            "poda": self.driver.poda().map(|driver| {
+                let gait = driver.gait();
+                json!({
+                    "period_s": gait.period_s(),
+                    "duty_factor": gait.duty_factor(),
+                    "speed_mps": gait.speed_mps(),
+                    "stroke_m": gait.stroke_m(),
+                    "support_s": gait.support_s(),
+                    "transfer_s": gait.transfer_s(),
+                    "phases": gait.phases(),
+                    "blending": gait.is_blending(),
+                    "legs": driver.leg_names().collect::<Vec<_>>(),
+                    "foot_slip_max_m": driver.metrics().foot_slip_max_m(),
+                    "derived": self.gait_derived,
+                })
+            }),
             "method": self.settings.method.name(),
             "methods": [self.settings.method.name()],
             "paused": self.paused,

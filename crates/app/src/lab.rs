@@ -1,17 +1,19 @@
 //! The lab: one figure animated by a driver (She 2006's thesis motions for the
-//! IK engine), the settings a person changes, the 3-D scene and camera, the plot
+//! IK engine, PODA gaits for the `poda` engine), the settings a person changes, the 3-D scene and camera, the plot
 //! history, and the last error to show. Front ends (eframe on the web, egui_kittest
 //! natively) call [`Lab::ui`] once per frame.
 
 use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::Method;
+use gaitlab_core::preset::Engine;
 use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_core::preset::{Creature, load_bundled};
 use gaitlab_core::{Kinematics, RootTransform};
-use gaitlab_motion::ThesisDriver;
+use gaitlab_motion::{PodaDriver, ThesisDriver};
 use glam::DMat3;
 
 use crate::history::History;
+use crate::lab_driver::LabDriver;
 use crate::recording::Take;
 use crate::render::{Camera, Scene};
 use crate::settings::Settings;
@@ -47,7 +49,7 @@ pub struct Lab {
     /// What a person chose (persisted).
     pub settings: Settings,
     pub(crate) creature: Creature,
-    pub(crate) driver: ThesisDriver,
+    pub(crate) driver: LabDriver,
     pub(crate) camera: Camera,
     pub(crate) scene: Scene,
     pub(crate) kinematics: Kinematics,
@@ -88,6 +90,8 @@ pub struct Lab {
     pub(crate) pending_download: Option<Download>,
     /// The graphics path drawing the view ("webgpu (…)" or "webgl2 (…)"), when known.
     pub backend: Option<String>,
+    /// What the last PODA gait edit derived, to say so in the gait panel.
+    pub(crate) gait_derived: Vec<&'static str>,
 }
 
 /// A joint value as plotted: degrees for revolute joints, millimetres for prismatic ones.
@@ -123,7 +127,12 @@ fn default_creature() -> Creature {
     }
 }
 
-fn driver_for(creature: &Creature, settings: &Settings) -> Result<ThesisDriver, String> {
+fn driver_for(creature: &Creature, settings: &Settings) -> Result<LabDriver, String> {
+    if creature.scenario.engine == Engine::Poda {
+        return PodaDriver::new(creature)
+            .map(|driver| LabDriver::Poda(Box::new(driver)))
+            .map_err(|e| format!("preset {}: {e}", creature.name));
+    }
     gaitlab_core::preset::check_ik_options("settings.ik", &settings.ik)
         .map_err(|e| e.to_string())?;
     if !settings.heading_deg.is_finite() {
@@ -143,7 +152,7 @@ fn driver_for(creature: &Creature, settings: &Settings) -> Result<ThesisDriver, 
         ..RootTransform::default()
     });
     driver.reset();
-    Ok(driver)
+    Ok(LabDriver::Thesis(Box::new(driver)))
 }
 
 impl Lab {
@@ -201,6 +210,7 @@ impl Lab {
             video_frames: 0,
             view_rect_px: [0.0; 4],
             pending_download: None,
+            gait_derived: Vec::new(),
         };
         lab.after_reset();
         lab
@@ -219,7 +229,7 @@ impl Lab {
 
     /// The driver animating it.
     #[must_use]
-    pub fn driver(&self) -> &ThesisDriver {
+    pub fn driver(&self) -> &LabDriver {
         &self.driver
     }
 
@@ -298,7 +308,9 @@ impl Lab {
     /// Sets the thesis motion.
     pub fn set_mode(&mut self, mode: ThesisMode) {
         self.settings.mode = mode;
-        self.driver.set_mode(mode);
+        if let Some(driver) = self.driver.thesis_mut() {
+            driver.set_mode(mode);
+        }
         self.link_changed = true;
     }
 
@@ -306,7 +318,9 @@ impl Lab {
     pub fn set_method(&mut self, method: Method) {
         self.settings.method = method;
         self.settings.ik.method = method;
-        self.driver.set_method(method);
+        if let Some(driver) = self.driver.thesis_mut() {
+            driver.set_method(method);
+        }
         self.link_changed = true;
     }
 
@@ -318,7 +332,10 @@ impl Lab {
         &mut self,
         params: gaitlab_core::preset::thesis::ThesisParams,
     ) -> Result<(), String> {
-        self.driver
+        let Some(driver) = self.driver.thesis_mut() else {
+            return Err("scenario.thesis: engine poda has no thesis parameters".to_owned());
+        };
+        driver
             .set_params(params)
             .map_err(|e| format!("scenario.thesis.{e}"))
     }
@@ -327,17 +344,77 @@ impl Lab {
     pub fn apply_ik_options(&mut self) {
         let mut options = self.settings.ik.clone();
         options.method = self.settings.method;
-        self.driver.set_options(options);
+        if let Some(driver) = self.driver.thesis_mut() {
+            driver.set_options(options);
+        }
     }
 
     /// Applies a new figure heading (restarts the motion facing that way).
     pub fn set_heading_deg(&mut self, degrees: f64) {
         self.settings.heading_deg = degrees.clamp(-180.0, 180.0);
-        self.driver.set_origin(RootTransform {
-            rotation: DMat3::from_rotation_y(self.settings.heading_deg.to_radians()),
-            ..RootTransform::default()
-        });
+        if let Some(driver) = self.driver.thesis_mut() {
+            driver.set_origin(RootTransform {
+                rotation: DMat3::from_rotation_y(self.settings.heading_deg.to_radians()),
+                ..RootTransform::default()
+            });
+        }
         self.reset();
+    }
+
+    /// The engine of the creature being animated.
+    #[must_use]
+    pub fn engine(&self) -> Engine {
+        self.creature.scenario.engine
+    }
+
+    /// Switches the PODA gait (blending over one cycle).
+    ///
+    /// # Errors
+    /// `gait: reason` when the engine has no gaits or the name is unknown for
+    /// the creature's leg count; nothing changes.
+    pub fn set_gait(&mut self, name: &str) -> Result<(), String> {
+        let Some(driver) = self.driver.poda_mut() else {
+            return Err(format!(
+                "gait: engine {} has no gaits (use mode)",
+                self.creature.scenario.engine.name()
+            ));
+        };
+        driver.set_gait(name).map_err(|e| e.to_string())?;
+        self.link_changed = true;
+        Ok(())
+    }
+
+    /// Sets one PODA gait value (`period_s`, `duty_factor`, `speed_mps` or
+    /// `stroke_m`); the gait model derives the others so that eq. 7–8 stay
+    /// true, and [`Lab::gait_derived`] names what it derived.
+    ///
+    /// # Errors
+    /// `key: reason` when the engine has no gait, the key is unknown, or the
+    /// value (or a value derived from it) is out of range; nothing changes.
+    pub fn edit_gait(&mut self, key: &str, value: f64) -> Result<(), String> {
+        let Some(driver) = self.driver.poda_mut() else {
+            return Err(format!(
+                "{key}: engine {} has no gait",
+                self.creature.scenario.engine.name()
+            ));
+        };
+        let gait = driver.gait_mut();
+        let derived = match key {
+            "period_s" => gait.set_period(value),
+            "duty_factor" => gait.set_duty_factor(value),
+            "speed_mps" => gait.set_speed(value),
+            "stroke_m" => gait.set_stroke(value),
+            _ => return Err(format!("{key}: not a gait value")),
+        }
+        .map_err(|e| e.to_string())?;
+        self.gait_derived = derived.derived.to_vec();
+        Ok(())
+    }
+
+    /// What the last gait edit derived (e.g. `support_s`, `period_s`).
+    #[must_use]
+    pub fn gait_derived(&self) -> &[&'static str] {
+        &self.gait_derived
     }
 
     /// Pauses or resumes.

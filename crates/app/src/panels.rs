@@ -111,7 +111,10 @@ pub fn motion(ui: &mut egui::Ui, lab: &mut Lab) {
         if mode != lab.settings.mode {
             lab.set_mode(mode);
         }
-        let mut params = lab.driver().params().clone();
+        let Some(thesis) = lab.driver().thesis() else {
+            return;
+        };
+        let mut params = thesis.params().clone();
         let mut changed = ui
             .checkbox(&mut params.moving_forward, "Moving forward")
             .changed();
@@ -144,7 +147,11 @@ fn apply_params(lab: &mut Lab, params: gaitlab_core::preset::thesis::ThesisParam
 /// Speed and target-position panels: the thesis' step frequency, slowdown and
 /// speed, and the front/back extremes of the feet and hands.
 pub fn speed_and_targets(ui: &mut egui::Ui, lab: &mut Lab) {
-    let mut params = lab.driver().params().clone();
+    let Some(thesis) = lab.driver().thesis() else {
+        return;
+    };
+    let mut params = thesis.params().clone();
+    let script_speed = thesis.script().speed_mps();
     let running = lab.settings.mode.running();
     let mut changed = false;
     ui.collapsing("Speed", |ui| {
@@ -164,11 +171,7 @@ pub fn speed_and_targets(ui: &mut egui::Ui, lab: &mut Lab) {
             .checkbox(&mut matched, "Speed matched to stride")
             .changed()
         {
-            params.speed_mps = if matched {
-                None
-            } else {
-                Some(lab.driver().script().speed_mps())
-            };
+            params.speed_mps = if matched { None } else { Some(script_speed) };
             changed = true;
         }
         if let Some(speed) = params.speed_mps.as_mut() {

@@ -6,8 +6,8 @@ use egui_plot::{Legend, Line, Plot, PlotPoints};
 
 use crate::history::History;
 use crate::lab::{Lab, MAX_PLOT_JOINTS};
-use crate::panels;
 use crate::render::viewport;
+use crate::{panels, panels_gait};
 
 impl Lab {
     /// Shows the whole lab in `ui` and advances the animation by the frame's time.
@@ -26,9 +26,13 @@ impl Lab {
                     panels::preset(ui, self);
                     panels::buttons(ui, self);
                     ui.separator();
-                    panels::method(ui, self);
-                    panels::motion(ui, self);
-                    panels::speed_and_targets(ui, self);
+                    if self.driver.poda().is_some() {
+                        panels_gait::gait(ui, self);
+                    } else {
+                        panels::method(ui, self);
+                        panels::motion(ui, self);
+                        panels::speed_and_targets(ui, self);
+                    }
                     panels::view(ui, self);
                     panels::recording(ui, self);
                     ui.separator();

@@ -108,3 +108,44 @@ fn the_recording_panel_records_a_take_and_saves_it() {
     );
     assert!(download.text.contains("Frames: 5"));
 }
+
+#[test]
+fn a_poda_creature_shows_the_gait_panel_with_its_footfall_diagram() {
+    let mut lab = Lab::new(Settings::default());
+    lab.set_paused(true);
+    lab.set_preset("poda-quadruped").expect("bundled");
+    let mut harness = Harness::builder()
+        .with_size(egui::vec2(1200.0, 800.0))
+        .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab);
+    harness.run();
+    // The gait panel opens by itself.
+    harness.get_by_label("Gait (PODA)");
+    for slider in [
+        "Period P (s)",
+        "Duty factor",
+        "Body speed (m/s)",
+        "Stroke (m)",
+    ] {
+        assert!(
+            harness.query_all_by_label(slider).next().is_some(),
+            "{slider}"
+        );
+    }
+    // Choose the bound through the gait combo box.
+    harness.get_by_label("Gait").click();
+    harness.run();
+    harness.get_by_label("bound").click();
+    harness.run();
+    assert_eq!(
+        harness
+            .state()
+            .driver()
+            .poda()
+            .map(|d| d.gait_name().to_owned()),
+        Some("bound".to_owned())
+    );
+    assert!(
+        harness.query_by_label("Method").is_none(),
+        "no IK method panel for PODA"
+    );
+}

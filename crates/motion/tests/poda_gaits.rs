@@ -197,19 +197,28 @@ fn a_pronk_with_high_leg_force_flies() {
 #[test]
 fn switching_gait_mid_stride_blends_without_slipping() {
     let creature = creature("poda-quadruped");
+    // Switch at every frame of a cycle (36 frames), to several gaits.
+    for start in 0..36 {
+        for gait in ["transverse_gallop", "pace", "pronk", "walk"] {
+            let mut driver = PodaDriver::new(&creature).expect("driver");
+            for _ in 0..60 + start {
+                driver.step(1.0 / FPS);
+            }
+            driver.set_gait(gait).expect("quadruped gait");
+            assert_eq!(driver.gait_name(), gait);
+            for _ in 0..150 {
+                driver.step(1.0 / FPS);
+            }
+            let slip = driver.metrics().foot_slip_max_m();
+            let at = 60 + start;
+            assert!(
+                slip <= 0.001,
+                "trot → {gait} at frame {at}: slip {:.3} mm",
+                slip * 1e3
+            );
+        }
+    }
     let mut driver = PodaDriver::new(&creature).expect("driver");
-    for _ in 0..100 {
-        driver.step(1.0 / FPS);
-    }
-    driver
-        .set_gait("transverse_gallop")
-        .expect("quadruped gait");
-    assert_eq!(driver.gait_name(), "transverse_gallop");
-    for _ in 0..240 {
-        driver.step(1.0 / FPS);
-    }
-    let slip = driver.metrics().foot_slip_max_m();
-    assert!(slip <= 0.001, "slip {:.3} mm", slip * 1e3);
     let error = driver.set_gait("tripod").expect_err("no tripod for 4 legs");
     assert_eq!(error.path, "gait");
     assert!(error.reason.contains("trot"), "{error}");

@@ -18,7 +18,7 @@
 
 use std::sync::Arc;
 
-use gaitlab_core::driver::Driver;
+use gaitlab_core::driver::{Driver, IkFrameReport};
 use gaitlab_core::ik::Targets;
 use gaitlab_core::preset::{Creature, PodaParams};
 use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
@@ -124,6 +124,8 @@ pub struct PodaDriver {
     /// Gait values `([P, β], phases)` the vertical centre was computed for.
     centre_key: ([f64; 2], Vec<f64>),
     centre_m: f64,
+    /// Each foot's distance to its target after the frame's IK (other effectors 0).
+    report: IkFrameReport,
 }
 
 fn gait_error(error: GaitError) -> DriverError {
@@ -239,6 +241,7 @@ impl PodaDriver {
             metrics,
             centre_key: ([f64::NAN; 2], Vec::new()),
             centre_m: 0.0,
+            report: IkFrameReport::new(creature.skeleton.effector_count()),
         };
         driver.reset();
         Ok(driver)
@@ -388,13 +391,18 @@ impl PodaDriver {
     /// The leg-state stage for leg `i` between `t_prev` and `t`: lift-offs plan
     /// footholds, touchdowns plant the foot.
     fn advance_leg(&mut self, i: usize, t_prev: f64, phase: &LegPhase) {
-        let run = self.runs[i];
-        if run.support && phase.last_liftoff_s > t_prev {
-            self.plan_foothold(i, phase.last_liftoff_s);
+        // Lift-off: the leg state passed the support duration since the last
+        // frame. While a gait blend shifts the phases, `last_liftoff_s` (under
+        // the current phases) may lie before the previous frame: the crossing
+        // still happened in this frame, so the state decides, not the time.
+        if self.runs[i].support && (!phase.support || phase.last_liftoff_s > t_prev) {
+            let t_lo = phase.last_liftoff_s.clamp(t_prev, self.time);
+            self.plan_foothold(i, t_lo);
             self.runs[i].support = false;
         }
         if !self.runs[i].support && phase.support {
-            let landed = self.transfer_target(i, phase.last_touchdown_s, 1.0);
+            let t_td = phase.last_touchdown_s.clamp(t_prev, self.time);
+            let landed = self.transfer_target(i, t_td, 1.0);
             self.runs[i].planted = DVec3::new(landed.x, 0.0, landed.z);
             self.runs[i].support = true;
         }
@@ -409,7 +417,9 @@ impl PodaDriver {
     /// for the whole body), centering first, then exact steps.
     fn solve(&mut self, iterations: usize) {
         let tolerance = self.params.tolerance_m;
+        let mut used = 0;
         for it in 0..iterations {
+            used = it + 1;
             self.kin
                 .update(&self.skeleton, &self.pose.root, &self.pose.joints);
             let worst = self
@@ -442,9 +452,19 @@ impl PodaDriver {
             .update(&self.skeleton, &self.pose.root, &self.pose.joints);
         self.effectors.copy_from_slice(&self.kin.effector_position);
         self.targets.position.copy_from_slice(&self.effectors);
+        self.report.effector_error_m.fill(0.0);
         for (leg, run) in self.legs.iter().zip(&self.runs) {
-            self.targets.position[leg.ik.effector()] = run.target;
+            let e = leg.ik.effector();
+            self.targets.position[e] = run.target;
+            self.report.effector_error_m[e] = (self.effectors[e] - run.target).length();
         }
+        self.report.iterations = used;
+        self.report.max_error_m = self
+            .report
+            .effector_error_m
+            .iter()
+            .copied()
+            .fold(0.0, f64::max);
     }
 
     fn place_body(&mut self, t: f64) {
@@ -535,5 +555,9 @@ impl Driver for PodaDriver {
 
     fn targets(&self) -> Option<&Targets> {
         Some(&self.targets)
+    }
+
+    fn ik_report(&self) -> Option<&IkFrameReport> {
+        Some(&self.report)
     }
 }

@@ -1,0 +1,108 @@
+//! The driver a lab runs, by the preset's engine: She 2006's thesis motions
+//! ([`ThesisDriver`]) or Girard & Maciejewski 1985's PODA gaits
+//! ([`PodaDriver`]). Everything generic goes through [`Driver`]; the panels
+//! ask for the concrete driver they edit.
+
+use gaitlab_core::Skeleton;
+use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
+use gaitlab_core::ik::Targets;
+use gaitlab_core::pose::Pose;
+use gaitlab_motion::{PodaDriver, ThesisDriver};
+use glam::DVec3;
+
+/// The lab's driver.
+#[derive(Clone, Debug)]
+pub enum LabDriver {
+    /// Sinusoidal targets tracked by Jacobian IK (engine `ik`).
+    Thesis(Box<ThesisDriver>),
+    /// PODA gait synthesis (engine `poda`).
+    Poda(Box<PodaDriver>),
+}
+
+impl LabDriver {
+    fn inner(&self) -> &dyn Driver {
+        match self {
+            LabDriver::Thesis(driver) => driver.as_ref(),
+            LabDriver::Poda(driver) => driver.as_ref(),
+        }
+    }
+
+    fn inner_mut(&mut self) -> &mut dyn Driver {
+        match self {
+            LabDriver::Thesis(driver) => driver.as_mut(),
+            LabDriver::Poda(driver) => driver.as_mut(),
+        }
+    }
+
+    /// The thesis driver, when the engine is `ik`.
+    #[must_use]
+    pub fn thesis(&self) -> Option<&ThesisDriver> {
+        match self {
+            LabDriver::Thesis(driver) => Some(driver),
+            LabDriver::Poda(_) => None,
+        }
+    }
+
+    /// The thesis driver, mutably.
+    pub fn thesis_mut(&mut self) -> Option<&mut ThesisDriver> {
+        match self {
+            LabDriver::Thesis(driver) => Some(driver),
+            LabDriver::Poda(_) => None,
+        }
+    }
+
+    /// The PODA driver, when the engine is `poda`.
+    #[must_use]
+    pub fn poda(&self) -> Option<&PodaDriver> {
+        match self {
+            LabDriver::Poda(driver) => Some(driver),
+            LabDriver::Thesis(_) => None,
+        }
+    }
+
+    /// The PODA driver, mutably.
+    pub fn poda_mut(&mut self) -> Option<&mut PodaDriver> {
+        match self {
+            LabDriver::Poda(driver) => Some(driver),
+            LabDriver::Thesis(_) => None,
+        }
+    }
+}
+
+impl Driver for LabDriver {
+    fn step(&mut self, dt: f64) {
+        self.inner_mut().step(dt);
+    }
+
+    fn time(&self) -> f64 {
+        self.inner().time()
+    }
+
+    fn reset(&mut self) {
+        self.inner_mut().reset();
+    }
+
+    fn skeleton(&self) -> &Skeleton {
+        self.inner().skeleton()
+    }
+
+    fn pose(&self) -> &Pose {
+        self.inner().pose()
+    }
+
+    fn effector_positions(&self) -> &[DVec3] {
+        self.inner().effector_positions()
+    }
+
+    fn targets(&self) -> Option<&Targets> {
+        self.inner().targets()
+    }
+
+    fn ik_report(&self) -> Option<&IkFrameReport> {
+        self.inner().ik_report()
+    }
+
+    fn ik_metrics(&self) -> Option<&IkMetrics> {
+        self.inner().ik_metrics()
+    }
+}

@@ -1,0 +1,144 @@
+//! The PODA gait panel (Girard & Maciejewski 1985, "Gait Design in PODA"):
+//! the named gait, sliders for period, duty factor, body speed and stroke
+//! (each edit keeps eq. 7–8 true and the panel says what was derived), the
+//! support and transfer durations, and a footfall diagram — each leg's
+//! support bar over one cycle (eq. 9) with a live cursor.
+
+use gaitlab_core::driver::Driver;
+use gaitlab_motion::poda::gait_names;
+
+use crate::lab::Lab;
+
+/// Height of one leg's row in the footfall diagram, points.
+const ROW_HEIGHT: f32 = 12.0;
+
+/// The gait panel (shown for PODA creatures).
+pub fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
+    let Some(driver) = lab.driver().poda() else {
+        return;
+    };
+    let current = driver.gait_name().to_owned();
+    let legs = driver.gait().leg_count();
+    let gait = driver.gait().clone();
+    let mut chosen = None;
+    let mut edits: Vec<(&str, f64)> = Vec::new();
+    egui::CollapsingHeader::new("Gait (PODA)")
+        .default_open(true)
+        .show(ui, |ui| {
+            egui::ComboBox::from_label("Gait")
+                .selected_text(current.as_str())
+                .show_ui(ui, |ui| {
+                    for name in gait_names(legs) {
+                        if ui.selectable_label(name == current, name).clicked() {
+                            chosen = Some(name);
+                        }
+                    }
+                });
+            for (key, mut value, range, label) in [
+                ("period_s", gait.period_s(), 0.2..=3.0, "Period P (s)"),
+                (
+                    "duty_factor",
+                    gait.duty_factor(),
+                    0.05..=0.95,
+                    "Duty factor",
+                ),
+                (
+                    "speed_mps",
+                    gait.speed_mps(),
+                    0.02..=4.0,
+                    "Body speed (m/s)",
+                ),
+                ("stroke_m", gait.stroke_m(), 0.01..=1.5, "Stroke (m)"),
+            ] {
+                if ui
+                    .add(egui::Slider::new(&mut value, range).text(label))
+                    .changed()
+                {
+                    edits.push((key, value));
+                }
+            }
+            ui.label(format!(
+                "support {:.3} s · transfer {:.3} s (eq. 7: support = stroke / speed)",
+                gait.support_s(),
+                gait.transfer_s()
+            ));
+            if !lab.gait_derived().is_empty() {
+                ui.weak(format!("derived: {}", lab.gait_derived().join(", ")));
+            }
+            footfall_diagram(ui, lab);
+        });
+    if let Some(name) = chosen
+        && name != current
+        && let Err(error) = lab.set_gait(name)
+    {
+        lab.report_error(error);
+    }
+    for (key, value) in edits {
+        if let Err(error) = lab.edit_gait(key, value) {
+            lab.report_error(error);
+        }
+    }
+}
+
+/// Each leg's support bar over one cycle (filled while the foot is planted),
+/// and a cursor at the current time within the cycle.
+fn footfall_diagram(ui: &mut egui::Ui, lab: &Lab) {
+    let Some(driver) = lab.driver().poda() else {
+        return;
+    };
+    let gait = driver.gait();
+    let names: Vec<&str> = driver.leg_names().collect();
+    let label_width = 80.0;
+    let width = ui.available_width().max(label_width + 40.0);
+    let height = ROW_HEIGHT * names.len() as f32;
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(width, height), egui::Sense::hover());
+    let painter = ui.painter_at(rect);
+    let visuals = ui.visuals();
+    let bar = visuals.selection.bg_fill;
+    let track = visuals.extreme_bg_color;
+    let text = visuals.text_color();
+    let period = gait.period_s();
+    let t0 = driver.time() - driver.time().rem_euclid(period);
+    let x0 = rect.left() + label_width;
+    let span = rect.right() - x0;
+    let columns = 120;
+    for (i, name) in names.iter().enumerate() {
+        let top = rect.top() + ROW_HEIGHT * i as f32;
+        painter.text(
+            egui::pos2(rect.left(), top + ROW_HEIGHT * 0.5),
+            egui::Align2::LEFT_CENTER,
+            *name,
+            egui::FontId::proportional(10.0),
+            text,
+        );
+        let row = egui::Rect::from_min_max(
+            egui::pos2(x0, top + 2.0),
+            egui::pos2(rect.right(), top + ROW_HEIGHT - 2.0),
+        );
+        painter.rect_filled(row, 0.0, track);
+        for c in 0..columns {
+            let fraction = (f64::from(c) + 0.5) / f64::from(columns);
+            let supporting = gait
+                .leg_phase(i, t0 + fraction * period)
+                .is_some_and(|p| p.support);
+            if supporting {
+                let left = x0 + span * c as f32 / columns as f32;
+                let right = x0 + span * (c + 1) as f32 / columns as f32;
+                painter.rect_filled(
+                    egui::Rect::from_min_max(
+                        egui::pos2(left, row.top()),
+                        egui::pos2(right, row.bottom()),
+                    ),
+                    0.0,
+                    bar,
+                );
+            }
+        }
+    }
+    let now = ((driver.time() - t0) / period) as f32;
+    let x = x0 + span * now.clamp(0.0, 1.0);
+    painter.line_segment(
+        [egui::pos2(x, rect.top()), egui::pos2(x, rect.bottom())],
+        egui::Stroke::new(1.5, visuals.warn_fg_color),
+    );
+}
