@@ -91,6 +91,7 @@ pub fn run(json: &str, clock_ms: &mut dyn FnMut() -> f64) -> Result<String, Stri
         .map_err(|e| format!("bench.{e}"))?;
     Ok(json!({
         "preset": creature.name,
+        "engine": creature.scenario.engine.name(),
         "mode": options.mode.name(),
         "method": options.method.name(),
         "frames": options.frames,
@@ -128,6 +129,20 @@ mod tests {
         assert_eq!(value["method"], "sdls");
         // One clock tick (1 ms) per 10 frames: 100 µs per frame.
         assert!((value["us_per_frame"].as_f64().unwrap_or(0.0) - 100.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_poda_preset_times_the_gait_engine() {
+        let mut clock = ticking_clock();
+        let text = run(
+            r#"{"preset": "poda-quadruped", "frames": 20, "repeats": 3, "warmup_frames": 5}"#,
+            &mut clock,
+        )
+        .expect("bench runs");
+        let value: Value = serde_json::from_str(&text).expect("JSON");
+        assert_eq!(value["engine"], "poda");
+        // One tick (1 ms) per 20 frames: 50 µs per frame.
+        assert!((value["us_per_frame"].as_f64().unwrap_or(0.0) - 50.0).abs() < 1e-9);
     }
 
     #[test]

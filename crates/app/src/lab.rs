@@ -92,7 +92,16 @@ pub struct Lab {
     pub backend: Option<String>,
     /// What the last PODA gait edit derived, to say so in the gait panel.
     pub(crate) gait_derived: Vec<&'static str>,
+    /// Recent PODA footprints (where supporting feet stood), oldest first.
+    pub(crate) footprints: std::collections::VecDeque<glam::DVec3>,
+    /// Each PODA leg's last recorded footprint.
+    last_planted: Vec<glam::DVec3>,
 }
+
+/// Footprints kept for the ground overlay.
+const MAX_FOOTPRINTS: usize = 48;
+/// Length of body path drawn ahead of the figure, metres.
+const PATH_AHEAD_M: f64 = 4.0;
 
 /// A joint value as plotted: degrees for revolute joints, millimetres for prismatic ones.
 fn display_value(skeleton: &gaitlab_core::Skeleton, joint: usize, value: f64) -> f64 {
@@ -211,6 +220,8 @@ impl Lab {
             view_rect_px: [0.0; 4],
             pending_download: None,
             gait_derived: Vec::new(),
+            footprints: std::collections::VecDeque::with_capacity(MAX_FOOTPRINTS),
+            last_planted: Vec::new(),
         };
         lab.after_reset();
         lab
@@ -435,6 +446,8 @@ impl Lab {
 
     fn after_reset(&mut self) {
         self.frame = 0;
+        self.footprints.clear();
+        self.last_planted.clear();
         self.accumulator_s = 0.0;
         let names = self
             .creature
@@ -496,6 +509,7 @@ impl Lab {
             if self.recording {
                 self.record_frame();
             }
+            self.note_footprints();
         }
         if let (Some(started), Some(clock)) = (started, self.clock.as_ref()) {
             let per_frame_us = (clock() - started) * 1e3 / f64::from(steps);
@@ -660,6 +674,12 @@ impl Lab {
         if joints.is_empty() {
             joints = find(DEFAULT_PLOT_JOINTS.to_vec());
         }
+        if joints.is_empty()
+            && let Some(poda) = &self.creature.scenario.poda
+        {
+            // Each leg's hip, up to four legs.
+            joints = find(poda.legs.iter().take(4).map(|l| l.hip.as_str()).collect());
+        }
         if joints.is_empty() {
             joints = (0..skeleton.joint_count().min(4)).collect();
         }
@@ -669,6 +689,25 @@ impl Lab {
     }
 
     /// Rebuilds the 3-D scene from the driver's current pose.
+    /// Records a footprint for every PODA foot that landed since the last frame.
+    fn note_footprints(&mut self) {
+        let Some(driver) = self.driver.poda() else {
+            return;
+        };
+        for (leg, (target, support)) in driver.foot_targets().enumerate() {
+            if leg >= self.last_planted.len() {
+                self.last_planted.resize(leg + 1, glam::DVec3::NAN);
+            }
+            if support && self.last_planted[leg].distance_squared(target) > 1e-12 {
+                self.last_planted[leg] = target;
+                if self.footprints.len() == MAX_FOOTPRINTS {
+                    self.footprints.pop_front();
+                }
+                self.footprints.push_back(target);
+            }
+        }
+    }
+
     fn refresh_scene(&mut self) {
         let pose = self.driver.pose();
         self.kinematics
@@ -680,6 +719,21 @@ impl Lab {
             self.driver.targets(),
             &self.settings.view,
         );
+        if let Some(driver) = self.driver.poda()
+            && self.settings.view.targets
+        {
+            let path = driver.path();
+            let start = driver.path_distance_m();
+            let steps = 40;
+            self.scene.add_gait_overlay(
+                self.footprints.iter().copied(),
+                driver.footholds(),
+                (0..=steps).map(|k| {
+                    path.sample(start + PATH_AHEAD_M * f64::from(k) / f64::from(steps))
+                        .position
+                }),
+            );
+        }
     }
 
     /// Records the display frame rate from the UI's frame time.

@@ -101,7 +101,7 @@ fn footfall_diagram(ui: &mut egui::Ui, lab: &Lab) {
     let t0 = driver.time() - driver.time().rem_euclid(period);
     let x0 = rect.left() + label_width;
     let span = rect.right() - x0;
-    let columns = 120;
+    let columns: u32 = 120;
     for (i, name) in names.iter().enumerate() {
         let top = rect.top() + ROW_HEIGHT * i as f32;
         painter.text(
@@ -116,22 +116,28 @@ fn footfall_diagram(ui: &mut egui::Ui, lab: &Lab) {
             egui::pos2(rect.right(), top + ROW_HEIGHT - 2.0),
         );
         painter.rect_filled(row, 0.0, track);
-        for c in 0..columns {
-            let fraction = (f64::from(c) + 0.5) / f64::from(columns);
-            let supporting = gait
-                .leg_phase(i, t0 + fraction * period)
-                .is_some_and(|p| p.support);
-            if supporting {
-                let left = x0 + span * c as f32 / columns as f32;
-                let right = x0 + span * (c + 1) as f32 / columns as f32;
-                painter.rect_filled(
-                    egui::Rect::from_min_max(
-                        egui::pos2(left, row.top()),
-                        egui::pos2(right, row.bottom()),
-                    ),
-                    0.0,
-                    bar,
-                );
+        // Merge the supporting columns into runs: one bar per support phase.
+        let mut run_start: Option<u32> = None;
+        for c in 0..=columns {
+            let supporting = c < columns
+                && gait
+                    .leg_phase(i, t0 + (f64::from(c) + 0.5) / f64::from(columns) * period)
+                    .is_some_and(|p| p.support);
+            match (supporting, run_start) {
+                (true, None) => run_start = Some(c),
+                (false, Some(start)) => {
+                    let x = |c: u32| x0 + span * c as f32 / columns as f32;
+                    painter.rect_filled(
+                        egui::Rect::from_min_max(
+                            egui::pos2(x(start), row.top()),
+                            egui::pos2(x(c), row.bottom()),
+                        ),
+                        1.0,
+                        bar,
+                    );
+                    run_start = None;
+                }
+                _ => {}
             }
         }
     }

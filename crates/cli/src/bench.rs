@@ -15,8 +15,8 @@ use gaitlab_core::ik::{IkSolver, Method, Targets};
 use gaitlab_core::preset::Engine;
 use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_core::{Creature, RootTransform};
+use gaitlab_motion::ThesisDriver;
 use gaitlab_motion::frame_bench::{self, FrameBenchOptions, median_and_best};
-use gaitlab_motion::{PodaDriver, ThesisDriver};
 use serde_json::{Value, json};
 
 use crate::fail::Failure;
@@ -53,28 +53,21 @@ const PODA_BUDGETS: [(&str, f64); 1] = [("poda-quadruped", 1000.0)];
 /// Default PODA presets measured.
 const PODA_PRESETS: [&str; 4] = ["poda-quadruped", "poda-biped", "hexapod", "insect-14"];
 
-/// Frames per timed PODA repetition (10 s at 60 fps).
-const PODA_FRAMES: usize = 600;
-
-/// µs per frame of the PODA driver on its preset gait, after one warm-up cycle.
+/// µs per frame of the PODA driver on its preset gait, timed by the same
+/// routine as the browser's `window.gaitlab.bench()`.
 fn time_poda(creature: &Creature, repeats: usize) -> Result<Timing, Failure> {
-    let mut driver =
-        PodaDriver::new(creature).map_err(|e| Failure::input(format!("{}: {e}", creature.name)))?;
-    let dt = 1.0 / 60.0;
-    for _ in 0..60 {
-        driver.step(dt);
-    }
-    let samples = (0..repeats.max(1))
-        .map(|_| {
-            let start = Instant::now();
-            for _ in 0..PODA_FRAMES {
-                driver.step(dt);
-                black_box(driver.pose());
-            }
-            start.elapsed().as_secs_f64() * 1e6 / PODA_FRAMES as f64
-        })
-        .collect();
-    Ok(summarize(samples))
+    let options = FrameBenchOptions {
+        repeats: repeats.max(1),
+        ..FrameBenchOptions::default()
+    };
+    let epoch = Instant::now();
+    let mut clock = || epoch.elapsed().as_secs_f64() * 1e3;
+    let timing = frame_bench::time_frames(creature, &options, &mut clock)
+        .map_err(|e| Failure::input(format!("{}: {e}", creature.name)))?;
+    Ok(Timing {
+        median: timing.median_us,
+        best: timing.best_us,
+    })
 }
 
 /// One frame of recorded targets.

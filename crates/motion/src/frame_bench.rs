@@ -1,16 +1,17 @@
 //! The per-frame benchmark shared by `gaitlab bench` (native) and
-//! `window.gaitlab.bench()` (wasm): the µs one animation frame of the thesis
-//! driver takes — the §5.2.2 target script plus the frame's IK iterations
-//! (She 2006 §4.4's per-frame cost) — so the two platforms time the same work
-//! and their ratio means something. The clock is supplied by the caller
+//! `window.gaitlab.bench()` (wasm): the µs one animation frame of the
+//! creature's engine takes — for the thesis driver the §5.2.2 target script
+//! plus the frame's IK iterations (She 2006 §4.4's per-frame cost), for a PODA
+//! creature the gait, footholds, foot targets and every leg's IK — so the two
+//! platforms time the same work and their ratio means something. The clock is supplied by the caller
 //! (`Instant` natively, `performance.now()` in the browser).
 
 use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::Method;
-use gaitlab_core::preset::Creature;
 use gaitlab_core::preset::thesis::ThesisMode;
+use gaitlab_core::preset::{Creature, Engine};
 
-use crate::{DriverError, ThesisDriver};
+use crate::{DriverError, PodaDriver, ThesisDriver};
 
 /// Longest run one benchmark may ask for, frames per repeat.
 pub const MAX_BENCH_FRAMES: usize = 100_000;
@@ -97,8 +98,10 @@ pub fn median_and_best(samples: &mut [f64]) -> (f64, f64) {
     )
 }
 
-/// Times the thesis driver of `creature` per `options`; `clock_ms` reads a
-/// monotonic clock in milliseconds.
+/// Times the driver of `creature`'s engine per `options` (`mode` and
+/// `method` apply to the thesis driver); `clock_ms` reads a monotonic clock in
+/// milliseconds. `iterations_per_frame` is the most IK iterations a frame may
+/// run (per leg for PODA).
 ///
 /// # Errors
 /// Bad options, or a creature whose thesis parameters cannot drive it.
@@ -109,14 +112,23 @@ pub fn time_frames(
 ) -> Result<FrameTiming, DriverError> {
     check_options(options)?;
     let scenario = &creature.scenario;
-    let mut ik = scenario.ik_options();
-    ik.method = options.method;
-    let mut driver = ThesisDriver::new(
-        creature.skeleton.clone(),
-        scenario.thesis.clone(),
-        options.mode,
-        ik,
-    )?;
+    let (mut driver, iterations_per_frame): (Box<dyn Driver>, usize) = match scenario.engine {
+        Engine::Ik => {
+            let mut ik = scenario.ik_options();
+            ik.method = options.method;
+            let driver = ThesisDriver::new(
+                creature.skeleton.clone(),
+                scenario.thesis.clone(),
+                options.mode,
+                ik,
+            )?;
+            (Box::new(driver), scenario.thesis.iterations_per_frame)
+        }
+        Engine::Poda => (
+            Box::new(PodaDriver::new(creature)?),
+            scenario.poda_params().iterations_per_frame,
+        ),
+    };
     for _ in 0..options.warmup_frames {
         driver.step(options.frame_s);
     }
@@ -132,7 +144,7 @@ pub fn time_frames(
     Ok(FrameTiming {
         median_us,
         best_us,
-        iterations_per_frame: scenario.thesis.iterations_per_frame,
+        iterations_per_frame,
     })
 }
 

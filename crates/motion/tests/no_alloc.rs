@@ -1,6 +1,6 @@
 //! The per-frame hot path allocates nothing (DESIGN.md "Hot loops allocate
-//! nothing per frame"): a counting global allocator watches the thesis and
-//! track drivers step after their first frames.
+//! nothing per frame"): a counting global allocator watches the thesis, track
+//! and PODA drivers step after their first frames.
 
 mod common;
 
@@ -51,6 +51,7 @@ fn allocations_during(f: impl FnOnce()) -> usize {
 
 #[test]
 fn stepping_the_drivers_allocates_nothing() {
+    poda_driver_allocates_nothing();
     let skeleton = common::human();
     for method in Method::ALL {
         for mode in ThesisMode::ALL {
@@ -116,4 +117,43 @@ fn stepping_the_drivers_allocates_nothing() {
         }
     });
     assert_eq!(count, 0, "track: {count} allocations in 100 frames");
+}
+
+/// The PODA driver's frames, run from the single test above: the counter is
+/// global, so a second test (or the harness reporting it) would disturb it.
+fn poda_driver_allocates_nothing() {
+    use gaitlab_core::preset::load_bundled;
+    use gaitlab_motion::PodaDriver;
+    for preset in ["poda-quadruped", "poda-biped", "hexapod", "insect-14"] {
+        let creature = match load_bundled(preset) {
+            Some(Ok(creature)) => creature,
+            _ => panic!("{preset} is bundled and valid"),
+        };
+        let mut driver = match PodaDriver::new(&creature) {
+            Ok(driver) => driver,
+            Err(error) => panic!("{preset}: {error}"),
+        };
+        // Warm up over two cycles: the body plan and metrics reach their size.
+        for _ in 0..150 {
+            driver.step(1.0 / 60.0);
+        }
+        let count = allocations_during(|| {
+            for _ in 0..240 {
+                driver.step(1.0 / 60.0);
+            }
+        });
+        assert_eq!(count, 0, "{preset}: {count} allocations in 240 frames");
+        // A gait change allocates once (the named gait's table), then the blend does not.
+        if preset == "poda-quadruped" {
+            if let Err(error) = driver.set_gait("rotary_gallop") {
+                panic!("{error}");
+            }
+            let count = allocations_during(|| {
+                for _ in 0..120 {
+                    driver.step(1.0 / 60.0);
+                }
+            });
+            assert_eq!(count, 0, "{preset}: {count} allocations while blending");
+        }
+    }
 }

@@ -11,8 +11,10 @@
 //! - [`gpu`]: pipelines, buffers and the egui-wgpu callback; [`gpu::install`]
 //!   once at start-up turns the wgpu path on.
 //! - [`mesh`]: the unit capsule mesh every solid is instanced from.
+//! - [`gait_overlay`]: PODA footprints, planned footholds and the body path on the ground.
 
 pub mod camera;
+pub mod gait_overlay;
 pub mod gpu;
 pub mod mesh;
 pub mod scene;

@@ -525,6 +525,12 @@ impl Scene {
         }
     }
 
+    /// The primitives, for adding overlays after [`Scene::fill`] (copied
+    /// first if the renderer still holds the previous frame).
+    pub(crate) fn frame_mut(&mut self) -> &mut SceneFrame {
+        Arc::make_mut(&mut self.frame)
+    }
+
     /// The primitives of the last fill, shared with the renderer.
     #[must_use]
     pub fn frame(&self) -> &Arc<SceneFrame> {

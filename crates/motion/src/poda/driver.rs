@@ -1,9 +1,10 @@
 //! The PODA driver (Girard & Maciejewski 1985, "Modeling the Kinematics of
 //! Legged Locomotion"). Each frame runs the stages
 //! `body → leg_states → footholds → foot_targets → ik`:
-//! - **body**: the ground-plane pose from the body path at the desired speed
-//!   (arc length, heading along the path), raised by the superposition of
-//!   each leg's vertical push / fall / restore (eq. 12–13);
+//! - **body**: the ground-plane pose planned ahead by [`BodyTrack`] — path
+//!   following with the legs' horizontal force limits (eq. 14–15) and yaw
+//!   from the legs' push / restore toward the direction of travel — raised by
+//!   the superposition of each leg's vertical push / fall / restore (eq. 12–13);
 //! - **leg_states**: eq. 9 for every leg;
 //! - **footholds**: at lift-off (time t), eq. 11 — the body's predicted pose at
 //!   f₁ = t + transfer + support/2 carries the leg's reference position into
@@ -24,6 +25,7 @@ use gaitlab_core::preset::{Creature, PodaParams};
 use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec2, DVec3};
 
+use super::body_track::{BodyDynamics, BodyTrack};
 use super::gait::{GaitError, GaitParams, LegPhase, vertical_offset_m};
 use super::gait_metrics::GaitMetrics;
 use super::gaits::{gait_names, named_gait};
@@ -126,6 +128,10 @@ pub struct PodaDriver {
     centre_m: f64,
     /// Each foot's distance to its target after the frame's IK (other effectors 0).
     report: IkFrameReport,
+    /// The body's planned ground motion (eq. 14–15 and yaw).
+    track: BodyTrack,
+    /// Speed, period and duty factor the plan was made with.
+    track_key: [f64; 3],
 }
 
 fn gait_error(error: GaitError) -> DriverError {
@@ -217,6 +223,13 @@ impl PodaDriver {
             ..LegIkOptions::default()
         };
         let metrics = GaitMetrics::new(legs.iter().map(|l| l.name.as_str()));
+        let dynamics = BodyDynamics {
+            mass_kg: params.body_mass_kg,
+            max_leg_force_n: params
+                .max_leg_force_n
+                .unwrap_or(params.body_mass_kg * GRAVITY_MPS2),
+            ..BodyDynamics::default()
+        };
         let mut driver = Self {
             effectors: vec![DVec3::ZERO; skeleton.effector_count()],
             targets: Targets {
@@ -242,6 +255,8 @@ impl PodaDriver {
             centre_key: ([f64::NAN; 2], Vec::new()),
             centre_m: 0.0,
             report: IkFrameReport::new(creature.skeleton.effector_count()),
+            track: BodyTrack::new(creature.scenario.frame_seconds(), dynamics),
+            track_key: [f64::NAN; 3],
         };
         driver.reset();
         Ok(driver)
@@ -300,14 +315,31 @@ impl PodaDriver {
         self.runs.iter().map(|r| (r.target, r.support))
     }
 
-    /// The body's ground pose at time `t_s` (the path at the desired speed).
+    /// The footholds planned for the feet now in transfer (eq. 11), world metres.
+    pub fn footholds(&self) -> impl Iterator<Item = DVec3> + '_ {
+        self.runs
+            .iter()
+            .filter(|r| !r.support)
+            .map(|r| r.foothold_world)
+    }
+
+    /// Arc length of the desired point on the body path now, metres.
+    #[must_use]
+    pub fn path_distance_m(&self) -> f64 {
+        self.track.interpolate(self.time).desired_m
+    }
+
+    /// The body's planned ground pose at time `t_s` (known about one gait
+    /// period ahead of the current time).
     #[must_use]
     pub fn ground_pose(&self, t_s: f64) -> GroundPose {
-        let sample = self.path.sample(self.gait.speed_mps() * t_s);
-        GroundPose {
-            position: sample.position,
-            yaw_rad: sample.heading_rad,
-        }
+        self.track.ground_pose(t_s)
+    }
+
+    /// The planned body motion.
+    #[must_use]
+    pub fn body_track(&self) -> &BodyTrack {
+        &self.track
     }
 
     /// The superposition of every leg's vertical push / fall / restore
@@ -501,6 +533,18 @@ impl Driver for PodaDriver {
         let t = t_prev + dt;
         self.time = t;
         self.gait.update(t);
+        let key = [
+            self.gait.speed_mps(),
+            self.gait.period_s(),
+            self.gait.duty_factor(),
+        ];
+        if key != self.track_key {
+            // A gait edit: plan anew beyond the footholds already planned.
+            self.track_key = key;
+            let keep = self.gait.transfer_s() + 0.5 * self.gait.support_s();
+            self.track.replan(t_prev, keep, &self.path, &self.gait);
+        }
+        self.track.advance_to(t, &self.path, &self.gait);
         for i in 0..self.legs.len() {
             if let Some(phase) = self.gait.leg_phase(i, t) {
                 self.advance_leg(i, t_prev, &phase);
@@ -518,6 +562,12 @@ impl Driver for PodaDriver {
     fn reset(&mut self) {
         self.time = 0.0;
         self.pose.clone_from(&self.rest);
+        self.track.reset(&self.path, &self.gait);
+        self.track_key = [
+            self.gait.speed_mps(),
+            self.gait.period_s(),
+            self.gait.duty_factor(),
+        ];
         let support = self.gait.support_s();
         for i in 0..self.legs.len() {
             let Some(phase) = self.gait.leg_phase(i, 0.0) else {

@@ -3,6 +3,7 @@
 //! transfer trajectories and body paths, and per-leg pseudoinverse IK with
 //! null-space center angles (eq. 5–6).
 
+pub mod body_track;
 pub mod driver;
 pub mod gait;
 pub mod gait_metrics;
@@ -11,6 +12,7 @@ pub mod leg_ik;
 pub mod path;
 pub mod spline;
 
+pub use body_track::{BodyDynamics, BodyState, BodyTrack};
 pub use driver::{GroundPose, PodaDriver};
 pub use gait::{Derived, GaitError, GaitParams, LegPhase};
 pub use gait_metrics::{GaitMetrics, LegMetrics};
