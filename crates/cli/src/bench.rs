@@ -53,23 +53,6 @@ const PODA_BUDGETS: [(&str, f64); 1] = [("poda-quadruped", 1000.0)];
 /// Default PODA presets measured.
 const PODA_PRESETS: [&str; 4] = ["poda-quadruped", "poda-biped", "hexapod", "insect-14"];
 
-/// µs per frame of the PODA driver on its preset gait, timed by the same
-/// routine as the browser's `window.gaitlab.bench()`.
-fn time_poda(creature: &Creature, repeats: usize) -> Result<Timing, Failure> {
-    let options = FrameBenchOptions {
-        repeats: repeats.max(1),
-        ..FrameBenchOptions::default()
-    };
-    let epoch = Instant::now();
-    let mut clock = || epoch.elapsed().as_secs_f64() * 1e3;
-    let timing = frame_bench::time_frames(creature, &options, &mut clock)
-        .map_err(|e| Failure::input(format!("{}: {e}", creature.name)))?;
-    Ok(Timing {
-        median: timing.median_us,
-        best: timing.best_us,
-    })
-}
-
 /// One frame of recorded targets.
 struct Frame {
     root: RootTransform,
@@ -144,8 +127,9 @@ fn time_iterations(
     summarize(samples)
 }
 
-/// µs per frame of the whole thesis driver (script + IK iterations), timed by
-/// the same routine the browser's `window.gaitlab.bench()` runs.
+/// µs per frame of the creature's driver (thesis: script + IK iterations;
+/// PODA: gait, footholds and leg IK), timed by the same routine the browser's
+/// `window.gaitlab.bench()` runs.
 fn time_frames(creature: &Creature, method: Method, repeats: usize) -> Result<Timing, Failure> {
     let options = FrameBenchOptions {
         method,
@@ -186,7 +170,8 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
     for name in &presets {
         let creature = load::creature(name)?;
         if creature.scenario.engine == Engine::Poda {
-            let timing = time_poda(&creature, args.repeats)?;
+            // The same per-frame routine as the browser's bench; the method is unused.
+            let timing = time_frames(&creature, Method::Sdls, args.repeats)?;
             let budget = PODA_BUDGETS
                 .iter()
                 .find(|(p, _)| p == name)
