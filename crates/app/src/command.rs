@@ -7,7 +7,7 @@ use gaitlab_core::ik::Method;
 use gaitlab_core::preset::thesis::ThesisMode;
 use serde_json::{Map, Value, json};
 
-use crate::lab::Lab;
+use crate::lab::{GaitShapeEdit, Lab};
 use crate::settings::VideoSize;
 use crate::view::ViewOptions;
 
@@ -59,6 +59,8 @@ impl Lab {
     /// Applies a JSON command object, e.g. `{"mode":"run","method":"dls"}`.
     /// Keys: `preset`, `preset_json`, `gait`, `period_s`, `duty_factor`,
     /// `speed_mps`, `stroke_m` (PODA gait values; each edit keeps eq. 7–8 true),
+    /// `phases`, `step_height_m`, `transfer_keys` (PODA gait shape),
+    /// `center` (`{"joint", "center", "gain"}`: a PODA leg joint's eq. 6 center),
     /// `mode`, `method`, `paused` (or `pause`),
     /// `reset`, `step`, `lambda`, `gamma_max`, `max_step`, `null_space_gain`,
     /// `enforce_limits`, `heading_deg`, `plots`, `plot_joints` (joint names),
@@ -80,10 +82,14 @@ impl Lab {
             serde_json::from_str(json).map_err(|e| format!("command is not JSON: {e}"))?;
         let object: &Map<String, Value> =
             value.as_object().ok_or("command must be a JSON object")?;
-        const KNOWN: [&str; 25] = [
+        const KNOWN: [&str; 29] = [
             "preset",
             "preset_json",
             "gait",
+            "center",
+            "phases",
+            "step_height_m",
+            "transfer_keys",
             "period_s",
             "duty_factor",
             "speed_mps",
@@ -130,6 +136,35 @@ impl Lab {
                     .ok_or_else(|| format!("{key}: expected a number"))?;
                 self.edit_gait(key, value)?;
             }
+        }
+        if let Some(v) = get("phases") {
+            let phases = v.as_array().ok_or("phases: expected an array of numbers")?;
+            for (leg, phase) in phases.iter().enumerate() {
+                let phase = phase
+                    .as_f64()
+                    .ok_or_else(|| format!("phases[{leg}]: expected a number"))?;
+                self.edit_gait_shape(GaitShapeEdit::Phase { leg, phase })?;
+            }
+        }
+        if let Some(v) = get("step_height_m") {
+            let height = v.as_f64().ok_or("step_height_m: expected a number")?;
+            self.edit_gait_shape(GaitShapeEdit::StepHeight(height))?;
+        }
+        if let Some(v) = get("transfer_keys") {
+            let keys: Vec<[f64; 2]> = serde_json::from_value(v.clone())
+                .map_err(|_| "transfer_keys: expected [[along, height], …]".to_owned())?;
+            self.edit_gait_shape(GaitShapeEdit::TransferKeys(&keys))?;
+        }
+        if let Some(v) = get("center") {
+            let field = |key: &str| v.get(key).ok_or(format!("center.{key}: missing"));
+            let joint = text("center.joint", field("joint")?)?;
+            let center = field("center")?
+                .as_f64()
+                .ok_or("center.center: expected a number")?;
+            let gain = field("gain")?
+                .as_f64()
+                .ok_or("center.gain: expected a number")?;
+            self.set_center(joint, center, gain)?;
         }
         if let Some(v) = get("mode") {
             let name = text("mode", v)?;
@@ -265,6 +300,8 @@ impl Lab {
                     "support_s": gait.support_s(),
                     "transfer_s": gait.transfer_s(),
                     "phases": gait.phases(),
+                    "step_height_m": driver.params().step_height_m,
+                    "transfer_keys": driver.params().transfer_keys,
                     "blending": gait.is_blending(),
                     "legs": driver.leg_names().collect::<Vec<_>>(),
                     "foot_slip_max_m": driver.metrics().foot_slip_max_m(),

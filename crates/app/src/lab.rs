@@ -98,6 +98,22 @@ pub struct Lab {
     last_planted: Vec<glam::DVec3>,
 }
 
+/// An edit of the PODA gait's shape (see [`Lab::edit_gait_shape`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum GaitShapeEdit<'a> {
+    /// Relative phase of one leg, a fraction of the period.
+    Phase {
+        /// Leg index.
+        leg: usize,
+        /// New relative phase.
+        phase: f64,
+    },
+    /// Highest point of the transfer trajectory, metres.
+    StepHeight(f64),
+    /// Key leg positions `[along, height]` of the transfer trajectory.
+    TransferKeys(&'a [[f64; 2]]),
+}
+
 /// Footprints kept for the ground overlay.
 const MAX_FOOTPRINTS: usize = 48;
 /// Length of body path drawn ahead of the figure, metres.
@@ -420,6 +436,49 @@ impl Lab {
         .map_err(|e| e.to_string())?;
         self.gait_derived = derived.derived.to_vec();
         Ok(())
+    }
+
+    /// Sets leg `leg`'s relative phase (eq. 9), the step height or the
+    /// transfer key positions of the PODA gait.
+    ///
+    /// # Errors
+    /// `key: reason` when the engine has no gait or the value is out of
+    /// range; nothing changes.
+    pub fn edit_gait_shape(&mut self, edit: GaitShapeEdit<'_>) -> Result<(), String> {
+        let engine = self.creature.scenario.engine.name();
+        let Some(driver) = self.driver.poda_mut() else {
+            return Err(format!("gait: engine {engine} has no gait"));
+        };
+        match edit {
+            GaitShapeEdit::Phase { leg, phase } => driver
+                .gait_mut()
+                .set_phase(leg, phase)
+                .map(drop)
+                .map_err(|e| format!("phases[{leg}]: {}", e.reason)),
+            GaitShapeEdit::StepHeight(height) => {
+                driver.set_step_height(height).map_err(|e| e.to_string())
+            }
+            GaitShapeEdit::TransferKeys(keys) => {
+                driver.set_transfer_keys(keys).map_err(|e| e.to_string())
+            }
+        }
+    }
+
+    /// Sets a PODA leg joint's center angle (radians, or metres for prismatic
+    /// joints) and gain (eq. 6).
+    ///
+    /// # Errors
+    /// `center.…: reason`; nothing changes.
+    pub fn set_center(&mut self, joint: &str, center: f64, gain: f64) -> Result<(), String> {
+        let engine = self.creature.scenario.engine.name();
+        let Some(driver) = self.driver.poda_mut() else {
+            return Err(format!(
+                "center: engine {engine} sets centers in its IK panel"
+            ));
+        };
+        driver
+            .set_center(joint, center, gain)
+            .map_err(|e| e.to_string())
     }
 
     /// What the last gait edit derived (e.g. `support_s`, `period_s`).

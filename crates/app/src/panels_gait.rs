@@ -4,10 +4,10 @@
 //! support and transfer durations, and a footfall diagram — each leg's
 //! support bar over one cycle (eq. 9) with a live cursor.
 
-use gaitlab_core::driver::Driver;
+use gaitlab_core::driver::Driver as _;
 use gaitlab_motion::poda::gait_names;
 
-use crate::lab::Lab;
+use crate::lab::{GaitShapeEdit, Lab};
 
 /// Height of one leg's row in the footfall diagram, points.
 const ROW_HEIGHT: f32 = 12.0;
@@ -77,6 +77,134 @@ pub fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
         if let Err(error) = lab.edit_gait(key, value) {
             lab.report_error(error);
         }
+    }
+    shape(ui, lab);
+    centers(ui, lab);
+}
+
+/// One joint's row in the centers panel: name, center, gain, revolute.
+struct CenterRow {
+    joint: String,
+    center: f64,
+    gain: f64,
+    revolute: bool,
+}
+
+/// Center angle and gain of every leg joint (PODA eq. 6: the null-space term
+/// pulls each joint toward its center with its gain, without moving the foot).
+fn centers(ui: &mut egui::Ui, lab: &mut Lab) {
+    let Some(driver) = lab.driver().poda() else {
+        return;
+    };
+    let skeleton = driver.skeleton();
+    let legs: Vec<(String, Vec<CenterRow>)> = driver
+        .leg_joints()
+        .map(|(name, joints)| {
+            let rows = joints
+                .iter()
+                .filter_map(|&j| skeleton.joints().get(j))
+                .map(|joint| {
+                    let revolute = joint.kind == gaitlab_core::JointKind::Revolute;
+                    CenterRow {
+                        joint: joint.name.clone(),
+                        center: joint.center,
+                        gain: joint.gain,
+                        revolute,
+                    }
+                })
+                .collect();
+            (name.to_owned(), rows)
+        })
+        .collect();
+    let mut edit: Option<(String, f64, f64)> = None;
+    ui.collapsing("Center angles and gains", |ui| {
+        for (leg, rows) in legs {
+            ui.collapsing(leg, |ui| {
+                for CenterRow {
+                    joint,
+                    center,
+                    gain,
+                    revolute,
+                } in rows
+                {
+                    ui.horizontal(|ui| {
+                        ui.label(joint.as_str());
+                        let mut shown = if revolute {
+                            center.to_degrees()
+                        } else {
+                            center
+                        };
+                        let mut new_gain = gain;
+                        let unit = if revolute { "°" } else { " m" };
+                        let moved = ui
+                            .add(egui::DragValue::new(&mut shown).speed(0.5).suffix(unit))
+                            .changed();
+                        let weighted = ui
+                            .add(egui::Slider::new(&mut new_gain, 0.0..=1.0).text("gain"))
+                            .changed();
+                        if moved || weighted {
+                            let value = if revolute { shown.to_radians() } else { shown };
+                            edit = Some((joint.clone(), value, new_gain));
+                        }
+                    });
+                }
+            });
+        }
+    });
+    if let Some((joint, center, gain)) = edit
+        && let Err(error) = lab.set_center(&joint, center, gain)
+    {
+        lab.report_error(error);
+    }
+}
+
+/// The gait's shape: each leg's relative phase (eq. 9), the step height and
+/// the key leg positions of the transfer trajectory (PODA "Leg Support and
+/// Transfer Trajectories").
+fn shape(ui: &mut egui::Ui, lab: &mut Lab) {
+    let Some(driver) = lab.driver().poda() else {
+        return;
+    };
+    let names: Vec<String> = driver.leg_names().map(str::to_owned).collect();
+    let mut phases = driver.gait().phases().to_vec();
+    let mut step_height = driver.params().step_height_m;
+    let mut keys = driver.params().transfer_keys.clone();
+    let mut edits: Vec<GaitShapeEdit<'_>> = Vec::new();
+    let mut keys_changed = false;
+    ui.collapsing("Phases and steps", |ui| {
+        for (leg, (name, phase)) in names.iter().zip(phases.iter_mut()).enumerate() {
+            if ui
+                .add(egui::Slider::new(phase, 0.0..=0.999).text(name.as_str()))
+                .changed()
+            {
+                edits.push(GaitShapeEdit::Phase { leg, phase: *phase });
+            }
+        }
+        if ui
+            .add(egui::Slider::new(&mut step_height, 0.005..=0.3).text("Step height (m)"))
+            .changed()
+        {
+            edits.push(GaitShapeEdit::StepHeight(step_height));
+        }
+        ui.label("Transfer key positions (step fraction, height fraction):");
+        for [along, height] in &mut keys {
+            ui.horizontal(|ui| {
+                keys_changed |= ui
+                    .add(egui::DragValue::new(along).speed(0.005).range(0.01..=0.99))
+                    .changed();
+                keys_changed |= ui
+                    .add(egui::DragValue::new(height).speed(0.01).range(0.0..=2.0))
+                    .changed();
+            });
+        }
+    });
+    for edit in edits {
+        if let Err(error) = lab.edit_gait_shape(edit) {
+            lab.report_error(error);
+        }
+    }
+    if keys_changed && let Err(error) = lab.edit_gait_shape(GaitShapeEdit::TransferKeys(&keys)) {
+        lab.report_error(error);
     }
 }
 

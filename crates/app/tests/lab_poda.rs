@@ -4,6 +4,7 @@
 //! true, and bad gait commands name their key.
 
 use gaitlab_app::{Lab, Settings};
+use gaitlab_core::driver::Driver;
 use serde_json::Value;
 
 fn state(lab: &Lab) -> Value {
@@ -122,4 +123,113 @@ fn bad_gait_commands_name_their_key_and_change_nothing() {
     let s = state(&lab);
     assert_eq!(s["engine"], "ik");
     assert!(s["gait"].is_null());
+}
+
+#[test]
+fn phases_step_height_and_transfer_keys_are_editable() {
+    let mut lab = Lab::new(Settings::default());
+    lab.command(r#"{"preset":"poda-quadruped","gait":"trot"}"#)
+        .expect("valid");
+    lab.command(
+        r#"{"phases":[0.1,0.6,0.6,0.1],"step_height_m":0.12,"transfer_keys":[[0.2,0.9],[0.8,0.7]]}"#,
+    )
+    .expect("valid shape edits");
+    let s = state(&lab);
+    let phases: Vec<f64> = s["poda"]["phases"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(Value::as_f64)
+        .collect();
+    assert_eq!(phases, [0.1, 0.6, 0.6, 0.1]);
+    assert!((number(&s, "step_height_m") - 0.12).abs() < 1e-12);
+    assert_eq!(
+        s["poda"]["transfer_keys"],
+        serde_json::json!([[0.2, 0.9], [0.8, 0.7]])
+    );
+    // The feet now rise to 12 cm: the highest foot target over a cycle.
+    let mut highest: f64 = 0.0;
+    for _ in 0..72 {
+        lab.advance(1.0 / 60.0);
+        highest = highest.max(
+            lab.driver()
+                .poda()
+                .map(|d| d.foot_targets().map(|(t, _)| t.y).fold(0.0, f64::max))
+                .unwrap_or(0.0),
+        );
+    }
+    assert!(
+        (0.10..=0.13).contains(&highest),
+        "highest foot target {highest} m"
+    );
+    for (command, key) in [
+        (
+            r#"{"transfer_keys":[[0.6,0.9],[0.4,0.7]]}"#,
+            "transfer_keys[1]",
+        ),
+        (r#"{"transfer_keys":"up"}"#, "transfer_keys"),
+        (r#"{"step_height_m":-1}"#, "step_height_m"),
+        (r#"{"phases":[0.1,"x"]}"#, "phases[1]"),
+    ] {
+        let error = lab.command(command).expect_err(command);
+        assert!(error.starts_with(key), "{command}: {error}");
+    }
+}
+
+#[test]
+fn a_leg_joints_center_pulls_it_without_moving_the_planted_feet() {
+    let mut lab = Lab::new(Settings::default());
+    lab.command(r#"{"preset":"poda-quadruped","gait":"walk"}"#)
+        .expect("valid");
+    let joint = "left_hind_knee_x";
+    let value = |lab: &Lab| {
+        let driver = lab.driver().poda().expect("PODA");
+        let j = driver.skeleton().joint_index(joint).expect("joint");
+        driver.pose().joints[j]
+    };
+    // The knee's mean bend over two cycles, before and after pulling it to 1.2 rad.
+    let mean_over = |lab: &mut Lab| -> f64 {
+        let mut sum = 0.0;
+        for _ in 0..72 {
+            lab.advance(1.0 / 60.0);
+            sum += value(lab);
+        }
+        sum / 72.0
+    };
+    let before = mean_over(&mut lab);
+    lab.command(r#"{"center":{"joint":"left_hind_knee_x","center":1.2,"gain":1.0}}"#)
+        .expect("valid center");
+    mean_over(&mut lab);
+    let after = mean_over(&mut lab);
+    assert!(
+        (after - 1.2).abs() < (before - 1.2).abs(),
+        "knee pulled toward 1.2 rad: {before} → {after}"
+    );
+    let s = state(&lab);
+    assert!(number(&s, "foot_slip_max_m") <= 0.001, "{s}");
+    for (command, key) in [
+        (
+            r#"{"center":{"joint":"spine_03","center":0,"gain":0.5}}"#,
+            "center.joint",
+        ),
+        (
+            r#"{"center":{"joint":"nope","center":0,"gain":0.5}}"#,
+            "center.joint",
+        ),
+        (
+            r#"{"center":{"joint":"left_hind_knee_x","center":9,"gain":0.5}}"#,
+            "center.center",
+        ),
+        (
+            r#"{"center":{"joint":"left_hind_knee_x","center":0.5,"gain":2}}"#,
+            "center.gain",
+        ),
+        (
+            r#"{"center":{"joint":"left_hind_knee_x"}}"#,
+            "center.center",
+        ),
+    ] {
+        let error = lab.command(command).expect_err(command);
+        assert!(error.starts_with(key), "{command}: {error}");
+    }
 }

@@ -268,6 +268,35 @@ impl Skeleton {
         self.effectors.iter().position(|e| e.name == name)
     }
 
+    /// Sets joint `j`'s PODA center value θc and gain α (eq. 6: the
+    /// null-space term pulls the joint toward θc with weight α). Nothing else
+    /// of the skeleton depends on them.
+    ///
+    /// # Errors
+    /// `joints[j]` when there is no such joint; `joints[j].center` when the
+    /// center is not finite or lies outside the joint's limits;
+    /// `joints[j].gain` unless the gain is in [0, 1]. Nothing changes then.
+    pub fn set_center(&mut self, j: usize, center: f64, gain: f64) -> Result<(), SkeletonError> {
+        let Some(joint) = self.joints.get_mut(j) else {
+            return Err(SkeletonError::new(format!("joints[{j}]"), "no such joint"));
+        };
+        if !center.is_finite() || joint.clamp(center) != center {
+            return Err(SkeletonError::new(
+                format!("joints[{j}].center"),
+                "must be a finite value within the joint's limits",
+            ));
+        }
+        if !(gain.is_finite() && (0.0..=1.0).contains(&gain)) {
+            return Err(SkeletonError::new(
+                format!("joints[{j}].gain"),
+                "must be between 0 and 1",
+            ));
+        }
+        joint.center = center;
+        joint.gain = gain;
+        Ok(())
+    }
+
     /// Rest values of every joint, the configuration a reset returns to.
     #[must_use]
     pub fn rest_values(&self) -> Vec<f64> {

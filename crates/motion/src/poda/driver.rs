@@ -273,6 +273,86 @@ impl PodaDriver {
         &mut self.gait
     }
 
+    /// The PODA parameters in use (legs, step height, transfer keys, dynamics).
+    #[must_use]
+    pub fn params(&self) -> &PodaParams {
+        &self.params
+    }
+
+    /// Sets the highest point of the transfer trajectory above the ground.
+    ///
+    /// # Errors
+    /// `step_height_m` unless it is a number of metres in (0, 5].
+    pub fn set_step_height(&mut self, step_height_m: f64) -> Result<(), DriverError> {
+        if !(step_height_m.is_finite() && step_height_m > 0.0 && step_height_m <= 5.0) {
+            return Err(DriverError::new(
+                "step_height_m",
+                "must be a number of metres in (0, 5]",
+            ));
+        }
+        self.params.step_height_m = step_height_m;
+        Ok(())
+    }
+
+    /// Replaces the key leg positions of the transfer trajectory, each
+    /// `[along, height]` (step fraction strictly increasing in (0, 1), height
+    /// fraction of the step height in [0, 2]). Feet in transfer follow the new
+    /// spline from their current progress.
+    ///
+    /// # Errors
+    /// `transfer_keys[i]` naming the first bad key; nothing changes.
+    pub fn set_transfer_keys(&mut self, keys: &[[f64; 2]]) -> Result<(), DriverError> {
+        let mut candidate = self.params.clone();
+        candidate.transfer_keys = keys.to_vec();
+        candidate
+            .check_values("")
+            .map_err(|e| DriverError::new(e.path.trim_start_matches('.'), e.reason))?;
+        self.keys.clear();
+        self.keys.push(DVec3::ZERO);
+        self.keys.extend(
+            keys.iter()
+                .map(|&[along, height]| DVec3::new(along, height, 0.0)),
+        );
+        self.keys.push(DVec3::X);
+        self.params.transfer_keys = candidate.transfer_keys;
+        Ok(())
+    }
+
+    /// Sets a leg joint's center angle and gain (eq. 6), by joint name.
+    ///
+    /// # Errors
+    /// `center.joint` for an unknown joint or one that belongs to no leg;
+    /// `center.center` / `center.gain` for values out of range.
+    pub fn set_center(&mut self, joint: &str, center: f64, gain: f64) -> Result<(), DriverError> {
+        let Some(j) = self.skeleton.joint_index(joint) else {
+            return Err(DriverError::new(
+                "center.joint",
+                format!("no joint called {joint:?}"),
+            ));
+        };
+        if !self.legs.iter().any(|leg| leg.ik.joints().contains(&j)) {
+            return Err(DriverError::new(
+                "center.joint",
+                format!("{joint:?} belongs to no leg"),
+            ));
+        }
+        Arc::make_mut(&mut self.skeleton)
+            .set_center(j, center, gain)
+            .map_err(|e| {
+                let field = if e.path.ends_with("gain") {
+                    "gain"
+                } else {
+                    "center"
+                };
+                DriverError::new(format!("center.{field}"), e.reason)
+            })
+    }
+
+    /// Each leg's name and joints (skeleton indices, hip first).
+    pub fn leg_joints(&self) -> impl Iterator<Item = (&str, &[usize])> {
+        self.legs.iter().map(|l| (l.name.as_str(), l.ik.joints()))
+    }
+
     /// Name of the named gait in use.
     #[must_use]
     pub fn gait_name(&self) -> &str {
