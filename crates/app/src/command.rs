@@ -61,6 +61,7 @@ impl Lab {
     /// `speed_mps`, `stroke_m` (PODA gait values; each edit keeps eq. 7–8 true),
     /// `phases`, `step_height_m`, `transfer_keys` (PODA gait shape),
     /// `center` (`{"joint", "center", "gain"}`: a PODA leg joint's eq. 6 center),
+    /// `path` (`{"kind", "points": [[x, z], …], "closed"}`: the PODA body path),
     /// `mode`, `method`, `paused` (or `pause`),
     /// `reset`, `step`, `lambda`, `gamma_max`, `max_step`, `null_space_gain`,
     /// `enforce_limits`, `heading_deg`, `plots`, `plot_joints` (joint names),
@@ -82,10 +83,11 @@ impl Lab {
             serde_json::from_str(json).map_err(|e| format!("command is not JSON: {e}"))?;
         let object: &Map<String, Value> =
             value.as_object().ok_or("command must be a JSON object")?;
-        const KNOWN: [&str; 29] = [
+        const KNOWN: [&str; 30] = [
             "preset",
             "preset_json",
             "gait",
+            "path",
             "center",
             "phases",
             "step_height_m",
@@ -154,6 +156,11 @@ impl Lab {
             let keys: Vec<[f64; 2]> = serde_json::from_value(v.clone())
                 .map_err(|_| "transfer_keys: expected [[along, height], …]".to_owned())?;
             self.edit_gait_shape(GaitShapeEdit::TransferKeys(&keys))?;
+        }
+        if let Some(v) = get("path") {
+            let spec: gaitlab_core::preset::PathSpec =
+                serde_json::from_value(v.clone()).map_err(|e| format!("path: {e}"))?;
+            self.set_path(&spec)?;
         }
         if let Some(v) = get("center") {
             let field = |key: &str| v.get(key).ok_or(format!("center.{key}: missing"));
@@ -302,6 +309,7 @@ impl Lab {
                     "phases": gait.phases(),
                     "step_height_m": driver.params().step_height_m,
                     "transfer_keys": driver.params().transfer_keys,
+                    "path": driver.path().to_spec(),
                     "blending": gait.is_blending(),
                     "legs": driver.leg_names().collect::<Vec<_>>(),
                     "foot_slip_max_m": driver.metrics().foot_slip_max_m(),

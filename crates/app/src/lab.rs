@@ -481,6 +481,20 @@ impl Lab {
             .map_err(|e| e.to_string())
     }
 
+    /// Replaces the PODA body path (the body joins it where it is closest).
+    ///
+    /// # Errors
+    /// `path.…: reason`; nothing changes.
+    pub fn set_path(&mut self, spec: &gaitlab_core::preset::PathSpec) -> Result<(), String> {
+        let engine = self.creature.scenario.engine.name();
+        let Some(driver) = self.driver.poda_mut() else {
+            return Err(format!("path: engine {engine} has no body path"));
+        };
+        driver.set_path(spec).map_err(|e| e.to_string())?;
+        self.refresh_scene();
+        Ok(())
+    }
+
     /// What the last gait edit derived (e.g. `support_s`, `period_s`).
     #[must_use]
     pub fn gait_derived(&self) -> &[&'static str] {

@@ -13,6 +13,7 @@ pub mod lab_driver;
 pub mod link;
 mod panels;
 mod panels_gait;
+mod panels_path;
 pub mod recording;
 pub mod settings;
 mod ui;

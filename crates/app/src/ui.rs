@@ -7,7 +7,7 @@ use egui_plot::{Legend, Line, Plot, PlotPoints};
 use crate::history::History;
 use crate::lab::{Lab, MAX_PLOT_JOINTS};
 use crate::render::viewport;
-use crate::{panels, panels_gait};
+use crate::{panels, panels_gait, panels_path};
 
 impl Lab {
     /// Shows the whole lab in `ui` and advances the animation by the frame's time.
@@ -28,6 +28,7 @@ impl Lab {
                     ui.separator();
                     if self.driver.poda().is_some() {
                         panels_gait::gait(ui, self);
+                        panels_path::path(ui, self);
                     } else {
                         panels::method(ui, self);
                         panels::motion(ui, self);

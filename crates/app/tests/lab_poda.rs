@@ -233,3 +233,41 @@ fn a_leg_joints_center_pulls_it_without_moving_the_planted_feet() {
         assert!(error.starts_with(key), "{command}: {error}");
     }
 }
+
+#[test]
+fn a_new_body_path_is_joined_where_the_body_is_and_followed() {
+    let mut lab = Lab::new(Settings::default());
+    lab.command(r#"{"preset":"hexapod"}"#).expect("valid");
+    for _ in 0..60 {
+        lab.advance(1.0 / 60.0);
+    }
+    // A left turn of radius 1.5 m starting beside the body.
+    lab.command(
+        r#"{"path":{"kind":"catmull_rom","closed":true,"points":[[0,0],[1.5,1.5],[0,3],[-1.5,1.5]]}}"#,
+    )
+    .expect("valid path");
+    let s = state(&lab);
+    assert_eq!(s["poda"]["path"]["closed"], true);
+    let driver = || lab.driver().poda().expect("PODA");
+    let path = driver().path().clone();
+    let mut worst: f64 = 0.0;
+    for _ in 0..600 {
+        lab.advance(1.0 / 60.0);
+        let root = lab.driver().poda().map(|d| {
+            let p = gaitlab_core::driver::Driver::pose(d).root.position;
+            glam::DVec2::new(p.x, p.z)
+        });
+        if let Some(at) = root {
+            let nearest = path.sample(path.closest_distance(at)).position;
+            worst = worst.max((nearest - at).length());
+        }
+    }
+    // After joining it, the body stays on the new path.
+    assert!(worst < 0.25, "body up to {worst} m off the path");
+    let s = state(&lab);
+    assert!(number(&s, "foot_slip_max_m") <= 0.001, "{s}");
+    let error = lab
+        .command(r#"{"path":{"points":[[0,0]]}}"#)
+        .expect_err("one point");
+    assert!(error.starts_with("path.points"), "{error}");
+}

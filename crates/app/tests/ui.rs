@@ -109,14 +109,19 @@ fn the_recording_panel_records_a_take_and_saves_it() {
     assert!(download.text.contains("Frames: 5"));
 }
 
-#[test]
-fn a_poda_creature_shows_the_gait_panel_with_its_footfall_diagram() {
+/// A paused lab on PODA preset `preset`, in a window `height` points tall.
+fn poda_harness(preset: &str, height: f32) -> Harness<'static, Lab> {
     let mut lab = Lab::new(Settings::default());
     lab.set_paused(true);
-    lab.set_preset("poda-quadruped").expect("bundled");
-    let mut harness = Harness::builder()
-        .with_size(egui::vec2(1200.0, 800.0))
-        .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab);
+    lab.set_preset(preset).expect("bundled");
+    Harness::builder()
+        .with_size(egui::vec2(1200.0, height))
+        .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab)
+}
+
+#[test]
+fn a_poda_creature_shows_the_gait_panel_with_its_footfall_diagram() {
+    let mut harness = poda_harness("poda-quadruped", 800.0);
     harness.run();
     // The gait panel opens by itself.
     harness.get_by_label("Gait (PODA)");
@@ -148,4 +153,20 @@ fn a_poda_creature_shows_the_gait_panel_with_its_footfall_diagram() {
         harness.query_by_label("Method").is_none(),
         "no IK method panel for PODA"
     );
+}
+
+#[test]
+fn the_body_path_panel_swaps_in_a_circle() {
+    let mut harness = poda_harness("hexapod", 1400.0);
+    harness.run();
+    harness.get_by_label("Body path").click();
+    harness.run();
+    harness.get_by_label("Circle").click();
+    harness.run();
+    let closed = harness
+        .state()
+        .driver()
+        .poda()
+        .map(|d| d.path().is_closed());
+    assert_eq!(closed, Some(true));
 }

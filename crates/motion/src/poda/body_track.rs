@@ -182,6 +182,26 @@ impl BodyTrack {
         self.plan(path, gait);
     }
 
+    /// After the body path changed: the desired point restarts at arc length
+    /// `distance_m` of the new path, and everything after `t_s` is planned
+    /// again along it.
+    pub fn follow_new_path(
+        &mut self,
+        t_s: f64,
+        distance_m: f64,
+        path: &BodyPath,
+        gait: &GaitParams,
+    ) {
+        while self.states.len() > 2 && self.states.back().is_some_and(|s| s.t_s > t_s) {
+            self.states.pop_back();
+        }
+        for state in &mut self.states {
+            state.desired_m = distance_m;
+        }
+        self.yaw_planned = self.yaw_planned.min(self.states.len()).max(1);
+        self.plan(path, gait);
+    }
+
     /// Extends translation to two periods plus a margin ahead of the first
     /// state, and yaw to one period plus a margin.
     fn plan(&mut self, path: &BodyPath, gait: &GaitParams) {

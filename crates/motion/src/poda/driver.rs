@@ -21,7 +21,7 @@ use std::sync::Arc;
 
 use gaitlab_core::driver::{Driver, IkFrameReport};
 use gaitlab_core::ik::Targets;
-use gaitlab_core::preset::{Creature, PodaParams};
+use gaitlab_core::preset::{Creature, PathSpec, PodaParams};
 use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec2, DVec3};
 
@@ -351,6 +351,23 @@ impl PodaDriver {
     /// Each leg's name and joints (skeleton indices, hip first).
     pub fn leg_joints(&self) -> impl Iterator<Item = (&str, &[usize])> {
         self.legs.iter().map(|l| (l.name.as_str(), l.ik.joints()))
+    }
+
+    /// Replaces the body path; the body joins it at the point closest to
+    /// where it is and plans ahead along it (footholds already planned stay).
+    ///
+    /// # Errors
+    /// `path.…` naming the bad control point or rule; nothing changes.
+    pub fn set_path(&mut self, spec: &PathSpec) -> Result<(), DriverError> {
+        let path = BodyPath::try_from(spec)
+            .map_err(|e| DriverError::new(format!("path.{}", e.path), e.reason))?;
+        let here = self.track.interpolate(self.time).position;
+        let distance = path.closest_distance(here);
+        self.path = path;
+        self.params.path = Some(spec.clone());
+        self.track
+            .follow_new_path(self.time, distance, &self.path, &self.gait);
+        Ok(())
     }
 
     /// Name of the named gait in use.

@@ -1,0 +1,148 @@
+//! The body-path editor (Girard & Maciejewski 1985, "Horizontal Control": the
+//! animator designs the body's path as a Catmull-Rom or B-spline on the
+//! ground): a top-down view of the path, its control points to drag, the
+//! body's place on it, and ready-made paths.
+
+use gaitlab_core::preset::{PathKindSpec, PathSpec};
+use glam::DVec2;
+
+use crate::lab::Lab;
+
+/// Side of the square top-down view, points.
+const VIEW_SIZE: f32 = 250.0;
+/// Radius of a control point's handle, points.
+const HANDLE_RADIUS: f32 = 5.0;
+
+/// Ready-made paths: a straight line, a circle of radius 2 m, an S-curve.
+fn preset_path(name: &str, start: DVec2) -> PathSpec {
+    let points: Vec<[f64; 2]> = match name {
+        "circle" => (0..12)
+            .map(|k| {
+                let a = f64::from(k) / 12.0 * std::f64::consts::TAU;
+                [start.x + 2.0 - 2.0 * a.cos(), start.y + 2.0 * a.sin()]
+            })
+            .collect(),
+        "s-curve" => vec![
+            [start.x, start.y],
+            [start.x, start.y + 2.0],
+            [start.x + 1.5, start.y + 4.0],
+            [start.x + 1.5, start.y + 6.0],
+            [start.x, start.y + 8.0],
+            [start.x, start.y + 10.0],
+        ],
+        _ => vec![[start.x, start.y], [start.x, start.y + 20.0]],
+    };
+    PathSpec {
+        kind: PathKindSpec::CatmullRom,
+        closed: name == "circle",
+        points,
+    }
+}
+
+/// The path panel (shown for PODA creatures).
+pub fn path(ui: &mut egui::Ui, lab: &mut Lab) {
+    let Some(driver) = lab.driver().poda() else {
+        return;
+    };
+    let mut spec = driver.path().to_spec();
+    let body = driver
+        .ground_pose(gaitlab_core::driver::Driver::time(driver))
+        .position;
+    let samples: Vec<DVec2> = {
+        let path = driver.path();
+        let n = 120;
+        (0..=n)
+            .map(|k| {
+                path.sample(path.length_m() * f64::from(k) / f64::from(n))
+                    .position
+            })
+            .collect()
+    };
+    let mut changed = false;
+    ui.collapsing("Body path", |ui| {
+        ui.horizontal(|ui| {
+            for (label, name) in [
+                ("Straight", "straight"),
+                ("Circle", "circle"),
+                ("S-curve", "s-curve"),
+            ] {
+                if ui.button(label).clicked() {
+                    spec = preset_path(name, body);
+                    changed = true;
+                }
+            }
+        });
+        ui.horizontal(|ui| {
+            changed |= ui
+                .radio_value(&mut spec.kind, PathKindSpec::CatmullRom, "Catmull-Rom")
+                .changed();
+            changed |= ui
+                .radio_value(&mut spec.kind, PathKindSpec::BSpline, "B-spline")
+                .changed();
+        });
+        changed |= top_down(ui, &mut spec, &samples, body);
+        ui.weak("Drag the control points; the body joins the new path where it is closest.");
+    });
+    if changed && let Err(error) = lab.set_path(&spec) {
+        lab.report_error(error);
+    }
+}
+
+/// Draws the path from above and lets the control points be dragged; true
+/// when a point moved.
+fn top_down(ui: &mut egui::Ui, spec: &mut PathSpec, samples: &[DVec2], body: DVec2) -> bool {
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(VIEW_SIZE, VIEW_SIZE), egui::Sense::hover());
+    let painter = ui.painter_at(rect);
+    let visuals = ui.visuals();
+    painter.rect_filled(rect, 2.0, visuals.extreme_bg_color);
+    // World box around the points, the samples and the body, square, with a margin.
+    let mut min = body;
+    let mut max = body;
+    for p in samples
+        .iter()
+        .copied()
+        .chain(spec.points.iter().map(|&p| DVec2::from(p)))
+    {
+        min = min.min(p);
+        max = max.max(p);
+    }
+    let centre = 0.5 * (min + max);
+    let half = (0.5 * (max - min).max_element()).max(0.5) * 1.15;
+    let scale = f64::from(VIEW_SIZE) / (2.0 * half);
+    // x to the right, z up the panel (the view from above).
+    let to_screen = |p: DVec2| {
+        egui::pos2(
+            rect.center().x + ((p.x - centre.x) * scale) as f32,
+            rect.center().y - ((p.y - centre.y) * scale) as f32,
+        )
+    };
+    let line: Vec<egui::Pos2> = samples.iter().map(|&p| to_screen(p)).collect();
+    painter.add(egui::Shape::line(
+        line,
+        egui::Stroke::new(2.0, visuals.selection.bg_fill),
+    ));
+    painter.circle_filled(to_screen(body), 4.0, visuals.warn_fg_color);
+    let mut moved = false;
+    for (k, point) in spec.points.iter_mut().enumerate() {
+        let at = to_screen(DVec2::from(*point));
+        let handle = egui::Rect::from_center_size(at, egui::vec2(4.0, 4.0) * HANDLE_RADIUS);
+        let response = ui.interact(
+            handle,
+            ui.scope_id().with(("path-point", k)),
+            egui::Sense::drag(),
+        );
+        if response.dragged() {
+            let delta = response.drag_delta();
+            point[0] += f64::from(delta.x) / scale;
+            point[1] -= f64::from(delta.y) / scale;
+            moved = true;
+        }
+        let color = if response.hovered() || response.dragged() {
+            visuals.strong_text_color()
+        } else {
+            visuals.text_color()
+        };
+        painter.circle_stroke(at, HANDLE_RADIUS, egui::Stroke::new(1.5, color));
+    }
+    moved
+}
