@@ -23,8 +23,12 @@ describe('PODA engine (WebGL2)', () => {
     const p = await loadApp(browser, server.url);
     try {
       const { page } = p;
-      assert.equal(await command(page, { preset: 'poda-quadruped', gait: 'trot' }), 'ok');
+      assert.equal(await command(page, { engine: 'poda' }), 'ok');
       let s = await state(page);
+      assert.equal(s.engine, 'poda');
+      assert.equal(s.preset, 'poda-biped');
+      assert.equal(await command(page, { preset: 'poda-quadruped', gait: 'trot' }), 'ok');
+      s = await state(page);
       assert.equal(s.preset, 'poda-quadruped');
       assert.equal(s.engine, 'poda');
       assert.equal(s.gait, 'trot');
@@ -45,6 +49,13 @@ describe('PODA engine (WebGL2)', () => {
       // A gait the creature does not have is refused with the key named.
       assert.match(await command(page, { gait: 'tripod' }), /^gait: /);
       assert.equal((await state(page)).gait, 'transverse_gallop');
+
+      // The 63-joint animal's frame (gait + IK of every leg) through the JS API.
+      const bench = JSON.parse(await page.evaluate(() => window.gaitlab.bench(JSON.stringify(
+        { preset: 'poda-quadruped', frames: 300, repeats: 3 }))));
+      assert.equal(bench.engine, 'poda');
+      assert.ok(bench.us_per_frame > 0 && bench.us_per_frame < 16_000, `µs per frame ${bench.us_per_frame}`);
+      console.log(`# PODA quadruped in the browser: ${bench.us_per_frame.toFixed(1)} µs per frame (best ${bench.us_per_frame_best.toFixed(1)})`);
 
       await command(page, { paused: true });
       await sleep(500);

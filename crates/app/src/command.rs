@@ -57,7 +57,8 @@ fn apply_views(views: &mut ViewOptions, value: &Value) -> Result<(), String> {
 
 impl Lab {
     /// Applies a JSON command object, e.g. `{"mode":"run","method":"dls"}`.
-    /// Keys: `preset`, `preset_json`, `gait`, `period_s`, `duty_factor`,
+    /// Keys: `engine` (`ik` or `poda`: loads the matching creature), `preset`,
+    /// `preset_json`, `gait`, `period_s`, `duty_factor`,
     /// `speed_mps`, `stroke_m` (PODA gait values; each edit keeps eq. 7–8 true),
     /// `phases`, `step_height_m`, `transfer_keys` (PODA gait shape),
     /// `center` (`{"joint", "center", "gain"}`: a PODA leg joint's eq. 6 center),
@@ -83,7 +84,8 @@ impl Lab {
             serde_json::from_str(json).map_err(|e| format!("command is not JSON: {e}"))?;
         let object: &Map<String, Value> =
             value.as_object().ok_or("command must be a JSON object")?;
-        const KNOWN: [&str; 30] = [
+        const KNOWN: [&str; 32] = [
+            "engine",
             "preset",
             "preset_json",
             "gait",
@@ -96,6 +98,7 @@ impl Lab {
             "duty_factor",
             "speed_mps",
             "stroke_m",
+            "leg_force_n",
             "mode",
             "method",
             "paused",
@@ -122,6 +125,12 @@ impl Lab {
             return Err(format!("{unknown}: unknown command"));
         }
         let get = |key: &str| object.get(key);
+        if let Some(v) = get("engine") {
+            let name = text("engine", v)?;
+            let engine = gaitlab_core::preset::Engine::parse(name)
+                .ok_or_else(|| format!("engine: unknown engine {name:?} (ik, poda)"))?;
+            self.set_engine(engine)?;
+        }
         if let Some(v) = get("preset") {
             self.set_preset(text("preset", v)?)?;
         }
@@ -131,7 +140,13 @@ impl Lab {
         if let Some(v) = get("gait") {
             self.set_gait(text("gait", v)?)?;
         }
-        for key in ["period_s", "duty_factor", "speed_mps", "stroke_m"] {
+        for key in [
+            "period_s",
+            "duty_factor",
+            "speed_mps",
+            "stroke_m",
+            "leg_force_n",
+        ] {
             if let Some(v) = get(key) {
                 let value = v
                     .as_f64()
@@ -304,6 +319,10 @@ impl Lab {
                     "duty_factor": gait.duty_factor(),
                     "speed_mps": gait.speed_mps(),
                     "stroke_m": gait.stroke_m(),
+                    "leg_force_n": gait.leg_force_for_balance_n(
+                        driver.params().body_mass_kg,
+                        gaitlab_motion::poda::driver::GRAVITY_MPS2,
+                    ),
                     "support_s": gait.support_s(),
                     "transfer_s": gait.transfer_s(),
                     "phases": gait.phases(),

@@ -9,6 +9,7 @@ use gaitlab_core::preset::Engine;
 use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_core::preset::{Creature, load_bundled};
 use gaitlab_core::{Kinematics, RootTransform};
+use gaitlab_motion::poda::GaitError;
 use gaitlab_motion::{PodaDriver, ThesisDriver};
 use glam::DMat3;
 
@@ -394,6 +395,25 @@ impl Lab {
         self.creature.scenario.engine
     }
 
+    /// Switches engine by loading the matching bundled creature: the thesis
+    /// human and the PODA biped share a skeleton, as do the IK and PODA
+    /// quadrupeds; other creatures go to the human or the PODA quadruped.
+    ///
+    /// # Errors
+    /// If the matching preset cannot be loaded; nothing changes.
+    pub fn set_engine(&mut self, engine: Engine) -> Result<(), String> {
+        if engine == self.engine() {
+            return Ok(());
+        }
+        let name = match (engine, self.creature.name.as_str()) {
+            (Engine::Poda, "human") => "poda-biped",
+            (Engine::Poda, _) => "poda-quadruped",
+            (Engine::Ik, "poda-quadruped") => "ik-quadruped",
+            (Engine::Ik, _) => "human",
+        };
+        self.set_preset(name)
+    }
+
     /// Switches the PODA gait (blending over one cycle).
     ///
     /// # Errors
@@ -411,9 +431,11 @@ impl Lab {
         Ok(())
     }
 
-    /// Sets one PODA gait value (`period_s`, `duty_factor`, `speed_mps` or
-    /// `stroke_m`); the gait model derives the others so that eq. 7–8 stay
-    /// true, and [`Lab::gait_derived`] names what it derived.
+    /// Sets one PODA gait value (`period_s`, `duty_factor`, `speed_mps`,
+    /// `stroke_m`, or `leg_force_n`, each leg's upward force during support,
+    /// eq. 12–13); the gait model derives the others so that eq. 7–8 (and
+    /// eq. 13 for the force) stay true, and [`Lab::gait_derived`] names what it
+    /// derived.
     ///
     /// # Errors
     /// `key: reason` when the engine has no gait, the key is unknown, or the
@@ -425,12 +447,16 @@ impl Lab {
                 self.creature.scenario.engine.name()
             ));
         };
+        let mass_kg = driver.params().body_mass_kg;
         let gait = driver.gait_mut();
         let derived = match key {
             "period_s" => gait.set_period(value),
             "duty_factor" => gait.set_duty_factor(value),
             "speed_mps" => gait.set_speed(value),
             "stroke_m" => gait.set_stroke(value),
+            "leg_force_n" => gait
+                .set_leg_force(value, mass_kg, gaitlab_motion::poda::driver::GRAVITY_MPS2)
+                .map_err(|e| GaitError::new(key, e.reason)),
             _ => return Err(format!("{key}: not a gait value")),
         }
         .map_err(|e| e.to_string())?;

@@ -30,6 +30,23 @@ fn mode_label(mode: ThesisMode) -> &'static str {
     }
 }
 
+/// The engine selector: She 2006's IK tracking or PODA's gait synthesis
+/// (switching loads the matching creature).
+pub fn engine(ui: &mut egui::Ui, lab: &mut Lab) {
+    use gaitlab_core::preset::Engine;
+    let mut engine = lab.engine();
+    ui.horizontal(|ui| {
+        ui.label("Engine");
+        ui.radio_value(&mut engine, Engine::Ik, "IK (She 2006)");
+        ui.radio_value(&mut engine, Engine::Poda, "PODA gaits");
+    });
+    if engine != lab.engine()
+        && let Err(error) = lab.set_engine(engine)
+    {
+        lab.report_error(error);
+    }
+}
+
 /// The preset picker.
 pub fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
     let current = lab.creature().name.clone();

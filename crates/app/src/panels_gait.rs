@@ -5,6 +5,7 @@
 //! support bar over one cycle (eq. 9) with a live cursor.
 
 use gaitlab_core::driver::Driver as _;
+use gaitlab_motion::poda::driver::GRAVITY_MPS2;
 use gaitlab_motion::poda::gait_names;
 
 use crate::lab::{GaitShapeEdit, Lab};
@@ -20,6 +21,7 @@ pub fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
     let current = driver.gait_name().to_owned();
     let legs = driver.gait().leg_count();
     let gait = driver.gait().clone();
+    let driver_mass = driver.params().body_mass_kg;
     let mut chosen = None;
     let mut edits: Vec<(&str, f64)> = Vec::new();
     egui::CollapsingHeader::new("Gait (PODA)")
@@ -56,6 +58,20 @@ pub fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
                 {
                     edits.push((key, value));
                 }
+            }
+            let mut force = gait.leg_force_for_balance_n(driver_mass, GRAVITY_MPS2);
+            let weight_share = gait.gravity_share_mps2(GRAVITY_MPS2) * driver_mass;
+            if ui
+                .add(
+                    egui::Slider::new(&mut force, weight_share * 1.05..=weight_share * 12.0)
+                        .text("Leg force (N)"),
+                )
+                .on_hover_text(
+                    "Upward force of a supporting leg (eq. 12–13): more force, longer flights",
+                )
+                .changed()
+            {
+                edits.push(("leg_force_n", force));
             }
             ui.label(format!(
                 "support {:.3} s · transfer {:.3} s (eq. 7: support = stroke / speed)",

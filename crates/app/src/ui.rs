@@ -23,6 +23,7 @@ impl Lab {
             .show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| {
                     ui.heading("gaitlab");
+                    panels::engine(ui, self);
                     panels::preset(ui, self);
                     panels::buttons(ui, self);
                     ui.separator();

@@ -271,3 +271,44 @@ fn a_new_body_path_is_joined_where_the_body_is_and_followed() {
         .expect_err("one point");
     assert!(error.starts_with("path.points"), "{error}");
 }
+
+#[test]
+fn the_engine_selector_swaps_matching_creatures_and_leg_force_lengthens_flights() {
+    let mut lab = Lab::new(Settings::default());
+    lab.command(r#"{"engine":"poda"}"#).expect("valid");
+    let s = state(&lab);
+    assert_eq!(
+        (s["engine"].as_str(), s["preset"].as_str()),
+        (Some("poda"), Some("poda-biped"))
+    );
+    lab.command(r#"{"engine":"ik"}"#).expect("valid");
+    assert_eq!(state(&lab)["preset"], "human");
+    let error = lab.command(r#"{"engine":"physics"}"#).expect_err("unknown");
+    assert!(error.starts_with("engine:"), "{error}");
+
+    lab.command(r#"{"engine":"poda","preset":"poda-quadruped","gait":"pronk"}"#)
+        .expect("valid");
+    let s = state(&lab);
+    let balance = number(&s, "leg_force_n");
+    let duty = number(&s, "duty_factor");
+    lab.command(&format!(r#"{{"leg_force_n": {}}}"#, 2.0 * balance))
+        .expect("stronger legs");
+    let s = state(&lab);
+    assert_gait_relations(&s);
+    assert!(
+        number(&s, "duty_factor") < duty,
+        "more force, less time on the ground"
+    );
+    assert!((number(&s, "leg_force_n") - 2.0 * balance).abs() < 1e-6 * balance);
+    let said: Vec<&str> = s["poda"]["derived"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(Value::as_str)
+        .collect();
+    assert!(said.contains(&"transfer_s"), "{said:?}");
+    let error = lab
+        .command(r#"{"leg_force_n": 1.0}"#)
+        .expect_err("below the weight share");
+    assert!(error.starts_with("leg_force_n"), "{error}");
+}

@@ -170,3 +170,13 @@ fn the_body_path_panel_swaps_in_a_circle() {
         .map(|d| d.path().is_closed());
     assert_eq!(closed, Some(true));
 }
+
+#[test]
+fn the_engine_selector_switches_to_poda() {
+    let mut harness = harness();
+    harness.run();
+    harness.get_by_label("PODA gaits").click();
+    harness.run();
+    assert_eq!(harness.state().creature().name, "poda-biped");
+    assert!(harness.state().driver().poda().is_some());
+}
