@@ -15,6 +15,16 @@ fn number(s: &Value, key: &str) -> f64 {
     s["poda"][key].as_f64().unwrap_or(f64::NAN)
 }
 
+/// What the last gait edit derived, as the state lists it.
+fn derived_of(s: &Value) -> Vec<&str> {
+    s["poda"]["derived"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(Value::as_str)
+        .collect()
+}
+
 /// Eq. 7 (support = stroke / speed), duty = support / P and eq. 8 (P = support + transfer).
 #[track_caller]
 fn assert_gait_relations(s: &Value) {
@@ -78,12 +88,7 @@ fn every_gait_edit_keeps_eq_7_and_8_and_says_what_it_derived() {
         lab.command(command).expect("valid edit");
         let s = state(&lab);
         assert_gait_relations(&s);
-        let said: Vec<&str> = s["poda"]["derived"]
-            .as_array()
-            .into_iter()
-            .flatten()
-            .filter_map(Value::as_str)
-            .collect();
+        let said = derived_of(&s);
         assert!(said.contains(&derived), "{command} derived {said:?}");
     }
     // Speed 0.3 m/s at stroke 0.12 m: support 0.4 s.
@@ -300,12 +305,7 @@ fn the_engine_selector_swaps_matching_creatures_and_leg_force_lengthens_flights(
         "more force, less time on the ground"
     );
     assert!((number(&s, "leg_force_n") - 2.0 * balance).abs() < 1e-6 * balance);
-    let said: Vec<&str> = s["poda"]["derived"]
-        .as_array()
-        .into_iter()
-        .flatten()
-        .filter_map(Value::as_str)
-        .collect();
+    let said = derived_of(&s);
     assert!(said.contains(&"transfer_s"), "{said:?}");
     let error = lab
         .command(r#"{"leg_force_n": 1.0}"#)
