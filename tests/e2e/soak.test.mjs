@@ -1,6 +1,7 @@
 // The long run of issue 3's acceptance: for GAITLAB_SOAK_S seconds (default 120) the app cycles
-// every preset × mode × method while animating; it must stay silent on the console, keep
-// animating, apply every switch, and keep every effector error finite.
+// every IK preset × mode × method, then every PODA creature × gait, while animating; it must stay
+// silent on the console, keep animating, apply every switch, keep every effector error finite and
+// keep PODA's planted feet from slipping.
 
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
@@ -10,6 +11,12 @@ const SOAK_S = Number(process.env.GAITLAB_SOAK_S ?? 120);
 const PRESETS = ['human', 'ik-quadruped'];
 const MODES = ['walk', 'run', 'wounded-walk', 'wounded-run'];
 const METHODS = ['transpose', 'pinv', 'dls', 'sdls'];
+const PODA_GAITS = {
+  'poda-quadruped': ['walk', 'trot', 'pace', 'canter', 'transverse_gallop', 'rotary_gallop', 'bound', 'pronk'],
+  'poda-biped': ['walk', 'run'],
+  hexapod: ['tripod', 'ripple', 'wave'],
+  'insect-14': ['wave'],
+};
 
 let server;
 before(async () => { server = await serveDist(); });
@@ -23,19 +30,24 @@ describe(`soak: ${SOAK_S} s cycling every preset, mode and method (WebGL2)`, () 
   it('stays clean and keeps animating', { timeout: (SOAK_S + 180) * 1000 }, async () => {
     const p = await loadApp(browser, server.url);
     try {
-      const combos = PRESETS.flatMap((preset) => MODES.flatMap((mode) => METHODS.map((method) => ({ preset, mode, method }))));
+      const combos = [
+        ...PRESETS.flatMap((preset) => MODES.flatMap((mode) => METHODS.map((method) => ({ preset, mode, method })))),
+        ...Object.entries(PODA_GAITS).flatMap(([preset, gaits]) => gaits.map((gait) => ({ preset, gait }))),
+      ];
       const slotMs = (SOAK_S * 1000) / combos.length;
       const started = Date.now();
       const log = [];
       let preset = '';
       for (const [i, combo] of combos.entries()) {
-        // Switching preset restarts the figure; mode and method switch live, mid-stride.
-        const change = combo.preset === preset ? { mode: combo.mode, method: combo.method } : combo;
+        // Switching preset restarts the figure; mode, method and gait switch live, mid-stride.
+        const { preset: _, ...live } = combo;
+        const change = combo.preset === preset ? live : combo;
         preset = combo.preset;
         const answer = await command(p.page, change);
         assert.equal(answer, 'ok', `command(${JSON.stringify(combo)}) → ${answer}`);
         const s0 = await state(p.page);
-        assert.deepEqual([s0.preset, s0.mode, s0.method], [combo.preset, combo.mode, combo.method]);
+        if (combo.gait) assert.deepEqual([s0.engine, s0.preset, s0.gait], ['poda', combo.preset, combo.gait]);
+        else assert.deepEqual([s0.preset, s0.mode, s0.method], [combo.preset, combo.mode, combo.method]);
         assert.ok(await frameExceeds(p.page, s0.frame + 2, 30_000),
           `${JSON.stringify(combo)}: the animation advances (stuck at frame ${s0.frame})`);
         const until = started + (i + 1) * slotMs;
@@ -44,7 +56,10 @@ describe(`soak: ${SOAK_S} s cycling every preset, mode and method (WebGL2)`, () 
         assert.equal(s.last_error, null, `${JSON.stringify(combo)}: ${s.last_error}`);
         const errors = s.views[0].effectors.map((e) => e.error_m);
         assert.ok(errors.every((e) => Number.isFinite(e)), `${JSON.stringify(combo)}: effector errors ${errors}`);
-        log.push({ ...combo, frame: s.frame, fps: s.fps, sim_us_per_frame: s.sim_us_per_frame,
+        if (combo.gait) {
+          assert.ok(s.poda.foot_slip_max_m <= 0.001, `${JSON.stringify(combo)}: foot slip ${s.poda.foot_slip_max_m} m`);
+        }
+        log.push({ ...combo, frame: s.frame, foot_slip_max_m: s.poda?.foot_slip_max_m, fps: s.fps, sim_us_per_frame: s.sim_us_per_frame,
           max_error_mm: Math.max(...errors) * 1e3 });
       }
       const elapsed = (Date.now() - started) / 1000;
