@@ -112,28 +112,28 @@ fn centers(ui: &mut egui::Ui, lab: &mut Lab) {
     let Some(driver) = lab.driver().poda() else {
         return;
     };
-    let skeleton = driver.skeleton();
-    let legs: Vec<(String, Vec<CenterRow>)> = driver
-        .leg_joints()
-        .map(|(name, joints)| {
-            let rows = joints
-                .iter()
-                .filter_map(|&j| skeleton.joints().get(j))
-                .map(|joint| {
-                    let revolute = joint.kind == gaitlab_core::JointKind::Revolute;
-                    CenterRow {
-                        joint: joint.name.clone(),
-                        center: joint.center,
-                        gain: joint.gain,
-                        revolute,
-                    }
-                })
-                .collect();
-            (name.to_owned(), rows)
-        })
-        .collect();
     let mut edit: Option<(String, f64, f64)> = None;
     ui.collapsing("Center angles and gains", |ui| {
+        let skeleton = driver.skeleton();
+        let legs: Vec<(String, Vec<CenterRow>)> = driver
+            .leg_joints()
+            .map(|(name, joints)| {
+                let rows = joints
+                    .iter()
+                    .filter_map(|&j| skeleton.joints().get(j))
+                    .map(|joint| {
+                        let revolute = joint.kind == gaitlab_core::JointKind::Revolute;
+                        CenterRow {
+                            joint: joint.name.clone(),
+                            center: joint.center,
+                            gain: joint.gain,
+                            revolute,
+                        }
+                    })
+                    .collect();
+                (name.to_owned(), rows)
+            })
+            .collect();
         for (leg, rows) in legs {
             ui.collapsing(leg, |ui| {
                 for CenterRow {

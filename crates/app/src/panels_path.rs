@@ -44,22 +44,22 @@ pub fn path(ui: &mut egui::Ui, lab: &mut Lab) {
     let Some(driver) = lab.driver().poda() else {
         return;
     };
-    let mut spec = driver.path().to_spec();
-    let body = driver
-        .ground_pose(gaitlab_core::driver::Driver::time(driver))
-        .position;
-    let samples: Vec<DVec2> = {
+    // Filled only while the panel is open: the edited path.
+    let mut edited: Option<PathSpec> = None;
+    ui.collapsing("Body path", |ui| {
+        let mut spec = driver.path().to_spec();
+        let mut changed = false;
+        let body = driver
+            .ground_pose(gaitlab_core::driver::Driver::time(driver))
+            .position;
         let path = driver.path();
         let n = 120;
-        (0..=n)
+        let samples: Vec<DVec2> = (0..=n)
             .map(|k| {
                 path.sample(path.length_m() * f64::from(k) / f64::from(n))
                     .position
             })
-            .collect()
-    };
-    let mut changed = false;
-    ui.collapsing("Body path", |ui| {
+            .collect();
         ui.horizontal(|ui| {
             for (label, name) in [
                 ("Straight", "straight"),
@@ -82,8 +82,13 @@ pub fn path(ui: &mut egui::Ui, lab: &mut Lab) {
         });
         changed |= top_down(ui, &mut spec, &samples, body);
         ui.weak("Drag the control points; the body joins the new path where it is closest.");
+        if changed {
+            edited = Some(spec);
+        }
     });
-    if changed && let Err(error) = lab.set_path(&spec) {
+    if let Some(spec) = edited
+        && let Err(error) = lab.set_path(&spec)
+    {
         lab.report_error(error);
     }
 }

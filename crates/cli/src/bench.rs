@@ -225,6 +225,15 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
     Ok(())
 }
 
+/// `≤B ok` / `≤B MISS` for a row with a budget under `key`, else empty.
+fn budget_text(row: &Value, key: &str) -> String {
+    match (row[key].as_f64(), row["within_budget"].as_bool()) {
+        (Some(b), Some(true)) => format!("≤{b} ok"),
+        (Some(b), _) => format!("≤{b} MISS"),
+        _ => String::new(),
+    }
+}
+
 fn print_table(report: &Value) {
     print_ik_table(report);
     let poda = report["poda"].as_array().into_iter().flatten();
@@ -234,14 +243,7 @@ fn print_table(report: &Value) {
         "PODA preset", "joints", "legs", "µs/frame", "best", "budget"
     );
     for row in poda {
-        let budget = match (
-            row["budget_us_per_frame"].as_f64(),
-            row["within_budget"].as_bool(),
-        ) {
-            (Some(b), Some(true)) => format!("≤{b} ok"),
-            (Some(b), _) => format!("≤{b} MISS"),
-            _ => String::new(),
-        };
+        let budget = budget_text(row, "budget_us_per_frame");
         println!(
             "{:<14} {:>6} {:>4} {:>12.2} {:>10.2} {:>12}",
             row["preset"].as_str().unwrap_or("?"),
@@ -260,14 +262,7 @@ fn print_ik_table(report: &Value) {
         "preset", "joints", "eff", "method", "µs/iter", "best", "µs/frame", "budget"
     );
     for row in report["ik"].as_array().into_iter().flatten() {
-        let budget = match (
-            row["budget_us_per_iteration"].as_f64(),
-            row["within_budget"].as_bool(),
-        ) {
-            (Some(b), Some(true)) => format!("≤{b} ok"),
-            (Some(b), _) => format!("≤{b} MISS"),
-            _ => String::new(),
-        };
+        let budget = budget_text(row, "budget_us_per_iteration");
         println!(
             "{:<14} {:>6} {:>4} {:<10} {:>12.2} {:>10.2} {:>12.2} {:>10}",
             row["preset"].as_str().unwrap_or("?"),

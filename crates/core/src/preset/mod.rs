@@ -23,7 +23,7 @@ mod validate;
 pub use build::Creature;
 pub use bundled::{DEFAULT_PRESET, bundled, bundled_json, bundled_names, load_bundled};
 pub use error::{PresetError, ROOT_PATH};
-pub use poda::{PathKindSpec, PathSpec, PodaLegSpec, PodaParams};
+pub use poda::{PathKindSpec, PathSpec, PodaLegSpec, PodaParams, check_transfer_keys};
 pub use scenario::{DEFAULT_FPS, Engine, MAX_FPS, Scenario};
 pub use schema::{
     DhJointSpec, EffectorSpec, FORMAT, Format, JointSpec, JointType, LimbSpec, MAX_EFFECTORS,

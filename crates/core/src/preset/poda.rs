@@ -161,6 +161,39 @@ fn positive(path: String, value: f64, max: f64, unit: &str) -> Result<(), Preset
     }
 }
 
+/// Transfer-trajectory key positions: at most [`MAX_TRANSFER_KEYS`], each
+/// `[along, height]` with the step fraction strictly increasing in (0, 1) and
+/// the height fraction in [0, 2]. Errors name `path` or `path[i]`.
+///
+/// # Errors
+/// A [`PresetError`] naming the first bad key.
+pub fn check_transfer_keys(path: &str, keys: &[[f64; 2]]) -> Result<(), PresetError> {
+    if keys.len() > MAX_TRANSFER_KEYS {
+        return Err(PresetError::new(
+            path,
+            format!("at most {MAX_TRANSFER_KEYS} key positions"),
+        ));
+    }
+    let mut previous = 0.0;
+    for (i, [along, height]) in keys.iter().copied().enumerate() {
+        let key = format!("{path}[{i}]");
+        if !(along.is_finite() && along > previous && along < 1.0) {
+            return Err(PresetError::new(
+                key,
+                "the step fraction must increase strictly between 0 and 1",
+            ));
+        }
+        if !(height.is_finite() && (0.0..=2.0).contains(&height)) {
+            return Err(PresetError::new(
+                key,
+                "the height fraction must be between 0 and 2",
+            ));
+        }
+        previous = along;
+    }
+    Ok(())
+}
+
 impl PodaParams {
     /// Checks every value that needs no skeleton or gait model. Paths start with `prefix`.
     ///
@@ -204,29 +237,7 @@ impl PodaParams {
         if let Some(height) = self.stand_height_m {
             positive(at("stand_height_m"), height, 100.0, "metres")?;
         }
-        if self.transfer_keys.len() > MAX_TRANSFER_KEYS {
-            return Err(PresetError::new(
-                at("transfer_keys"),
-                format!("at most {MAX_TRANSFER_KEYS} key positions"),
-            ));
-        }
-        let mut previous = 0.0;
-        for (i, [along, height]) in self.transfer_keys.iter().copied().enumerate() {
-            let key = format!("{prefix}.transfer_keys[{i}]");
-            if !(along.is_finite() && along > previous && along < 1.0) {
-                return Err(PresetError::new(
-                    key,
-                    "the step fraction must increase strictly between 0 and 1",
-                ));
-            }
-            if !(height.is_finite() && (0.0..=2.0).contains(&height)) {
-                return Err(PresetError::new(
-                    key,
-                    "the height fraction must be between 0 and 2",
-                ));
-            }
-            previous = along;
-        }
+        check_transfer_keys(&at("transfer_keys"), &self.transfer_keys)?;
         if let Some(path) = &self.path {
             let n = path.points.len();
             if !(2..=MAX_PATH_POINTS).contains(&n) {

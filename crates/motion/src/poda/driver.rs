@@ -21,12 +21,12 @@ use std::sync::Arc;
 
 use gaitlab_core::driver::{Driver, IkFrameReport};
 use gaitlab_core::ik::Targets;
-use gaitlab_core::preset::{Creature, PathSpec, PodaParams};
+use gaitlab_core::preset::{Creature, PathSpec, PodaParams, check_transfer_keys};
 use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec2, DVec3};
 
 use super::body_track::{BodyDynamics, BodyTrack};
-use super::gait::{GaitError, GaitParams, LegPhase, vertical_offset_m};
+use super::gait::{GaitError, GaitParams, LegPhase};
 use super::gait_metrics::GaitMetrics;
 use super::gaits::{gait_names, named_gait};
 use super::leg_ik::{LegIk, LegIkOptions};
@@ -134,6 +134,18 @@ pub struct PodaDriver {
     track_key: [f64; 3],
 }
 
+/// The transfer spline's control points: lift-off `(0, 0)`, the key leg
+/// positions `(along, height fraction)`, the foothold `(1, 0)`.
+fn spline_keys(keys: &[[f64; 2]], out: &mut Vec<DVec3>) {
+    out.clear();
+    out.push(DVec3::ZERO);
+    out.extend(
+        keys.iter()
+            .map(|&[along, height]| DVec3::new(along, height, 0.0)),
+    );
+    out.push(DVec3::X);
+}
+
 fn gait_error(error: GaitError) -> DriverError {
     DriverError::new(format!("scenario.poda.{}", error.path), error.reason)
 }
@@ -206,14 +218,7 @@ impl PodaDriver {
             .map_err(|e| DriverError::new("scenario.poda.path", e.to_string()))?,
         };
         let mut keys = Vec::with_capacity(params.transfer_keys.len() + 2);
-        keys.push(DVec3::ZERO);
-        keys.extend(
-            params
-                .transfer_keys
-                .iter()
-                .map(|&[along, height]| DVec3::new(along, height, 0.0)),
-        );
-        keys.push(DVec3::X);
+        spline_keys(&params.transfer_keys, &mut keys);
         let centering = LegIkOptions {
             center_gain: params.center_gain,
             ..LegIkOptions::default()
@@ -302,19 +307,10 @@ impl PodaDriver {
     /// # Errors
     /// `transfer_keys[i]` naming the first bad key; nothing changes.
     pub fn set_transfer_keys(&mut self, keys: &[[f64; 2]]) -> Result<(), DriverError> {
-        let mut candidate = self.params.clone();
-        candidate.transfer_keys = keys.to_vec();
-        candidate
-            .check_values("")
-            .map_err(|e| DriverError::new(e.path.trim_start_matches('.'), e.reason))?;
-        self.keys.clear();
-        self.keys.push(DVec3::ZERO);
-        self.keys.extend(
-            keys.iter()
-                .map(|&[along, height]| DVec3::new(along, height, 0.0)),
-        );
-        self.keys.push(DVec3::X);
-        self.params.transfer_keys = candidate.transfer_keys;
+        check_transfer_keys("transfer_keys", keys)
+            .map_err(|e| DriverError::new(e.path, e.reason))?;
+        spline_keys(keys, &mut self.keys);
+        self.params.transfer_keys = keys.to_vec();
         Ok(())
     }
 
@@ -439,18 +435,7 @@ impl PodaDriver {
         &self.track
     }
 
-    /// The superposition of every leg's vertical push / fall / restore
-    /// (eq. 12–13), uncentred, metres.
-    fn vertical_sum_m(&self, t_s: f64) -> f64 {
-        let (support, transfer) = (self.gait.support_s(), self.gait.transfer_s());
-        let g_n = self.gait.gravity_share_mps2(GRAVITY_MPS2);
-        (0..self.legs.len())
-            .filter_map(|i| self.gait.leg_phase(i, t_s))
-            .map(|p| vertical_offset_m(support, transfer, g_n, p.state_s - 0.5 * support))
-            .sum()
-    }
-
-    /// The constant that centres [`Self::vertical_sum_m`] so that, averaged over
+    /// The constant that centres [`GaitParams::vertical_superposition_m`] so that, averaged over
     /// every leg's support phase, the body stands at its standing height (the
     /// legs then reach the ground however high the flights are). Recomputed
     /// only when the gait changes.
@@ -465,7 +450,7 @@ impl PodaDriver {
             let (mut sum, mut count) = (0.0, 0u32);
             for k in 0..CENTRE_SAMPLES {
                 let t = t_s + period * (f64::from(k) + 0.5) / f64::from(CENTRE_SAMPLES);
-                let height = self.vertical_sum_m(t);
+                let height = self.gait.vertical_superposition_m(t, GRAVITY_MPS2);
                 for i in 0..self.legs.len() {
                     if self.gait.leg_phase(i, t).is_some_and(|p| p.support) {
                         sum += height;
@@ -484,7 +469,9 @@ impl PodaDriver {
 
     fn body_height(&mut self, t_s: f64) -> f64 {
         let centre = self.vertical_centre_m(t_s);
-        self.stand_height_m + self.params.vertical_gain * (self.vertical_sum_m(t_s) - centre)
+        self.stand_height_m
+            + self.params.vertical_gain
+                * (self.gait.vertical_superposition_m(t_s, GRAVITY_MPS2) - centre)
     }
 
     /// Eq. 11: the foothold of leg `i` for a lift-off at `t_lo`.

@@ -429,24 +429,18 @@ impl GaitParams {
         })
     }
 
-    /// Body height offset at `t_s` (no allocation): the superposition of every leg's ballistic
-    /// contribution ([`vertical_offset_m`], with `g_n = g / leg_count` and `tau` measured from
-    /// the leg's mid-stance), each centred by its mean over the leg's own support phase
-    /// ([`vertical_stance_mean_m`]): the body is at its standing height on average while a leg
-    /// carries it, so the legs reach the ground however high the flights are.
+    /// The body's vertical displacement at `t_s` (no allocation, uncentred): the
+    /// superposition of every leg's ballistic contribution ([`vertical_offset_m`], with
+    /// `g_n = g / leg_count` and `tau` measured from the leg's mid-stance). A driver picks the
+    /// constant that sets where the body stands.
     #[must_use]
-    pub fn body_vertical_offset_m(&self, t_s: f64, g_mps2: f64) -> f64 {
+    pub fn vertical_superposition_m(&self, t_s: f64, g_mps2: f64) -> f64 {
         let (support, transfer) = (self.support_s(), self.transfer_s());
         let g_n = self.gravity_share_mps2(g_mps2);
-        let mean = vertical_stance_mean_m(support, transfer, g_n);
-        let mut sum_m = 0.0;
-        for leg in 0..self.leg_count() {
-            if let Some(p) = self.leg_phase(leg, t_s) {
-                sum_m +=
-                    vertical_offset_m(support, transfer, g_n, p.state_s - 0.5 * support) - mean;
-            }
-        }
-        sum_m
+        (0..self.leg_count())
+            .filter_map(|leg| self.leg_phase(leg, t_s))
+            .map(|p| vertical_offset_m(support, transfer, g_n, p.state_s - 0.5 * support))
+            .sum()
     }
 
     /// Starts switching to `target_phases`/`target_duty` at `t_now_s`: over exactly one period
@@ -594,16 +588,6 @@ pub fn vertical_mean_m(support_s: f64, transfer_s: f64, g_n: f64) -> f64 {
     accel * (s * s * s / 24.0 + s * s * t / 8.0 + s * t * t / 12.0) / (s + t)
 }
 
-/// Exact mean of [`vertical_offset_m`] over the support phase (`|τ| ≤ S/2`):
-/// `a·S²/24` with `a = g_n·T/S`; 0 for bad inputs.
-#[must_use]
-pub fn vertical_stance_mean_m(support_s: f64, transfer_s: f64, g_n: f64) -> f64 {
-    if ballistic(support_s, transfer_s, g_n, 0.0).is_none() {
-        return 0.0;
-    }
-    g_n * transfer_s * support_s / 24.0
-}
-
 #[cfg(test)]
 #[expect(clippy::float_cmp, reason = "exact values are asserted on purpose")]
 mod tests {
@@ -721,23 +705,14 @@ mod tests {
             assert!((y(after) - y(before)).abs() < 1e-8 && (v(after) - v(before)).abs() < 1e-7);
         }
         assert_eq!(vertical_offset_m(0.0, tr, g_n, 0.1), 0.0);
-        // Over its stance, each leg's contribution averages to the stance mean.
-        let stance: f64 = (0..1000)
-            .map(|k| y(-0.5 * st + st * (f64::from(k) + 0.5) / 1000.0))
-            .sum::<f64>()
-            / 1000.0;
-        assert!(
-            (stance - vertical_stance_mean_m(st, tr, g_n)).abs() < 1e-8,
-            "{stance}"
-        );
         // A trot's two diagonal pairs: the body offset is periodic in P/2.
         let g = trot();
         let half = 0.5 * g.period_s();
         for k in 0..100 {
             let t = f64::from(k) * 7e-3;
             let (a, b) = (
-                g.body_vertical_offset_m(t, 9.81),
-                g.body_vertical_offset_m(t + half, 9.81),
+                g.vertical_superposition_m(t, 9.81),
+                g.vertical_superposition_m(t + half, 9.81),
             );
             assert!((a - b).abs() < 1e-12);
         }

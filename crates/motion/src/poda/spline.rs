@@ -83,39 +83,9 @@ fn weights(basis: Basis, s: f64) -> [[f64; 4]; 3] {
     }
 }
 
-/// `s` clamped to `[0, 1]`, non-finite as 0.
-fn clamp_unit(s: f64) -> f64 {
-    if s.is_finite() {
-        s.clamp(0.0, 1.0)
-    } else {
-        0.0
-    }
-}
-
 /// Weighted sum of the four segment points.
 fn combine(w: [f64; 4], p: [DVec3; 4]) -> DVec3 {
     p[0] * w[0] + p[1] * w[1] + p[2] * w[2] + p[3] * w[3]
-}
-
-/// Point at `s` on the uniform Catmull-Rom segment from `p1` (at `s = 0`)
-/// to `p2` (at `s = 1`), shaped by the neighbours `p0` and `p3`. `s` is
-/// clamped to `[0, 1]`; a non-finite `s` is treated as 0.
-#[must_use]
-pub fn catmull_rom(p0: DVec3, p1: DVec3, p2: DVec3, p3: DVec3, s: f64) -> DVec3 {
-    combine(
-        weights(Basis::CatmullRom, clamp_unit(s))[0],
-        [p0, p1, p2, p3],
-    )
-}
-
-/// Derivative with respect to `s` of [`catmull_rom`] at `s` (clamped alike);
-/// it is `(p2 − p0) / 2` at `s = 0` and `(p3 − p1) / 2` at `s = 1`.
-#[must_use]
-pub fn catmull_rom_tangent(p0: DVec3, p1: DVec3, p2: DVec3, p3: DVec3, s: f64) -> DVec3 {
-    combine(
-        weights(Basis::CatmullRom, clamp_unit(s))[1],
-        [p0, p1, p2, p3],
-    )
 }
 
 /// Position and derivatives at `u` of the curve through (Catmull-Rom) or
@@ -193,43 +163,53 @@ pub fn eval_open(points: &[DVec3], u: f64) -> DVec3 {
     eval_curve(points, u, Basis::CatmullRom, false).position
 }
 
-/// Derivative `d position / d u` of [`eval_open`].
-#[must_use]
-pub fn eval_open_tangent(points: &[DVec3], u: f64) -> DVec3 {
-    eval_curve(points, u, Basis::CatmullRom, false).velocity
-}
-
-/// Point at `u` (wrapped modulo 1) on the closed Catmull-Rom loop through
-/// all `points`; with fewer than 3 points it behaves like [`eval_open`].
-#[must_use]
-pub fn eval_closed(points: &[DVec3], u: f64) -> DVec3 {
-    eval_curve(points, u, Basis::CatmullRom, true).position
-}
-
-/// Derivative `d position / d u` of [`eval_closed`].
-#[must_use]
-pub fn eval_closed_tangent(points: &[DVec3], u: f64) -> DVec3 {
-    eval_curve(points, u, Basis::CatmullRom, true).velocity
-}
-
-/// Point at `u ∈ [0, 1]` on the open uniform cubic B-spline of `points`,
-/// ends clamped by reflection so it starts at the first point and ends at
-/// the last (see [`eval_curve`]).
-#[must_use]
-pub fn eval_uniform_bspline(points: &[DVec3], u: f64) -> DVec3 {
-    eval_curve(points, u, Basis::BSpline, false).position
-}
-
-/// Derivative `d position / d u` of [`eval_uniform_bspline`].
-#[must_use]
-pub fn eval_uniform_bspline_tangent(points: &[DVec3], u: f64) -> DVec3 {
-    eval_curve(points, u, Basis::BSpline, false).velocity
-}
-
 #[cfg(test)]
 #[expect(clippy::cast_precision_loss, reason = "small test indices")]
 mod tests {
     use super::*;
+
+    // Shorthands over `eval_curve` and the segment weights.
+    fn clamp_unit(s: f64) -> f64 {
+        if s.is_finite() {
+            s.clamp(0.0, 1.0)
+        } else {
+            0.0
+        }
+    }
+
+    fn catmull_rom(p0: DVec3, p1: DVec3, p2: DVec3, p3: DVec3, s: f64) -> DVec3 {
+        combine(
+            weights(Basis::CatmullRom, clamp_unit(s))[0],
+            [p0, p1, p2, p3],
+        )
+    }
+
+    fn catmull_rom_tangent(p0: DVec3, p1: DVec3, p2: DVec3, p3: DVec3, s: f64) -> DVec3 {
+        combine(
+            weights(Basis::CatmullRom, clamp_unit(s))[1],
+            [p0, p1, p2, p3],
+        )
+    }
+
+    fn eval_open_tangent(points: &[DVec3], u: f64) -> DVec3 {
+        eval_curve(points, u, Basis::CatmullRom, false).velocity
+    }
+
+    fn eval_closed(points: &[DVec3], u: f64) -> DVec3 {
+        eval_curve(points, u, Basis::CatmullRom, true).position
+    }
+
+    fn eval_closed_tangent(points: &[DVec3], u: f64) -> DVec3 {
+        eval_curve(points, u, Basis::CatmullRom, true).velocity
+    }
+
+    fn eval_uniform_bspline(points: &[DVec3], u: f64) -> DVec3 {
+        eval_curve(points, u, Basis::BSpline, false).position
+    }
+
+    fn eval_uniform_bspline_tangent(points: &[DVec3], u: f64) -> DVec3 {
+        eval_curve(points, u, Basis::BSpline, false).velocity
+    }
 
     fn zigzag() -> Vec<DVec3> {
         vec![
