@@ -1,0 +1,88 @@
+//! The quadruped of Table 3: a 10 kg trunk and four telescoping legs on
+//! gimbal hips (Raibert & Hodgins 1991, Figure 1). Each gimbal is roll
+//! (about the forward axis) then pitch (about the lateral axis); the lower
+//! leg slides in the upper leg.
+//!
+//! The trunk's inertia row of Table 3 is garbled in the source text
+//! ("[54 2 35 2 39]"); it is read as `[0.54 2.35 2.39]` kg·m².
+
+use glam::DVec3;
+
+use super::build::{Builder, paper, paper_inertia};
+use crate::creature::{Creature, Leg, Species};
+use crate::model::{Joint, Model, ModelError};
+
+const TRUNK_MASS_KG: f64 = 10.0;
+const TRUNK_INERTIA: [f64; 3] = [0.54, 2.35, 2.39];
+/// Hip position from the trunk's centre of mass: ±forward, ±lateral (m).
+const HIP_FORWARD_M: f64 = 0.39;
+const HIP_LATERAL_M: f64 = 0.12;
+const UPPER_LENGTH_M: f64 = 0.41;
+const UPPER_COM_M: f64 = 0.2;
+const UPPER_MASS_KG: f64 = 1.5;
+const UPPER_INERTIA: [f64; 3] = [0.043, 0.043, 0.0];
+const LOWER_LENGTH_M: f64 = 0.4;
+const LOWER_COM_M: f64 = 0.2;
+const LOWER_MASS_KG: f64 = 1.0;
+const LOWER_INERTIA: [f64; 3] = [0.0035, 0.0035, 0.0];
+
+/// The legs in order: front-left, front-right, rear-left, rear-right.
+pub const LEG_NAMES: [&str; 4] = ["front-left", "front-right", "rear-left", "rear-right"];
+
+/// The quadruped at dynamic scale `l`. Leg length from hip to foot is
+/// `(0.41 + 0.40)·l + q_spring`.
+///
+/// # Errors
+/// The model check's error for a non-positive or non-finite `l`.
+pub fn quadruped(l: f64) -> Result<Creature, ModelError> {
+    let mut b = Builder::new(l);
+    let [ix, iy, iz] = TRUNK_INERTIA;
+    let trunk = b.body("trunk", None, Joint::Free, DVec3::ZERO, TRUNK_MASS_KG, DVec3::ZERO, paper_inertia(ix, iy, iz));
+    let mut legs = Vec::new();
+    let mut dof = 0;
+    for name in LEG_NAMES {
+        let forward = if name.starts_with("front") { HIP_FORWARD_M } else { -HIP_FORWARD_M };
+        let left = if name.ends_with("left") { HIP_LATERAL_M } else { -HIP_LATERAL_M };
+        let hip_at = paper(forward, left, 0.0);
+        let roll = b.link(&format!("{name}-hip-roll"), Some(trunk), Joint::Revolute(DVec3::Z), hip_at);
+        let [ux, uy, uz] = UPPER_INERTIA;
+        let upper = b.body(
+            &format!("{name}-upper-leg"),
+            Some(roll),
+            Joint::Revolute(DVec3::X),
+            DVec3::ZERO,
+            UPPER_MASS_KG,
+            paper(0.0, 0.0, -UPPER_COM_M),
+            paper_inertia(ux, uy, uz),
+        );
+        let [lx, ly, lz] = LOWER_INERTIA;
+        let lower = b.body(
+            &format!("{name}-lower-leg"),
+            Some(upper),
+            Joint::Prismatic(DVec3::NEG_Y),
+            paper(0.0, 0.0, -UPPER_LENGTH_M),
+            LOWER_MASS_KG,
+            paper(0.0, 0.0, -LOWER_COM_M),
+            paper_inertia(lx, ly, lz),
+        );
+        legs.push(Leg {
+            name: name.to_owned(),
+            hip: vec![dof, dof + 1],
+            spring: dof + 2,
+            knee: None,
+            foot_body: lower,
+            foot_point: paper(0.0, 0.0, -LOWER_LENGTH_M) * l,
+            hip_in_trunk: hip_at * l,
+        });
+        dof += 3;
+    }
+    Ok(Creature {
+        species: Species::Quadruped,
+        scale: l,
+        model: Model::new(b.bodies)?,
+        trunk,
+        legs,
+        tail: Vec::new(),
+        neck: None,
+    })
+}
