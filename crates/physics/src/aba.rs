@@ -33,13 +33,21 @@ pub(crate) fn gravity_force(model: &Model, data: &Data, i: usize) -> Force {
     Force::at_point(body.com, g_body * body.mass)
 }
 
-/// Compute the accelerations of every joint and of the base.
+/// Run kinematics, then compute the accelerations of every joint and of the base.
 ///
 /// # Errors
 /// [`DynamicsError`] when a joint drives no inertia (a massless chain end) or
 /// the base's articulated inertia is singular; `data` keeps its last state.
 pub fn forward_dynamics(model: &Model, data: &mut Data) -> Result<(), DynamicsError> {
     crate::kinematics::kinematics(model, data);
+    accelerations(model, data)
+}
+
+/// The accelerations, with the kinematics of the current state already run.
+///
+/// # Errors
+/// As [`forward_dynamics`].
+pub fn accelerations(model: &Model, data: &mut Data) -> Result<(), DynamicsError> {
     let bodies = model.bodies();
     // Pass 1: rigid-body inertias and bias forces.
     for i in 0..bodies.len() {
@@ -57,7 +65,9 @@ pub fn forward_dynamics(model: &Model, data: &mut Data) -> Result<(), DynamicsEr
         let u_force = ia.mul(s);
         let d = s.dot(u_force);
         if !(d > 1e-14 && d.is_finite()) {
-            return Err(DynamicsError { body: bodies[i].name.clone() });
+            return Err(DynamicsError {
+                body: bodies[i].name.clone(),
+            });
         }
         let u = data.tau[k] - s.dot(data.art_bias[i]);
         data.u_force[i] = u_force;
@@ -78,7 +88,9 @@ pub fn forward_dynamics(model: &Model, data: &mut Data) -> Result<(), DynamicsEr
             None => {
                 let a = data.art_inertia[i]
                     .solve(data.art_bias[i].scale(-1.0))
-                    .ok_or_else(|| DynamicsError { body: bodies[i].name.clone() })?;
+                    .ok_or_else(|| DynamicsError {
+                        body: bodies[i].name.clone(),
+                    })?;
                 data.base_acceleration = a;
                 data.acceleration[i] = a;
             }

@@ -18,7 +18,13 @@ fn columns(model: &Model, i: usize) -> Vec<(usize, Motion)> {
             .map(|c| {
                 let mut e = [0.0; 6];
                 e[c] = 1.0;
-                (c, Motion::new(glam::DVec3::new(e[0], e[1], e[2]), glam::DVec3::new(e[3], e[4], e[5])))
+                (
+                    c,
+                    Motion::new(
+                        glam::DVec3::new(e[0], e[1], e[2]),
+                        glam::DVec3::new(e[3], e[4], e[5]),
+                    ),
+                )
             })
             .collect(),
         Some(k) => vec![(base + k, model.bodies()[i].joint.subspace())],
@@ -30,7 +36,10 @@ fn columns(model: &Model, i: usize) -> Vec<(usize, Motion)> {
 pub fn mass_matrix(model: &Model, data: &mut Data) -> DMatrix<f64> {
     crate::kinematics::kinematics(model, data);
     let bodies = model.bodies();
-    let mut composite: Vec<_> = bodies.iter().map(crate::model::Body::spatial_inertia).collect();
+    let mut composite: Vec<_> = bodies
+        .iter()
+        .map(crate::model::Body::spatial_inertia)
+        .collect();
     for i in (0..bodies.len()).rev() {
         if let Some(p) = bodies[i].parent {
             let up = data.link[i].inertia_to_parent(&composite[i]);
@@ -68,7 +77,10 @@ pub fn forward_dynamics_dense(model: &Model, data: &mut Data) -> Option<Vec<f64>
     let bias = inverse_dynamics(model, data, &vec![0.0; nv]);
     let h = mass_matrix(model, data);
     let base = if model.free_base() { 6 } else { 0 };
-    let rhs = DVector::from_fn(nv, |r, _| if r < base { 0.0 } else { data.tau[r - base] } - bias[r]);
+    let rhs = DVector::from_fn(
+        nv,
+        |r, _| if r < base { 0.0 } else { data.tau[r - base] } - bias[r],
+    );
     let x = h.cholesky()?.solve(&rhs);
     Some(x.iter().copied().collect())
 }

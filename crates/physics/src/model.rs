@@ -106,7 +106,10 @@ impl Model {
         let mut dof = Vec::with_capacity(bodies.len());
         let mut count = 0;
         for (i, b) in bodies.iter().enumerate() {
-            let err = |reason: String| ModelError { body: b.name.clone(), reason };
+            let err = |reason: String| ModelError {
+                body: b.name.clone(),
+                reason,
+            };
             if bodies[..i].iter().any(|o| o.name == b.name) {
                 return Err(err("duplicate name".into()));
             }
@@ -117,7 +120,9 @@ impl Model {
             }
             match b.joint {
                 Joint::Free if i != 0 || b.parent.is_some() => {
-                    return Err(err("only the first body, with no parent, may be free".into()));
+                    return Err(err(
+                        "only the first body, with no parent, may be free".into()
+                    ));
                 }
                 Joint::Free => dof.push(None),
                 Joint::Revolute(a) | Joint::Prismatic(a) => {
@@ -132,17 +137,27 @@ impl Model {
                 return Err(err("mass must be finite and ≥ 0".into()));
             }
             let m = b.inertia_com;
-            let sym = (m - m.transpose()).to_cols_array().iter().all(|x| x.abs() < 1e-12);
-            let diag_ok = [m.x_axis.x, m.y_axis.y, m.z_axis.z].iter().all(|d| d.is_finite() && *d >= 0.0);
+            let sym = (m - m.transpose())
+                .to_cols_array()
+                .iter()
+                .all(|x| x.abs() < 1e-12);
+            let diag_ok = [m.x_axis.x, m.y_axis.y, m.z_axis.z]
+                .iter()
+                .all(|d| d.is_finite() && *d >= 0.0);
             if !sym || !diag_ok || !b.com.is_finite() {
-                return Err(err("inertia must be finite and symmetric with a non-negative diagonal".into()));
+                return Err(err(
+                    "inertia must be finite and symmetric with a non-negative diagonal".into(),
+                ));
             }
             if !b.placement.pos.is_finite() || !b.placement.rot.is_finite() {
                 return Err(err("placement must be finite".into()));
             }
         }
         if bodies.is_empty() {
-            return Err(ModelError { body: "-".into(), reason: "a model needs a body".into() });
+            return Err(ModelError {
+                body: "-".into(),
+                reason: "a model needs a body".into(),
+            });
         }
         let free_base = bodies[0].joint == Joint::Free;
         Ok(Self {

@@ -31,7 +31,9 @@ pub fn inverse_dynamics(model: &Model, data: &mut Data, accel: &[f64]) -> Vec<f6
                     Some(p) => data.link[i].motion_to_child(data.acceleration[p]),
                     None => Motion::ZERO,
                 };
-                parent + data.velocity_product[i] + bodies[i].joint.subspace().scale(accel[base + k])
+                parent
+                    + data.velocity_product[i]
+                    + bodies[i].joint.subspace().scale(accel[base + k])
             }
         };
         data.acceleration[i] = a;

@@ -41,7 +41,10 @@ pub struct Force {
 
 impl Motion {
     /// The zero motion.
-    pub const ZERO: Self = Self { angular: DVec3::ZERO, linear: DVec3::ZERO };
+    pub const ZERO: Self = Self {
+        angular: DVec3::ZERO,
+        linear: DVec3::ZERO,
+    };
 
     /// A motion from its parts.
     #[must_use]
@@ -76,7 +79,10 @@ impl Motion {
     /// Scale both parts.
     #[must_use]
     pub fn scale(self, s: f64) -> Motion {
-        Motion { angular: self.angular * s, linear: self.linear * s }
+        Motion {
+            angular: self.angular * s,
+            linear: self.linear * s,
+        }
     }
 
     /// Whether both parts are finite.
@@ -89,20 +95,29 @@ impl Motion {
 impl std::ops::Add for Motion {
     type Output = Motion;
     fn add(self, o: Motion) -> Motion {
-        Motion { angular: self.angular + o.angular, linear: self.linear + o.linear }
+        Motion {
+            angular: self.angular + o.angular,
+            linear: self.linear + o.linear,
+        }
     }
 }
 
 impl std::ops::Sub for Motion {
     type Output = Motion;
     fn sub(self, o: Motion) -> Motion {
-        Motion { angular: self.angular - o.angular, linear: self.linear - o.linear }
+        Motion {
+            angular: self.angular - o.angular,
+            linear: self.linear - o.linear,
+        }
     }
 }
 
 impl Force {
     /// The zero force.
-    pub const ZERO: Self = Self { moment: DVec3::ZERO, force: DVec3::ZERO };
+    pub const ZERO: Self = Self {
+        moment: DVec3::ZERO,
+        force: DVec3::ZERO,
+    };
 
     /// A force from its parts.
     #[must_use]
@@ -113,20 +128,29 @@ impl Force {
     /// A pure force `f` acting at point `p` (both in this frame).
     #[must_use]
     pub fn at_point(p: DVec3, f: DVec3) -> Self {
-        Self { moment: p.cross(f), force: f }
+        Self {
+            moment: p.cross(f),
+            force: f,
+        }
     }
 
     /// Scale both parts.
     #[must_use]
     pub fn scale(self, s: f64) -> Force {
-        Force { moment: self.moment * s, force: self.force * s }
+        Force {
+            moment: self.moment * s,
+            force: self.force * s,
+        }
     }
 }
 
 impl std::ops::Add for Force {
     type Output = Force;
     fn add(self, o: Force) -> Force {
-        Force { moment: self.moment + o.moment, force: self.force + o.force }
+        Force {
+            moment: self.moment + o.moment,
+            force: self.force + o.force,
+        }
     }
 }
 
@@ -140,7 +164,10 @@ impl std::ops::AddAssign for Force {
 impl std::ops::Sub for Force {
     type Output = Force;
     fn sub(self, o: Force) -> Force {
-        Force { moment: self.moment - o.moment, force: self.force - o.force }
+        Force {
+            moment: self.moment - o.moment,
+            force: self.force - o.force,
+        }
     }
 }
 
@@ -155,7 +182,10 @@ pub struct ParentLink {
 
 impl Default for ParentLink {
     fn default() -> Self {
-        Self { rot: DMat3::IDENTITY, pos: DVec3::ZERO }
+        Self {
+            rot: DMat3::IDENTITY,
+            pos: DVec3::ZERO,
+        }
     }
 }
 
@@ -174,7 +204,10 @@ impl ParentLink {
     #[must_use]
     pub fn force_to_parent(&self, f: Force) -> Force {
         let force = self.rot * f.force;
-        Force { moment: self.rot * f.moment + self.pos.cross(force), force }
+        Force {
+            moment: self.rot * f.moment + self.pos.cross(force),
+            force,
+        }
     }
 
     /// A child-frame inertia expressed in the parent frame (`Xᵀ I X`).
@@ -197,7 +230,10 @@ impl ParentLink {
     /// The composition `self ∘ child`: where `child`'s frame sits in this link's parent.
     #[must_use]
     pub fn then(&self, child: &ParentLink) -> ParentLink {
-        ParentLink { rot: self.rot * child.rot, pos: self.rot * child.pos + self.pos }
+        ParentLink {
+            rot: self.rot * child.rot,
+            pos: self.rot * child.pos + self.pos,
+        }
     }
 }
 
@@ -221,7 +257,11 @@ impl Default for Inertia {
 
 impl Inertia {
     /// The zero inertia.
-    pub const ZERO: Self = Self { a: DMat3::ZERO, b: DMat3::ZERO, c: DMat3::ZERO };
+    pub const ZERO: Self = Self {
+        a: DMat3::ZERO,
+        b: DMat3::ZERO,
+        c: DMat3::ZERO,
+    };
 
     /// A rigid body of `mass` (kg) with its centre of mass at `com` (m) and
     /// rotational inertia `inertia_com` about the centre of mass (kg·m²).
@@ -247,7 +287,8 @@ impl Inertia {
     /// `self − u uᵀ / d` for a force-like `u` (the articulated-body update).
     #[must_use]
     pub fn minus_outer(&self, u: Force, d: f64) -> Inertia {
-        let outer = |x: DVec3, y: DVec3| DMat3::from_cols(x * (y.x / d), x * (y.y / d), x * (y.z / d));
+        let outer =
+            |x: DVec3, y: DVec3| DMat3::from_cols(x * (y.x / d), x * (y.y / d), x * (y.z / d));
         Inertia {
             a: self.a - outer(u.moment, u.moment),
             b: self.b - outer(u.moment, u.force),
@@ -295,7 +336,9 @@ impl Inertia {
                 m[i][j] = s / d;
             }
         }
-        let rhs = [f.moment.x, f.moment.y, f.moment.z, f.force.x, f.force.y, f.force.z];
+        let rhs = [
+            f.moment.x, f.moment.y, f.moment.z, f.force.x, f.force.y, f.force.z,
+        ];
         let mut y = [0.0; 6];
         for i in 0..6 {
             let mut s = rhs[i];
@@ -312,14 +355,21 @@ impl Inertia {
             }
             x[i] = s / m[i][i];
         }
-        Some(Motion::new(DVec3::new(x[0], x[1], x[2]), DVec3::new(x[3], x[4], x[5])))
+        Some(Motion::new(
+            DVec3::new(x[0], x[1], x[2]),
+            DVec3::new(x[3], x[4], x[5]),
+        ))
     }
 }
 
 impl std::ops::Add for Inertia {
     type Output = Inertia;
     fn add(self, o: Inertia) -> Inertia {
-        Inertia { a: self.a + o.a, b: self.b + o.b, c: self.c + o.c }
+        Inertia {
+            a: self.a + o.a,
+            b: self.b + o.b,
+            c: self.c + o.c,
+        }
     }
 }
 
@@ -346,7 +396,14 @@ mod tests {
                 DVec3::new(e[0], e[1], e[2]),
                 DVec3::new(e[3], e[4], e[5]),
             ));
-            let v = [m.angular.x, m.angular.y, m.angular.z, m.linear.x, m.linear.y, m.linear.z];
+            let v = [
+                m.angular.x,
+                m.angular.y,
+                m.angular.z,
+                m.linear.x,
+                m.linear.y,
+                m.linear.z,
+            ];
             for row in 0..6 {
                 x[row][col] = v[row];
             }
@@ -380,7 +437,11 @@ mod tests {
                         s += x[k][r] * im[k][m] * x[m][c];
                     }
                 }
-                assert!((s - got[r][c]).abs() < 1e-12, "({r},{c}) {s} vs {}", got[r][c]);
+                assert!(
+                    (s - got[r][c]).abs() < 1e-12,
+                    "({r},{c}) {s} vs {}",
+                    got[r][c]
+                );
             }
         }
     }

@@ -56,8 +56,16 @@ fn random_tree(rng: &mut Rng, n: usize) -> Model {
     for i in 1..n {
         let parent = ((rng.next() + 1.0) * 0.5 * i as f64) as usize;
         let axis = rng.vec().normalize();
-        let joint = if rng.next() > 0.0 { Joint::Revolute(axis) } else { Joint::Prismatic(axis) };
-        let d = DVec3::new(rng.next().abs() + 0.1, rng.next().abs() + 0.1, rng.next().abs() + 0.1) * 0.05;
+        let joint = if rng.next() > 0.0 {
+            Joint::Revolute(axis)
+        } else {
+            Joint::Prismatic(axis)
+        };
+        let d = DVec3::new(
+            rng.next().abs() + 0.1,
+            rng.next().abs() + 0.1,
+            rng.next().abs() + 0.1,
+        ) * 0.05;
         bodies.push(Body {
             name: format!("b{i}"),
             parent: Some(parent.min(i - 1)),
@@ -84,7 +92,14 @@ fn assert_aba_matches_dense(name: &str, model: &Model, rng: &mut Rng, trials: us
         let mut aba = Vec::new();
         if model.free_base() {
             let a = data.base_acceleration;
-            aba.extend([a.angular.x, a.angular.y, a.angular.z, a.linear.x, a.linear.y, a.linear.z]);
+            aba.extend([
+                a.angular.x,
+                a.angular.y,
+                a.angular.z,
+                a.linear.x,
+                a.linear.y,
+                a.linear.z,
+            ]);
         }
         aba.extend_from_slice(&data.qdd);
         let scale = dense.iter().fold(1.0_f64, |m, x| m.max(x.abs()));
@@ -102,8 +117,18 @@ fn aba_equals_crba_rnea_on_random_states_of_every_model() {
     let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
     for l in [1.0, 2.5] {
         assert_aba_matches_dense("biped", &biped(l).expect("biped").model, &mut rng, 50);
-        assert_aba_matches_dense("quadruped", &quadruped(l).expect("quadruped").model, &mut rng, 50);
-        assert_aba_matches_dense("kangaroo", &kangaroo(l).expect("kangaroo").model, &mut rng, 50);
+        assert_aba_matches_dense(
+            "quadruped",
+            &quadruped(l).expect("quadruped").model,
+            &mut rng,
+            50,
+        );
+        assert_aba_matches_dense(
+            "kangaroo",
+            &kangaroo(l).expect("kangaroo").model,
+            &mut rng,
+            50,
+        );
     }
     for n in [2, 7, 20, 40] {
         let model = random_tree(&mut rng, n);
@@ -147,7 +172,10 @@ fn a_pendulum_swings_with_its_closed_form_period() {
     }
     let period = (crossings[10] - crossings[0]) / 10.0;
     let rel = (period - expected).abs() / expected;
-    assert!(rel < 1e-4, "period {period} s vs {expected} s (relative error {rel:e})");
+    assert!(
+        rel < 1e-4,
+        "period {period} s vs {expected} s (relative error {rel:e})"
+    );
     // Symplectic Euler keeps the amplitude: no growth, no decay beyond 0.1 %.
     assert!((data.q[0].abs().max(prev.abs())) < amplitude * 1.001);
 }
@@ -189,8 +217,13 @@ fn a_free_body_in_flight_keeps_its_momentum_and_energy() {
     let dl = (com_momentum(&data) - l0).length() / l0.length();
     let e1 = kinetic_energy(model, &data) + potential_energy(model, &data);
     let de = (e1 - e0).abs() / e0.abs();
-    eprintln!("flight 1 s: momentum error {dp:e} (× m·g·1 s), angular momentum {dl:e}, energy {de:e}");
+    eprintln!(
+        "flight 1 s: momentum error {dp:e} (× m·g·1 s), angular momentum {dl:e}, energy {de:e}"
+    );
     assert!(dp < 1e-3, "linear momentum off by {dp:e} of m·g·1 s");
-    assert!(dl < 1e-2, "angular momentum about the centre of mass drifted by {dl:e}");
+    assert!(
+        dl < 1e-2,
+        "angular momentum about the centre of mass drifted by {dl:e}"
+    );
     assert!(de < 1e-2, "energy drifted by {de:e}");
 }

@@ -33,13 +33,31 @@ const LOWER_INERTIA: [f64; 3] = [0.02, 0.02, 0.00018];
 pub fn biped(l: f64) -> Result<Creature, ModelError> {
     let mut b = Builder::new(l);
     let [ix, iy, iz] = TRUNK_INERTIA;
-    let trunk = b.body("trunk", None, Joint::Free, DVec3::ZERO, TRUNK_MASS_KG, DVec3::ZERO, paper_inertia(ix, iy, iz));
+    let trunk = b.body(
+        "trunk",
+        None,
+        Joint::Free,
+        DVec3::ZERO,
+        TRUNK_MASS_KG,
+        DVec3::ZERO,
+        paper_inertia(ix, iy, iz),
+    );
     let mut legs = Vec::new();
     let mut dof = 0;
     for (name, side) in [("left", 1.0), ("right", -1.0)] {
         let hip_at = paper(0.0, side * HIP_LATERAL_M, 0.0);
-        let roll = b.link(&format!("{name}-hip-roll"), Some(trunk), Joint::Revolute(DVec3::Z), hip_at);
-        let pitch = b.link(&format!("{name}-hip-pitch"), Some(roll), Joint::Revolute(DVec3::X), DVec3::ZERO);
+        let roll = b.link(
+            &format!("{name}-hip-roll"),
+            Some(trunk),
+            Joint::Revolute(DVec3::Z),
+            hip_at,
+        );
+        let pitch = b.link(
+            &format!("{name}-hip-pitch"),
+            Some(roll),
+            Joint::Revolute(DVec3::X),
+            DVec3::ZERO,
+        );
         let [ux, uy, uz] = UPPER_INERTIA;
         let upper = b.body(
             &format!("{name}-upper-leg"),

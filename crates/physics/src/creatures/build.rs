@@ -27,11 +27,17 @@ pub struct Builder {
 
 impl Builder {
     pub fn new(l: f64) -> Self {
-        Self { bodies: Vec::new(), l }
+        Self {
+            bodies: Vec::new(),
+            l,
+        }
     }
 
     /// Add a body; `at`, `com` in metres and `mass`, `inertia` at scale 1.
-    #[expect(clippy::too_many_arguments, reason = "one call per row of Table 3 reads best flat")]
+    #[expect(
+        clippy::too_many_arguments,
+        reason = "one call per row of Table 3 reads best flat"
+    )]
     pub fn body(
         &mut self,
         name: &str,
@@ -47,7 +53,10 @@ impl Builder {
             name: name.to_owned(),
             parent,
             joint,
-            placement: ParentLink { rot: DMat3::IDENTITY, pos: at * l },
+            placement: ParentLink {
+                rot: DMat3::IDENTITY,
+                pos: at * l,
+            },
             mass: mass * l.powi(3),
             com: com * l,
             inertia_com: inertia * l.powi(5),

@@ -26,13 +26,43 @@ struct Link {
 
 const TRUNK_MASS_KG: f64 = 3.67;
 const TRUNK_INERTIA: f64 = 0.034;
-const THIGH: Link = Link { length: 0.13, com: 0.064, mass: 1.62, inertia: 0.0039 };
-const SHIN: Link = Link { length: 0.26, com: 0.105, mass: 0.60, inertia: 0.0033 };
-const FOOT: Link = Link { length: 0.174, com: 0.082, mass: 0.14, inertia: 0.00038 };
+const THIGH: Link = Link {
+    length: 0.13,
+    com: 0.064,
+    mass: 1.62,
+    inertia: 0.0039,
+};
+const SHIN: Link = Link {
+    length: 0.26,
+    com: 0.105,
+    mass: 0.60,
+    inertia: 0.0033,
+};
+const FOOT: Link = Link {
+    length: 0.174,
+    com: 0.082,
+    mass: 0.14,
+    inertia: 0.00038,
+};
 const TAIL: [Link; 3] = [
-    Link { length: 0.166, com: 0.079, mass: 0.24, inertia: 0.00058 },
-    Link { length: 0.166, com: 0.071, mass: 0.14, inertia: 0.00033 },
-    Link { length: 0.166, com: 0.076, mass: 0.069, inertia: 0.00016 },
+    Link {
+        length: 0.166,
+        com: 0.079,
+        mass: 0.24,
+        inertia: 0.00058,
+    },
+    Link {
+        length: 0.166,
+        com: 0.071,
+        mass: 0.14,
+        inertia: 0.00033,
+    },
+    Link {
+        length: 0.166,
+        com: 0.076,
+        mass: 0.069,
+        inertia: 0.00016,
+    },
 ];
 const HEAD_MASS_KG: f64 = 0.33;
 const HEAD_INERTIA: f64 = 0.00046;
@@ -54,8 +84,18 @@ fn planar_inertia(i: f64) -> DMat3 {
 /// The model check's error for a non-positive or non-finite `l`.
 pub fn kangaroo(l: f64) -> Result<Creature, ModelError> {
     let mut b = Builder::new(l);
-    let forward = b.link("base-forward", None, Joint::Prismatic(DVec3::Z), DVec3::ZERO);
-    let up = b.link("base-up", Some(forward), Joint::Prismatic(DVec3::Y), DVec3::ZERO);
+    let forward = b.link(
+        "base-forward",
+        None,
+        Joint::Prismatic(DVec3::Z),
+        DVec3::ZERO,
+    );
+    let up = b.link(
+        "base-up",
+        Some(forward),
+        Joint::Prismatic(DVec3::Y),
+        DVec3::ZERO,
+    );
     let trunk = b.body(
         "trunk",
         Some(up),
@@ -67,14 +107,46 @@ pub fn kangaroo(l: f64) -> Result<Creature, ModelError> {
     );
     let down = |x: f64| paper(0.0, 0.0, -x);
     let hip_at = paper(HIP_FORWARD_M, 0.0, 0.0);
-    let thigh = b.body("thigh", Some(trunk), Joint::Revolute(DVec3::X), hip_at, THIGH.mass, down(THIGH.com), planar_inertia(THIGH.inertia));
-    let shin = b.body("shin", Some(thigh), Joint::Revolute(DVec3::X), down(THIGH.length), SHIN.mass, down(SHIN.com), planar_inertia(SHIN.inertia));
-    let foot = b.body("foot", Some(shin), Joint::Revolute(DVec3::X), down(SHIN.length), FOOT.mass, down(FOOT.com), planar_inertia(FOOT.inertia));
+    let thigh = b.body(
+        "thigh",
+        Some(trunk),
+        Joint::Revolute(DVec3::X),
+        hip_at,
+        THIGH.mass,
+        down(THIGH.com),
+        planar_inertia(THIGH.inertia),
+    );
+    let shin = b.body(
+        "shin",
+        Some(thigh),
+        Joint::Revolute(DVec3::X),
+        down(THIGH.length),
+        SHIN.mass,
+        down(SHIN.com),
+        planar_inertia(SHIN.inertia),
+    );
+    let foot = b.body(
+        "foot",
+        Some(shin),
+        Joint::Revolute(DVec3::X),
+        down(SHIN.length),
+        FOOT.mass,
+        down(FOOT.com),
+        planar_inertia(FOOT.inertia),
+    );
     let mut parent = trunk;
     let mut at = paper(TAIL_FORWARD_M, 0.0, 0.0);
     for (k, link) in TAIL.iter().enumerate() {
         let back = |x: f64| paper(-x, 0.0, 0.0);
-        parent = b.body(&format!("tail{}", k + 1), Some(parent), Joint::Revolute(DVec3::X), at, link.mass, back(link.com), planar_inertia(link.inertia));
+        parent = b.body(
+            &format!("tail{}", k + 1),
+            Some(parent),
+            Joint::Revolute(DVec3::X),
+            at,
+            link.mass,
+            back(link.com),
+            planar_inertia(link.inertia),
+        );
         at = back(link.length);
     }
     let _neck_body = b.body(

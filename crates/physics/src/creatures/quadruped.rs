@@ -37,14 +37,35 @@ pub const LEG_NAMES: [&str; 4] = ["front-left", "front-right", "rear-left", "rea
 pub fn quadruped(l: f64) -> Result<Creature, ModelError> {
     let mut b = Builder::new(l);
     let [ix, iy, iz] = TRUNK_INERTIA;
-    let trunk = b.body("trunk", None, Joint::Free, DVec3::ZERO, TRUNK_MASS_KG, DVec3::ZERO, paper_inertia(ix, iy, iz));
+    let trunk = b.body(
+        "trunk",
+        None,
+        Joint::Free,
+        DVec3::ZERO,
+        TRUNK_MASS_KG,
+        DVec3::ZERO,
+        paper_inertia(ix, iy, iz),
+    );
     let mut legs = Vec::new();
     let mut dof = 0;
     for name in LEG_NAMES {
-        let forward = if name.starts_with("front") { HIP_FORWARD_M } else { -HIP_FORWARD_M };
-        let left = if name.ends_with("left") { HIP_LATERAL_M } else { -HIP_LATERAL_M };
+        let forward = if name.starts_with("front") {
+            HIP_FORWARD_M
+        } else {
+            -HIP_FORWARD_M
+        };
+        let left = if name.ends_with("left") {
+            HIP_LATERAL_M
+        } else {
+            -HIP_LATERAL_M
+        };
         let hip_at = paper(forward, left, 0.0);
-        let roll = b.link(&format!("{name}-hip-roll"), Some(trunk), Joint::Revolute(DVec3::Z), hip_at);
+        let roll = b.link(
+            &format!("{name}-hip-roll"),
+            Some(trunk),
+            Joint::Revolute(DVec3::Z),
+            hip_at,
+        );
         let [ux, uy, uz] = UPPER_INERTIA;
         let upper = b.body(
             &format!("{name}-upper-leg"),

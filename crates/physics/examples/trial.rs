@@ -1,0 +1,73 @@
+//! Development aid: run the biped and print a trace and the Table-2 figures.
+//! `cargo run --release -p gaitlab-physics --example trial -- SPEED SECONDS [trace]`
+use gaitlab_physics::control::attitude::{attitude_error, com_velocity};
+use gaitlab_physics::control::biped_run::{BipedRun, BipedRunParams};
+use gaitlab_physics::creatures::biped;
+use gaitlab_physics::ground::GroundParams;
+use gaitlab_physics::metrics::GaitRecorder;
+use gaitlab_physics::{Sim, SimOptions};
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().collect();
+    let speed: f64 = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1.5);
+    let secs: f64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(5.0);
+    let trace = args.get(3).is_some();
+    let mut sim = Sim::new(biped(1.0)?, GroundParams::default(), SimOptions::default());
+    sim.data.base_position.y = 0.9;
+    sim.data.base_velocity.linear.z = speed;
+    let mut ctl = BipedRun::new(
+        BipedRunParams {
+            speed_mps: speed,
+            ..Default::default()
+        },
+        1.0,
+    );
+    let mut rec = GaitRecorder::new(2, speed, 0.0, 3.0);
+    let mut last_print = -1.0;
+    while sim.time < secs {
+        sim.step(&mut ctl)?;
+        rec.record(&sim);
+        if trace && sim.time - last_print >= 0.02 {
+            last_print = sim.time;
+            let v = com_velocity(&sim.creature, &sim.data);
+            let e = attitude_error(&sim.creature, &sim.data, 0.0, 0.0);
+            println!(
+                "t {:.3} {:11} act {} y {:.3} vz {:+.2} vx {:+.2} pitch {:+.1} roll {:+.1} yaw {:+.1} yawq {:+.2} {:+.2} {:+.1} {:+.1} q {:+.2} {:+.2} {:+.2} {:+.2}",
+                sim.time,
+                ctl.phase.name(),
+                ctl.active,
+                sim.data.base_position.y,
+                v.z,
+                v.x,
+                e.x.to_degrees(),
+                e.z.to_degrees(),
+                e.y.to_degrees(),
+                sim.data.q[2],
+                sim.data.q[6],
+                sim.data.qd[2],
+                sim.data.qd[6],
+                sim.data.q[0],
+                sim.data.q[1],
+                sim.data.q[4],
+                sim.data.q[5]
+            );
+        }
+    }
+    let s = rec.summary();
+    println!(
+        "fell {} speed {:.3}/{:.2} stride {:.3} m {:.3} s flight {:.3} stance {:.3} legΔ {:.3} pitch {:.1} roll {:.1} accel {:.2} g friction {:.2}",
+        s.fell,
+        s.speed_mean_mps,
+        s.speed_desired_mps,
+        s.stride_length_m,
+        s.stride_duration_s,
+        s.flight_duration_s,
+        s.stance_duration_s,
+        s.leg_length_change_m,
+        s.pitch_magnitude_deg,
+        s.roll_magnitude_deg,
+        s.peak_vertical_accel_g,
+        s.friction_needed_max
+    );
+    Ok(())
+}

@@ -1,0 +1,45 @@
+//! The trunk's attitude and travel as the controllers read them: pitch, roll
+//! and yaw relative to a heading, the body's angular rate, and the horizontal
+//! velocity of the centre of mass (the ϕ, ϕ̇ and ẋ of eqs. 3–4).
+
+use glam::{DQuat, DVec3};
+
+use crate::creature::Creature;
+use crate::data::Data;
+
+/// The unit forward vector on the ground for a heading (rad about +y; 0 = +z).
+#[must_use]
+pub fn heading_forward(heading: f64) -> DVec3 {
+    DVec3::new(heading.sin(), 0.0, heading.cos())
+}
+
+/// The trunk's orientation error from upright at `heading` (plus a desired
+/// pitch `pitch_d`, rad) as a world rotation vector (rad): its components on
+/// the lateral and forward axes are the pitch and roll errors, on y the yaw error.
+#[must_use]
+pub fn attitude_error(creature: &Creature, data: &Data, heading: f64, pitch_d: f64) -> DVec3 {
+    let actual = DQuat::from_mat3(&data.world[creature.trunk].rot);
+    let desired = DQuat::from_rotation_y(heading) * DQuat::from_rotation_x(pitch_d);
+    let mut err = actual * desired.inverse();
+    if err.w < 0.0 {
+        err = -err;
+    }
+    err.to_scaled_axis()
+}
+
+/// The trunk's angular velocity in world coordinates (rad/s).
+#[must_use]
+pub fn trunk_rate(creature: &Creature, data: &Data) -> DVec3 {
+    data.world[creature.trunk].rot * data.velocity[creature.trunk].angular
+}
+
+/// Velocity of the whole creature's centre of mass (world, m/s).
+#[must_use]
+pub fn com_velocity(creature: &Creature, data: &Data) -> DVec3 {
+    let model = &creature.model;
+    let mut p = DVec3::ZERO;
+    for (i, b) in model.bodies().iter().enumerate() {
+        p += data.point_velocity_world(i, b.com) * b.mass;
+    }
+    p / model.total_mass()
+}

@@ -1,0 +1,272 @@
+//! Biped running (Raibert & Hodgins 1991, "Gaits" and Figure 4): one-legged
+//! hopping control on the active leg while the idle leg is kept short and out
+//! of the way. Hopping by the leg spring's rest length and a thrust in stance
+//! (eq. 1–2), speed by foot placement (eq. 3), trunk attitude by the active
+//! hip in stance (eq. 4).
+
+use glam::{DQuat, DVec3};
+
+use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
+use super::phase::Phase;
+use super::placement::{foot_displacement, gimbal_angles, leg_direction};
+use crate::actuator::Stops;
+use crate::sim::{ControlInput, Controller, Drive};
+
+/// Parameters of biped running; lengths are leg-spring coordinates
+/// (metres of extension, 0 = the leg at full length).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BipedRunParams {
+    /// Desired forward speed ẋ_d (m/s).
+    pub speed_mps: f64,
+    /// Desired heading (rad about +y; 0 = +z).
+    pub heading: f64,
+    /// Leg spring stiffness k (N/m) and damping b (N·s/m), eq. 1.
+    pub leg_stiffness: f64,
+    /// Leg spring damping (N·s/m).
+    pub leg_damping: f64,
+    /// Rest length for landing (m of extension).
+    pub landing_rest_m: f64,
+    /// Extra rest length during thrust (m).
+    pub thrust_m: f64,
+    /// Rest length of the shortened idle leg (m of extension).
+    pub idle_rest_m: f64,
+    /// Desired hop height: apex of the hip above its lift-off height (m).
+    pub hop_height_m: f64,
+    /// How much each hop's apex error changes the thrust (m of thrust per m).
+    pub hop_gain: f64,
+    /// Foot placement gain k_ẋ (s), eq. 3.
+    pub placement_gain_s: f64,
+    /// Hip servo gains for positioning legs (N·m/rad, N·m·s/rad).
+    pub swing_kp: f64,
+    /// Hip swing damping (N·m·s/rad).
+    pub swing_kv: f64,
+    /// Posture servo gains of eq. 4 (N·m/rad, N·m·s/rad).
+    pub posture_kp: f64,
+    /// Posture damping (N·m·s/rad).
+    pub posture_kv: f64,
+    /// Trunk yaw servo in stance, through the hip's yaw joint (N·m/rad, N·m·s/rad).
+    pub yaw_kp: f64,
+    /// Trunk yaw damping in stance (N·m·s/rad).
+    pub yaw_kv: f64,
+    /// Servo of the leg's own yaw joint in flight; the leg spins on a tiny
+    /// inertia, so these are small (N·m/rad, N·m·s/rad).
+    pub leg_yaw_kp: f64,
+    /// Leg yaw damping in flight (N·m·s/rad).
+    pub leg_yaw_kv: f64,
+    /// Largest hip torque (N·m).
+    pub max_hip_torque: f64,
+}
+
+impl Default for BipedRunParams {
+    fn default() -> Self {
+        Self {
+            speed_mps: 1.5,
+            heading: 0.0,
+            leg_stiffness: 12_000.0,
+            leg_damping: 20.0,
+            landing_rest_m: -0.03,
+            thrust_m: 0.03,
+            idle_rest_m: -0.18,
+            hop_height_m: 0.10,
+            hop_gain: 0.3,
+            placement_gain_s: 0.08,
+            swing_kp: 150.0,
+            swing_kv: 8.0,
+            posture_kp: 1500.0,
+            posture_kv: 100.0,
+            yaw_kp: 200.0,
+            yaw_kv: 20.0,
+            leg_yaw_kp: 2.0,
+            leg_yaw_kv: 0.1,
+            max_hip_torque: 400.0,
+        }
+    }
+}
+
+/// The running state machine of Figure 4 for a two-legged creature.
+#[derive(Clone, Debug)]
+pub struct BipedRun {
+    /// Parameters (editable while running).
+    pub params: BipedRunParams,
+    /// Current state.
+    pub phase: Phase,
+    /// Which leg supports (0 or 1).
+    pub active: usize,
+    /// Measured duration of the last stance (s), T_s of eq. 3.
+    pub stance_s: f64,
+    touchdown_time: f64,
+    liftoff_height: f64,
+    apex_height: f64,
+    thrust: f64,
+    descending: bool,
+    /// Scale of lengths (the creature's L).
+    scale: f64,
+}
+
+impl BipedRun {
+    /// A controller starting in flight with leg 0 active.
+    #[must_use]
+    pub fn new(params: BipedRunParams, scale: f64) -> Self {
+        Self {
+            params,
+            phase: Phase::Flight,
+            active: 0,
+            stance_s: 0.18 * scale.sqrt(),
+            touchdown_time: 0.0,
+            liftoff_height: 0.0,
+            apex_height: f64::NEG_INFINITY,
+            thrust: params.thrust_m * scale,
+            descending: true,
+            scale,
+        }
+    }
+
+    fn leg_stops(&self) -> Stops {
+        let l = self.scale;
+        Stops {
+            min: -0.25 * l,
+            max: 0.0,
+            stiffness: 2.0e5 * l * l,
+            damping: 500.0 * l.powf(2.5),
+        }
+    }
+
+    fn advance_phase(&mut self, input: &ControlInput<'_>) {
+        let leg = &input.creature.legs[self.active];
+        let contact = input.contacts[self.active];
+        let q = input.data.q[leg.spring];
+        let qd = input.data.qd[leg.spring];
+        let trunk_y = input.data.world[input.creature.trunk].pos.y;
+        let p = &self.params;
+        let l = self.scale;
+        match self.phase {
+            Phase::Flight => {
+                self.apex_height = self.apex_height.max(trunk_y);
+                self.descending = self.descending
+                    || input.data.world[input.creature.trunk].pos.y < self.apex_height - 0.002 * l;
+                if contact.touching && self.descending {
+                    self.phase = Phase::Loading;
+                    self.touchdown_time = input.time;
+                }
+            }
+            Phase::Loading if qd < 0.0 && q < p.landing_rest_m * l - 0.002 * l => {
+                self.phase = Phase::Compression
+            }
+            Phase::Compression if qd >= 0.0 => self.phase = Phase::Thrust,
+            Phase::Thrust if q >= (p.landing_rest_m - 0.005) * l => self.phase = Phase::Unloading,
+            _ => {}
+        }
+        if self.phase != Phase::Flight && !contact.touching {
+            // Lift-off: the legs swap, the hop's apex adjusts the thrust (eq. 2).
+            self.stance_s =
+                (input.time - self.touchdown_time).clamp(0.05 * l.sqrt(), 0.5 * l.sqrt());
+            if self.apex_height.is_finite() {
+                let error = p.hop_height_m * l - (self.apex_height - self.liftoff_height);
+                self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
+            }
+            self.liftoff_height = trunk_y;
+            self.apex_height = f64::NEG_INFINITY;
+            self.active = 1 - self.active;
+            self.phase = Phase::Flight;
+            self.descending = false;
+        }
+    }
+}
+
+impl Controller for BipedRun {
+    fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
+        self.advance_phase(input);
+        let p = self.params;
+        let l = self.scale;
+        let creature = input.creature;
+        let data = input.data;
+        let trunk_rot = data.world[creature.trunk].rot;
+        let velocity = com_velocity(creature, data);
+        let desired = heading_forward(p.heading) * (p.speed_mps * l.sqrt());
+        let stops = self.leg_stops();
+        // Leg lengths: the spring of eq. 1 with a programmable rest.
+        for (i, leg) in creature.legs.iter().enumerate() {
+            let d = &mut drives[leg.spring];
+            d.stops = Some(stops);
+            d.spring.stiffness = p.leg_stiffness * l * l;
+            d.spring.damping = p.leg_damping * l.powf(2.5);
+            d.feedforward = 0.0;
+            d.spring.rest = if i != self.active {
+                p.idle_rest_m * l
+            } else {
+                match self.phase {
+                    Phase::Thrust => p.landing_rest_m * l + self.thrust,
+                    Phase::Unloading => p.idle_rest_m * l,
+                    // Lengthen for landing once the body falls, so the new
+                    // active leg does not scuff the ground at lift-off.
+                    Phase::Flight if !self.descending => p.idle_rest_m * l,
+                    _ => p.landing_rest_m * l,
+                }
+            };
+        }
+        // The active leg: placed for landing in flight, posture servo in stance.
+        let active = &creature.legs[self.active];
+        let idle = &creature.legs[1 - self.active];
+        let reach = 0.83 * l + p.landing_rest_m * l;
+        let com = crate::energy::center_of_mass(&creature.model, data);
+        let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.powf(4.5));
+        let max = p.max_hip_torque * l.powi(4);
+        match self.phase {
+            Phase::Flight => {
+                let hip_world = data.world[creature.trunk].rot * active.hip_in_trunk
+                    + data.world[creature.trunk].pos;
+                let foot = DVec3::new(com.x, 0.0, com.z)
+                    + foot_displacement(
+                        velocity,
+                        desired,
+                        self.stance_s,
+                        p.placement_gain_s * l.sqrt(),
+                    );
+                let dir = leg_direction(trunk_rot, foot - hip_world, reach);
+                let (roll, pitch) = gimbal_angles(dir);
+                set_hip(drives, &active.hip[..2], [roll, pitch], kp, kv, max);
+                drives[active.hip[2]].servo(
+                    p.leg_yaw_kp * l.powi(4),
+                    p.leg_yaw_kv * l.powf(4.5),
+                    0.0,
+                );
+            }
+            Phase::Loading | Phase::Unloading => {
+                for &j in &active.hip[..2] {
+                    drives[j].torque(0.0);
+                }
+                drives[active.hip[2]].servo(
+                    p.leg_yaw_kp * l.powi(4),
+                    p.leg_yaw_kv * l.powf(4.5),
+                    0.0,
+                );
+            }
+            Phase::Compression | Phase::Thrust => {
+                // Eq. 4 on pitch and roll: the torque the trunk needs, applied
+                // by the hip joints as its reaction.
+                let err = attitude_error(creature, data, p.heading, 0.0);
+                let rate = trunk_rate(creature, data);
+                let (pkp, pkv) = (p.posture_kp * l.powi(4), p.posture_kv * l.powf(4.5));
+                let torque = -err * pkp - rate * pkv;
+                let roll_axis = trunk_rot * DVec3::Z;
+                let roll_q = data.q[active.hip[0]];
+                let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
+                drives[active.hip[0]].torque((-torque.dot(roll_axis)).clamp(-max, max));
+                drives[active.hip[1]].torque((-torque.dot(pitch_axis)).clamp(-max, max));
+                let yaw = -err.y * p.yaw_kp * l.powi(4) - rate.y * p.yaw_kv * l.powf(4.5);
+                drives[active.hip[2]].torque((-yaw).clamp(-max, max));
+            }
+        }
+        // The idle leg mirrors the active one's pitch, hanging under its hip.
+        let active_pitch = data.q[active.hip[1]];
+        set_hip(drives, &idle.hip[..2], [0.0, -active_pitch], kp, kv, max);
+        drives[idle.hip[2]].servo(p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.powf(4.5), 0.0);
+    }
+}
+
+fn set_hip(drives: &mut [Drive], hip: &[usize], targets: [f64; 2], kp: f64, kv: f64, max: f64) {
+    for (&j, &t) in hip.iter().zip(&targets) {
+        drives[j].servo(kp, kv, t);
+        drives[j].spring.max_force = max;
+    }
+}

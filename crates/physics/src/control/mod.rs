@@ -1,0 +1,11 @@
+//! Running controllers (Raibert & Hodgins 1991, "Control"): hopping height by
+//! the leg spring's rest length and thrust (eq. 2), speed by foot placement
+//! about the neutral point (eq. 3), posture by the hip servo of eq. 4, all
+//! sequenced by the state machine of Figure 4.
+
+pub mod attitude;
+pub mod biped_run;
+pub mod phase;
+pub mod placement;
+
+pub use phase::Phase;

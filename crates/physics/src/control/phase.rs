@@ -1,0 +1,48 @@
+//! The states of Figure 4's finite state machine, entered on the sensory
+//! events the paper lists beneath each state name.
+
+/// One state of the running cycle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Phase {
+    /// Entered when the active leg leaves the ground: legs swap roles, the
+    /// new active leg lengthens and is positioned for landing.
+    #[default]
+    Flight,
+    /// Entered when the active leg touches the ground: hip torque zeroed.
+    Loading,
+    /// Entered when the active leg's spring shortens: pitch servoed by the hip.
+    Compression,
+    /// Entered when the spring lengthens: the leg extends (thrust).
+    Thrust,
+    /// Entered when the spring nears full length: the leg shortens, hip limp.
+    Unloading,
+}
+
+impl Phase {
+    /// Every state in cycle order.
+    pub const ALL: [Phase; 5] = [
+        Phase::Flight,
+        Phase::Loading,
+        Phase::Compression,
+        Phase::Thrust,
+        Phase::Unloading,
+    ];
+
+    /// The paper's name for the state.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Phase::Flight => "flight",
+            Phase::Loading => "loading",
+            Phase::Compression => "compression",
+            Phase::Thrust => "thrust",
+            Phase::Unloading => "unloading",
+        }
+    }
+
+    /// The state's position in the cycle (0–4), for plots.
+    #[must_use]
+    pub fn index(self) -> usize {
+        self as usize
+    }
+}

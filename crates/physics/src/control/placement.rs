@@ -1,0 +1,68 @@
+//! Foot placement for speed control (Raibert & Hodgins 1991, eq. 3):
+//! `x_fh,d = ẋ·T_s/2 + k_ẋ·(ẋ − ẋ_d)` — the neutral point plus a correction
+//! for the speed error — and the hip angles that point a leg at that foot
+//! position.
+
+use glam::{DMat3, DVec3};
+
+/// Eq. 3 on the ground plane: the desired foot displacement from the
+/// projection of the centre of mass (world, m, y = 0) for horizontal velocity
+/// `velocity`, desired velocity `desired`, predicted stance time `stance_s`
+/// and gain `gain_s` (s).
+#[must_use]
+pub fn foot_displacement(velocity: DVec3, desired: DVec3, stance_s: f64, gain_s: f64) -> DVec3 {
+    let v = DVec3::new(velocity.x, 0.0, velocity.z);
+    let vd = DVec3::new(desired.x, 0.0, desired.z);
+    v * (stance_s / 2.0) + (v - vd) * gain_s
+}
+
+/// The gimbal angles `(roll, pitch)` (rad) that point a leg hanging along
+/// the hip's −y at `direction` (trunk coordinates): the roll joint turns
+/// about the trunk's z, the pitch joint then about x.
+#[must_use]
+pub fn gimbal_angles(direction: DVec3) -> (f64, f64) {
+    let u = direction.normalize_or(DVec3::NEG_Y);
+    let pitch = (-u.z).clamp(-1.0, 1.0).asin();
+    let roll = u.x.atan2(-u.y);
+    (roll, pitch)
+}
+
+/// The leg direction (trunk coordinates) that puts a foot `reach` metres from
+/// the hip at the horizontal world displacement `offset` from the hip.
+#[must_use]
+pub fn leg_direction(trunk_rot: DMat3, offset: DVec3, reach: f64) -> DVec3 {
+    let horizontal = DVec3::new(offset.x, 0.0, offset.z);
+    let h = horizontal.length().min(0.95 * reach);
+    let horizontal = horizontal.normalize_or_zero() * h;
+    let world = DVec3::new(horizontal.x, -(reach * reach - h * h).sqrt(), horizontal.z);
+    trunk_rot.transpose() * world
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DQuat;
+
+    #[test]
+    fn gimbal_angles_reproduce_the_direction() {
+        for dir in [
+            DVec3::new(0.2, -0.9, 0.3),
+            DVec3::new(-0.1, -1.0, -0.4),
+            DVec3::NEG_Y,
+        ] {
+            let (roll, pitch) = gimbal_angles(dir);
+            let back = DQuat::from_rotation_z(roll) * DQuat::from_rotation_x(pitch) * DVec3::NEG_Y;
+            assert!((back - dir.normalize()).length() < 1e-12, "{dir} → {back}");
+        }
+    }
+
+    #[test]
+    fn neutral_point_is_half_the_stance_travel() {
+        let v = DVec3::new(0.0, 0.3, 2.0);
+        let d = foot_displacement(v, v, 0.2, 0.1);
+        assert!((d - DVec3::new(0.0, 0.0, 0.2)).length() < 1e-12);
+        // Too slow: the foot lands closer, so the body accelerates.
+        let slow = foot_displacement(v, v * 1.5, 0.2, 0.1);
+        assert!(slow.z < d.z);
+    }
+}
