@@ -36,6 +36,9 @@ pub struct BipedRunParams {
     pub hop_gain: f64,
     /// Foot placement gain k_ẋ (s), eq. 3.
     pub placement_gain_s: f64,
+    /// Integral gain on each step's speed error (per step): removes the
+    /// steady speed error eq. 3 alone leaves.
+    pub speed_integral_gain: f64,
     /// Hip servo gains for positioning legs (N·m/rad, N·m·s/rad).
     pub swing_kp: f64,
     /// Hip swing damping (N·m·s/rad).
@@ -55,6 +58,11 @@ pub struct BipedRunParams {
     pub leg_yaw_kv: f64,
     /// Largest hip torque (N·m).
     pub max_hip_torque: f64,
+    /// Largest trunk-yaw torque through the stance leg's yaw joint (N·m).
+    pub max_yaw_torque: f64,
+    /// How fast a leg's rest length may change (m/s): a leg snapped short
+    /// would jerk the trunk through the offset hips.
+    pub leg_rate_mps: f64,
 }
 
 impl Default for BipedRunParams {
@@ -70,6 +78,7 @@ impl Default for BipedRunParams {
             hop_height_m: 0.10,
             hop_gain: 0.3,
             placement_gain_s: 0.08,
+            speed_integral_gain: 0.3,
             swing_kp: 150.0,
             swing_kv: 8.0,
             posture_kp: 1500.0,
@@ -79,6 +88,8 @@ impl Default for BipedRunParams {
             leg_yaw_kp: 2.0,
             leg_yaw_kv: 0.1,
             max_hip_torque: 400.0,
+            max_yaw_torque: 30.0,
+            leg_rate_mps: 1.0,
         }
     }
 }
@@ -99,6 +110,12 @@ pub struct BipedRun {
     apex_height: f64,
     thrust: f64,
     descending: bool,
+    /// Accumulated speed correction added to the desired speed (m/s).
+    speed_bias: f64,
+    /// Where the centre of mass was at the last lift-off (m) and when (s).
+    last_liftoff: (glam::DVec3, f64),
+    /// Each leg's rest length as it moves toward its target (m).
+    rest: [f64; 2],
     /// Scale of lengths (the creature's L).
     scale: f64,
 }
@@ -117,6 +134,9 @@ impl BipedRun {
             apex_height: f64::NEG_INFINITY,
             thrust: params.thrust_m * scale,
             descending: true,
+            speed_bias: 0.0,
+            last_liftoff: (DVec3::ZERO, f64::NAN),
+            rest: [params.landing_rest_m * scale, params.idle_rest_m * scale],
             scale,
         }
     }
@@ -149,14 +169,16 @@ impl BipedRun {
                     self.touchdown_time = input.time;
                 }
             }
-            Phase::Loading if qd < 0.0 && q < p.landing_rest_m * l - 0.002 * l => {
-                self.phase = Phase::Compression
-            }
+            Phase::Loading if q < (p.landing_rest_m - 0.005) * l => self.phase = Phase::Compression,
             Phase::Compression if qd >= 0.0 => self.phase = Phase::Thrust,
-            Phase::Thrust if q >= (p.landing_rest_m - 0.005) * l => self.phase = Phase::Unloading,
+            Phase::Thrust if q >= p.landing_rest_m * l + self.thrust - 0.01 * l || q >= -0.005 * l => {
+                self.phase = Phase::Unloading;
+            }
             _ => {}
         }
-        if self.phase != Phase::Flight && !contact.touching {
+        // Lift-off ends a stance only once the leg has thrust; a foot that
+        // bounces off the ground at impact is still landing.
+        if matches!(self.phase, Phase::Thrust | Phase::Unloading) && !contact.touching {
             // Lift-off: the legs swap, the hop's apex adjusts the thrust (eq. 2).
             self.stance_s =
                 (input.time - self.touchdown_time).clamp(0.05 * l.sqrt(), 0.5 * l.sqrt());
@@ -165,6 +187,16 @@ impl BipedRun {
                 self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
             }
             self.liftoff_height = trunk_y;
+            // Speed over the last step against the desired speed.
+            let com = crate::energy::center_of_mass(&input.creature.model, input.data);
+            let (prev, t_prev) = self.last_liftoff;
+            if t_prev.is_finite() && input.time > t_prev {
+                let along = heading_forward(p.heading).dot(com - prev) / (input.time - t_prev);
+                let error = p.speed_mps * l.sqrt() - along;
+                let cap = 0.5 * p.speed_mps.abs().max(0.5) * l.sqrt();
+                self.speed_bias = (self.speed_bias + p.speed_integral_gain * error).clamp(-cap, cap);
+            }
+            self.last_liftoff = (com, input.time);
             self.apex_height = f64::NEG_INFINITY;
             self.active = 1 - self.active;
             self.phase = Phase::Flight;
@@ -182,16 +214,12 @@ impl Controller for BipedRun {
         let data = input.data;
         let trunk_rot = data.world[creature.trunk].rot;
         let velocity = com_velocity(creature, data);
-        let desired = heading_forward(p.heading) * (p.speed_mps * l.sqrt());
+        let desired = heading_forward(p.heading) * (p.speed_mps * l.sqrt() + self.speed_bias);
         let stops = self.leg_stops();
         // Leg lengths: the spring of eq. 1 with a programmable rest.
-        for (i, leg) in creature.legs.iter().enumerate() {
-            let d = &mut drives[leg.spring];
-            d.stops = Some(stops);
-            d.spring.stiffness = p.leg_stiffness * l * l;
-            d.spring.damping = p.leg_damping * l.powf(2.5);
-            d.feedforward = 0.0;
-            d.spring.rest = if i != self.active {
+        let step = p.leg_rate_mps * l.sqrt() * input.dt;
+        for (i, leg) in creature.legs.iter().enumerate().take(2) {
+            let target = if i != self.active {
                 p.idle_rest_m * l
             } else {
                 match self.phase {
@@ -203,6 +231,13 @@ impl Controller for BipedRun {
                     _ => p.landing_rest_m * l,
                 }
             };
+            self.rest[i] += (target - self.rest[i]).clamp(-step, step);
+            let d = &mut drives[leg.spring];
+            d.stops = Some(stops);
+            d.spring.stiffness = p.leg_stiffness * l * l;
+            d.spring.damping = p.leg_damping * l.powf(2.5);
+            d.feedforward = 0.0;
+            d.spring.rest = self.rest[i];
         }
         // The active leg: placed for landing in flight, posture servo in stance.
         let active = &creature.legs[self.active];
@@ -231,7 +266,7 @@ impl Controller for BipedRun {
                     0.0,
                 );
             }
-            Phase::Loading | Phase::Unloading => {
+            Phase::Loading => {
                 for &j in &active.hip[..2] {
                     drives[j].torque(0.0);
                 }
@@ -241,7 +276,7 @@ impl Controller for BipedRun {
                     0.0,
                 );
             }
-            Phase::Compression | Phase::Thrust => {
+            Phase::Compression | Phase::Thrust | Phase::Unloading => {
                 // Eq. 4 on pitch and roll: the torque the trunk needs, applied
                 // by the hip joints as its reaction.
                 let err = attitude_error(creature, data, p.heading, 0.0);
@@ -253,13 +288,17 @@ impl Controller for BipedRun {
                 let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
                 drives[active.hip[0]].torque((-torque.dot(roll_axis)).clamp(-max, max));
                 drives[active.hip[1]].torque((-torque.dot(pitch_axis)).clamp(-max, max));
+                // The leg turns on a tiny inertia: only a torque the loaded
+                // foot's torsional grip can hold.
                 let yaw = -err.y * p.yaw_kp * l.powi(4) - rate.y * p.yaw_kv * l.powf(4.5);
-                drives[active.hip[2]].torque((-yaw).clamp(-max, max));
+                let grip = p.max_yaw_torque * l.powi(4);
+                drives[active.hip[2]].torque((-yaw).clamp(-grip, grip));
             }
         }
-        // The idle leg mirrors the active one's pitch, hanging under its hip.
-        let active_pitch = data.q[active.hip[1]];
-        set_hip(drives, &idle.hip[..2], [0.0, -active_pitch], kp, kv, max);
+        // The idle leg mirrors the active one, so the two legs' swings react
+        // on the trunk with opposite torques and cancel.
+        let mirror = [-data.q[active.hip[0]], -data.q[active.hip[1]]];
+        set_hip(drives, &idle.hip[..2], mirror, kp, kv, max);
         drives[idle.hip[2]].servo(p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.powf(4.5), 0.0);
     }
 }
