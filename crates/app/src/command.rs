@@ -84,7 +84,8 @@ impl Lab {
             serde_json::from_str(json).map_err(|e| format!("command is not JSON: {e}"))?;
         let object: &Map<String, Value> =
             value.as_object().ok_or("command must be a JSON object")?;
-        const KNOWN: [&str; 32] = [
+        const KNOWN: [&str; 33] = [
+            "hop_height_m",
             "engine",
             "preset",
             "preset_json",
@@ -128,7 +129,7 @@ impl Lab {
         if let Some(v) = get("engine") {
             let name = text("engine", v)?;
             let engine = gaitlab_core::preset::Engine::parse(name)
-                .ok_or_else(|| format!("engine: unknown engine {name:?} (ik, poda)"))?;
+                .ok_or_else(|| format!("engine: unknown engine {name:?} (ik, poda, physics)"))?;
             self.set_engine(engine)?;
         }
         if let Some(v) = get("preset") {
@@ -146,6 +147,7 @@ impl Lab {
             "speed_mps",
             "stroke_m",
             "leg_force_n",
+            "hop_height_m",
         ] {
             if let Some(v) = get(key) {
                 let value = v
@@ -311,7 +313,34 @@ impl Lab {
             "custom_preset": self.custom_preset.is_some(),
             "engine": self.creature.scenario.engine.name(),
             "mode": self.settings.mode.name(),
-            "gait": self.driver.poda().map(gaitlab_motion::PodaDriver::gait_name),
+            "gait": self
+                .driver
+                .poda()
+                .map(gaitlab_motion::PodaDriver::gait_name)
+                .or_else(|| self.driver.physics().map(gaitlab_physics::PhysicsDriver::gait)),
+            "physics": self.driver.physics().map(|driver| {
+                let s = driver.summary();
+                let probe = driver.probe();
+                json!({
+                    "model": driver.params().model.name(),
+                    "scale": driver.params().scale,
+                    "phase": driver.phase_name(),
+                    "speed_desired_mps": driver.params().speed_mps,
+                    "hop_height_m": driver.params().hop_height_m,
+                    "speed_mean_mps": s.speed_mean_mps,
+                    "fell": s.fell,
+                    "resets": driver.resets(),
+                    "height_m": probe.height_m,
+                    "pitch_deg": probe.pitch_deg,
+                    "roll_deg": probe.roll_deg,
+                    "stride_length_m": s.stride_length_m,
+                    "stride_duration_s": s.stride_duration_s,
+                    "flight_duration_s": s.flight_duration_s,
+                    "stance_duration_s": s.stance_duration_s,
+                    "friction_needed_max": s.friction_needed_max,
+                    "steps": driver.sim().steps,
+                })
+            }),
             "poda": self.driver.poda().map(|driver| {
                 let gait = driver.gait();
                 json!({

@@ -11,6 +11,7 @@ use gaitlab_core::preset::{Creature, load_bundled};
 use gaitlab_core::{Kinematics, RootTransform};
 use gaitlab_motion::poda::GaitError;
 use gaitlab_motion::{PodaDriver, ThesisDriver};
+use gaitlab_physics::PhysicsDriver;
 use glam::DMat3;
 
 use crate::history::History;
@@ -26,6 +27,18 @@ const MAX_FRAME_ADVANCE_S: f64 = 0.1;
 /// A monotonic clock in milliseconds, supplied by the platform (the core and the
 /// lab read no clocks themselves).
 pub type Clock = Box<dyn Fn() -> f64>;
+
+/// The physics engine's body plot: trunk height (m), first leg's length (m),
+/// vertical ground force (body weights) and the state machine's state (0 flight … 4 unloading).
+pub const PHYSICS_BODY_SERIES: [&str; 4] = [
+    "height (m)",
+    "leg length (m)",
+    "ground force (× weight)",
+    "state (0–4)",
+];
+
+/// The physics engine's attitude plot, degrees.
+pub const PHYSICS_ATTITUDE_SERIES: [&str; 2] = ["pitch (°)", "roll (°)"];
 
 /// Most joints plotted at once.
 pub const MAX_PLOT_JOINTS: usize = 8;
@@ -154,6 +167,11 @@ fn default_creature() -> Creature {
 }
 
 fn driver_for(creature: &Creature, settings: &Settings) -> Result<LabDriver, String> {
+    if creature.scenario.engine == Engine::Physics {
+        return PhysicsDriver::new(creature)
+            .map(|driver| LabDriver::Physics(Box::new(driver)))
+            .map_err(|e| format!("preset {}: {e}", creature.name));
+    }
     if creature.scenario.engine == Engine::Poda {
         return PodaDriver::new(creature)
             .map(|driver| LabDriver::Poda(Box::new(driver)))
@@ -207,7 +225,7 @@ impl Lab {
                 }
             }
         };
-        let kinematics = Kinematics::new(&creature.skeleton);
+        let kinematics = Kinematics::new(driver.skeleton());
         let mut lab = Self {
             settings,
             history: History::default(),
@@ -318,7 +336,7 @@ impl Lab {
 
     fn install(&mut self, creature: Creature, custom: Option<String>) -> Result<(), String> {
         let driver = driver_for(&creature, &self.settings)?;
-        self.kinematics = Kinematics::new(&creature.skeleton);
+        self.kinematics = Kinematics::new(driver.skeleton());
         self.creature = creature;
         self.driver = driver;
         self.custom_preset = custom;
@@ -406,10 +424,14 @@ impl Lab {
             return Ok(());
         }
         let name = match (engine, self.creature.name.as_str()) {
-            (Engine::Poda, "human") => "poda-biped",
+            (Engine::Poda, "human" | "raibert-biped" | "raibert-kangaroo") => "poda-biped",
             (Engine::Poda, _) => "poda-quadruped",
-            (Engine::Ik, "poda-quadruped") => "ik-quadruped",
+            (Engine::Ik, "poda-quadruped" | "raibert-quadruped") => "ik-quadruped",
             (Engine::Ik, _) => "human",
+            (Engine::Physics, "poda-quadruped" | "ik-quadruped" | "hexapod" | "insect-14") => {
+                "raibert-quadruped"
+            }
+            (Engine::Physics, _) => "raibert-biped",
         };
         self.set_preset(name)
     }
@@ -420,6 +442,13 @@ impl Lab {
     /// `gait: reason` when the engine has no gaits or the name is unknown for
     /// the creature's leg count; nothing changes.
     pub fn set_gait(&mut self, name: &str) -> Result<(), String> {
+        if let Some(driver) = self.driver.physics_mut() {
+            driver
+                .set_gait(name)
+                .map_err(|e| format!("gait: {}", e.reason))?;
+            self.link_changed = true;
+            return Ok(());
+        }
         let Some(driver) = self.driver.poda_mut() else {
             return Err(format!(
                 "gait: engine {} has no gaits (use mode)",
@@ -441,6 +470,28 @@ impl Lab {
     /// `key: reason` when the engine has no gait, the key is unknown, or the
     /// value (or a value derived from it) is out of range; nothing changes.
     pub fn edit_gait(&mut self, key: &str, value: f64) -> Result<(), String> {
+        if let Some(driver) = self.driver.physics_mut() {
+            return match key {
+                "speed_mps" => {
+                    let max = gaitlab_core::preset::physics::MAX_PHYSICS_SPEED_MPS;
+                    if !(value.is_finite() && value.abs() <= max) {
+                        return Err(format!("speed_mps: must be within ±{max} m/s"));
+                    }
+                    driver.set_speed(value);
+                    Ok(())
+                }
+                "hop_height_m" => {
+                    if !(value.is_finite() && (0.0..=0.5).contains(&value)) {
+                        return Err("hop_height_m: must be a height in [0, 0.5] m".to_owned());
+                    }
+                    driver.set_hop_height(value);
+                    Ok(())
+                }
+                _ => Err(format!(
+                    "{key}: engine physics has no such gait value (speed_mps, hop_height_m)"
+                )),
+            };
+        }
         let Some(driver) = self.driver.poda_mut() else {
             return Err(format!(
                 "{key}: engine {} has no gait",
@@ -557,6 +608,10 @@ impl Lab {
             .collect();
         self.history = History::new(names);
         self.resolve_plot_joints();
+        if self.driver.physics().is_some() {
+            self.history = History::new(PHYSICS_BODY_SERIES.map(str::to_owned).to_vec());
+            self.joint_history = History::new(PHYSICS_ATTITUDE_SERIES.map(str::to_owned).to_vec());
+        }
         self.refresh_scene();
     }
 
@@ -590,6 +645,30 @@ impl Lab {
         for _ in 0..steps {
             self.driver.step(dt);
             self.frame += 1;
+            if let Some(physics) = self.driver.physics_mut() {
+                let message = physics.take_message();
+                let probe = physics.probe();
+                let t = physics.time();
+                self.history.push(
+                    t,
+                    [
+                        probe.height_m,
+                        probe.leg_length_m,
+                        probe.ground_force_bw,
+                        probe.phase_index as f64,
+                    ]
+                    .into_iter(),
+                );
+                self.joint_history
+                    .push(t, [probe.pitch_deg, probe.roll_deg].into_iter());
+                if let Some(message) = message.filter(|m| !m.is_empty()) {
+                    self.report_error(message);
+                }
+                if self.recording {
+                    self.record_frame();
+                }
+                continue;
+            }
             let errors = self
                 .driver
                 .ik_report()
@@ -808,11 +887,12 @@ impl Lab {
     }
 
     fn refresh_scene(&mut self) {
+        // The driver's skeleton: a physics creature's is scaled by L (Table 1).
+        let skeleton = self.driver.skeleton();
         let pose = self.driver.pose();
-        self.kinematics
-            .update(&self.creature.skeleton, &pose.root, &pose.joints);
+        self.kinematics.update(skeleton, &pose.root, &pose.joints);
         self.scene.fill(
-            &self.creature.skeleton,
+            skeleton,
             &self.kinematics,
             pose.root.position,
             self.driver.targets(),

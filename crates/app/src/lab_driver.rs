@@ -1,6 +1,7 @@
 //! The driver a lab runs, by the preset's engine: She 2006's thesis motions
-//! ([`ThesisDriver`]) or Girard & Maciejewski 1985's PODA gaits
-//! ([`PodaDriver`]). Everything generic goes through [`Driver`]; the panels
+//! ([`ThesisDriver`]), Girard & Maciejewski 1985's PODA gaits
+//! ([`PodaDriver`]) or Raibert & Hodgins 1991's simulated runners
+//! ([`PhysicsDriver`]). Everything generic goes through [`Driver`]; the panels
 //! ask for the concrete driver they edit.
 
 use gaitlab_core::Skeleton;
@@ -8,6 +9,7 @@ use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
 use gaitlab_core::ik::Targets;
 use gaitlab_core::pose::Pose;
 use gaitlab_motion::{PodaDriver, ThesisDriver};
+use gaitlab_physics::PhysicsDriver;
 use glam::DVec3;
 
 /// The lab's driver.
@@ -17,6 +19,8 @@ pub enum LabDriver {
     Thesis(Box<ThesisDriver>),
     /// PODA gait synthesis (engine `poda`).
     Poda(Box<PodaDriver>),
+    /// Physical simulation under control (engine `physics`).
+    Physics(Box<PhysicsDriver>),
 }
 
 impl LabDriver {
@@ -24,6 +28,7 @@ impl LabDriver {
         match self {
             LabDriver::Thesis(driver) => driver.as_ref(),
             LabDriver::Poda(driver) => driver.as_ref(),
+            LabDriver::Physics(driver) => driver.as_ref(),
         }
     }
 
@@ -31,6 +36,7 @@ impl LabDriver {
         match self {
             LabDriver::Thesis(driver) => driver.as_mut(),
             LabDriver::Poda(driver) => driver.as_mut(),
+            LabDriver::Physics(driver) => driver.as_mut(),
         }
     }
 
@@ -39,7 +45,7 @@ impl LabDriver {
     pub fn thesis(&self) -> Option<&ThesisDriver> {
         match self {
             LabDriver::Thesis(driver) => Some(driver),
-            LabDriver::Poda(_) => None,
+            _ => None,
         }
     }
 
@@ -47,7 +53,7 @@ impl LabDriver {
     pub fn thesis_mut(&mut self) -> Option<&mut ThesisDriver> {
         match self {
             LabDriver::Thesis(driver) => Some(driver),
-            LabDriver::Poda(_) => None,
+            _ => None,
         }
     }
 
@@ -56,7 +62,7 @@ impl LabDriver {
     pub fn poda(&self) -> Option<&PodaDriver> {
         match self {
             LabDriver::Poda(driver) => Some(driver),
-            LabDriver::Thesis(_) => None,
+            _ => None,
         }
     }
 
@@ -64,7 +70,26 @@ impl LabDriver {
     pub fn poda_mut(&mut self) -> Option<&mut PodaDriver> {
         match self {
             LabDriver::Poda(driver) => Some(driver),
-            LabDriver::Thesis(_) => None,
+            _ => None,
+        }
+    }
+}
+
+impl LabDriver {
+    /// The physics driver, when the engine is `physics`.
+    #[must_use]
+    pub fn physics(&self) -> Option<&PhysicsDriver> {
+        match self {
+            LabDriver::Physics(driver) => Some(driver),
+            _ => None,
+        }
+    }
+
+    /// The physics driver, mutably.
+    pub fn physics_mut(&mut self) -> Option<&mut PhysicsDriver> {
+        match self {
+            LabDriver::Physics(driver) => Some(driver),
+            _ => None,
         }
     }
 }

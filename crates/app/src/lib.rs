@@ -14,6 +14,7 @@ pub mod link;
 mod panels;
 mod panels_gait;
 mod panels_path;
+mod panels_physics;
 pub mod recording;
 pub mod settings;
 mod ui;

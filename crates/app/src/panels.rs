@@ -39,6 +39,7 @@ pub fn engine(ui: &mut egui::Ui, lab: &mut Lab) {
         ui.label("Engine");
         ui.radio_value(&mut engine, Engine::Ik, "IK (She 2006)");
         ui.radio_value(&mut engine, Engine::Poda, "PODA gaits");
+        ui.radio_value(&mut engine, Engine::Physics, "Physics");
     });
     if engine != lab.engine()
         && let Err(error) = lab.set_engine(engine)

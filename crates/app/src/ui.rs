@@ -7,7 +7,7 @@ use egui_plot::{Legend, Line, Plot, PlotPoints};
 use crate::history::History;
 use crate::lab::{Lab, MAX_PLOT_JOINTS};
 use crate::render::viewport;
-use crate::{panels, panels_gait, panels_path};
+use crate::{panels, panels_gait, panels_path, panels_physics};
 
 impl Lab {
     /// Shows the whole lab in `ui` and advances the animation by the frame's time.
@@ -27,7 +27,9 @@ impl Lab {
                     panels::preset(ui, self);
                     panels::buttons(ui, self);
                     ui.separator();
-                    if self.driver.poda().is_some() {
+                    if self.driver.physics().is_some() {
+                        panels_physics::physics(ui, self);
+                    } else if self.driver.poda().is_some() {
                         panels_gait::gait(ui, self);
                         panels_path::path(ui, self);
                     } else {
@@ -123,17 +125,28 @@ impl Lab {
     }
 
     fn plots(&mut self, ui: &mut egui::Ui) {
+        let physics = self.driver.physics().is_some();
         let half = (ui.available_width() - ui.spacing().item_spacing.x).max(0.0) / 2.0;
         let height = ui.available_height();
         ui.horizontal(|ui| {
             ui.allocate_ui(egui::vec2(half, height), |ui| {
                 ui.vertical(|ui| {
-                    ui.label("Effector error (mm)");
-                    series_plot(ui, "gaitlab-error-plot", &self.history, 1e3, 1.0);
+                    if physics {
+                        ui.label("Body: height, leg length, ground force, state");
+                        series_plot(ui, "gaitlab-body-plot", &self.history, 1.0, 1.0);
+                    } else {
+                        ui.label("Effector error (mm)");
+                        series_plot(ui, "gaitlab-error-plot", &self.history, 1e3, 1.0);
+                    }
                 });
             });
             ui.allocate_ui(egui::vec2(half, height), |ui| {
                 ui.vertical(|ui| {
+                    if physics {
+                        ui.label("Trunk attitude (°)");
+                        series_plot(ui, "gaitlab-attitude-plot", &self.joint_history, 1.0, 10.0);
+                        return;
+                    }
                     ui.horizontal(|ui| {
                         ui.label("Joint angles");
                         self.joint_picker(ui);

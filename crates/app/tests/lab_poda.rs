@@ -288,7 +288,11 @@ fn the_engine_selector_swaps_matching_creatures_and_leg_force_lengthens_flights(
     );
     lab.command(r#"{"engine":"ik"}"#).expect("valid");
     assert_eq!(state(&lab)["preset"], "human");
-    let error = lab.command(r#"{"engine":"physics"}"#).expect_err("unknown");
+    lab.command(r#"{"engine":"physics"}"#).expect("valid");
+    assert_eq!(state(&lab)["preset"], "raibert-biped");
+    lab.command(r#"{"engine":"ik"}"#).expect("valid");
+    assert_eq!(state(&lab)["preset"], "human");
+    let error = lab.command(r#"{"engine":"quantum"}"#).expect_err("unknown");
     assert!(error.starts_with("engine:"), "{error}");
 
     lab.command(r#"{"engine":"poda","preset":"poda-quadruped","gait":"pronk"}"#)

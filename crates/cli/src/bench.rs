@@ -17,6 +17,7 @@ use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_core::{Creature, RootTransform};
 use gaitlab_motion::ThesisDriver;
 use gaitlab_motion::frame_bench::{self, FrameBenchOptions, median_and_best};
+use gaitlab_physics::step_bench::{StepBenchOptions, time_steps};
 use serde_json::{Value, json};
 
 use crate::fail::Failure;
@@ -49,6 +50,13 @@ const BUDGETS: [(&str, Method, f64); 3] = [
 /// PODA frame budgets, µs per frame: (preset, budget). The issue asks ≤ 1 ms
 /// for the 63-joint animal.
 const PODA_BUDGETS: [(&str, f64); 1] = [("poda-quadruped", 1000.0)];
+
+/// Physics budgets: (preset, steps per second, real-time factor). The issue
+/// asks ≥ 200 000 steps/s and ≥ 80× real time for the biped with contact.
+const PHYSICS_BUDGETS: [(&str, f64, f64); 1] = [("raibert-biped", 200_000.0, 80.0)];
+
+/// Default physics presets measured.
+const PHYSICS_PRESETS: [&str; 3] = ["raibert-biped", "raibert-quadruped", "raibert-kangaroo"];
 
 /// Default PODA presets measured.
 const PODA_PRESETS: [&str; 4] = ["poda-quadruped", "poda-biped", "hexapod", "insect-14"];
@@ -152,6 +160,7 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
         ["human", "ik-quadruped"]
             .into_iter()
             .chain(PODA_PRESETS)
+            .chain(PHYSICS_PRESETS)
             .map(str::to_owned)
             .collect()
     } else {
@@ -167,8 +176,39 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
     };
     let mut rows = Vec::new();
     let mut poda_rows = Vec::new();
+    let mut physics_rows = Vec::new();
     for name in &presets {
         let creature = load::creature(name)?;
+        if creature.scenario.engine == Engine::Physics {
+            let epoch = Instant::now();
+            let mut clock = || epoch.elapsed().as_secs_f64() * 1e3;
+            let options = StepBenchOptions {
+                repeats: args.repeats,
+                ..StepBenchOptions::default()
+            };
+            let timing = match time_steps(&creature, &options, &mut clock) {
+                Ok(t) => t,
+                // A gait not yet available is reported, not fatal.
+                Err(e) if e.path == "scenario.physics.gait" => {
+                    physics_rows.push(json!({"preset": creature.name, "error": e.to_string()}));
+                    continue;
+                }
+                Err(e) => return Err(Failure::input(e)),
+            };
+            let budget = PHYSICS_BUDGETS.iter().find(|(p, _, _)| p == name);
+            physics_rows.push(json!({
+                "preset": creature.name,
+                "joints": creature.skeleton.joint_count(),
+                "dt_s": timing.dt_s,
+                "steps_per_second": timing.steps_per_second,
+                "steps_per_second_best": timing.steps_per_second_best,
+                "realtime_factor": timing.realtime_factor,
+                "budget_steps_per_second": budget.map(|b| b.1),
+                "budget_realtime_factor": budget.map(|b| b.2),
+                "within_budget": budget.map(|b| timing.steps_per_second >= b.1 && timing.realtime_factor >= b.2),
+            }));
+            continue;
+        }
         if creature.scenario.engine == Engine::Poda {
             // The same per-frame routine as the browser's bench; the method is unused.
             let timing = time_frames(&creature, Method::Sdls, args.repeats)?;
@@ -215,6 +255,7 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
     let report = json!({
         "ik": rows,
         "poda": poda_rows,
+        "physics": physics_rows,
         "cpus": std::thread::available_parallelism().map_or(1, |n| n.get()),
     });
     if args.json {
@@ -236,6 +277,7 @@ fn budget_text(row: &Value, key: &str) -> String {
 
 fn print_table(report: &Value) {
     print_ik_table(report);
+    print_physics_table(report);
     let poda = report["poda"].as_array().into_iter().flatten();
     println!();
     println!(
@@ -251,6 +293,36 @@ fn print_table(report: &Value) {
             row["legs"],
             row["us_per_frame"].as_f64().unwrap_or(f64::NAN),
             row["us_per_frame_best"].as_f64().unwrap_or(f64::NAN),
+            budget
+        );
+    }
+}
+
+fn print_physics_table(report: &Value) {
+    println!();
+    println!(
+        "{:<18} {:>6} {:>12} {:>12} {:>10} {:>16}",
+        "physics preset", "joints", "steps/s", "best", "× real", "budget"
+    );
+    for row in report["physics"].as_array().into_iter().flatten() {
+        if let Some(e) = row["error"].as_str() {
+            println!("{:<18} {e}", row["preset"].as_str().unwrap_or("?"));
+            continue;
+        }
+        let budget = match (
+            row["budget_steps_per_second"].as_f64(),
+            row["within_budget"].as_bool(),
+        ) {
+            (Some(b), Some(ok)) => format!("≥{b:.0} {}", if ok { "ok" } else { "MISS" }),
+            _ => String::new(),
+        };
+        println!(
+            "{:<18} {:>6} {:>12.0} {:>12.0} {:>10.1} {:>16}",
+            row["preset"].as_str().unwrap_or("?"),
+            row["joints"],
+            row["steps_per_second"].as_f64().unwrap_or(f64::NAN),
+            row["steps_per_second_best"].as_f64().unwrap_or(f64::NAN),
+            row["realtime_factor"].as_f64().unwrap_or(f64::NAN),
             budget
         );
     }

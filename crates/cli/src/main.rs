@@ -7,6 +7,7 @@ mod fail;
 mod load;
 mod report;
 mod run;
+mod run_physics;
 mod run_poda;
 mod sink;
 mod track;

@@ -29,6 +29,9 @@ pub struct RunArgs {
     /// Body path file for PODA: `{"kind": "catmull_rom", "points": [[x, z], …], "closed": false}`.
     #[arg(long)]
     pub path: Option<String>,
+    /// Desired speed, m/s (physics engine; default: the preset's).
+    #[arg(long)]
+    pub speed: Option<f64>,
     /// IK method: transpose, pinv, dls, sdls (default: the preset's).
     #[arg(long)]
     pub method: Option<String>,
@@ -81,10 +84,17 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
     match scenario.engine {
         Engine::Ik => {}
         Engine::Poda => return crate::run_poda::run(&creature, args),
+        Engine::Physics => return crate::run_physics::run(&creature, args),
     }
     if args.path.is_some() {
         return Err(Failure::input(format!(
             "--path: engine {} follows its own script; --path is for engine poda",
+            scenario.engine.name()
+        )));
+    }
+    if args.speed.is_some() {
+        return Err(Failure::input(format!(
+            "--speed: engine {} follows its own script; --speed is for engine physics",
             scenario.engine.name()
         )));
     }

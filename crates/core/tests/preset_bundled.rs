@@ -48,7 +48,10 @@ fn every_bundled_preset_builds_and_is_named_after_itself() {
             "poda-quadruped",
             "poda-biped",
             "hexapod",
-            "insect-14"
+            "insect-14",
+            "raibert-biped",
+            "raibert-quadruped",
+            "raibert-kangaroo"
         ]
     );
     assert_eq!(names[0], preset::DEFAULT_PRESET);

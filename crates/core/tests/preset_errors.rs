@@ -376,11 +376,18 @@ fn unknown_missing_and_mistyped_fields_are_named() {
         "format",
         "unknown variant `gaitlab-preset/2`, expected `gaitlab-preset/1`",
     );
-    let json = human_with(set("/scenario/engine", json!("physics")));
+    let json = human_with(set("/scenario/engine", json!("quantum")));
     assert_rejected(
         &json,
         "scenario.engine",
-        "unknown variant `physics`, expected `ik`",
+        "unknown variant `quantum`, expected one of `ik`, `poda`, `physics`",
+    );
+    // Engine physics without its model, and a physics section on engine ik.
+    let json = human_with(set("/scenario/engine", json!("physics")));
+    assert_rejected(
+        &json,
+        "scenario.physics",
+        "engine \"physics\" needs the creature's physical model",
     );
     let json = human_with(set("/scenario/mode", json!("jog")));
     assert_rejected(&json, "scenario.mode", "unknown variant `jog`");

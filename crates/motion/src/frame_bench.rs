@@ -128,6 +128,12 @@ pub fn time_frames(
             Box::new(PodaDriver::new(creature)?),
             scenario.poda_params().iterations_per_frame,
         ),
+        Engine::Physics => {
+            return Err(DriverError::new(
+                "scenario.engine",
+                "physics creatures are timed in steps per second by gaitlab-physics's bench",
+            ));
+        }
     };
     for _ in 0..options.warmup_frames {
         driver.step(options.frame_s);

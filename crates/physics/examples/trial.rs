@@ -12,7 +12,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let speed: f64 = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1.5);
     let secs: f64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(5.0);
     let trace = args.get(3).is_some();
-    let env = |k: &str, d: f64| std::env::var(k).ok().and_then(|v| v.parse().ok()).unwrap_or(d);
+    let env = |k: &str, d: f64| {
+        std::env::var(k)
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(d)
+    };
     let g0 = GroundParams::default();
     let ground = GroundParams {
         vertical_damping: env("GVD", g0.vertical_damping),
@@ -54,8 +59,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let f = sim.contacts[ctl.active].position;
             println!(
                 "{:.3} {:11} act {} roll {:+5.1} rate {:+5.2} pitch {:+5.1} rate {:+5.2} vx {:+.2} vz {:+.2} foot-com x {:+.3} z {:+.3} y {:.3}",
-                sim.time, ctl.phase.name(), ctl.active, e.z.to_degrees(), w.z, e.x.to_degrees(), w.x, v.x, v.z,
-                f.x - com.x, f.z - com.z, com.y
+                sim.time,
+                ctl.phase.name(),
+                ctl.active,
+                e.z.to_degrees(),
+                w.z,
+                e.x.to_degrees(),
+                w.x,
+                v.x,
+                v.z,
+                f.x - com.x,
+                f.z - com.z,
+                com.y
             );
         }
         if trace && sim.time - last_print >= 0.01 {

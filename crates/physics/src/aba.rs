@@ -47,11 +47,15 @@ pub fn forward_dynamics(model: &Model, data: &mut Data) -> Result<(), DynamicsEr
 ///
 /// # Errors
 /// As [`forward_dynamics`].
+#[expect(
+    clippy::needless_range_loop,
+    reason = "body indices address several parallel arrays, as in Featherstone's pseudocode"
+)]
 pub fn accelerations(model: &Model, data: &mut Data) -> Result<(), DynamicsError> {
     let bodies = model.bodies();
     // Pass 1: rigid-body inertias and bias forces.
     for i in 0..bodies.len() {
-        let inertia = bodies[i].spatial_inertia();
+        let inertia = *model.inertia(i);
         let v = data.velocity[i];
         data.art_inertia[i] = inertia;
         data.art_bias[i] =

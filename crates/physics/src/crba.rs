@@ -33,6 +33,10 @@ fn columns(model: &Model, i: usize) -> Vec<(usize, Motion)> {
 
 /// The mass matrix `H(q)` (`nv × nv`). Runs kinematics.
 #[must_use]
+#[expect(
+    clippy::needless_range_loop,
+    reason = "body indices address several parallel arrays, as in Featherstone's pseudocode"
+)]
 pub fn mass_matrix(model: &Model, data: &mut Data) -> DMatrix<f64> {
     crate::kinematics::kinematics(model, data);
     let bodies = model.bodies();

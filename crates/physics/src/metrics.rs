@@ -64,6 +64,9 @@ pub struct GaitSummary {
     pub peak_vertical_accel_g: f64,
     /// Largest |f_t| / f_n at any foot carrying ≥ 10 % of body weight.
     pub friction_needed_max: f64,
+    /// Mean per-stride peak-to-peak angle of the tail's base joint relative
+    /// to the trunk (deg), for creatures with a tail.
+    pub tail_wag_deg: Option<f64>,
     /// Every flight period after settling.
     pub flights: Vec<FlightPeriod>,
     /// Every stance after settling, per leg.
@@ -89,6 +92,8 @@ pub struct GaitRecorder {
     roll_range: (f64, f64),
     pitch_spans: Vec<f64>,
     roll_spans: Vec<f64>,
+    tail_range: (f64, f64),
+    tail_spans: Vec<f64>,
     start: Option<(f64, DVec3)>,
     last: (f64, DVec3),
     fell: bool,
@@ -114,6 +119,8 @@ impl GaitRecorder {
             roll_range: (f64::INFINITY, f64::NEG_INFINITY),
             pitch_spans: Vec::new(),
             roll_spans: Vec::new(),
+            tail_range: (f64::INFINITY, f64::NEG_INFINITY),
+            tail_spans: Vec::new(),
             start: None,
             last: (0.0, DVec3::ZERO),
             fell: false,
@@ -201,6 +208,10 @@ impl GaitRecorder {
             self.peak_accel = self.peak_accel.max(vertical / weight);
             self.pitch_range = (self.pitch_range.0.min(pitch), self.pitch_range.1.max(pitch));
             self.roll_range = (self.roll_range.0.min(roll), self.roll_range.1.max(roll));
+            if let Some(&k) = c.tail.first() {
+                let tail = d.q[k].to_degrees();
+                self.tail_range = (self.tail_range.0.min(tail), self.tail_range.1.max(tail));
+            }
         }
     }
 
@@ -211,10 +222,20 @@ impl GaitRecorder {
                 self.pitch_spans
                     .push(self.pitch_range.1 - self.pitch_range.0);
                 self.roll_spans.push(self.roll_range.1 - self.roll_range.0);
+                if self.tail_range.0.is_finite() {
+                    self.tail_spans.push(self.tail_range.1 - self.tail_range.0);
+                }
             }
         }
+        self.tail_range = (f64::INFINITY, f64::NEG_INFINITY);
         self.pitch_range = (f64::INFINITY, f64::NEG_INFINITY);
         self.roll_range = (f64::INFINITY, f64::NEG_INFINITY);
+    }
+
+    /// Whether the creature has fallen since the recorder started.
+    #[must_use]
+    pub fn fell(&self) -> bool {
+        self.fell
     }
 
     /// The run's figures so far.
@@ -253,6 +274,8 @@ impl GaitRecorder {
             roll_magnitude_deg: mean(&mut self.roll_spans.iter().copied()),
             peak_vertical_accel_g: self.peak_accel,
             friction_needed_max: self.friction,
+            tail_wag_deg: (!self.tail_spans.is_empty())
+                .then(|| mean(&mut self.tail_spans.iter().copied())),
             flights: self.flights.clone(),
             stances: self.stances.clone(),
         }

@@ -84,6 +84,8 @@ impl std::error::Error for ModelError {}
 #[derive(Clone, Debug, PartialEq)]
 pub struct Model {
     bodies: Vec<Body>,
+    /// Each body's spatial inertia about its origin (cached from the body).
+    inertias: Vec<Inertia>,
     /// Each body's joint coordinate index (`None` for the free root).
     dof: Vec<Option<usize>>,
     dof_count: usize,
@@ -160,7 +162,9 @@ impl Model {
             });
         }
         let free_base = bodies[0].joint == Joint::Free;
+        let inertias = bodies.iter().map(Body::spatial_inertia).collect();
         Ok(Self {
+            inertias,
             bodies,
             dof,
             dof_count: count,
@@ -173,6 +177,12 @@ impl Model {
     #[must_use]
     pub fn bodies(&self) -> &[Body] {
         &self.bodies
+    }
+
+    /// Body `i`'s spatial inertia about its origin (body coordinates).
+    #[must_use]
+    pub fn inertia(&self, body: usize) -> &Inertia {
+        &self.inertias[body]
     }
 
     /// Body `i`'s joint coordinate index (`None` for the free root).

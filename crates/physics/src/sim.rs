@@ -86,6 +86,20 @@ pub struct ControlInput<'a> {
 pub trait Controller {
     /// Update `drives` (one per joint coordinate).
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]);
+
+    /// The state machine's current state, for people and plots.
+    fn phase_name(&self) -> &'static str {
+        ""
+    }
+
+    /// Change the desired forward speed (m/s at scale 1) while running.
+    fn set_speed(&mut self, _speed_mps: f64) {}
+
+    /// Change the desired heading (rad about +y; 0 = +z) while running.
+    fn set_heading(&mut self, _heading: f64) {}
+
+    /// Change the desired hop height (m at scale 1) while running.
+    fn set_hop_height(&mut self, _height_m: f64) {}
 }
 
 /// Options of the simulation loop.
@@ -217,6 +231,7 @@ impl Sim {
         crate::integrate::integrate(model, &mut self.data, dt);
         self.time += dt;
         self.steps += 1;
+        self.accumulator = (self.accumulator - dt).max(0.0);
         self.guard()
     }
 
@@ -246,6 +261,27 @@ impl Sim {
         Ok(())
     }
 
+    /// Add `frame_dt` seconds of display time to the accumulator.
+    pub fn accumulate(&mut self, frame_dt: f64) {
+        self.accumulator += frame_dt.max(0.0);
+    }
+
+    /// Whether the accumulator holds at least one step; taking the step is
+    /// the caller's, who then takes [`Sim::options`]`.dt` off with
+    /// [`Sim::step`] — see [`Sim::advance`] for the whole loop.
+    #[must_use]
+    pub fn due(&self) -> bool {
+        self.accumulator >= self.options.dt
+    }
+
+    /// After a caller-driven loop: drop what could not be stepped when the
+    /// step budget ran out, so a slow frame cannot snowball.
+    pub fn settle_accumulator(&mut self) {
+        if self.accumulator >= self.options.dt * f64::from(self.options.max_steps_per_advance) {
+            self.accumulator = 0.0;
+        }
+    }
+
     /// Advance by `frame_dt` seconds of display time on the fixed-step
     /// accumulator; returns the number of steps taken.
     ///
@@ -258,9 +294,8 @@ impl Sim {
     ) -> Result<u32, BlowUp> {
         self.accumulator += frame_dt.max(0.0);
         let mut taken = 0;
-        while self.accumulator >= self.options.dt && taken < self.options.max_steps_per_advance {
+        while self.due() && taken < self.options.max_steps_per_advance {
             self.step(controller)?;
-            self.accumulator -= self.options.dt;
             taken += 1;
         }
         if taken == self.options.max_steps_per_advance {

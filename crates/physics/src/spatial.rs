@@ -315,6 +315,10 @@ impl Inertia {
     /// Solve `self · a = f` for a motion `a` (Cholesky; `None` when the
     /// inertia is not positive definite).
     #[must_use]
+    #[expect(
+        clippy::needless_range_loop,
+        reason = "the Cholesky factorisation reads best in matrix indices"
+    )]
     pub fn solve(&self, f: Force) -> Option<Motion> {
         let mut m = self.to_array();
         // In-place Cholesky: lower triangle holds L.

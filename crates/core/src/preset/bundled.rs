@@ -25,6 +25,18 @@ const BUNDLED: &[(&str, &str)] = &[
         "insect-14",
         include_str!("../../../../presets/insect-14.json"),
     ),
+    (
+        "raibert-biped",
+        include_str!("../../../../presets/raibert-biped.json"),
+    ),
+    (
+        "raibert-quadruped",
+        include_str!("../../../../presets/raibert-quadruped.json"),
+    ),
+    (
+        "raibert-kangaroo",
+        include_str!("../../../../presets/raibert-kangaroo.json"),
+    ),
 ];
 
 /// Name of the preset a front end opens when none is asked for.

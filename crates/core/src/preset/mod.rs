@@ -14,6 +14,7 @@
 mod build;
 mod bundled;
 mod error;
+pub mod physics;
 pub mod poda;
 mod scenario;
 mod schema;
@@ -23,6 +24,10 @@ mod validate;
 pub use build::Creature;
 pub use bundled::{DEFAULT_PRESET, bundled, bundled_json, bundled_names, load_bundled};
 pub use error::{PresetError, ROOT_PATH};
+pub use physics::{
+    MassSpec, ObstacleSpec, PhysicsBase, PhysicsBodySpec, PhysicsLegSpec, PhysicsModel,
+    PhysicsParams,
+};
 pub use poda::{PathKindSpec, PathSpec, PodaLegSpec, PodaParams, check_transfer_keys};
 pub use scenario::{DEFAULT_FPS, Engine, MAX_FPS, Scenario};
 pub use schema::{

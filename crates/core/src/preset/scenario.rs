@@ -9,6 +9,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::physics::PhysicsParams;
 use super::poda::PodaParams;
 use super::thesis::{ThesisMode, ThesisParams};
 use crate::ik::{IkOptions, Method};
@@ -28,11 +29,13 @@ pub enum Engine {
     Ik,
     /// Girard & Maciejewski 1985 (PODA): gait-driven footholds and foot splines.
     Poda,
+    /// Raibert & Hodgins 1991: physically simulated running under control.
+    Physics,
 }
 
 impl Engine {
     /// Every engine.
-    pub const ALL: [Engine; 2] = [Engine::Ik, Engine::Poda];
+    pub const ALL: [Engine; 3] = [Engine::Ik, Engine::Poda, Engine::Physics];
 
     /// The name used in presets, URLs and the CLI.
     #[must_use]
@@ -40,6 +43,7 @@ impl Engine {
         match self {
             Engine::Ik => "ik",
             Engine::Poda => "poda",
+            Engine::Physics => "physics",
         }
     }
 
@@ -85,6 +89,9 @@ pub struct Scenario {
     /// PODA gait parameters (engine `poda` only); every field optional.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub poda: Option<PodaParams>,
+    /// Physical model and controller (engine `physics` only; required there).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub physics: Option<PhysicsParams>,
 }
 
 impl Default for Scenario {
@@ -97,6 +104,7 @@ impl Default for Scenario {
             fps: DEFAULT_FPS,
             thesis: ThesisParams::default(),
             poda: None,
+            physics: None,
         }
     }
 }

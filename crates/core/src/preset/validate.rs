@@ -530,6 +530,15 @@ fn check_scenario(preset: &Preset, names: &HashMap<&str, NamePlace>) -> Result<(
         ));
     }
     check_ik_options("scenario.ik", &scenario.ik)?;
+    if scenario.physics.is_some() && scenario.engine != Engine::Physics {
+        return Err(PresetError::new(
+            "scenario.physics",
+            format!(
+                "belongs to engine \"physics\"; this scenario's engine is \"{}\"",
+                scenario.engine.name()
+            ),
+        ));
+    }
     match scenario.engine {
         Engine::Ik => {
             if scenario.poda.is_some() {
@@ -541,6 +550,16 @@ fn check_scenario(preset: &Preset, names: &HashMap<&str, NamePlace>) -> Result<(
             check_thesis(&preset.skeleton, names, &scenario.thesis)
         }
         Engine::Poda => check_poda(&preset.skeleton, names, &scenario.poda_params()),
+        Engine::Physics => {
+            let Some(physics) = &scenario.physics else {
+                return Err(PresetError::new(
+                    "scenario.physics",
+                    "engine \"physics\" needs the creature's physical model",
+                ));
+            };
+            let known = |n: &str| matches!(names.get(n), Some(NamePlace::Joint(_)));
+            physics.check("scenario.physics", &known)
+        }
     }
 }
 

@@ -77,12 +77,12 @@ impl Default for BipedRunParams {
             idle_rest_m: -0.18,
             hop_height_m: 0.10,
             hop_gain: 0.3,
-            placement_gain_s: 0.08,
+            placement_gain_s: 0.05,
             speed_integral_gain: 0.3,
             swing_kp: 150.0,
             swing_kv: 8.0,
-            posture_kp: 1500.0,
-            posture_kv: 100.0,
+            posture_kp: 1000.0,
+            posture_kv: 150.0,
             yaw_kp: 200.0,
             yaw_kv: 20.0,
             leg_yaw_kp: 2.0,
@@ -171,7 +171,9 @@ impl BipedRun {
             }
             Phase::Loading if q < (p.landing_rest_m - 0.005) * l => self.phase = Phase::Compression,
             Phase::Compression if qd >= 0.0 => self.phase = Phase::Thrust,
-            Phase::Thrust if q >= p.landing_rest_m * l + self.thrust - 0.01 * l || q >= -0.005 * l => {
+            Phase::Thrust
+                if q >= p.landing_rest_m * l + self.thrust - 0.01 * l || q >= -0.005 * l =>
+            {
                 self.phase = Phase::Unloading;
             }
             _ => {}
@@ -194,7 +196,8 @@ impl BipedRun {
                 let along = heading_forward(p.heading).dot(com - prev) / (input.time - t_prev);
                 let error = p.speed_mps * l.sqrt() - along;
                 let cap = 0.5 * p.speed_mps.abs().max(0.5) * l.sqrt();
-                self.speed_bias = (self.speed_bias + p.speed_integral_gain * error).clamp(-cap, cap);
+                self.speed_bias =
+                    (self.speed_bias + p.speed_integral_gain * error).clamp(-cap, cap);
             }
             self.last_liftoff = (com, input.time);
             self.apex_height = f64::NEG_INFINITY;
@@ -206,6 +209,22 @@ impl BipedRun {
 }
 
 impl Controller for BipedRun {
+    fn phase_name(&self) -> &'static str {
+        self.phase.name()
+    }
+
+    fn set_speed(&mut self, speed_mps: f64) {
+        self.params.speed_mps = speed_mps;
+    }
+
+    fn set_heading(&mut self, heading: f64) {
+        self.params.heading = heading;
+    }
+
+    fn set_hop_height(&mut self, height_m: f64) {
+        self.params.hop_height_m = height_m;
+    }
+
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         self.advance_phase(input);
         let p = self.params;

@@ -1,0 +1,103 @@
+//! The physics panel (Raibert & Hodgins 1991): the gait, sliders for the
+//! desired speed and hop height the controllers regulate (eqs. 2–3), the
+//! state machine's state (Figure 4), and the live Table-2 figures beside the
+//! paper's animation column.
+
+use gaitlab_core::driver::Driver as _;
+use gaitlab_physics::driver::gait_names;
+use gaitlab_physics::table2::{measured, paper_rows};
+
+use crate::lab::Lab;
+
+/// The physics panel (shown for physics creatures).
+pub fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
+    let Some(driver) = lab.driver().physics() else {
+        return;
+    };
+    let current = driver.gait().to_owned();
+    let names = gait_names(driver.sim().creature.species);
+    let mut speed = driver.params().speed_mps;
+    let mut hop = driver.params().hop_height_m.unwrap_or(0.1);
+    let summary = driver.summary();
+    let legs: Vec<String> = driver
+        .sim()
+        .creature
+        .legs
+        .iter()
+        .map(|l| l.name.clone())
+        .collect();
+    let leg_names: Vec<&str> = legs.iter().map(String::as_str).collect();
+    let phase = driver.phase_name();
+    let time = driver.time();
+    let resets = driver.resets();
+    let mut chosen = None;
+    let mut edits: Vec<(&str, f64)> = Vec::new();
+    egui::CollapsingHeader::new("Physics (Raibert & Hodgins)")
+        .default_open(true)
+        .show(ui, |ui| {
+            egui::ComboBox::from_label("Gait")
+                .selected_text(current.as_str())
+                .show_ui(ui, |ui| {
+                    for &name in names {
+                        if ui.selectable_label(name == current, name).clicked() {
+                            chosen = Some(name);
+                        }
+                    }
+                });
+            if ui
+                .add(egui::Slider::new(&mut speed, -1.0..=6.0).text("Desired speed (m/s)"))
+                .on_hover_text("ẋ_d of eq. 3: foot placement about the neutral point regulates it")
+                .changed()
+            {
+                edits.push(("speed_mps", speed));
+            }
+            if ui
+                .add(egui::Slider::new(&mut hop, 0.02..=0.4).text("Hop height (m)"))
+                .on_hover_text("Eq. 2: the thrust in stance is set so each hop reaches this height")
+                .changed()
+            {
+                edits.push(("hop_height_m", hop));
+            }
+            ui.label(format!(
+                "state: {phase} · t = {time:.2} s · resets: {resets}"
+            ));
+            ui.label(format!(
+                "speed {:.2} m/s of {:.2} · friction needed {:.2}",
+                summary.speed_mean_mps, summary.speed_desired_mps, summary.friction_needed_max
+            ));
+            let rows = paper_rows(&current);
+            if rows.is_empty() {
+                ui.label("Table 2 has no column for this gait.");
+            } else {
+                ui.label("Table 2 (after 3 s settling)");
+                egui::Grid::new("gaitlab-table2")
+                    .striped(true)
+                    .show(ui, |ui| {
+                        ui.strong("quantity");
+                        ui.strong("paper");
+                        ui.strong("live");
+                        ui.end_row();
+                        for row in rows {
+                            ui.label(row.label);
+                            ui.label(format!("{:.3}", row.animation));
+                            match measured(&summary, row.quantity, &leg_names) {
+                                Some(v) => ui.label(format!("{v:.3}")),
+                                None => ui.label("—"),
+                            };
+                            ui.end_row();
+                        }
+                    });
+            }
+        });
+    if let Some(name) = chosen
+        && name != current
+        && let Err(error) = lab.set_gait(name)
+    {
+        lab.report_error(error);
+    }
+    for (key, value) in edits {
+        if let Err(error) = lab.edit_gait(key, value) {
+            lab.report_error(error);
+        }
+    }
+}

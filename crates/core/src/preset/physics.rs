@@ -1,0 +1,332 @@
+//! `scenario.physics`: a Raibert & Hodgins 1991 creature as it appears in a
+//! preset — the mass, mass centre and inertia of every body (Table 3), which
+//! joints form each leg (hip, leg spring, knee, foot), the tail and neck,
+//! the gait, desired speed and hop height, the dynamic scale factor L
+//! (Table 1), the integration step and any obstacles.
+//!
+//! The skeleton gives the bodies' geometry: each joint moves one body, the
+//! root is the trunk (a free-floating base) or, for a planar model, fixed in
+//! the world with the base's slides and pitch as the first joints. Only values
+//! are checked here (ranges, names); `gaitlab-physics` checks the structure
+//! its controllers need (leg counts, gait names) when it builds the creature.
+
+use serde::{Deserialize, Serialize};
+
+use super::PresetError;
+
+/// Smallest and largest dynamic scale factor L.
+pub const SCALE_RANGE: (f64, f64) = (0.05, 20.0);
+/// Smallest and largest integration step, seconds.
+pub const DT_RANGE_S: (f64, f64) = (1e-5, 2e-3);
+/// Largest desired speed magnitude, m/s (at scale 1).
+pub const MAX_PHYSICS_SPEED_MPS: f64 = 15.0;
+/// Most obstacles on the ground.
+pub const MAX_OBSTACLES: usize = 32;
+
+/// Which of the paper's controller families drives the creature.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PhysicsModel {
+    /// Two telescoping legs on ball hips: run, both gallops.
+    #[default]
+    Biped,
+    /// Four telescoping legs on gimbal hips: trot, bound, gallop.
+    Quadruped,
+    /// The planar kangaroo: hop (and jump).
+    Kangaroo,
+}
+
+impl PhysicsModel {
+    /// The name used in presets and the CLI.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            PhysicsModel::Biped => "biped",
+            PhysicsModel::Quadruped => "quadruped",
+            PhysicsModel::Kangaroo => "kangaroo",
+        }
+    }
+}
+
+/// How the trunk moves in the world.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PhysicsBase {
+    /// Six degrees of freedom: the skeleton's root is the trunk.
+    #[default]
+    Free,
+    /// Planar: the root is fixed in the world; the skeleton's first joints
+    /// slide and pitch the trunk in the sagittal plane.
+    Planar,
+}
+
+/// A rigid body's mass properties (Table 3's columns).
+///
+/// ```json
+/// {"mass_kg": 1.4, "com_m": [0, -0.095, 0], "inertia_kgm2": [0.017, 0.0014, 0.018]}
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MassSpec {
+    /// Mass (kg), ≥ 0.
+    pub mass_kg: f64,
+    /// Centre of mass in the body's frame (m).
+    #[serde(default)]
+    pub com_m: [f64; 3],
+    /// Principal moments of inertia about the centre of mass along the
+    /// body's axes (kg·m²), each ≥ 0.
+    #[serde(default)]
+    pub inertia_kgm2: [f64; 3],
+}
+
+/// The body a joint moves, with its mass properties.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PhysicsBodySpec {
+    /// The skeleton joint that moves this body.
+    pub joint: String,
+    /// Its mass properties.
+    #[serde(flatten)]
+    pub mass: MassSpec,
+}
+
+/// One leg: its hip joints (proximal first), its springy joint, optional knee,
+/// and the foot's contact point.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PhysicsLegSpec {
+    /// Name for metrics and the UI.
+    pub name: String,
+    /// Hip joints, proximal first: `[roll, pitch]` gimbal, `[roll, pitch,
+    /// yaw]` ball, `[pitch]` planar.
+    pub hip: Vec<String>,
+    /// The leg's spring: the telescoping joint, or the kangaroo's ankle.
+    pub spring: String,
+    /// The kangaroo's knee.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub knee: Option<String>,
+    /// The joint whose body carries the foot.
+    pub foot: String,
+    /// The contact point in that body's frame (m).
+    pub foot_point_m: [f64; 3],
+}
+
+/// A box on the ground ahead of the creature.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ObstacleSpec {
+    /// Distance of its near face along the direction of travel (m).
+    pub at_m: f64,
+    /// Its depth along the direction of travel (m).
+    pub depth_m: f64,
+    /// Its height (m).
+    pub height_m: f64,
+}
+
+/// `scenario.physics`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PhysicsParams {
+    /// The controller family.
+    pub model: PhysicsModel,
+    /// Free or planar base. Default free.
+    #[serde(default)]
+    pub base: PhysicsBase,
+    /// The trunk's mass properties (the root body of a free base).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub trunk: Option<MassSpec>,
+    /// Mass properties of the bodies the joints move; joints not listed move
+    /// massless links (the inner axes of a gimbal or ball hip).
+    pub bodies: Vec<PhysicsBodySpec>,
+    /// The legs.
+    pub legs: Vec<PhysicsLegSpec>,
+    /// Tail joints, base first.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub tail: Vec<String>,
+    /// Neck joint.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub neck: Option<String>,
+    /// Gait name (biped: run, gallop, gallop_alternate; quadruped: trot,
+    /// bound, gallop; kangaroo: hop). Default: the model's first.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub gait: Option<String>,
+    /// Desired forward speed at scale 1 (m/s). Default 1.5.
+    #[serde(default = "default_speed")]
+    pub speed_mps: f64,
+    /// Desired hop height at scale 1 (m); default: the controller's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub hop_height_m: Option<f64>,
+    /// Dynamic scale factor L (Table 1). Default 1.
+    #[serde(default = "default_scale")]
+    pub scale: f64,
+    /// Integration step at scale 1 (s). Default 0.0004 (the paper's).
+    #[serde(default = "default_dt")]
+    pub dt_s: f64,
+    /// Boxes on the ground.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub obstacles: Vec<ObstacleSpec>,
+}
+
+fn default_speed() -> f64 {
+    1.5
+}
+
+fn default_scale() -> f64 {
+    1.0
+}
+
+fn default_dt() -> f64 {
+    0.0004
+}
+
+fn finite3(path: String, v: [f64; 3], max: f64) -> Result<(), PresetError> {
+    if v.iter().all(|x| x.is_finite() && x.abs() <= max) {
+        Ok(())
+    } else {
+        Err(PresetError::new(
+            path,
+            format!("must be three finite numbers within ±{max}"),
+        ))
+    }
+}
+
+impl MassSpec {
+    /// Check the values: mass and moments finite and ≥ 0, centre finite.
+    ///
+    /// # Errors
+    /// The offending field under `prefix`.
+    pub fn check(&self, prefix: &str) -> Result<(), PresetError> {
+        if !(self.mass_kg.is_finite() && (0.0..=1e6).contains(&self.mass_kg)) {
+            return Err(PresetError::new(
+                format!("{prefix}.mass_kg"),
+                "must be a mass in [0, 1e6] kg",
+            ));
+        }
+        finite3(format!("{prefix}.com_m"), self.com_m, 1e3)?;
+        if !self
+            .inertia_kgm2
+            .iter()
+            .all(|x| x.is_finite() && (0.0..=1e6).contains(x))
+        {
+            return Err(PresetError::new(
+                format!("{prefix}.inertia_kgm2"),
+                "must be three moments of inertia in [0, 1e6] kg·m²",
+            ));
+        }
+        Ok(())
+    }
+}
+
+impl PhysicsParams {
+    /// Check every value and that every joint name is one of `joint_names`.
+    ///
+    /// # Errors
+    /// The first offending value, with its JSON path under `prefix`.
+    pub fn check(
+        &self,
+        prefix: &str,
+        joint_names: &dyn Fn(&str) -> bool,
+    ) -> Result<(), PresetError> {
+        let at = |field: &str| format!("{prefix}.{field}");
+        let name = |path: String, n: &str| {
+            if joint_names(n) {
+                Ok(())
+            } else {
+                Err(PresetError::new(path, format!("no joint named \"{n}\"")))
+            }
+        };
+        match (&self.trunk, self.base) {
+            (Some(t), _) => t.check(&at("trunk"))?,
+            (None, PhysicsBase::Free) => {
+                return Err(PresetError::new(
+                    at("trunk"),
+                    "a free base needs the trunk's mass properties",
+                ));
+            }
+            (None, PhysicsBase::Planar) => {}
+        }
+        for (i, body) in self.bodies.iter().enumerate() {
+            let p = format!("{prefix}.bodies[{i}]");
+            name(format!("{p}.joint"), &body.joint)?;
+            if self.bodies[..i].iter().any(|b| b.joint == body.joint) {
+                return Err(PresetError::new(format!("{p}.joint"), "listed twice"));
+            }
+            body.mass.check(&p)?;
+        }
+        if self.legs.is_empty() || self.legs.len() > super::MAX_LIMBS {
+            return Err(PresetError::new(
+                at("legs"),
+                format!("must list 1 to {} legs", super::MAX_LIMBS),
+            ));
+        }
+        for (i, leg) in self.legs.iter().enumerate() {
+            let p = format!("{prefix}.legs[{i}]");
+            if leg.hip.is_empty() || leg.hip.len() > 3 {
+                return Err(PresetError::new(
+                    format!("{p}.hip"),
+                    "must list 1 to 3 hip joints",
+                ));
+            }
+            for (k, h) in leg.hip.iter().enumerate() {
+                name(format!("{p}.hip[{k}]"), h)?;
+            }
+            name(format!("{p}.spring"), &leg.spring)?;
+            if let Some(knee) = &leg.knee {
+                name(format!("{p}.knee"), knee)?;
+            }
+            name(format!("{p}.foot"), &leg.foot)?;
+            finite3(format!("{p}.foot_point_m"), leg.foot_point_m, 1e3)?;
+        }
+        for (i, t) in self.tail.iter().enumerate() {
+            name(format!("{prefix}.tail[{i}]"), t)?;
+        }
+        if let Some(neck) = &self.neck {
+            name(at("neck"), neck)?;
+        }
+        if !(self.speed_mps.is_finite() && self.speed_mps.abs() <= MAX_PHYSICS_SPEED_MPS) {
+            return Err(PresetError::new(
+                at("speed_mps"),
+                format!("must be a speed within ±{MAX_PHYSICS_SPEED_MPS} m/s"),
+            ));
+        }
+        if let Some(h) = self.hop_height_m
+            && !(h.is_finite() && (0.0..=2.0).contains(&h))
+        {
+            return Err(PresetError::new(
+                at("hop_height_m"),
+                "must be a height in [0, 2] m",
+            ));
+        }
+        let (lo, hi) = SCALE_RANGE;
+        if !(self.scale.is_finite() && (lo..=hi).contains(&self.scale)) {
+            return Err(PresetError::new(
+                at("scale"),
+                format!("must be a scale factor in [{lo}, {hi}]"),
+            ));
+        }
+        let (lo, hi) = DT_RANGE_S;
+        if !(self.dt_s.is_finite() && (lo..=hi).contains(&self.dt_s)) {
+            return Err(PresetError::new(
+                at("dt_s"),
+                format!("must be a time step in [{lo}, {hi}] s"),
+            ));
+        }
+        if self.obstacles.len() > MAX_OBSTACLES {
+            return Err(PresetError::new(
+                at("obstacles"),
+                format!("at most {MAX_OBSTACLES} obstacles"),
+            ));
+        }
+        for (i, o) in self.obstacles.iter().enumerate() {
+            let p = format!("{prefix}.obstacles[{i}]");
+            let ok = |v: f64, lo: f64| v.is_finite() && v >= lo && v <= 1e3;
+            if !ok(o.at_m, -1e3) || !ok(o.depth_m, 0.01) || !ok(o.height_m, 0.001) {
+                return Err(PresetError::new(
+                    p,
+                    "needs at_m, depth_m ≥ 0.01 and height_m ≥ 0.001, all within 1000 m",
+                ));
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,476 @@
+//! The physics engine as a gaitlab driver (DESIGN.md "Data flow"): a preset's
+//! creature simulated under its gait's controller on the fixed-step loop of
+//! [`crate::sim`], read out as a [`Pose`] every frame, with the Table-2
+//! figures of [`crate::metrics`] and a guard that resets the creature and
+//! says why when the simulation blows up (Raibert & Hodgins 1991, Figure 2).
+
+use gaitlab_core::driver::Driver;
+use gaitlab_core::preset::{Creature as PresetCreature, PhysicsParams, PresetError};
+use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
+use glam::{DMat3, DVec3};
+
+use crate::control::biped_run::{BipedRun, BipedRunParams};
+use crate::creature::{Creature, Species};
+use crate::ground::{GroundParams, Obstacle};
+use crate::metrics::{GaitRecorder, GaitSummary};
+use crate::preset::creature_from_preset;
+use crate::sim::{Controller, Sim, SimOptions};
+
+/// The gaits of each model, the default first.
+#[must_use]
+pub fn gait_names(species: Species) -> &'static [&'static str] {
+    match species {
+        Species::Biped => &["run"],
+        Species::Quadruped => &[],
+        Species::Kangaroo => &[],
+    }
+}
+
+/// What the live plots show each frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PhysicsProbe {
+    /// Trunk height above the ground (m).
+    pub height_m: f64,
+    /// Trunk pitch (deg, positive nose down).
+    pub pitch_deg: f64,
+    /// Trunk roll (deg).
+    pub roll_deg: f64,
+    /// First leg's hip-to-foot length (m).
+    pub leg_length_m: f64,
+    /// Total vertical ground force over body weight.
+    pub ground_force_bw: f64,
+    /// The state machine's state as its Figure-4 index (0 flight … 4 unloading).
+    pub phase_index: usize,
+    /// Forward speed of the centre of mass (m/s).
+    pub speed_mps: f64,
+}
+
+/// Seconds after a fall before the creature is put back at the start.
+pub const FALL_RESET_S: f64 = 1.5;
+
+/// A physics creature running under control, seen as a [`Driver`].
+#[derive(Clone, Debug)]
+pub struct PhysicsDriver {
+    skeleton: Skeleton,
+    start_root: DVec3,
+    params: PhysicsParams,
+    gait: String,
+    sim: Sim,
+    start: Sim,
+    controller: GaitController,
+    recorder: GaitRecorder,
+    pose: Pose,
+    effectors: Vec<DVec3>,
+    fell_at: Option<f64>,
+    /// Whether a fall puts the creature back at the start after
+    /// [`FALL_RESET_S`] (the app's choice; a measuring run turns it off).
+    pub reset_after_fall: bool,
+    message: Option<String>,
+    resets: u32,
+}
+
+/// The controller of the gait running: one of the paper's state machines.
+#[derive(Clone, Debug)]
+pub enum GaitController {
+    /// Biped running (Figure 4).
+    BipedRun(BipedRun),
+}
+
+impl GaitController {
+    fn inner(&self) -> &dyn Controller {
+        match self {
+            GaitController::BipedRun(c) => c,
+        }
+    }
+
+    fn inner_mut(&mut self) -> &mut dyn Controller {
+        match self {
+            GaitController::BipedRun(c) => c,
+        }
+    }
+}
+
+impl Controller for GaitController {
+    fn control(&mut self, input: &crate::sim::ControlInput<'_>, drives: &mut [crate::sim::Drive]) {
+        self.inner_mut().control(input, drives);
+    }
+
+    fn phase_name(&self) -> &'static str {
+        self.inner().phase_name()
+    }
+
+    fn set_speed(&mut self, speed_mps: f64) {
+        self.inner_mut().set_speed(speed_mps);
+    }
+
+    fn set_heading(&mut self, heading: f64) {
+        self.inner_mut().set_heading(heading);
+    }
+
+    fn set_hop_height(&mut self, height_m: f64) {
+        self.inner_mut().set_hop_height(height_m);
+    }
+}
+
+fn scaled_skeleton(skeleton: &Skeleton, l: f64) -> Result<Skeleton, PresetError> {
+    let joints: Vec<Joint> = skeleton
+        .joints()
+        .iter()
+        .map(|j| {
+            let mut j = j.clone();
+            j.offset *= l;
+            j.size *= l;
+            if j.kind == JointKind::Prismatic {
+                j.limits = j.limits.map(|(a, b)| (a * l, b * l));
+                j.rest *= l;
+                j.center *= l;
+            }
+            j
+        })
+        .collect();
+    let effectors: Vec<Effector> = skeleton
+        .effectors()
+        .iter()
+        .map(|e| Effector {
+            offset: e.offset * l,
+            ..e.clone()
+        })
+        .collect();
+    Skeleton::new(joints, effectors).map_err(|e| PresetError::new("skeleton", e.to_string()))
+}
+
+impl PhysicsDriver {
+    /// The driver of a preset whose engine is `physics`, with the preset's gait.
+    ///
+    /// # Errors
+    /// A [`PresetError`] when the physics section is missing or wrong, or the
+    /// gait is not one of the model's.
+    pub fn new(preset: &PresetCreature) -> Result<Self, PresetError> {
+        let params = preset.scenario.physics.clone().ok_or_else(|| {
+            PresetError::new(
+                "scenario.physics",
+                "engine \"physics\" needs the creature's physical model",
+            )
+        })?;
+        Self::with_params(preset, params)
+    }
+
+    /// The driver with `params` in place of the preset's physics section.
+    ///
+    /// # Errors
+    /// As [`PhysicsDriver::new`].
+    pub fn with_params(
+        preset: &PresetCreature,
+        params: PhysicsParams,
+    ) -> Result<Self, PresetError> {
+        let mut with = preset.clone();
+        with.scenario.physics = Some(params.clone());
+        let creature = creature_from_preset(&with)?;
+        let l = params.scale;
+        let names = gait_names(creature.species);
+        let gait = params
+            .gait
+            .clone()
+            .or_else(|| names.first().map(|s| (*s).to_owned()))
+            .unwrap_or_default();
+        let controller = make_controller(&creature, &gait, &params)?;
+        let skeleton = scaled_skeleton(&preset.skeleton, l)?;
+        let start_q: Vec<f64> = skeleton.rest_values();
+        let start_root = preset.root_position * l;
+        let options = SimOptions {
+            dt: params.dt_s * l.sqrt(),
+            ..SimOptions::default()
+        };
+        let mut sim = Sim::new(creature, GroundParams::default().scaled(l), options);
+        for o in &params.obstacles {
+            sim.terrain.obstacles.push(Obstacle {
+                min_xz: [-10.0 * l, o.at_m * l],
+                max_xz: [10.0 * l, (o.at_m + o.depth_m) * l],
+                height_m: o.height_m * l,
+            });
+        }
+        if sim.creature.model.free_base() {
+            sim.data.base_position = start_root;
+            sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, params.speed_mps * l.sqrt());
+        } else if let Some(v) = sim.data.qd.first_mut() {
+            *v = params.speed_mps * l.sqrt();
+        }
+        sim.data.q.copy_from_slice(&start_q);
+        crate::kinematics::kinematics(&sim.creature.model, &mut sim.data);
+        let legs = sim.creature.legs.len();
+        let mut driver = Self {
+            pose: Pose {
+                root: RootTransform {
+                    position: start_root,
+                    rotation: DMat3::IDENTITY,
+                },
+                joints: start_q.clone(),
+            },
+            effectors: vec![DVec3::ZERO; skeleton.effector_count()],
+            skeleton,
+            start_root,
+
+            recorder: GaitRecorder::new(legs, params.speed_mps * l.sqrt(), 0.0, 3.0 * l.sqrt()),
+            params,
+            gait,
+            start: sim.clone(),
+            sim,
+            controller,
+            fell_at: None,
+            reset_after_fall: true,
+            message: None,
+            resets: 0,
+        };
+        driver.update_pose();
+        Ok(driver)
+    }
+
+    fn update_pose(&mut self) {
+        let data = &self.sim.data;
+        let model = &self.sim.creature.model;
+        if model.free_base() {
+            self.pose.root.position = data.base_position;
+            self.pose.root.rotation = DMat3::from_quat(data.base_orientation.normalize());
+        } else {
+            self.pose.root.position = self.start_root;
+            self.pose.root.rotation = DMat3::IDENTITY;
+        }
+        self.pose.joints.copy_from_slice(&data.q);
+        let offset = usize::from(model.free_base());
+        for (e, out) in self.skeleton.effectors().iter().zip(&mut self.effectors) {
+            *out = data.point_world(e.joint + offset, e.offset);
+        }
+    }
+
+    /// The simulation (state, creature, contacts).
+    #[must_use]
+    pub fn sim(&self) -> &Sim {
+        &self.sim
+    }
+
+    /// The gait running.
+    #[must_use]
+    pub fn gait(&self) -> &str {
+        &self.gait
+    }
+
+    /// The physics parameters in use.
+    #[must_use]
+    pub fn params(&self) -> &PhysicsParams {
+        &self.params
+    }
+
+    /// The state machine's state.
+    #[must_use]
+    pub fn phase_name(&self) -> &'static str {
+        self.controller.phase_name()
+    }
+
+    /// A snapshot of the trunk, first leg, ground force and state for plots.
+    #[must_use]
+    pub fn probe(&self) -> PhysicsProbe {
+        let c = &self.sim.creature;
+        let d = &self.sim.data;
+        let err = crate::control::attitude::attitude_error(c, d, 0.0, 0.0);
+        let trunk = d.world[c.trunk];
+        let leg_length_m = c.legs.first().map_or(0.0, |leg| {
+            let hip = trunk.rot * leg.hip_in_trunk + trunk.pos;
+            (d.point_world(leg.foot_body, leg.foot_point) - hip).length()
+        });
+        let weight = c.model.total_mass() * crate::GRAVITY_MPS2;
+        let force: f64 = self.sim.contacts.iter().map(|k| k.force.y).sum();
+        let name = self.controller.phase_name();
+        PhysicsProbe {
+            height_m: trunk.pos.y,
+            pitch_deg: err.x.to_degrees(),
+            roll_deg: err.z.to_degrees(),
+            leg_length_m,
+            ground_force_bw: force / weight,
+            phase_index: crate::control::Phase::ALL
+                .iter()
+                .position(|p| p.name() == name)
+                .unwrap_or(0),
+            speed_mps: crate::control::attitude::com_velocity(c, d).z,
+        }
+    }
+
+    /// The Table-2 figures since the last reset.
+    #[must_use]
+    pub fn summary(&self) -> GaitSummary {
+        self.recorder.summary()
+    }
+
+    /// Why the creature was last put back at the start (a blow-up or a fall),
+    /// until the next [`PhysicsDriver::take_message`].
+    #[must_use]
+    pub fn message(&self) -> Option<&str> {
+        self.message.as_deref()
+    }
+
+    /// Read and clear the message.
+    pub fn take_message(&mut self) -> Option<String> {
+        self.message.take()
+    }
+
+    /// How many times the creature was put back after a blow-up or a fall.
+    #[must_use]
+    pub fn resets(&self) -> u32 {
+        self.resets
+    }
+
+    /// Change the desired speed (m/s at scale 1) while running.
+    pub fn set_speed(&mut self, speed_mps: f64) {
+        self.params.speed_mps = speed_mps;
+        self.controller.set_speed(speed_mps);
+        self.recorder.speed_desired_mps = speed_mps * self.params.scale.sqrt();
+    }
+
+    /// Change the desired hop height (m at scale 1) while running.
+    pub fn set_hop_height(&mut self, height_m: f64) {
+        self.params.hop_height_m = Some(height_m);
+        self.controller.set_hop_height(height_m);
+    }
+
+    /// Change gait while running (the controller takes over from the current state).
+    ///
+    /// # Errors
+    /// The gait is not one of this model's.
+    pub fn set_gait(&mut self, gait: &str) -> Result<(), PresetError> {
+        let mut params = self.params.clone();
+        params.gait = Some(gait.to_owned());
+        self.controller = make_controller(&self.sim.creature, gait, &params)?;
+        self.params = params;
+        self.gait = gait.to_owned();
+        Ok(())
+    }
+
+    /// Take `steps` integration steps with nothing recorded — the work a
+    /// benchmark times (contacts, control, actuators, dynamics, integration).
+    ///
+    /// # Errors
+    /// The blow-up, if one happens; the state is then not to be trusted.
+    pub fn run_steps(&mut self, steps: u32) -> Result<(), crate::sim::BlowUp> {
+        for _ in 0..steps {
+            self.sim.step(&mut self.controller)?;
+        }
+        Ok(())
+    }
+
+    fn restart(&mut self, why: String) {
+        self.sim = self.start.clone();
+        let legs = self.sim.creature.legs.len();
+        self.recorder = GaitRecorder::new(
+            legs,
+            self.params.speed_mps * self.params.scale.sqrt(),
+            0.0,
+            3.0 * self.params.scale.sqrt(),
+        );
+        if let Ok(c) = make_controller(&self.sim.creature, &self.gait, &self.params) {
+            self.controller = c;
+        }
+        self.fell_at = None;
+        self.message = Some(why);
+        self.resets += 1;
+        self.update_pose();
+    }
+}
+
+fn make_controller(
+    creature: &Creature,
+    gait: &str,
+    params: &PhysicsParams,
+) -> Result<GaitController, PresetError> {
+    let l = creature.scale;
+    let bad = || {
+        let names = gait_names(creature.species);
+        PresetError::new(
+            "scenario.physics.gait",
+            format!(
+                "unknown gait \"{gait}\" (this model has: {})",
+                names.join(", ")
+            ),
+        )
+    };
+    match (creature.species, gait) {
+        (Species::Biped, "run") => {
+            if creature.legs.len() != 2 || creature.legs.iter().any(|leg| leg.hip.len() != 3) {
+                return Err(PresetError::new(
+                    "scenario.physics.legs",
+                    "the biped run needs two legs with three hip joints each",
+                ));
+            }
+            let d = BipedRunParams::default();
+            let p = BipedRunParams {
+                speed_mps: params.speed_mps,
+                hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
+                ..d
+            };
+            Ok(GaitController::BipedRun(BipedRun::new(p, l)))
+        }
+        _ => Err(bad()),
+    }
+}
+
+impl Driver for PhysicsDriver {
+    fn step(&mut self, dt: f64) {
+        if !(dt.is_finite() && dt > 0.0) {
+            return;
+        }
+        let mut stepped = 0;
+        let budget =
+            ((dt / self.sim.options.dt).ceil() as u32).min(self.sim.options.max_steps_per_advance);
+        let mut result = Ok(());
+        // The fixed-step loop, recording every step for the Table-2 figures.
+        self.sim.accumulate(dt);
+        while stepped < budget && self.sim.due() {
+            result = self.sim.step(&mut self.controller);
+            if result.is_err() {
+                break;
+            }
+            self.recorder.record(&self.sim);
+            stepped += 1;
+        }
+        self.sim.settle_accumulator();
+        if let Err(blow_up) = result {
+            self.restart(format!("{blow_up}; the creature was put back at the start"));
+            return;
+        }
+        let summary_fell = self.recorder.fell();
+        match (summary_fell, self.fell_at) {
+            (true, None) => self.fell_at = Some(self.sim.time),
+            (true, Some(t))
+                if self.reset_after_fall
+                    && self.sim.time - t > FALL_RESET_S * self.params.scale.sqrt() =>
+            {
+                self.restart(format!(
+                    "the creature fell at t = {t:.2} s and was put back at the start"
+                ));
+                return;
+            }
+            _ => {}
+        }
+        self.update_pose();
+    }
+
+    fn time(&self) -> f64 {
+        self.sim.time
+    }
+
+    fn reset(&mut self) {
+        self.restart(String::new());
+        self.message = None;
+        self.resets = 0;
+    }
+
+    fn skeleton(&self) -> &Skeleton {
+        &self.skeleton
+    }
+
+    fn pose(&self) -> &Pose {
+        &self.pose
+    }
+
+    fn effector_positions(&self) -> &[DVec3] {
+        &self.effectors
+    }
+}
