@@ -4,6 +4,7 @@
 //! sequenced by the state machine of Figure 4.
 
 pub mod attitude;
+pub mod biped_gallop;
 pub mod biped_run;
 pub mod phase;
 pub mod placement;

@@ -1,0 +1,621 @@
+//! Biped galloping (Raibert & Hodgins 1991, "Gaits": "Biped galloping is
+//! similar to quadruped galloping in that the two stance legs share a single
+//! support phase"). Each stride is a flight, then the *trailing* leg's single
+//! support, a double support, the *leading* leg's single support, and flight
+//! again: the legs land separated in time and space and share the work of
+//! rebounding. Two styles, as in the paper:
+//!
+//! - [`GallopStyle::TogetherSwing`]: the legs swing forward together during
+//!   flight, "similar to the front half of a galloping horse";
+//! - [`GallopStyle::AlternateSwing`]: each leg swings forward during the
+//!   other leg's single support, "closer to the pattern used by galloping
+//!   humans"; the stance leg's hip absorbs the swing's reaction, so the trunk
+//!   pitches much less.
+//!
+//! The three running functions of "Control" act on each leg in its own
+//! Figure-4 cycle (loading, compression, thrust, unloading): hopping height by
+//! the leg spring's rest length and a thrust in stance (eq. 1–2), speed by
+//! placing each foot about its neutral point (eq. 3, plus an integral
+//! correction per stride), posture by eq. 4 through the hips of the legs in
+//! support, shared in proportion to the load each carries. Everything scales
+//! with the creature's L ("Dynamic Scaling", Table 1).
+
+use glam::{DQuat, DVec3};
+
+use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
+use super::phase::Phase;
+use super::placement::{foot_displacement, gimbal_angles, leg_direction};
+use crate::actuator::Stops;
+use crate::sim::{ControlInput, Controller, Drive};
+
+/// How the legs swing forward (Raibert & Hodgins 1991, "Gaits").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum GallopStyle {
+    /// Both legs swing forward together during flight (the front half of a
+    /// galloping horse).
+    #[default]
+    TogetherSwing,
+    /// Each leg swings forward during the other leg's single support (the
+    /// galloping human).
+    AlternateSwing,
+}
+
+impl GallopStyle {
+    /// A short name for people.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            GallopStyle::TogetherSwing => "together swing",
+            GallopStyle::AlternateSwing => "alternate swing",
+        }
+    }
+}
+
+/// The stride's support state, from the legs' contacts as the controller
+/// accepted them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum GallopPhase {
+    /// No leg in support.
+    #[default]
+    Flight,
+    /// Only the trailing leg (the first to land) supports.
+    TrailSupport,
+    /// Both legs support.
+    DoubleSupport,
+    /// Only the leading leg (the last to leave) supports.
+    LeadSupport,
+}
+
+impl GallopPhase {
+    /// Every phase in stride order.
+    pub const ALL: [GallopPhase; 4] = [
+        GallopPhase::Flight,
+        GallopPhase::TrailSupport,
+        GallopPhase::DoubleSupport,
+        GallopPhase::LeadSupport,
+    ];
+
+    /// A name for people.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            GallopPhase::Flight => "flight",
+            GallopPhase::TrailSupport => "trail support",
+            GallopPhase::DoubleSupport => "double support",
+            GallopPhase::LeadSupport => "lead support",
+        }
+    }
+
+    /// The phase's position in the stride (0–3), for plots.
+    #[must_use]
+    pub fn index(self) -> usize {
+        self as usize
+    }
+}
+
+/// Parameters of biped galloping; leg lengths are leg-spring coordinates
+/// (metres of extension, 0 = the leg at full length), all given at the
+/// paper's size (L = 1) and scaled by the creature's L.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BipedGallopParams {
+    /// Desired forward speed ẋ_d (m/s).
+    pub speed_mps: f64,
+    /// Desired heading (rad about +y; 0 = +z).
+    pub heading: f64,
+    /// How the legs swing forward.
+    pub style: GallopStyle,
+    /// The leading leg (0 or 1): it lands second, ahead of the trailing leg,
+    /// and leaves the ground last.
+    pub lead_leg: usize,
+    /// Leg spring stiffness k of eq. 1 (N/m).
+    pub leg_stiffness: f64,
+    /// Leg spring damping b of eq. 1 (N·s/m).
+    pub leg_damping: f64,
+    /// Rest length for landing (m of extension).
+    pub landing_rest_m: f64,
+    /// Initial extra rest length during thrust (m); adapted each stride.
+    pub thrust_m: f64,
+    /// Rest length of a shortened, swinging leg (m of extension).
+    pub idle_rest_m: f64,
+    /// Desired hop height: apex of the trunk in flight above the height of
+    /// a hip over a vertical leg at landing length (m).
+    pub hop_height_m: f64,
+    /// How much each stride's apex error changes the thrust (m per m).
+    pub hop_gain: f64,
+    /// Foot placement gain k_ẋ of eq. 3 (s), applied to each leg.
+    pub placement_gain_s: f64,
+    /// Integral gain on each stride's speed error (m/s of correction per
+    /// m/s of error): removes the steady error eq. 3 alone leaves.
+    pub speed_integral_gain: f64,
+    /// Extra forward placement of the trailing foot beyond its neutral point (m).
+    pub trail_offset_m: f64,
+    /// Extra forward placement of the leading foot beyond its neutral point (m).
+    pub lead_offset_m: f64,
+    /// How much shorter than for landing the leading leg is held while the
+    /// body falls toward the trailing leg's touchdown (m).
+    pub lead_retract_m: f64,
+    /// Delay from the trailing leg's touchdown until the leading leg starts
+    /// to lengthen for its landing (s): spaces the two touchdowns in time.
+    pub lead_delay_s: f64,
+    /// How fast the leading leg lengthens for its landing (m/s).
+    pub lead_extend_mps: f64,
+    /// How fast the trailing leg lengthens for landing in flight (m/s).
+    pub trail_extend_mps: f64,
+    /// How fast the trailing leg shortens in unloading while the leading
+    /// leg supports (m/s).
+    pub trail_unload_mps: f64,
+    /// Hip servo stiffness for swinging and holding legs (N·m/rad).
+    pub swing_kp: f64,
+    /// Hip servo damping for swinging and holding legs (N·m·s/rad).
+    pub swing_kv: f64,
+    /// Posture servo stiffness k_p of eq. 4 (N·m/rad).
+    pub posture_kp: f64,
+    /// Posture servo damping k_v of eq. 4 (N·m·s/rad).
+    pub posture_kv: f64,
+    /// Fraction of the trunk's pitching in flight that the posture servo
+    /// anticipates in stance (0 = level in stance, 0.5 = pitch about level).
+    pub pitch_feedforward: f64,
+    /// Trunk yaw servo stiffness in stance, through the hips' yaw joints (N·m/rad).
+    pub yaw_kp: f64,
+    /// Trunk yaw damping in stance (N·m·s/rad).
+    pub yaw_kv: f64,
+    /// Stiffness of an airborne leg's own yaw joint; the leg spins on a tiny
+    /// inertia, so it is small (N·m/rad).
+    pub leg_yaw_kp: f64,
+    /// Damping of an airborne leg's yaw joint (N·m·s/rad).
+    pub leg_yaw_kv: f64,
+    /// Largest hip torque (N·m).
+    pub max_hip_torque: f64,
+    /// Largest trunk-yaw torque through the stance legs' yaw joints, all
+    /// together (N·m).
+    pub max_yaw_torque: f64,
+    /// How fast a leg's rest length may otherwise change (m/s): a leg snapped
+    /// short would jerk the trunk through the offset hips.
+    pub leg_rate_mps: f64,
+}
+
+impl Default for BipedGallopParams {
+    fn default() -> Self {
+        Self {
+            speed_mps: 1.5,
+            heading: 0.0,
+            style: GallopStyle::TogetherSwing,
+            lead_leg: 0,
+            leg_stiffness: 12_000.0,
+            leg_damping: 20.0,
+            landing_rest_m: -0.03,
+            thrust_m: 0.03,
+            idle_rest_m: -0.18,
+            hop_height_m: 0.12,
+            hop_gain: 0.15,
+            placement_gain_s: 0.06,
+            speed_integral_gain: 0.3,
+            trail_offset_m: 0.0,
+            lead_offset_m: 0.0,
+            lead_retract_m: 0.08,
+            lead_delay_s: 0.03,
+            lead_extend_mps: 4.0,
+            trail_extend_mps: 1.0,
+            trail_unload_mps: 2.0,
+            swing_kp: 400.0,
+            swing_kv: 15.0,
+            posture_kp: 1500.0,
+            posture_kv: 100.0,
+            pitch_feedforward: 0.5,
+            yaw_kp: 200.0,
+            yaw_kv: 20.0,
+            leg_yaw_kp: 2.0,
+            leg_yaw_kv: 0.1,
+            max_hip_torque: 400.0,
+            max_yaw_torque: 30.0,
+            leg_rate_mps: 1.0,
+        }
+    }
+}
+
+/// One leg's part of the stride.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GallopLeg {
+    /// The leg's own Figure-4 state; [`Phase::Flight`] while it is airborne.
+    pub phase: Phase,
+    /// Measured duration of its last stance (s), T_s of eq. 3 for this leg.
+    pub stance_s: f64,
+    /// When it last touched down (s).
+    pub touchdown_s: f64,
+    /// Hip roll and pitch (rad) at its last lift-off, held while it waits.
+    hold: [f64; 2],
+    /// Its rest length as it moves toward its target (m).
+    rest: f64,
+    /// Its rest length at touchdown, kept through the stance (m): a leg still
+    /// lengthening when it lands would otherwise push like a thrust.
+    landed_rest: f64,
+}
+
+/// The galloping state machine for a two-legged creature.
+#[derive(Clone, Debug)]
+pub struct BipedGallop {
+    /// Parameters (editable while running: speed, heading, style, gains).
+    pub params: BipedGallopParams,
+    /// The stride's support state.
+    pub phase: GallopPhase,
+    /// Each leg's state.
+    pub legs: [GallopLeg; 2],
+    apex_height: f64,
+    thrust: f64,
+    descending: bool,
+    /// Trunk pitch at the stride's last lift-off (rad).
+    liftoff_pitch: f64,
+    /// Desired trunk pitch in stance (rad), eq. 4's ϕ_d: set against the
+    /// pitch the legs' swing in flight produces.
+    pitch_d: f64,
+    /// Accumulated speed correction added to the desired speed (m/s).
+    speed_bias: f64,
+    /// Where the centre of mass was at the last stride's start (m) and when (s).
+    last_stride: (DVec3, f64),
+    /// Scale of lengths (the creature's L).
+    scale: f64,
+}
+
+impl BipedGallop {
+    /// A controller starting in flight, falling toward the trailing leg's landing.
+    #[must_use]
+    pub fn new(params: BipedGallopParams, scale: f64) -> Self {
+        let leg = |rest: f64| GallopLeg {
+            phase: Phase::Flight,
+            stance_s: 0.2 * scale.sqrt(),
+            touchdown_s: f64::NEG_INFINITY,
+            hold: [0.0; 2],
+            rest: rest * scale,
+            landed_rest: params.landing_rest_m * scale,
+        };
+        let lead = params.lead_leg.min(1);
+        let mut legs = [leg(params.landing_rest_m); 2];
+        legs[lead].rest = params.idle_rest_m * scale;
+        Self {
+            params,
+            phase: GallopPhase::Flight,
+            legs,
+            apex_height: f64::NEG_INFINITY,
+            thrust: params.thrust_m * scale,
+            descending: true,
+            liftoff_pitch: f64::NAN,
+            pitch_d: 0.0,
+            speed_bias: 0.0,
+            last_stride: (DVec3::ZERO, f64::NAN),
+            scale,
+        }
+    }
+
+    /// The leading leg (lands second, leaves last).
+    #[must_use]
+    pub fn lead(&self) -> usize {
+        self.params.lead_leg.min(1)
+    }
+
+    /// The trailing leg (lands first, leaves first).
+    #[must_use]
+    pub fn trail(&self) -> usize {
+        1 - self.lead()
+    }
+
+    /// The thrust now added to the rest length in thrust (m).
+    #[must_use]
+    pub fn thrust_m(&self) -> f64 {
+        self.thrust
+    }
+
+    fn leg_stops(&self) -> Stops {
+        let l = self.scale;
+        Stops {
+            min: -0.25 * l,
+            max: 0.0,
+            stiffness: 2.0e5 * l * l,
+            damping: 500.0 * l.powf(2.5),
+        }
+    }
+
+    fn in_support(&self, i: usize) -> bool {
+        self.legs[i].phase != Phase::Flight
+    }
+
+    fn advance_phase(&mut self, input: &ControlInput<'_>) {
+        let p = self.params;
+        let l = self.scale;
+        let trunk_y = input.data.world[input.creature.trunk].pos.y;
+        let pitch = self.pitch(input);
+        if self.phase == GallopPhase::Flight {
+            self.apex_height = self.apex_height.max(trunk_y);
+            self.descending = self.descending || trunk_y < self.apex_height - 0.002 * l;
+        }
+        let (lead, trail) = (self.lead(), self.trail());
+        let lead_rebounds = self.legs[lead].phase == Phase::Thrust;
+        for i in [trail, lead] {
+            let Some(leg) = input.creature.legs.get(i) else {
+                continue;
+            };
+            let touching = input.contacts.get(i).is_some_and(|c| c.touching);
+            let q = input.data.q[leg.spring];
+            let qd = input.data.qd[leg.spring];
+            let other_down = self.in_support(1 - i);
+            // A landing counts from a falling flight or beside the other leg,
+            // not as a scuff just after lift-off.
+            if self.legs[i].phase == Phase::Flight && touching && (other_down || self.descending) {
+                if i == trail && self.liftoff_pitch.is_finite() {
+                    // The flight's pitching: aim the stance's posture servo
+                    // at the opposite side, so the trunk swings about level.
+                    let change = pitch - self.liftoff_pitch;
+                    let goal = (-p.pitch_feedforward * change).clamp(-0.3, 0.3);
+                    self.pitch_d += 0.5 * (goal - self.pitch_d);
+                }
+                let state = &mut self.legs[i];
+                state.phase = Phase::Loading;
+                state.touchdown_s = input.time;
+                state.landed_rest = state.rest.min(p.landing_rest_m * l);
+            }
+            let state = &mut self.legs[i];
+            match state.phase {
+                // Compression once the spring shortens; a leg that landed
+                // still lengthening may not shorten past its rest at once.
+                Phase::Loading
+                    if q < state.landed_rest - 0.005 * l
+                        || input.time - state.touchdown_s >= 0.02 * l.sqrt() =>
+                {
+                    state.phase = Phase::Compression;
+                }
+                // Thrust once the spring lengthens again after a real
+                // compression, not on the first jitter of a landing.
+                Phase::Compression
+                    if qd >= 0.0 && input.time - state.touchdown_s >= 0.03 * l.sqrt() =>
+                {
+                    state.phase = Phase::Thrust;
+                }
+                Phase::Thrust
+                    if q >= state.landed_rest + self.thrust - 0.01 * l || q >= -0.005 * l =>
+                {
+                    state.phase = Phase::Unloading;
+                }
+                _ => {}
+            }
+            // The trailing leg hands the load over: it shortens once the
+            // leading leg rebounds, so it leaves the ground first.
+            if i == trail
+                && lead_rebounds
+                && matches!(state.phase, Phase::Compression | Phase::Thrust)
+            {
+                state.phase = Phase::Unloading;
+            }
+            // Lift-off ends a stance only once the leg has thrust; a foot that
+            // bounces off the ground at impact is still landing.
+            if matches!(state.phase, Phase::Thrust | Phase::Unloading) && !touching {
+                state.stance_s =
+                    (input.time - state.touchdown_s).clamp(0.05 * l.sqrt(), 0.5 * l.sqrt());
+                state.phase = Phase::Flight;
+                state.hold = [input.data.q[leg.hip[0]], input.data.q[leg.hip[1]]];
+                if !other_down {
+                    self.start_flight(input);
+                    self.liftoff_pitch = pitch;
+                }
+            }
+        }
+        self.phase = match (self.in_support(trail), self.in_support(lead)) {
+            (false, false) => GallopPhase::Flight,
+            (true, false) => GallopPhase::TrailSupport,
+            (true, true) => GallopPhase::DoubleSupport,
+            (false, true) => GallopPhase::LeadSupport,
+        };
+    }
+
+    /// The trunk's pitch about the heading's lateral axis (rad).
+    fn pitch(&self, input: &ControlInput<'_>) -> f64 {
+        let err = attitude_error(input.creature, input.data, self.params.heading, 0.0);
+        let lateral = DVec3::Y.cross(heading_forward(self.params.heading));
+        err.dot(lateral)
+    }
+
+    /// The stride's last lift-off: the hop's apex adjusts the thrust (eq. 2)
+    /// and the stride's speed the integral correction.
+    fn start_flight(&mut self, input: &ControlInput<'_>) {
+        let p = self.params;
+        let l = self.scale;
+        if self.apex_height.is_finite() {
+            let landing_height = (0.83 + p.landing_rest_m) * l;
+            let error = (landing_height + p.hop_height_m * l) - self.apex_height;
+            self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
+        }
+        let com = crate::energy::center_of_mass(&input.creature.model, input.data);
+        let (prev, t_prev) = self.last_stride;
+        if t_prev.is_finite() && input.time > t_prev {
+            let along = heading_forward(p.heading).dot(com - prev) / (input.time - t_prev);
+            let error = p.speed_mps * l.sqrt() - along;
+            let cap = 0.5 * p.speed_mps.abs().max(0.5) * l.sqrt();
+            self.speed_bias = (self.speed_bias + p.speed_integral_gain * error).clamp(-cap, cap);
+        }
+        self.last_stride = (com, input.time);
+        self.apex_height = f64::NEG_INFINITY;
+        self.descending = false;
+    }
+
+    /// Whether airborne leg `i` holds its lift-off angles rather than
+    /// swinging to its landing place.
+    fn holds(&self, i: usize) -> bool {
+        match self.params.style {
+            // The trailing leg waits behind while the leading leg supports;
+            // both swing forward together in flight.
+            GallopStyle::TogetherSwing => i == self.trail() && self.in_support(self.lead()),
+            // The leading leg waits through flight and swings forward in the
+            // trailing leg's single support; the trailing leg swings in the
+            // leading leg's.
+            GallopStyle::AlternateSwing => i == self.lead() && self.phase == GallopPhase::Flight,
+        }
+    }
+
+    /// The rest length leg `i` heads for (m).
+    fn rest_target(&self, i: usize, time: f64) -> f64 {
+        let p = &self.params;
+        let l = self.scale;
+        let state = &self.legs[i];
+        match state.phase {
+            Phase::Thrust => state.landed_rest + self.thrust,
+            Phase::Unloading => p.idle_rest_m * l,
+            Phase::Loading | Phase::Compression => state.landed_rest,
+            Phase::Flight if i == self.trail() => {
+                // Lengthen for landing in flight; not while the leading leg
+                // still supports, so the foot does not scuff the ground.
+                if self.phase == GallopPhase::Flight {
+                    p.landing_rest_m * l
+                } else {
+                    p.idle_rest_m * l
+                }
+            }
+            Phase::Flight => {
+                let trail = &self.legs[self.trail()];
+                let waited = time - trail.touchdown_s >= p.lead_delay_s * l.sqrt();
+                if self.in_support(self.trail()) && waited {
+                    p.landing_rest_m * l
+                } else if self.phase == GallopPhase::Flight && self.descending {
+                    (p.landing_rest_m - p.lead_retract_m) * l
+                } else {
+                    p.idle_rest_m * l
+                }
+            }
+        }
+    }
+}
+
+impl Controller for BipedGallop {
+    fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
+        let creature = input.creature;
+        if creature.legs.len() < 2 || creature.legs.iter().any(|g| g.hip.len() < 3) {
+            return;
+        }
+        self.advance_phase(input);
+        let p = self.params;
+        let l = self.scale;
+        let data = input.data;
+        let trunk_rot = data.world[creature.trunk].rot;
+        let trunk_pos = data.world[creature.trunk].pos;
+        let velocity = com_velocity(creature, data);
+        let forward = heading_forward(p.heading);
+        let desired = forward * (p.speed_mps * l.sqrt() + self.speed_bias);
+        let stops = self.leg_stops();
+
+        let com = crate::energy::center_of_mass(&creature.model, data);
+        let reach = 0.83 * l + p.landing_rest_m * l;
+        let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.powf(4.5));
+        let (ykp, ykv) = (p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.powf(4.5));
+        let max = p.max_hip_torque * l.powi(4);
+
+        // Eq. 4 on pitch and roll (and a yaw servo): the torque the trunk
+        // needs, shared by the legs in support in proportion to their load.
+        let err = attitude_error(creature, data, p.heading, self.pitch_d);
+        let rate = trunk_rate(creature, data);
+        let (pkp, pkv) = (p.posture_kp * l.powi(4), p.posture_kv * l.powf(4.5));
+        let posture = -err * pkp - rate * pkv;
+        let yaw = -err.y * p.yaw_kp * l.powi(4) - rate.y * p.yaw_kv * l.powf(4.5);
+        let servoing = |s: &GallopLeg| {
+            matches!(
+                s.phase,
+                Phase::Compression | Phase::Thrust | Phase::Unloading
+            )
+        };
+        let load = [0, 1].map(|i| {
+            if servoing(&self.legs[i]) {
+                input.contacts.get(i).map_or(0.0, |c| c.force.y.max(0.0)) + 1e-6
+            } else {
+                0.0
+            }
+        });
+        let total_load = load[0] + load[1];
+
+        let time = input.time;
+        let step = p.leg_rate_mps * l.sqrt() * input.dt;
+        let extend = p.lead_extend_mps * l.sqrt() * input.dt;
+        let flight_extend = p.trail_extend_mps * l.sqrt() * input.dt;
+        let unload = p.trail_unload_mps * l.sqrt() * input.dt;
+        for (i, leg) in creature.legs.iter().enumerate().take(2) {
+            // Leg length: the spring of eq. 1 with a programmable rest.
+            let target = self.rest_target(i, time);
+            let (down, up) = match self.legs[i].phase {
+                // The leading leg lengthens briskly for its landing.
+                Phase::Flight if i == self.lead() => (step, extend.max(step)),
+                Phase::Flight if self.phase == GallopPhase::Flight => {
+                    (step, flight_extend.max(step))
+                }
+                // The trailing leg pulls up briskly while the leading leg
+                // carries the body.
+                Phase::Unloading if i == self.trail() && self.in_support(self.lead()) => {
+                    (unload.max(step), step)
+                }
+                _ => (step, step),
+            };
+            let state = &mut self.legs[i];
+            state.rest += (target - state.rest).clamp(-down, up);
+            let d = &mut drives[leg.spring];
+            d.stops = Some(stops);
+            d.spring.stiffness = p.leg_stiffness * l * l;
+            d.spring.damping = p.leg_damping * l.powf(2.5);
+            d.spring.max_force = f64::INFINITY;
+            d.feedforward = 0.0;
+            d.spring.rest = state.rest;
+
+            match self.legs[i].phase {
+                Phase::Flight => {
+                    let targets = if self.holds(i) {
+                        self.legs[i].hold
+                    } else {
+                        // Eq. 3 about this leg's own neutral point.
+                        let offset = if i == self.lead() {
+                            p.lead_offset_m
+                        } else {
+                            p.trail_offset_m
+                        };
+                        let foot = DVec3::new(com.x, 0.0, com.z)
+                            + forward * (offset * l)
+                            + foot_displacement(
+                                velocity,
+                                desired,
+                                self.legs[i].stance_s,
+                                p.placement_gain_s * l.sqrt(),
+                            );
+                        let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
+                        let dir = leg_direction(trunk_rot, foot - hip_world, reach);
+                        let (roll, pitch) = gimbal_angles(dir);
+                        [roll, pitch]
+                    };
+                    set_hip(drives, &leg.hip[..2], targets, kp, kv, max);
+                    drives[leg.hip[2]].servo(ykp, ykv, 0.0);
+                }
+                Phase::Loading => {
+                    for &j in &leg.hip[..2] {
+                        drives[j].torque(0.0);
+                    }
+                    drives[leg.hip[2]].servo(ykp, ykv, 0.0);
+                }
+                Phase::Compression | Phase::Thrust | Phase::Unloading => {
+                    let share = if total_load > 0.0 {
+                        load[i] / total_load
+                    } else {
+                        0.0
+                    };
+                    let torque = posture * share;
+                    let roll_axis = trunk_rot * DVec3::Z;
+                    let roll_q = data.q[leg.hip[0]];
+                    let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
+                    drives[leg.hip[0]].torque((-torque.dot(roll_axis)).clamp(-max, max));
+                    drives[leg.hip[1]].torque((-torque.dot(pitch_axis)).clamp(-max, max));
+                    // The leg turns on a tiny inertia: only a torque the
+                    // loaded foot's torsional grip can hold.
+                    let grip = p.max_yaw_torque * l.powi(4) * share;
+                    drives[leg.hip[2]].torque((-yaw * share).clamp(-grip, grip));
+                }
+            }
+        }
+    }
+}
+
+fn set_hip(drives: &mut [Drive], hip: &[usize], targets: [f64; 2], kp: f64, kv: f64, max: f64) {
+    for (&j, &t) in hip.iter().zip(&targets) {
+        drives[j].servo(kp, kv, t);
+        drives[j].spring.max_force = max;
+    }
+}
