@@ -5,6 +5,7 @@
 
 pub mod attitude;
 pub mod biped_run;
+pub mod kangaroo_hop;
 pub mod phase;
 pub mod placement;
 
