@@ -165,3 +165,42 @@ fn dynamic_scaling_matches() {
     assert!(worst_pos < 1e-6, "position error {worst_pos}");
     assert!(worst_pitch < 1e-6, "pitch error {worst_pitch}");
 }
+
+/// A jump over a 0.25 m × 0.3 m box at 2 m/s: the toe never enters the box,
+/// the trunk passes it, and hopping goes on without a fall.
+#[test]
+fn jumps_over_an_obstacle() {
+    use gaitlab_physics::ground::Obstacle;
+    let params = KangarooHopParams {
+        speed_mps: 2.0,
+        jump_at_m: Some(5.0),
+        ..Default::default()
+    };
+    let mut sim = Sim::new(
+        kangaroo(1.0).expect("kangaroo"),
+        kangaroo_ground(),
+        SimOptions::default(),
+    );
+    let box_ = Obstacle {
+        min_xz: [-1.0, 5.0],
+        max_xz: [1.0, 5.0 + params.obstacle_depth_m],
+        height_m: params.obstacle_height_m,
+    };
+    sim.terrain.obstacles.push(box_);
+    kangaroo_start(&mut sim, 2.0);
+    let mut ctl = KangarooHop::new(params);
+    let mut rec = GaitRecorder::new(1, 2.0, 0.0, 1.0);
+    let mut min_clearance = f64::INFINITY;
+    while sim.time < 10.0 {
+        sim.step(&mut ctl).expect("no blow-up");
+        rec.record(&sim);
+        let toe = sim.contacts[0].position;
+        if box_.covers(toe.x, toe.z) {
+            min_clearance = min_clearance.min(toe.y - box_.height_m);
+        }
+    }
+    println!("jump: toe clearance over the box {min_clearance:.3} m");
+    assert!(min_clearance > 0.0, "toe inside the box");
+    assert!(sim.data.q[0] > 5.0 + 2.0, "trunk at {}", sim.data.q[0]);
+    assert!(!rec.summary().fell);
+}
