@@ -2,6 +2,10 @@
 //! hopping without falling, speed regulation, Table-2 figures and dynamic
 //! scaling. Figures that the controller does not yet meet are measured and
 //! printed (`cargo test -- --nocapture`), and asserted only loosely.
+//!
+//! Every run starts hopping at 2 m/s (or slower) with the desired speed set
+//! once; the controller ramps its commanded speed up to it. Speeds and
+//! Table-2 figures are measured from 3 s after the ramp ends.
 
 use gaitlab_physics::control::kangaroo_hop::{
     KangarooHop, KangarooHopParams, kangaroo_ground, kangaroo_start,
@@ -18,6 +22,16 @@ struct Run {
     trace: Vec<(f64, f64, f64, f64)>,
 }
 
+/// Start speed of every run (m/s at scale 1).
+const START_MPS: f64 = 2.0;
+
+/// Seconds (at scale 1) from the start until the commanded speed has
+/// ramped to `speed`, plus 3 s of settling.
+fn settle_s(speed: f64) -> f64 {
+    let ramp = KangarooHopParams::default().speed_ramp_mps2;
+    3.0 + (speed - START_MPS).abs() / ramp
+}
+
 fn run(speed: f64, l: f64, secs: f64) -> Run {
     let options = SimOptions {
         dt: 0.0004 * l.sqrt(),
@@ -28,12 +42,12 @@ fn run(speed: f64, l: f64, secs: f64) -> Run {
         kangaroo_ground().scaled(l),
         options,
     );
-    kangaroo_start(&mut sim, speed);
+    kangaroo_start(&mut sim, speed.min(START_MPS));
     let mut ctl = KangarooHop::new(KangarooHopParams {
         speed_mps: speed,
         ..Default::default()
     });
-    let settle = 3.0 * l.sqrt();
+    let settle = settle_s(speed) * l.sqrt();
     let mut rec = GaitRecorder::new(1, speed * l.sqrt(), 0.0, settle);
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     let mut wags = Vec::new();
@@ -93,29 +107,38 @@ fn hops_at_2_mps_without_falling_and_holds_speed() {
     );
 }
 
-/// Measured, not yet met: at 3.5 and 5 m/s the trunk pitches too far in
-/// flight and the kangaroo falls within a few seconds. Run with
-/// `--ignored --nocapture` to see the figures.
+/// 60 s at 3.5 and at the paper's 5 m/s (Figure 6, Table 2) without a fall,
+/// the mean speed within the paper's 10 % once the ramp has ended.
 #[test]
-#[ignore = "kangaroo falls at 3.5 and 5 m/s; controller still in tuning"]
 fn hops_at_higher_speeds() {
     for speed in [3.5, 5.0] {
         let r = run(speed, 1.0, 60.0);
         let s = &r.summary;
         println!(
-            "{speed} m/s: blew_up {:?} fell {} speed {:.3}",
-            r.blew_up, s.fell, s.speed_mean_mps
+            "{speed} m/s: blew_up {:?} fell {} speed {:.3} stride {:.3} m {:.3} s pitch {:.1} wag {:.1} peak {:.2} g",
+            r.blew_up,
+            s.fell,
+            s.speed_mean_mps,
+            s.stride_length_m,
+            s.stride_duration_s,
+            s.pitch_magnitude_deg,
+            r.tail_wag_deg,
+            s.peak_vertical_accel_g
         );
         assert!(r.blew_up.is_none() && !s.fell);
         assert!((s.speed_mean_mps - speed).abs() < 0.1 * speed);
     }
 }
 
-/// Table 2's kangaroo column (animation) beside ours. Printed; the asserts
-/// cover only what the 2 m/s gait meets (stride and flight durations).
+/// Table 2's kangaroo column (animation, 5 m/s desired) beside ours at 5 m/s.
+/// Printed; the asserts hold the figures within ±35 % of the paper's, except
+/// the peak vertical acceleration and the stance duration, which the stiff
+/// ankle misses (a stance of about 0.065 s instead of 0.11 s, so the ground
+/// carries the body weight in a shorter, higher pulse); those are only
+/// bounded.
 #[test]
 fn table_2_figures() {
-    let r = run(2.0, 1.0, 15.0);
+    let r = run(5.0, 1.0, settle_s(5.0) + 12.0);
     let s = &r.summary;
     let rows = [
         (
@@ -135,8 +158,18 @@ fn table_2_figures() {
         println!("{name:36} paper {paper:6.2} ours {ours:6.3} within35% {ok}");
     }
     assert!(r.blew_up.is_none() && !s.fell);
-    assert!((s.stride_duration_s - 0.35).abs() <= 0.35 * 0.35);
-    assert!((s.flight_duration_s - 0.24).abs() <= 0.35 * 0.24);
+    let within = |ours: f64, paper: f64| (ours - paper).abs() <= 0.35 * paper;
+    assert!(within(s.pitch_magnitude_deg, 12.0));
+    assert!(within(r.tail_wag_deg, 31.0));
+    assert!(within(s.stride_length_m, 1.5));
+    assert!(within(s.stride_duration_s, 0.35));
+    assert!(within(s.flight_duration_s, 0.24));
+    assert!(s.stance_duration_s > 0.04, "stance {}", s.stance_duration_s);
+    assert!(
+        s.peak_vertical_accel_g < 12.0,
+        "peak {}",
+        s.peak_vertical_accel_g
+    );
 }
 
 /// Table 1: at L = 2 with speed ×√2 and the step ×√2, the trunk's path is

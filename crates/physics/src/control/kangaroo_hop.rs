@@ -41,8 +41,18 @@ use crate::sim::{ControlInput, Controller, Drive, Sim};
 /// them by the creature's L).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct KangarooHopParams {
-    /// Desired forward speed ẋ_d (m/s); may be changed while running.
+    /// Desired forward speed ẋ_d (m/s); may be changed while running. The
+    /// controller's commanded speed moves toward it at `speed_ramp_mps2`.
     pub speed_mps: f64,
+    /// Largest rate of change of the commanded speed (m/s²): a fast gait is
+    /// reached by accelerating through the slower ones.
+    pub speed_ramp_mps2: f64,
+    /// Integral gain of the speed correction (m/s of placement target per
+    /// m/s of a stride's mean speed error): eq. 3 alone leaves a steady
+    /// shortfall that grows with speed.
+    pub speed_integral_gain: f64,
+    /// Largest integral speed correction (m/s).
+    pub speed_integral_max_mps: f64,
     /// Desired rise of the centre of mass from lift-off to apex (m).
     pub hop_rise_m: f64,
     /// Integral gain of the apex correction (m of target per m of error per hop).
@@ -59,6 +69,10 @@ pub struct KangarooHopParams {
     pub placement_gain_s: f64,
     /// Hip-to-toe distance at touchdown (m).
     pub landing_leg_m: f64,
+    /// Shortening of the hip-to-toe distance while the body still rises in
+    /// flight (m), so the toe swinging forward clears the ground; it fades
+    /// out by the apex.
+    pub flight_retract_m: f64,
     /// First guess of the stance duration T_s (s), before one is measured.
     pub stance_guess_s: f64,
     /// Hip servo stiffness in flight (N·m/rad), eq. 5.
@@ -123,6 +137,9 @@ impl Default for KangarooHopParams {
     fn default() -> Self {
         Self {
             speed_mps: 5.0,
+            speed_ramp_mps2: 0.25,
+            speed_integral_gain: 0.2,
+            speed_integral_max_mps: 1.0,
             hop_rise_m: 0.07,
             hop_gain: 0.5,
             ankle_stiffness: 250.0,
@@ -131,6 +148,7 @@ impl Default for KangarooHopParams {
             max_thrust_rad: 0.8,
             placement_gain_s: 0.1,
             landing_leg_m: 0.46,
+            flight_retract_m: 0.06,
             stance_guess_s: 0.11,
             hip_kp: 150.0,
             hip_kv: 4.0,
@@ -252,6 +270,10 @@ pub struct KangarooHop {
     pub ankle_rest: f64,
     /// Learned correction of the apex target (m), from measured apexes.
     pub apex_correction_m: f64,
+    /// Commanded forward speed (m/s, scaled), ramping toward the desired one.
+    pub speed_command_mps: f64,
+    /// Integral speed correction added to the commanded speed in eq. 3 (m/s, scaled).
+    pub speed_trim_mps: f64,
     /// Whether a jump is still to come.
     jump_pending: bool,
     started: bool,
@@ -262,6 +284,8 @@ pub struct KangarooHop {
     target_apex_y: f64,
     flight_start: f64,
     stride_m: f64,
+    /// Time and forward centre of mass at the last touchdown, for a stride's mean speed.
+    last_touchdown: Option<(f64, f64)>,
 }
 
 impl KangarooHop {
@@ -275,6 +299,8 @@ impl KangarooHop {
             stance_s: params.stance_guess_s,
             ankle_rest: params.ankle_rest_rad,
             apex_correction_m: 0.0,
+            speed_command_mps: f64::NAN,
+            speed_trim_mps: 0.0,
             jump_pending: params.jump_at_m.is_some(),
             started: false,
             touchdown_time: 0.0,
@@ -284,6 +310,33 @@ impl KangarooHop {
             target_apex_y: f64::NAN,
             flight_start: 0.0,
             stride_m: 0.0,
+            last_touchdown: None,
+        }
+    }
+
+    /// The current state's name: the jump states while jumping, else Figure 4's.
+    #[must_use]
+    pub fn phase_name(&self) -> &'static str {
+        match self.jump {
+            JumpStage::None => self.phase.name(),
+            JumpStage::Takeoff => "jump take-off",
+            JumpStage::Airborne => "jump flight",
+            JumpStage::Landing => "jump landing",
+        }
+    }
+
+    /// Set the desired forward speed (m/s at scale 1); the commanded speed
+    /// ramps to it.
+    pub fn set_speed(&mut self, mps: f64) {
+        if mps.is_finite() {
+            self.params.speed_mps = mps;
+        }
+    }
+
+    /// Set the desired rise of the centre of mass from lift-off to apex (m at scale 1).
+    pub fn set_hop_height(&mut self, m: f64) {
+        if m.is_finite() {
+            self.params.hop_rise_m = m.max(0.0);
         }
     }
 
@@ -293,12 +346,25 @@ impl KangarooHop {
         self.jump_pending = true;
     }
 
-    fn start(&mut self, l: f64) {
+    fn start(&mut self, l: f64, speed: f64) {
         if !self.started {
             self.started = true;
             self.stance_s = self.params.stance_guess_s * l.sqrt();
             self.stride_m = self.params.speed_mps * 0.35 * l;
+            self.speed_command_mps = speed;
         }
+    }
+
+    /// Move the commanded speed toward the desired one, rate-limited.
+    fn ramp_speed(&mut self, dt: f64, l: f64) {
+        let target = self.params.speed_mps * l.sqrt();
+        let step = self.params.speed_ramp_mps2.max(0.0) * dt;
+        let cmd = if self.speed_command_mps.is_finite() {
+            self.speed_command_mps
+        } else {
+            target
+        };
+        self.speed_command_mps = cmd + (target - cmd).clamp(-step, step);
     }
 
     fn advance_phase(&mut self, input: &ControlInput<'_>, com: DVec3, com_v: DVec3) {
@@ -319,7 +385,7 @@ impl KangarooHop {
                 if contact.touching && airborne > 0.03 * l.sqrt() && com_v.y < 0.0 {
                     self.phase = Phase::Loading;
                     self.touchdown_time = t;
-                    self.touch_down(contact.position.z, l);
+                    self.touch_down(contact.position.z, t, com.z, l);
                     return;
                 }
             }
@@ -341,8 +407,20 @@ impl KangarooHop {
         }
     }
 
-    fn touch_down(&mut self, toe_z: f64, l: f64) {
+    fn touch_down(&mut self, toe_z: f64, t: f64, com_z: f64, l: f64) {
         let p = self.params;
+        // Integral speed correction from the stride just finished.
+        if let Some((t0, z0)) = self.last_touchdown
+            && self.jump == JumpStage::None
+            && t > t0
+        {
+            let mean = (com_z - z0) / (t - t0);
+            let limit = p.speed_integral_max_mps * l.sqrt();
+            self.speed_trim_mps = (self.speed_trim_mps
+                + p.speed_integral_gain * (self.speed_command_mps - mean))
+                .clamp(-limit, limit);
+        }
+        self.last_touchdown = Some((t, com_z));
         if self.touchdown_toe != 0.0 {
             let stride = toe_z - self.touchdown_toe;
             if stride > 0.0 {
@@ -451,7 +529,6 @@ impl Controller for KangarooHop {
         let creature = input.creature;
         let data = input.data;
         let l = creature.scale;
-        self.start(l);
         let (Some(leg), Some(g)) = (creature.legs.first(), leg_geometry(creature)) else {
             return;
         };
@@ -464,6 +541,8 @@ impl Controller for KangarooHop {
         let ankle = leg.spring;
         let com = crate::energy::center_of_mass(&creature.model, data);
         let com_v = com_velocity(creature, data);
+        self.start(l, com_v.z);
+        self.ramp_speed(input.dt, l);
         self.advance_phase(input, com, com_v);
         let p = self.params;
         let (t4, t45) = (l.powi(4), l.powf(4.5));
@@ -523,10 +602,11 @@ impl Controller for KangarooHop {
         } else {
             // Flight: place the toe for landing by eq. 3.
             let speed = com_v.z;
-            let desired = p.speed_mps * l.sqrt();
+            let desired = self.speed_command_mps + self.speed_trim_mps;
             let x_fh =
                 speed * self.stance_s / 2.0 + p.placement_gain_s * l.sqrt() * (speed - desired);
-            let r0 = p.landing_leg_m * l;
+            let rising = (com_v.y / l.sqrt()).clamp(0.0, 1.0);
+            let r0 = (p.landing_leg_m - p.flight_retract_m * rising) * l;
             let mut toe = if self.jump == JumpStage::Airborne
                 && p.jump_at_m
                     .is_some_and(|at| com.z < at + p.obstacle_depth_m * l)
