@@ -237,3 +237,51 @@ fn jumps_over_an_obstacle() {
     assert!(sim.data.q[0] > 5.0 + 2.0, "trunk at {}", sim.data.q[0]);
     assert!(!rec.summary().fell);
 }
+
+/// The desired speed changed while running (`set_speed`): up to 5 m/s, then
+/// back down to 2 m/s; the commanded speed ramps both ways and the mean speed
+/// settles on each. Also checks `phase_name` and `set_hop_height` are live.
+#[test]
+fn changes_speed_while_running() {
+    let mut sim = Sim::new(
+        kangaroo(1.0).expect("kangaroo"),
+        kangaroo_ground(),
+        SimOptions::default(),
+    );
+    kangaroo_start(&mut sim, START_MPS);
+    let mut ctl = KangarooHop::new(KangarooHopParams {
+        speed_mps: START_MPS,
+        ..Default::default()
+    });
+    ctl.set_speed(5.0);
+    ctl.set_hop_height(0.07);
+    let mean_speed = |sim: &mut Sim, ctl: &mut KangarooHop, from: f64, to: f64| {
+        while sim.time < from {
+            sim.step(ctl).expect("no blow-up");
+        }
+        let z0 = sim.data.q[0];
+        while sim.time < to {
+            sim.step(ctl).expect("no blow-up");
+            assert!(
+                sim.data.q[2].abs() < 1.0,
+                "pitch {} at {}",
+                sim.data.q[2],
+                sim.time
+            );
+        }
+        (sim.data.q[0] - z0) / (to - from)
+    };
+    let fast = mean_speed(&mut sim, &mut ctl, settle_s(5.0), settle_s(5.0) + 5.0);
+    assert!(!ctl.phase_name().is_empty());
+    ctl.set_speed(2.0);
+    let t = sim.time;
+    let slow = mean_speed(
+        &mut sim,
+        &mut ctl,
+        t + settle_s(5.0),
+        t + settle_s(5.0) + 5.0,
+    );
+    println!("speed change: {fast:.3} m/s at 5, then {slow:.3} m/s at 2");
+    assert!((fast - 5.0).abs() < 0.5, "fast {fast}");
+    assert!((slow - 2.0).abs() < 0.2, "slow {slow}");
+}

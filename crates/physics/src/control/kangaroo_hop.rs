@@ -10,7 +10,13 @@
 //! * Speed: in flight the toe is placed at eq. 3's
 //!   `x_fh,d = ẋ·T_s/2 + k_ẋ·(ẋ − ẋ_d)` from the projection of the centre of
 //!   mass, through a two-link inverse kinematics of hip and knee with the
-//!   ankle held at its rest angle by its spring.
+//!   ankle held at its rest angle by its spring. The ẋ_d used is a commanded
+//!   speed that ramps toward the desired one at a bounded rate (the fast gaits
+//!   are reached by accelerating through the slower ones; a start at 5 m/s
+//!   tumbles), plus an integral correction from each stride's mean speed.
+//!   While the body still rises the toe is drawn in, so the leg swinging
+//!   forward does not scuff the ground after a low hop (the scuff's pitching
+//!   impulse was what tipped the fast gaits over).
 //! * Posture: in stance the hip is servoed to keep the knee on the thrust line
 //!   from the toe through the system centre of mass, so the knee carries
 //!   little load and applies eq. 4 on the trunk pitch.
