@@ -1,0 +1,710 @@
+//! Kangaroo hopping and jumping (Raibert & Hodgins 1991, "Kangaroo control",
+//! with "Hopping Control", "Speed Control", "Posture Control", "Modeling" and
+//! "Dynamic Scaling").
+//!
+//! * Hopping: the ankle is the leg's energy store, a torsional spring-damper
+//!   with adjustable rest angle (eq. 1). At the bottom of each stance the rest
+//!   angle steps so that the predicted apex of eq. 2,
+//!   `h = (PE_strain + PE_elevation + KE)/Mg`, meets the desired one; a slow
+//!   correction learns the losses from each measured apex.
+//! * Speed: in flight the toe is placed at eq. 3's
+//!   `x_fh,d = ẋ·T_s/2 + k_ẋ·(ẋ − ẋ_d)` from the projection of the centre of
+//!   mass, through a two-link inverse kinematics of hip and knee with the
+//!   ankle held at its rest angle by its spring. The ẋ_d used is a commanded
+//!   speed that ramps toward the desired one at a bounded rate (the fast gaits
+//!   are reached by accelerating through the slower ones; a start at 5 m/s
+//!   tumbles), plus an integral correction from each stride's mean speed.
+//!   While the body still rises the toe is drawn in, so the leg swinging
+//!   forward does not scuff the ground after a low hop (the scuff's pitching
+//!   impulse was what tipped the fast gaits over).
+//! * Posture: in stance the hip is servoed to keep the knee on the thrust line
+//!   from the toe through the system centre of mass, so the knee carries
+//!   little load and applies eq. 4 on the trunk pitch.
+//! * Tail and head: the tail-base spring's rest angle steps down in stance and
+//!   up in flight; its stiffness makes the tail's natural frequency about the
+//!   hopping frequency, so it counter-oscillates with the leg. The distal tail
+//!   joints are spring-dampers at a fixed rest; the neck is servoed level.
+//! * Jump ("Results"): extra states — a stiffer, harder thrust on the stance
+//!   before the obstacle, a tucked leg over it, and more dissipation in the
+//!   landing stance.
+//!
+//! Every gain is given at dynamic scale 1 and scaled by the creature's L
+//! (Table 1): lengths ×L, times ×√L, speeds ×√L, torsional stiffness ×L⁴,
+//! torsional damping ×L^4.5.
+
+use glam::{DVec2, DVec3};
+
+use super::attitude::com_velocity;
+use super::phase::Phase;
+use crate::actuator::Stops;
+use crate::creature::Creature;
+use crate::data::Data;
+use crate::ground::{GroundParams, PawPad};
+use crate::model::GRAVITY_MPS2;
+use crate::sim::{ControlInput, Controller, Drive, Sim};
+
+/// Parameters of kangaroo hopping, at dynamic scale 1 (the controller scales
+/// them by the creature's L).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct KangarooHopParams {
+    /// Desired forward speed ẋ_d (m/s); may be changed while running. The
+    /// controller's commanded speed moves toward it at `speed_ramp_mps2`.
+    pub speed_mps: f64,
+    /// Largest rate of change of the commanded speed (m/s²): a fast gait is
+    /// reached by accelerating through the slower ones.
+    pub speed_ramp_mps2: f64,
+    /// Integral gain of the speed correction (m/s of placement target per
+    /// m/s of a stride's mean speed error): eq. 3 alone leaves a steady
+    /// shortfall that grows with speed.
+    pub speed_integral_gain: f64,
+    /// Largest integral speed correction (m/s).
+    pub speed_integral_max_mps: f64,
+    /// Desired rise of the centre of mass from lift-off to apex (m).
+    pub hop_rise_m: f64,
+    /// Integral gain of the apex correction (m of target per m of error per hop).
+    pub hop_gain: f64,
+    /// Ankle spring stiffness (N·m/rad), eq. 1.
+    pub ankle_stiffness: f64,
+    /// Ankle spring damping (N·m·s/rad), eq. 1.
+    pub ankle_damping: f64,
+    /// Ankle rest angle for landing (rad, foot relative to shin).
+    pub ankle_rest_rad: f64,
+    /// Largest step of the ankle rest angle for thrust (rad).
+    pub max_thrust_rad: f64,
+    /// Foot placement gain k_ẋ (s), eq. 3.
+    pub placement_gain_s: f64,
+    /// Hip-to-toe distance at touchdown (m).
+    pub landing_leg_m: f64,
+    /// Shortening of the hip-to-toe distance while the body still rises in
+    /// flight (m), so the toe swinging forward clears the ground; it fades
+    /// out by the apex.
+    pub flight_retract_m: f64,
+    /// First guess of the stance duration T_s (s), before one is measured.
+    pub stance_guess_s: f64,
+    /// Hip servo stiffness in flight (N·m/rad), eq. 5.
+    pub hip_kp: f64,
+    /// Hip servo damping in flight (N·m·s/rad).
+    pub hip_kv: f64,
+    /// Hip servo stiffness in stance, knee onto the thrust line (N·m/rad).
+    pub stance_hip_kp: f64,
+    /// Hip servo damping in stance (N·m·s/rad).
+    pub stance_hip_kv: f64,
+    /// Knee servo stiffness in flight (N·m/rad).
+    pub knee_kp: f64,
+    /// Knee servo damping in flight (N·m·s/rad).
+    pub knee_kv: f64,
+    /// Posture gain k_p of eq. 4 at the knee (N·m/rad).
+    pub posture_kp: f64,
+    /// Posture gain k_v of eq. 4 at the knee (N·m·s/rad).
+    pub posture_kv: f64,
+    /// Apply eq. 4 at the knee in loading and unloading too, not only in
+    /// compression and thrust.
+    pub posture_always: bool,
+    /// Desired trunk pitch ϕ_d (rad, positive nose down).
+    pub pitch_rad: f64,
+    /// Tail-base spring stiffness (N·m/rad).
+    pub tail_stiffness: f64,
+    /// Tail-base spring damping (N·m·s/rad).
+    pub tail_damping: f64,
+    /// Mean rest angle of the tail base (rad, positive raises the tail).
+    pub tail_mean_rad: f64,
+    /// Step of the tail-base rest angle between flight (up) and stance (down) (rad).
+    pub tail_step_rad: f64,
+    /// Pitch feedback added to the tail-base rest angle (rad of rest per rad
+    /// of trunk pitch): the tail as an inertial appendage keeps the trunk level.
+    pub tail_pitch_gain: f64,
+    /// Pitch-rate feedback added to the tail-base rest angle (s).
+    pub tail_rate_gain_s: f64,
+    /// Stiffness of the two distal tail joints (N·m/rad).
+    pub tail_tip_stiffness: f64,
+    /// Damping of the two distal tail joints (N·m·s/rad).
+    pub tail_tip_damping: f64,
+    /// Neck servo stiffness, head kept level (N·m/rad).
+    pub neck_kp: f64,
+    /// Neck servo damping (N·m·s/rad).
+    pub neck_kv: f64,
+    /// Largest torque of hip and knee (N·m).
+    pub max_torque: f64,
+    /// Forward position of the obstacle's near face to jump (m), if any.
+    pub jump_at_m: Option<f64>,
+    /// Depth of the obstacle along the direction of travel (m).
+    pub obstacle_depth_m: f64,
+    /// Height of the obstacle (m).
+    pub obstacle_height_m: f64,
+    /// Clearance wanted between the toe and the obstacle (m).
+    pub jump_clearance_m: f64,
+    /// Ankle stiffness multiplier for the jump's take-off stance.
+    pub jump_stiffness_factor: f64,
+    /// Ankle damping multiplier for the landing stance after a jump.
+    pub landing_damping_factor: f64,
+}
+
+impl Default for KangarooHopParams {
+    fn default() -> Self {
+        Self {
+            speed_mps: 5.0,
+            speed_ramp_mps2: 0.25,
+            speed_integral_gain: 0.2,
+            speed_integral_max_mps: 1.0,
+            hop_rise_m: 0.07,
+            hop_gain: 0.5,
+            ankle_stiffness: 250.0,
+            ankle_damping: 0.3,
+            ankle_rest_rad: -1.2,
+            max_thrust_rad: 0.8,
+            placement_gain_s: 0.1,
+            landing_leg_m: 0.46,
+            flight_retract_m: 0.06,
+            stance_guess_s: 0.11,
+            hip_kp: 150.0,
+            hip_kv: 4.0,
+            stance_hip_kp: 200.0,
+            stance_hip_kv: 5.0,
+            knee_kp: 60.0,
+            knee_kv: 2.0,
+            posture_kp: 200.0,
+            posture_kv: 30.0,
+            posture_always: false,
+            pitch_rad: 0.0,
+            tail_stiffness: 7.0,
+            tail_damping: 0.4,
+            tail_mean_rad: 0.1,
+            tail_step_rad: 0.15,
+            tail_pitch_gain: 4.0,
+            tail_rate_gain_s: 0.3,
+            tail_tip_stiffness: 4.0,
+            tail_tip_damping: 0.05,
+            neck_kp: 3.0,
+            neck_kv: 0.08,
+            max_torque: 200.0,
+            jump_at_m: None,
+            obstacle_depth_m: 0.3,
+            obstacle_height_m: 0.25,
+            jump_clearance_m: 0.08,
+            jump_stiffness_factor: 1.5,
+            landing_damping_factor: 4.0,
+        }
+    }
+}
+
+/// The extra states of a jump over an obstacle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum JumpStage {
+    /// Ordinary hopping.
+    #[default]
+    None,
+    /// The stance that throws the jump: stiffer ankle, larger thrust.
+    Takeoff,
+    /// Flying over the obstacle with the leg tucked.
+    Airborne,
+    /// The stance after the jump: extra ankle damping.
+    Landing,
+}
+
+/// The leg's link lengths (m), read from the model.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct LegGeometry {
+    thigh: f64,
+    shin: f64,
+    foot: f64,
+}
+
+fn leg_geometry(creature: &Creature) -> Option<LegGeometry> {
+    let leg = creature.legs.first()?;
+    let bodies = creature.model.bodies();
+    let shin_body = bodies.get(leg.foot_body)?.parent?;
+    Some(LegGeometry {
+        thigh: bodies.get(shin_body)?.placement.pos.length(),
+        shin: bodies.get(leg.foot_body)?.placement.pos.length(),
+        foot: leg.foot_point.length(),
+    })
+}
+
+/// Unit direction (forward, up) of a link at absolute angle `a` (rad about +x,
+/// 0 hanging down, positive swinging back).
+fn dir(a: f64) -> DVec2 {
+    DVec2::new(-a.sin(), -a.cos())
+}
+
+/// Absolute angle of the direction `v` (forward, up).
+fn angle_of(v: DVec2) -> f64 {
+    (-v.x).atan2(-v.y)
+}
+
+/// A world point in the sagittal plane (forward, up).
+fn planar(p: DVec3) -> DVec2 {
+    DVec2::new(p.z, p.y)
+}
+
+/// Hip and knee angles (relative, rad) putting the toe at `toe` from the hip
+/// (forward, up) with the ankle at `ankle` and the trunk at pitch `pitch`;
+/// the knee bends forward.
+fn leg_ik(g: &LegGeometry, toe: DVec2, ankle: f64, pitch: f64) -> (f64, f64) {
+    // Knee-to-toe as one link in the shin's frame.
+    let v = g.shin * dir(0.0) + g.foot * dir(ankle);
+    let s = v.length();
+    let delta = angle_of(v);
+    let l1 = g.thigh;
+    let d = toe
+        .length()
+        .clamp((l1 - s).abs() + 1e-6 * (l1 + s), 0.999 * (l1 + s));
+    let gamma = angle_of(toe);
+    let alpha = ((l1 * l1 + d * d - s * s) / (2.0 * l1 * d))
+        .clamp(-1.0, 1.0)
+        .acos();
+    let a1 = gamma - alpha;
+    let knee = l1 * dir(a1);
+    let toe_at = d * dir(gamma);
+    let b = angle_of(toe_at - knee);
+    let a2 = b - delta;
+    (a1 - pitch, a2 - a1)
+}
+
+/// The kangaroo hopping controller: the state machine of Figure 4 plus the
+/// jump states.
+#[derive(Clone, Debug)]
+pub struct KangarooHop {
+    /// Parameters (editable while running).
+    pub params: KangarooHopParams,
+    /// Current state of Figure 4.
+    pub phase: Phase,
+    /// Current jump state.
+    pub jump: JumpStage,
+    /// Measured duration of the last stance (s), T_s of eq. 3.
+    pub stance_s: f64,
+    /// Current ankle rest angle (rad).
+    pub ankle_rest: f64,
+    /// Learned correction of the apex target (m), from measured apexes.
+    pub apex_correction_m: f64,
+    /// Commanded forward speed (m/s, scaled), ramping toward the desired one.
+    pub speed_command_mps: f64,
+    /// Integral speed correction added to the commanded speed in eq. 3 (m/s, scaled).
+    pub speed_trim_mps: f64,
+    /// Whether a jump is still to come.
+    jump_pending: bool,
+    started: bool,
+    touchdown_time: f64,
+    touchdown_toe: f64,
+    liftoff_com_y: f64,
+    apex_com_y: f64,
+    target_apex_y: f64,
+    flight_start: f64,
+    stride_m: f64,
+    /// Time and forward centre of mass at the last touchdown, for a stride's mean speed.
+    last_touchdown: Option<(f64, f64)>,
+}
+
+impl KangarooHop {
+    /// A controller starting in flight.
+    #[must_use]
+    pub fn new(params: KangarooHopParams) -> Self {
+        Self {
+            params,
+            phase: Phase::Flight,
+            jump: JumpStage::None,
+            stance_s: params.stance_guess_s,
+            ankle_rest: params.ankle_rest_rad,
+            apex_correction_m: 0.0,
+            speed_command_mps: f64::NAN,
+            speed_trim_mps: 0.0,
+            jump_pending: params.jump_at_m.is_some(),
+            started: false,
+            touchdown_time: 0.0,
+            touchdown_toe: 0.0,
+            liftoff_com_y: f64::NAN,
+            apex_com_y: f64::NEG_INFINITY,
+            target_apex_y: f64::NAN,
+            flight_start: 0.0,
+            stride_m: 0.0,
+            last_touchdown: None,
+        }
+    }
+
+    /// The current state's name: the jump states while jumping, else Figure 4's.
+    #[must_use]
+    pub fn phase_name(&self) -> &'static str {
+        match self.jump {
+            JumpStage::None => self.phase.name(),
+            JumpStage::Takeoff => "jump take-off",
+            JumpStage::Airborne => "jump flight",
+            JumpStage::Landing => "jump landing",
+        }
+    }
+
+    /// Set the desired forward speed (m/s at scale 1); the commanded speed
+    /// ramps to it.
+    pub fn set_speed(&mut self, mps: f64) {
+        if mps.is_finite() {
+            self.params.speed_mps = mps;
+        }
+    }
+
+    /// Set the desired rise of the centre of mass from lift-off to apex (m at scale 1).
+    pub fn set_hop_height(&mut self, m: f64) {
+        if m.is_finite() {
+            self.params.hop_rise_m = m.max(0.0);
+        }
+    }
+
+    /// Ask for a jump over an obstacle whose near face is at `at_m` (m).
+    pub fn jump_at(&mut self, at_m: f64) {
+        self.params.jump_at_m = Some(at_m);
+        self.jump_pending = true;
+    }
+
+    fn start(&mut self, l: f64, speed: f64) {
+        if !self.started {
+            self.started = true;
+            self.stance_s = self.params.stance_guess_s * l.sqrt();
+            self.stride_m = self.params.speed_mps * 0.35 * l;
+            self.speed_command_mps = speed;
+        }
+    }
+
+    /// Move the commanded speed toward the desired one, rate-limited.
+    fn ramp_speed(&mut self, dt: f64, l: f64) {
+        let target = self.params.speed_mps * l.sqrt();
+        let step = self.params.speed_ramp_mps2.max(0.0) * dt;
+        let cmd = if self.speed_command_mps.is_finite() {
+            self.speed_command_mps
+        } else {
+            target
+        };
+        self.speed_command_mps = cmd + (target - cmd).clamp(-step, step);
+    }
+
+    fn advance_phase(&mut self, input: &ControlInput<'_>, com: DVec3, com_v: DVec3) {
+        let l = input.creature.scale;
+        let Some(leg) = input.creature.legs.first() else {
+            return;
+        };
+        let Some(contact) = input.contacts.first() else {
+            return;
+        };
+        let q = input.data.q[leg.spring];
+        let qd = input.data.qd[leg.spring];
+        let t = input.time;
+        match self.phase {
+            Phase::Flight => {
+                self.apex_com_y = self.apex_com_y.max(com.y);
+                let airborne = t - self.flight_start;
+                if contact.touching && airborne > 0.03 * l.sqrt() && com_v.y < 0.0 {
+                    self.phase = Phase::Loading;
+                    self.touchdown_time = t;
+                    self.touch_down(contact.position.z, t, com.z, l);
+                    return;
+                }
+            }
+            Phase::Loading if qd < 0.0 && q < self.ankle_rest - 0.02 => {
+                self.phase = Phase::Compression;
+            }
+            Phase::Compression if qd >= 0.0 => {
+                self.phase = Phase::Thrust;
+                self.thrust(input, com, com_v);
+            }
+            Phase::Thrust if q >= self.ankle_rest - 0.05 => self.phase = Phase::Unloading,
+            _ => {}
+        }
+        if self.phase != Phase::Flight
+            && !contact.touching
+            && t - self.touchdown_time > 0.02 * l.sqrt()
+        {
+            self.lift_off(t, com, l);
+        }
+    }
+
+    fn touch_down(&mut self, toe_z: f64, t: f64, com_z: f64, l: f64) {
+        let p = self.params;
+        // Integral speed correction from the stride just finished.
+        if let Some((t0, z0)) = self.last_touchdown
+            && self.jump == JumpStage::None
+            && t > t0
+        {
+            let mean = (com_z - z0) / (t - t0);
+            let limit = p.speed_integral_max_mps * l.sqrt();
+            self.speed_trim_mps = (self.speed_trim_mps
+                + p.speed_integral_gain * (self.speed_command_mps - mean))
+                .clamp(-limit, limit);
+        }
+        self.last_touchdown = Some((t, com_z));
+        if self.touchdown_toe != 0.0 {
+            let stride = toe_z - self.touchdown_toe;
+            if stride > 0.0 {
+                self.stride_m = 0.5 * self.stride_m + 0.5 * stride;
+            }
+        }
+        self.touchdown_toe = toe_z;
+        // Hop-height learning from the apex just flown (eq. 2's losses).
+        if self.jump == JumpStage::None
+            && self.target_apex_y.is_finite()
+            && self.apex_com_y.is_finite()
+        {
+            let err = self.target_apex_y - self.apex_com_y;
+            self.apex_correction_m =
+                (self.apex_correction_m + p.hop_gain * err).clamp(-0.1 * l, 0.2 * l);
+        }
+        self.jump = match self.jump {
+            JumpStage::Airborne => JumpStage::Landing,
+            JumpStage::Landing => JumpStage::None,
+            s => s,
+        };
+        if self.jump_pending
+            && let Some(at) = p.jump_at_m
+        {
+            // Jump now if the next ordinary stride would land short of the
+            // obstacle's far side but past its near face minus a margin.
+            let next = toe_z + self.stride_m;
+            if next > (at - 0.25 * l) * 1.0 && toe_z < at {
+                self.jump = JumpStage::Takeoff;
+                self.jump_pending = false;
+            }
+        }
+    }
+
+    fn lift_off(&mut self, t: f64, com: DVec3, l: f64) {
+        let measured = t - self.touchdown_time;
+        if self.jump == JumpStage::None {
+            self.stance_s = measured.clamp(0.05 * l.sqrt(), 0.3 * l.sqrt());
+        }
+        self.liftoff_com_y = com.y;
+        self.apex_com_y = f64::NEG_INFINITY;
+        self.flight_start = t;
+        self.phase = Phase::Flight;
+        self.ankle_rest = self.params.ankle_rest_rad;
+        if self.jump == JumpStage::Takeoff {
+            self.jump = JumpStage::Airborne;
+        }
+    }
+
+    fn ankle_gains(&self, l: f64) -> (f64, f64) {
+        let p = &self.params;
+        let mut k = p.ankle_stiffness * l.powi(4);
+        let mut b = p.ankle_damping * l.powf(4.5);
+        match self.jump {
+            JumpStage::Takeoff => k *= p.jump_stiffness_factor,
+            JumpStage::Landing if self.phase != Phase::Flight => b *= p.landing_damping_factor,
+            _ => {}
+        }
+        (k, b)
+    }
+
+    /// Eq. 2 at the bottom of the stance: step the ankle rest so the
+    /// predicted apex meets the target.
+    fn thrust(&mut self, input: &ControlInput<'_>, com: DVec3, com_v: DVec3) {
+        let l = input.creature.scale;
+        let Some(leg) = input.creature.legs.first() else {
+            return;
+        };
+        let p = self.params;
+        let m = input.creature.model.total_mass();
+        let g = GRAVITY_MPS2;
+        let (k, _) = self.ankle_gains(l);
+        let q = input.data.q[leg.spring];
+        let strain = 0.5 * k * (q - self.ankle_rest).powi(2);
+        let predicted = (strain + m * g * com.y + 0.5 * m * com_v.y * com_v.y) / (m * g);
+        let base = if self.liftoff_com_y.is_finite() {
+            self.liftoff_com_y
+        } else {
+            com.y
+        };
+        let mut target = base + p.hop_rise_m * l;
+        if self.jump == JumpStage::Takeoff
+            && let Some(at) = p.jump_at_m
+        {
+            // Long enough to carry the body past the obstacle, and high
+            // enough for the tucked toe to clear it.
+            let v = com_v.z.max(0.5 * l.sqrt());
+            let far = at + p.obstacle_depth_m * l + 0.3 * l;
+            let flight = ((far - com.z) / v - 0.5 * self.stance_s).max(0.1 * l.sqrt());
+            let rise_time = 0.5 * flight;
+            let by_time = 0.5 * g * rise_time * rise_time;
+            let by_height = (p.obstacle_height_m + p.jump_clearance_m) * l + 0.1 * l;
+            target = base + by_time.max(by_height);
+        }
+        self.target_apex_y = target;
+        let wanted = (target + self.apex_correction_m - predicted) * m * g;
+        let stored = (q - self.ankle_rest).powi(2) + 2.0 * wanted / k;
+        let rest = q + stored.max(0.0).sqrt();
+        let r0 = p.ankle_rest_rad;
+        self.ankle_rest = rest.clamp(r0 - 0.5 * p.max_thrust_rad, r0 + p.max_thrust_rad);
+    }
+}
+
+impl Controller for KangarooHop {
+    fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
+        let creature = input.creature;
+        let data = input.data;
+        let l = creature.scale;
+        let (Some(leg), Some(g)) = (creature.legs.first(), leg_geometry(creature)) else {
+            return;
+        };
+        let Some(&hip) = leg.hip.first() else {
+            return;
+        };
+        let Some(knee) = leg.knee else {
+            return;
+        };
+        let ankle = leg.spring;
+        let com = crate::energy::center_of_mass(&creature.model, data);
+        let com_v = com_velocity(creature, data);
+        self.start(l, com_v.z);
+        self.ramp_speed(input.dt, l);
+        self.advance_phase(input, com, com_v);
+        let p = self.params;
+        let (t4, t45) = (l.powi(4), l.powf(4.5));
+        let max = p.max_torque * t4;
+        let pitch = data.q[2];
+        let pitch_rate = data.qd[2];
+
+        // Ankle: the leg spring of eq. 1.
+        let (ak, ab) = self.ankle_gains(l);
+        let d = &mut drives[ankle];
+        d.spring.stiffness = ak;
+        d.spring.damping = ab;
+        d.spring.rest = self.ankle_rest;
+        d.spring.max_force = f64::INFINITY;
+        d.feedforward = 0.0;
+        d.stops = Some(Stops {
+            min: p.ankle_rest_rad - 1.3,
+            max: p.ankle_rest_rad + 1.2,
+            stiffness: 50.0 * ak,
+            damping: 20.0 * ab,
+        });
+
+        let hip_world = planar(data.point_world(creature.trunk, leg.hip_in_trunk));
+        let stance = self.phase != Phase::Flight;
+        if stance {
+            // Hip: the knee onto the thrust line toe → centre of mass.
+            let toe = planar(input.contacts.first().map_or(DVec3::ZERO, |c| c.position));
+            let u = (planar(com) - toe).normalize_or(DVec2::Y);
+            let th = toe - hip_world;
+            let b = u.dot(th);
+            let disc = b * b - (th.length_squared() - g.thigh * g.thigh);
+            let a1_now = pitch + data.q[hip];
+            let a1 = if disc >= 0.0 {
+                let r = disc.sqrt();
+                let k1 = toe + (-b + r) * u - hip_world;
+                let k2 = toe + (-b - r) * u - hip_world;
+                let (c1, c2) = (angle_of(k1), angle_of(k2));
+                if (c1 - a1_now).abs() <= (c2 - a1_now).abs() {
+                    c1
+                } else {
+                    c2
+                }
+            } else {
+                angle_of(toe + (-b) * u - hip_world)
+            };
+            drives[hip].servo(p.stance_hip_kp * t4, p.stance_hip_kv * t45, a1 - pitch);
+            drives[hip].spring.max_force = max;
+            // Knee: posture (eq. 4) in compression and thrust.
+            let posture =
+                matches!(self.phase, Phase::Compression | Phase::Thrust) || p.posture_always;
+            let torque = if posture {
+                p.posture_kp * t4 * (pitch - p.pitch_rad) + p.posture_kv * t45 * pitch_rate
+            } else {
+                0.0
+            };
+            drives[knee].torque(torque.clamp(-max, max));
+        } else {
+            // Flight: place the toe for landing by eq. 3.
+            let speed = com_v.z;
+            let desired = self.speed_command_mps + self.speed_trim_mps;
+            let x_fh =
+                speed * self.stance_s / 2.0 + p.placement_gain_s * l.sqrt() * (speed - desired);
+            let rising = (com_v.y / l.sqrt()).clamp(0.0, 1.0);
+            let r0 = (p.landing_leg_m - p.flight_retract_m * rising) * l;
+            let mut toe = if self.jump == JumpStage::Airborne
+                && p.jump_at_m
+                    .is_some_and(|at| com.z < at + p.obstacle_depth_m * l)
+            {
+                // Tucked over the obstacle.
+                DVec2::new(0.05 * l, -0.22 * l)
+            } else {
+                let dz = (com.z + x_fh - hip_world.x).clamp(-0.9 * r0, 0.9 * r0);
+                DVec2::new(dz, -(r0 * r0 - dz * dz).sqrt())
+            };
+            if self.jump == JumpStage::Takeoff {
+                toe.y = -r0;
+            }
+            let (qh, qk) = leg_ik(&g, toe, self.ankle_rest, pitch);
+            drives[hip].servo(p.hip_kp * t4, p.hip_kv * t45, qh);
+            drives[hip].spring.max_force = max;
+            drives[knee].servo(p.knee_kp * t4, p.knee_kv * t45, qk);
+            drives[knee].spring.max_force = max;
+        }
+
+        // Tail: a step of the base spring's rest, down in stance, up in flight.
+        let mut tail = creature.tail.iter().copied();
+        if let Some(base) = tail.next() {
+            let step = if stance {
+                p.tail_mean_rad - 0.5 * p.tail_step_rad
+            } else {
+                p.tail_mean_rad + 0.5 * p.tail_step_rad
+            };
+            let assist = p.tail_pitch_gain * (pitch - p.pitch_rad)
+                + p.tail_rate_gain_s * l.sqrt() * pitch_rate;
+            let rest = step + assist.clamp(-1.0, 1.0);
+            drives[base].servo(p.tail_stiffness * t4, p.tail_damping * t45, rest);
+        }
+        for j in tail {
+            drives[j].servo(p.tail_tip_stiffness * t4, p.tail_tip_damping * t45, 0.0);
+        }
+        // Head level.
+        if let Some(neck) = creature.neck {
+            drives[neck].servo(p.neck_kp * t4, p.neck_kv * t45, -pitch);
+        }
+    }
+}
+
+/// The kangaroo's paw-pad ground (eq. 6) at scale 1; scale it with
+/// [`GroundParams::scaled`].
+#[must_use]
+pub fn kangaroo_ground() -> GroundParams {
+    GroundParams {
+        vertical_stiffness: 30_000.0,
+        vertical_damping: 150.0,
+        tangential_stiffness: 20_000.0,
+        tangential_damping: 100.0,
+        torsional_stiffness: 50.0,
+        torsional_damping: 0.5,
+        pad: Some(PawPad {
+            stiffness_n: 600.0,
+            thickness_m: 0.02,
+        }),
+    }
+}
+
+/// Put the kangaroo in flight just before landing, moving forward at
+/// `speed_mps` (m/s at scale 1; scaled by √L), its leg set for a neutral
+/// landing. Expects `sim.creature` to be the kangaroo.
+pub fn kangaroo_start(sim: &mut Sim, speed_mps: f64) {
+    let creature = &sim.creature;
+    let l = creature.scale;
+    let p = KangarooHopParams::default();
+    let Some(g) = leg_geometry(creature) else {
+        return;
+    };
+    let Some(leg) = creature.legs.first() else {
+        return;
+    };
+    let (Some(&hip), Some(knee)) = (leg.hip.first(), leg.knee) else {
+        return;
+    };
+    let ankle = leg.spring;
+    let data: &mut Data = &mut sim.data;
+    data.q.fill(0.0);
+    data.qd.fill(0.0);
+    let r0 = p.landing_leg_m * l;
+    let dz = (0.5 * speed_mps * p.stance_guess_s * l).min(0.8 * r0);
+    let toe = DVec2::new(dz, -(r0 * r0 - dz * dz).sqrt());
+    let (qh, qk) = leg_ik(&g, toe, p.ankle_rest_rad, 0.0);
+    data.q[hip] = qh;
+    data.q[knee] = qk;
+    data.q[ankle] = p.ankle_rest_rad;
+    data.q[6] = p.tail_mean_rad;
+    // Trunk height: the toe 1 cm (×L) above the ground.
+    data.q[1] = -(leg.hip_in_trunk.y + toe.y) + 0.01 * l;
+    data.qd[0] = speed_mps * l.sqrt();
+    data.qd[1] = -0.5 * l.sqrt();
+    crate::kinematics::kinematics(&creature.model, data);
+}
