@@ -7,5 +7,6 @@ pub mod attitude;
 pub mod biped_run;
 pub mod phase;
 pub mod placement;
+pub mod quadruped_run;
 
 pub use phase::Phase;
