@@ -105,6 +105,9 @@ pub struct GaitTuning {
     pub roll_kv: f64,
     /// Desired trunk pitch in stance (rad, positive nose down).
     pub pitch_d: f64,
+    /// Whether the landing pair lengthens only once its hips descend
+    /// (else at once, as Figure 4's flight state does).
+    pub wait_for_descent: bool,
 }
 
 /// Parameters of [`QuadrupedRun`]; all at scale 1 (the controller scales
@@ -154,12 +157,13 @@ impl Default for QuadrupedRunParams {
             thrust_m: 0.02,
             flight_s: [0.18, 0.18],
             stance_s: 0.09,
-            placement_gain_s: 0.06,
+            placement_gain_s: 0.12,
             pitch_kp: 1500.0,
             pitch_kv: 100.0,
             roll_kp: 400.0,
             roll_kv: 70.0,
             pitch_d: 0.0,
+            wait_for_descent: true,
         };
         let bound = GaitTuning {
             leg_stiffness: 4_500.0,
@@ -170,12 +174,13 @@ impl Default for QuadrupedRunParams {
             thrust_m: 0.03,
             flight_s: [0.22, 0.03],
             stance_s: 0.09,
-            placement_gain_s: 0.06,
-            pitch_kp: 300.0,
-            pitch_kv: 20.0,
+            placement_gain_s: 0.15,
+            pitch_kp: 800.0,
+            pitch_kv: 60.0,
             roll_kp: 400.0,
             roll_kv: 70.0,
             pitch_d: 0.0,
+            wait_for_descent: false,
         };
         let gallop = GaitTuning {
             flight_s: [0.18, 0.03],
@@ -259,6 +264,8 @@ pub struct QuadrupedRun {
     in_stance: bool,
     done: [bool; 4],
     touchdown_time: f64,
+    /// Each leg's touchdown time (s).
+    leg_touchdown: [f64; 4],
     /// Each leg's spring rest at its touchdown (m): its stance rest.
     stance_rest: [f64; 4],
     /// Each leg's hip servo target last call (rad), for the servo's rate feed-forward.
@@ -285,6 +292,7 @@ impl QuadrupedRun {
             in_stance: false,
             done: [false; 4],
             touchdown_time: 0.0,
+            leg_touchdown: [0.0; 4],
             stance_rest: [params.tuning(gait).landing_rest_m * scale; 4],
             hip_target: [[0.0; 2]; 4],
             liftoff_time: 0.0,
@@ -371,18 +379,27 @@ impl QuadrupedRun {
                     let armed = if slot == 1 && self.gait == QuadrupedGait::Gallop {
                         self.in_stance
                     } else {
-                        descending || self.in_stance
+                        descending || self.in_stance || !t.wait_for_descent
                     };
                     if touching && armed {
                         *phase = Phase::Loading;
-                        self.stance_rest[i] = drives[leg.spring].spring.rest.max(landing - 0.08 * l);
+                        self.leg_touchdown[i] = input.time;
+                        // A leg caught short stands at the length it landed with.
+                        self.stance_rest[i] = drives[leg.spring]
+                            .spring
+                            .rest
+                            .min(q + 0.02 * l)
+                            .max(landing - 0.08 * l);
                         if !self.in_stance {
                             self.in_stance = true;
                             self.touchdown_time = input.time;
                         }
                     }
                 }
-                Phase::Loading if qd < 0.0 && q < self.stance_rest[i] - 0.002 * l => {
+                Phase::Loading
+                    if (qd < 0.0 && q < self.stance_rest[i] - 0.002 * l)
+                        || input.time - self.leg_touchdown[i] > 0.015 * l.sqrt() =>
+                {
                     *phase = Phase::Compression;
                 }
                 Phase::Compression if qd >= 0.0 => *phase = Phase::Thrust,
@@ -392,8 +409,9 @@ impl QuadrupedRun {
                 _ => {}
             }
             if *phase != Phase::Flight && !touching {
-                // A foot bouncing off while loading may land again.
-                self.done[i] = *phase != Phase::Loading;
+                // A foot bouncing off at once may land again.
+                self.done[i] = *phase != Phase::Loading
+                    || input.time - self.leg_touchdown[i] > 0.01 * l.sqrt();
                 *phase = Phase::Flight;
             }
         }
@@ -492,7 +510,7 @@ impl Controller for QuadrupedRun {
                     Phase::Thrust => self.stance_rest[i] + thrust,
                     Phase::Unloading => short,
                     Phase::Flight if self.held_back(s, input.time) => short,
-                    Phase::Flight if !descending && !self.in_stance => short,
+                    Phase::Flight if !descending && !self.in_stance && t.wait_for_descent => short,
                     Phase::Flight => (landing + level(i)).min(0.0),
                     _ => self.stance_rest[i],
                 },
@@ -600,10 +618,20 @@ impl Controller for QuadrupedRun {
                 }
             }
         }
-        // The idle pair mirrors the active pair's sweep, hanging under its hips.
+        // The idle pair swings forward: in the trot it mirrors the active
+        // pair's sweep; in the bound and gallop, whose trunk pitches, it is
+        // brought to its landing direction in the world, ready for a short flight.
         for &i in &idle {
             let leg = &creature.legs[i];
-            servo.set(drives, &leg.hip, [0.0, -active_pitch], &mut self.hip_target[i]);
+            let target = if self.gait == QuadrupedGait::Trot {
+                [0.0, -active_pitch]
+            } else {
+                let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
+                let foot = DVec3::new(hip_world.x, 0.0, hip_world.z) + displacement;
+                let (roll, pitch) = gimbal_angles(leg_direction(trunk_rot, foot - hip_world, reach));
+                [roll, pitch]
+            };
+            servo.set(drives, &leg.hip, target, &mut self.hip_target[i]);
         }
     }
 }
