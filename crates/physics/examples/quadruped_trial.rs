@@ -19,7 +19,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let speed: f64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(2.3);
     let secs: f64 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(10.0);
     let trace = args.get(4).is_some();
-    let mut sim = Sim::new(quadruped(1.0)?, quadruped_ground(1.0), SimOptions::default());
+    let mut sim = Sim::new(
+        quadruped(1.0)?,
+        quadruped_ground(1.0),
+        SimOptions::default(),
+    );
     quadruped_start(&mut sim, gait, speed);
     let mut ctl = QuadrupedRun::new(
         QuadrupedRunParams {

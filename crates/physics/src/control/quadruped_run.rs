@@ -466,7 +466,10 @@ impl Controller for QuadrupedRun {
         let pair = self.gait.pairs()[self.active];
         let descending = pair
             .iter()
-            .map(|&i| data.point_velocity_world(trunk, creature.legs[i].hip_in_trunk).y)
+            .map(|&i| {
+                data.point_velocity_world(trunk, creature.legs[i].hip_in_trunk)
+                    .y
+            })
             .sum::<f64>()
             < 0.0;
         self.advance_phase(input, drives, descending);
@@ -582,7 +585,10 @@ impl Controller for QuadrupedRun {
                     // target stays put on the ground and the leg sweeps
                     // back as the body travels (ground speed matching).
                     let hip_v = data.point_velocity_world(trunk, leg.hip_in_trunk);
-                    let drop = hip_world.y - (reach * reach - displacement.length_squared()).max(0.0).sqrt();
+                    let drop = hip_world.y
+                        - (reach * reach - displacement.length_squared())
+                            .max(0.0)
+                            .sqrt();
                     let g = crate::GRAVITY_MPS2;
                     let t_rem = if drop > 0.0 {
                         (hip_v.y + (hip_v.y * hip_v.y + 2.0 * g * drop).sqrt()) / g
@@ -591,7 +597,8 @@ impl Controller for QuadrupedRun {
                     }
                     .min(0.5 * l.sqrt());
                     let ahead = DVec3::new(hip_v.x, 0.0, hip_v.z) * t_rem;
-                    let foot = DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead + displacement + spread;
+                    let foot =
+                        DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead + displacement + spread;
                     let dir = leg_direction(trunk_rot, foot - hip_world, reach);
                     let (roll, pitch) = gimbal_angles(dir);
                     servo.set(drives, &leg.hip, [roll, pitch], &mut self.hip_target[i]);
@@ -628,7 +635,8 @@ impl Controller for QuadrupedRun {
             } else {
                 let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
                 let foot = DVec3::new(hip_world.x, 0.0, hip_world.z) + displacement;
-                let (roll, pitch) = gimbal_angles(leg_direction(trunk_rot, foot - hip_world, reach));
+                let (roll, pitch) =
+                    gimbal_angles(leg_direction(trunk_rot, foot - hip_world, reach));
                 [roll, pitch]
             };
             servo.set(drives, &leg.hip, target, &mut self.hip_target[i]);
