@@ -25,14 +25,47 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         SimOptions::default(),
     );
     quadruped_start(&mut sim, gait, speed);
-    let mut ctl = QuadrupedRun::new(
-        QuadrupedRunParams {
-            speed_mps: speed,
-            ..Default::default()
-        },
-        gait,
-        1.0,
-    );
+    let mut params = QuadrupedRunParams {
+        speed_mps: speed,
+        ..Default::default()
+    };
+    // Tuning overrides for experiments: QT="key=value,key=value" (gait tuning fields).
+    if let Ok(spec) = std::env::var("QT") {
+        for kv in spec.split(',').filter(|s| !s.is_empty()) {
+            let (k, v) = kv.split_once('=').ok_or("QT: key=value")?;
+            let v: f64 = v.parse()?;
+            let t = match gait {
+                QuadrupedGait::Trot => &mut params.trot,
+                QuadrupedGait::Bound => &mut params.bound,
+                QuadrupedGait::Gallop => &mut params.gallop,
+            };
+            match k {
+                "leg_stiffness" => t.leg_stiffness = v,
+                "leg_damping" => t.leg_damping = v,
+                "landing_rest_m" => t.landing_rest_m = v,
+                "thrust_m" => t.thrust_m = v,
+                "flight0" => t.flight_s[0] = v,
+                "flight1" => t.flight_s[1] = v,
+                "stance_s" => t.stance_s = v,
+                "placement_gain_s" => t.placement_gain_s = v,
+                "pitch_kp" => t.pitch_kp = v,
+                "pitch_kv" => t.pitch_kv = v,
+                "roll_kp" => t.roll_kp = v,
+                "roll_kv" => t.roll_kv = v,
+                "pitch_d" => t.pitch_d = v,
+                "speed_gain" => t.speed_gain = v,
+                "pitch_swing" => t.pitch_swing = v,
+                "posture_force_ratio" => t.posture_force_ratio = v,
+                "flight_gain" => params.flight_gain = v,
+                "gallop_lag_s" => params.gallop_lag_s = v,
+                "gallop_spread_m" => params.gallop_spread_m = v,
+                "swing_kp" => params.swing_kp = v,
+                "swing_kv" => params.swing_kv = v,
+                _ => return Err(format!("QT: unknown key {k}").into()),
+            }
+        }
+    }
+    let mut ctl = QuadrupedRun::new(params, gait, 1.0);
     let mut rec = GaitRecorder::new(4, speed, 0.0, 3.0);
     let mut last_print = -1.0;
     while sim.time < secs {

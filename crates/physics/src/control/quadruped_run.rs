@@ -105,6 +105,19 @@ pub struct GaitTuning {
     pub roll_kv: f64,
     /// Desired trunk pitch in stance (rad, positive nose down).
     pub pitch_d: f64,
+    /// Integral speed correction: change of the speed bias added to the
+    /// desired speed of eq. 3 per stride, per m/s of the stride's mean
+    /// speed error (dimensionless).
+    pub speed_gain: f64,
+    /// Pitch swing (rad): the desired pitch in the stance of pair 0 is
+    /// `pitch_d + pitch_swing`, in that of pair 1 `pitch_d − pitch_swing`
+    /// (the bound's trunk noses down on its front legs and up on its rear).
+    pub pitch_swing: f64,
+    /// Largest horizontal foot force the posture servo may ask for, as a
+    /// fraction of the leg's spring force: the pitch torque of each stance
+    /// leg is limited to this fraction of spring force × leg length, so the
+    /// servo cannot swamp foot placement (∞ for no limit).
+    pub posture_force_ratio: f64,
     /// Whether the landing pair lengthens only once its hips descend
     /// (else at once, as Figure 4's flight state does).
     pub wait_for_descent: bool,
@@ -163,6 +176,9 @@ impl Default for QuadrupedRunParams {
             roll_kp: 400.0,
             roll_kv: 70.0,
             pitch_d: 0.0,
+            speed_gain: 0.0,
+            pitch_swing: 0.0,
+            posture_force_ratio: f64::INFINITY,
             wait_for_descent: true,
         };
         let bound = GaitTuning {
@@ -180,6 +196,9 @@ impl Default for QuadrupedRunParams {
             roll_kp: 400.0,
             roll_kv: 70.0,
             pitch_d: 0.0,
+            speed_gain: 0.0,
+            pitch_swing: 0.0,
+            posture_force_ratio: f64::INFINITY,
             wait_for_descent: false,
         };
         let gallop = GaitTuning {
@@ -272,6 +291,10 @@ pub struct QuadrupedRun {
     hip_target: [[f64; 2]; 4],
     liftoff_time: f64,
     liftoff_pair: Option<usize>,
+    /// Integral speed correction added to the desired speed (m/s).
+    pub speed_bias: f64,
+    /// Time and forward position of the centre of mass at the last lift-off.
+    step_start: Option<(f64, f64)>,
     scale: f64,
 }
 
@@ -297,6 +320,8 @@ impl QuadrupedRun {
             hip_target: [[0.0; 2]; 4],
             liftoff_time: 0.0,
             liftoff_pair: None,
+            speed_bias: 0.0,
+            step_start: None,
             scale,
         }
     }
@@ -348,7 +373,13 @@ impl QuadrupedRun {
                 || time - self.touchdown_time < self.params.gallop_lag_s * self.scale.sqrt())
     }
 
-    fn advance_phase(&mut self, input: &ControlInput<'_>, drives: &[Drive], descending: bool) {
+    fn advance_phase(
+        &mut self,
+        input: &ControlInput<'_>,
+        drives: &[Drive],
+        descending: bool,
+        com_forward: f64,
+    ) {
         let t = self.tuning();
         let l = self.scale;
         let pair = self.gait.pairs()[self.active];
@@ -424,6 +455,16 @@ impl QuadrupedRun {
             self.stance_s[self.active] = measured.clamp(0.04 * l.sqrt(), 0.4 * l.sqrt());
             self.liftoff_time = input.time;
             self.liftoff_pair = Some(self.active);
+            // Integral speed correction from the step's mean speed.
+            if let Some((t0, x0)) = self.step_start
+                && input.time - t0 > 1e-3
+            {
+                let vd = self.params.speed_mps * l.sqrt();
+                let v = (com_forward - x0) / (input.time - t0);
+                self.speed_bias = (self.speed_bias + t.speed_gain * (vd - v))
+                    .clamp(-0.5 * vd.abs(), 0.5 * vd.abs());
+            }
+            self.step_start = Some((input.time, com_forward));
             self.in_stance = false;
             self.done = [false; 4];
             self.leg_phase = [Phase::Flight; 4];
@@ -472,7 +513,9 @@ impl Controller for QuadrupedRun {
             })
             .sum::<f64>()
             < 0.0;
-        self.advance_phase(input, drives, descending);
+        let com = crate::energy::center_of_mass(&creature.model, data);
+        let fwd = heading_forward(self.params.heading);
+        self.advance_phase(input, drives, descending, com.dot(fwd));
         let pair = self.gait.pairs()[self.active];
         let idle = self.gait.pairs()[1 - self.active];
         let p = self.params;
@@ -521,8 +564,7 @@ impl Controller for QuadrupedRun {
         }
         // Foot placement (eq. 3) for the active pair's legs in the air.
         let velocity = com_velocity(creature, data);
-        let fwd = heading_forward(p.heading);
-        let desired = fwd * (p.speed_mps * l.sqrt());
+        let desired = fwd * (p.speed_mps * l.sqrt() + self.speed_bias);
         let reach = LEG_FULL_M * l + landing;
         let max = p.max_hip_torque * l.powi(4);
         let servo = HipServo {
@@ -538,7 +580,12 @@ impl Controller for QuadrupedRun {
             t.placement_gain_s * l.sqrt(),
         );
         // Posture (eq. 4) and heading torques wanted on the trunk.
-        let err = attitude_error(creature, data, p.heading, t.pitch_d);
+        let swing = if self.active == 0 {
+            t.pitch_swing
+        } else {
+            -t.pitch_swing
+        };
+        let err = attitude_error(creature, data, p.heading, t.pitch_d + swing);
         let rate = trunk_rate(creature, data);
         let lateral = DVec3::Y.cross(fwd);
         let pitch_t = -(err.dot(lateral) * t.pitch_kp * l.powi(4)
@@ -553,7 +600,6 @@ impl Controller for QuadrupedRun {
             .filter(|&&i| !self.done[i] && servoing(self.leg_phase[i]))
             .count()
             .max(1) as f64;
-        let com = crate::energy::center_of_mass(&creature.model, data);
         // Yaw by horizontal foot forces about the centre of mass: G = c·(ŷ × r).
         let lever: f64 = pair
             .iter()
@@ -620,7 +666,15 @@ impl Controller for QuadrupedRun {
                     let roll_tau = -torque.dot(roll_axis) / n - roll_axis.dot(moment);
                     let pitch_tau = -torque.dot(pitch_axis) / n - pitch_axis.dot(moment);
                     drives[leg.hip[0]].torque(roll_tau.clamp(-max, max));
-                    drives[leg.hip[1]].torque(pitch_tau.clamp(-max, max));
+                    let q = data.q[leg.spring];
+                    let spring_force =
+                        (t.leg_stiffness * l * l * (self.stance_rest[i] - q)).max(0.0);
+                    let lim = if t.posture_force_ratio.is_finite() {
+                        (t.posture_force_ratio * spring_force * (LEG_FULL_M * l + q)).min(max)
+                    } else {
+                        max
+                    };
+                    drives[leg.hip[1]].torque(pitch_tau.clamp(-lim, lim));
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 }
             }
@@ -644,6 +698,9 @@ impl Controller for QuadrupedRun {
     }
 }
 
+/// Largest hip servo targets (rad): roll, pitch.
+const HIP_TARGET_LIMIT: [f64; 2] = [0.8, 1.3];
+
 /// Hip servo gains and torque limit.
 #[derive(Clone, Copy)]
 struct HipServo {
@@ -657,7 +714,12 @@ impl HipServo {
     /// Servo the hip joints to `targets` (eq. 5) with the targets' rate as
     /// velocity feed-forward (`previous` holds last call's targets).
     fn set(&self, drives: &mut [Drive], hip: &[usize], targets: [f64; 2], previous: &mut [f64; 2]) {
-        for ((&j, &t), prev) in hip.iter().zip(&targets).zip(previous.iter_mut()) {
+        for ((&j, (&t, &lim)), prev) in hip
+            .iter()
+            .zip(targets.iter().zip(&HIP_TARGET_LIMIT))
+            .zip(previous.iter_mut())
+        {
+            let t = t.clamp(-lim, lim);
             let rate = if self.dt > 0.0 {
                 ((t - *prev) / self.dt).clamp(-20.0, 20.0)
             } else {
