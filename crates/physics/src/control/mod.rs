@@ -9,5 +9,6 @@ pub mod biped_run;
 pub mod kangaroo_hop;
 pub mod phase;
 pub mod placement;
+pub mod quadruped_run;
 
 pub use phase::Phase;

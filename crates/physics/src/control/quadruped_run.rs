@@ -1,0 +1,733 @@
+//! Quadruped trotting, bounding and galloping (Raibert & Hodgins 1991,
+//! "Control" — hopping, speed and posture — Figure 4, "Gaits", "Modeling",
+//! Tables 2 and 3).
+//!
+//! Trot and bound are *virtual biped* gaits: the legs work in pairs —
+//! diagonal pairs in the trot, front and rear pairs in the bound — and each
+//! pair acts as one virtual leg run by the state machine of Figure 4. The
+//! active pair's leg springs get a programmable rest length and a thrust in
+//! stance (eq. 1–2); the pair's feet are placed about the neutral point with
+//! the speed correction of eq. 3, each relative to its own hip; the hips
+//! servo the trunk's pitch and roll in stance (eq. 4) and steer its yaw
+//! towards the commanded heading; the idle pair is kept short and swung
+//! forward. The gallop is the bound with the legs of each pair striking and
+//! leaving the ground separated in time and space: single support, double
+//! support, single support within each pair's stance.
+//!
+//! The hop is regulated by the duration of the flight that follows each
+//! pair's lift-off (the Table-2 quantity), each pair's thrust adjusted after
+//! every flight. As in the paper, the standing length of the legs is reduced
+//! for the trot and bound. Every parameter is given for the creature at scale
+//! 1 and scaled by its dynamic scale L (Table 1).
+
+use glam::{DQuat, DVec3};
+
+use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
+use super::phase::Phase;
+use super::placement::{foot_displacement, gimbal_angles, leg_direction};
+use crate::actuator::Stops;
+use crate::ground::GroundParams;
+use crate::sim::{ControlInput, Controller, Drive, Sim};
+
+/// Hip-to-foot length of the quadruped's leg at full extension, at scale 1 (m).
+const LEG_FULL_M: f64 = 0.81;
+
+/// The quadruped's running gaits.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum QuadrupedGait {
+    /// Diagonal pairs (front-left + rear-right, front-right + rear-left).
+    #[default]
+    Trot,
+    /// Front pair, then rear pair, each pair's legs in unison.
+    Bound,
+    /// As the bound, the legs of each pair staggered in time and space.
+    Gallop,
+}
+
+impl QuadrupedGait {
+    /// Every gait.
+    pub const ALL: [QuadrupedGait; 3] = [Self::Trot, Self::Bound, Self::Gallop];
+
+    /// The gait's name.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Trot => "trot",
+            Self::Bound => "bound",
+            Self::Gallop => "gallop",
+        }
+    }
+
+    /// The two virtual legs: leg indices (front-left 0, front-right 1,
+    /// rear-left 2, rear-right 3), the first of each pair striking first in
+    /// the gallop.
+    #[must_use]
+    pub fn pairs(self) -> [[usize; 2]; 2] {
+        match self {
+            Self::Trot => [[0, 3], [1, 2]],
+            Self::Bound | Self::Gallop => [[1, 0], [3, 2]],
+        }
+    }
+}
+
+/// The per-gait tuning of [`QuadrupedRun`] (values at scale 1).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GaitTuning {
+    /// Leg spring stiffness k of eq. 1 (N/m).
+    pub leg_stiffness: f64,
+    /// Leg spring damping b of eq. 1 in stance (N·s/m).
+    pub leg_damping: f64,
+    /// Leg damping while the foot is off the ground (N·s/m): the leg's
+    /// length servo, damped so a lengthened leg does not ring before landing.
+    pub leg_air_damping: f64,
+    /// Spring rest for landing and standing (m of extension from full
+    /// length, ≤ 0): the paper shortened it for the trot and bound.
+    pub landing_rest_m: f64,
+    /// Rest of a shortened (idle) leg (m of extension, < `landing_rest_m`).
+    pub idle_rest_m: f64,
+    /// Initial thrust: extra rest length in the thrust state (m).
+    pub thrust_m: f64,
+    /// Desired flight duration after the lift-off of pair 0 and of pair 1
+    /// (s): the trot's flight; the bound's gathered (after the front pair)
+    /// and extended (after the rear pair) flights.
+    pub flight_s: [f64; 2],
+    /// Initial guess of the stance duration T_s of eq. 3 (s).
+    pub stance_s: f64,
+    /// Foot placement gain k_ẋ of eq. 3 (s).
+    pub placement_gain_s: f64,
+    /// Posture servo stiffness of eq. 4 on pitch (N·m/rad).
+    pub pitch_kp: f64,
+    /// Posture servo damping of eq. 4 on pitch (N·m·s/rad).
+    pub pitch_kv: f64,
+    /// Posture servo stiffness of eq. 4 on roll (N·m/rad).
+    pub roll_kp: f64,
+    /// Posture servo damping of eq. 4 on roll (N·m·s/rad).
+    pub roll_kv: f64,
+    /// Desired trunk pitch in stance (rad, positive nose down).
+    pub pitch_d: f64,
+    /// Integral speed correction: change of the speed bias added to the
+    /// desired speed of eq. 3 per stride, per m/s of the stride's mean
+    /// speed error (dimensionless).
+    pub speed_gain: f64,
+    /// Pitch swing (rad): the desired pitch in the stance of pair 0 is
+    /// `pitch_d + pitch_swing`, in that of pair 1 `pitch_d − pitch_swing`
+    /// (the bound's trunk noses down on its front legs and up on its rear).
+    pub pitch_swing: f64,
+    /// Largest horizontal foot force the posture servo may ask for, as a
+    /// fraction of the leg's spring force: the pitch torque of each stance
+    /// leg is limited to this fraction of spring force × leg length, so the
+    /// servo cannot swamp foot placement (∞ for no limit).
+    pub posture_force_ratio: f64,
+    /// Whether the landing pair lengthens only once its hips descend
+    /// (else at once, as Figure 4's flight state does).
+    pub wait_for_descent: bool,
+}
+
+/// Parameters of [`QuadrupedRun`]; all at scale 1 (the controller scales
+/// them by the creature's L), editable while running.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct QuadrupedRunParams {
+    /// Desired forward speed ẋ_d (m/s).
+    pub speed_mps: f64,
+    /// Desired heading (rad about +y; 0 = +z).
+    pub heading: f64,
+    /// Tuning of the trot.
+    pub trot: GaitTuning,
+    /// Tuning of the bound.
+    pub bound: GaitTuning,
+    /// Tuning of the gallop.
+    pub gallop: GaitTuning,
+    /// Gallop: delay of the second leg of a pair after the first touches (s).
+    pub gallop_lag_s: f64,
+    /// Gallop: the second foot lands this far ahead of the first's
+    /// neutral-point placement (m).
+    pub gallop_spread_m: f64,
+    /// Thrust change per second of flight-duration error (m/s), eq. 2's
+    /// energy injection regulated hop by hop.
+    pub flight_gain: f64,
+    /// Largest thrust (m).
+    pub max_thrust_m: f64,
+    /// Trunk yaw servo towards the heading in stance (N·m/rad).
+    pub yaw_kp: f64,
+    /// Trunk yaw damping in stance (N·m·s/rad).
+    pub yaw_kv: f64,
+    /// Hip servo stiffness for positioning legs (N·m/rad).
+    pub swing_kp: f64,
+    /// Hip servo damping for positioning legs (N·m·s/rad).
+    pub swing_kv: f64,
+    /// Largest hip torque (N·m).
+    pub max_hip_torque: f64,
+}
+
+impl Default for QuadrupedRunParams {
+    fn default() -> Self {
+        let trot = GaitTuning {
+            leg_stiffness: 12_000.0,
+            leg_damping: 30.0,
+            leg_air_damping: 200.0,
+            landing_rest_m: -0.12,
+            idle_rest_m: -0.30,
+            thrust_m: 0.02,
+            flight_s: [0.18, 0.18],
+            stance_s: 0.09,
+            placement_gain_s: 0.12,
+            pitch_kp: 1500.0,
+            pitch_kv: 100.0,
+            roll_kp: 400.0,
+            roll_kv: 70.0,
+            pitch_d: 0.0,
+            speed_gain: 0.0,
+            pitch_swing: 0.0,
+            posture_force_ratio: f64::INFINITY,
+            wait_for_descent: true,
+        };
+        let bound = GaitTuning {
+            leg_stiffness: 4_500.0,
+            leg_damping: 15.0,
+            leg_air_damping: 120.0,
+            landing_rest_m: -0.08,
+            idle_rest_m: -0.30,
+            thrust_m: 0.03,
+            flight_s: [0.22, 0.03],
+            stance_s: 0.09,
+            placement_gain_s: 0.15,
+            pitch_kp: 800.0,
+            pitch_kv: 60.0,
+            roll_kp: 400.0,
+            roll_kv: 70.0,
+            pitch_d: 0.0,
+            speed_gain: 0.0,
+            pitch_swing: 0.0,
+            posture_force_ratio: f64::INFINITY,
+            wait_for_descent: false,
+        };
+        let gallop = GaitTuning {
+            flight_s: [0.18, 0.03],
+            stance_s: 0.12,
+            ..bound
+        };
+        Self {
+            speed_mps: 2.3,
+            heading: 0.0,
+            trot,
+            bound,
+            gallop,
+            gallop_lag_s: 0.03,
+            gallop_spread_m: 0.05,
+            flight_gain: 0.05,
+            max_thrust_m: 0.10,
+            yaw_kp: 300.0,
+            yaw_kv: 30.0,
+            swing_kp: 300.0,
+            swing_kv: 15.0,
+            max_hip_torque: 400.0,
+        }
+    }
+}
+
+impl QuadrupedRunParams {
+    /// The tuning of `gait`.
+    #[must_use]
+    pub fn tuning(&self, gait: QuadrupedGait) -> &GaitTuning {
+        match gait {
+            QuadrupedGait::Trot => &self.trot,
+            QuadrupedGait::Bound => &self.bound,
+            QuadrupedGait::Gallop => &self.gallop,
+        }
+    }
+}
+
+/// The ground the quadruped runs on at scale `l`: the default springs scaled.
+#[must_use]
+pub fn quadruped_ground(l: f64) -> GroundParams {
+    GroundParams::default().scaled(l)
+}
+
+/// Put the quadruped of `sim` in the initial state for `gait` at `speed_mps`
+/// (scale-1 speed, scaled by √L): trunk level just above standing height,
+/// moving forward along +z, legs hanging, the first pair about to land.
+pub fn quadruped_start(sim: &mut Sim, gait: QuadrupedGait, speed_mps: f64) {
+    let l = sim.creature.scale;
+    let tuning = *QuadrupedRunParams::default().tuning(gait);
+    sim.data.q.fill(0.0);
+    sim.data.qd.fill(0.0);
+    for leg in &sim.creature.legs {
+        sim.data.q[leg.spring] = tuning.idle_rest_m * l;
+    }
+    sim.data.base_orientation = DQuat::IDENTITY;
+    sim.data.base_position = DVec3::new(0.0, (LEG_FULL_M + tuning.landing_rest_m + 0.03) * l, 0.0);
+    sim.data.base_velocity.angular = DVec3::ZERO;
+    sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, speed_mps * l.sqrt());
+    for c in &mut sim.contacts {
+        c.touching = false;
+    }
+}
+
+/// The quadruped running controller: a virtual biped on pairs of legs.
+#[derive(Clone, Debug)]
+pub struct QuadrupedRun {
+    /// Parameters (editable while running).
+    pub params: QuadrupedRunParams,
+    gait: QuadrupedGait,
+    requested: QuadrupedGait,
+    /// The active (supporting or landing) pair, 0 or 1 of [`QuadrupedGait::pairs`].
+    pub active: usize,
+    /// Each leg's state; the idle pair's legs stay in [`Phase::Flight`].
+    pub leg_phase: [Phase; 4],
+    /// Measured duration of each pair's last stance (s), T_s of eq. 3.
+    pub stance_s: [f64; 2],
+    /// Each pair's current thrust (m).
+    pub thrust: [f64; 2],
+    /// The last measured flight after each pair's lift-off (s).
+    pub flight_s: [f64; 2],
+    in_stance: bool,
+    done: [bool; 4],
+    touchdown_time: f64,
+    /// Each leg's touchdown time (s).
+    leg_touchdown: [f64; 4],
+    /// Each leg's spring rest at its touchdown (m): its stance rest.
+    stance_rest: [f64; 4],
+    /// Each leg's hip servo target last call (rad), for the servo's rate feed-forward.
+    hip_target: [[f64; 2]; 4],
+    liftoff_time: f64,
+    liftoff_pair: Option<usize>,
+    /// Integral speed correction added to the desired speed (m/s).
+    pub speed_bias: f64,
+    /// Time and forward position of the centre of mass at the last lift-off.
+    step_start: Option<(f64, f64)>,
+    scale: f64,
+}
+
+impl QuadrupedRun {
+    /// A controller for `gait`, starting in flight with pair 0 about to land.
+    #[must_use]
+    pub fn new(params: QuadrupedRunParams, gait: QuadrupedGait, scale: f64) -> Self {
+        let t = *params.tuning(gait);
+        Self {
+            params,
+            gait,
+            requested: gait,
+            active: 0,
+            leg_phase: [Phase::Flight; 4],
+            stance_s: [t.stance_s * scale.sqrt(); 2],
+            thrust: [t.thrust_m * scale; 2],
+            flight_s: [0.0; 2],
+            in_stance: false,
+            done: [false; 4],
+            touchdown_time: 0.0,
+            leg_touchdown: [0.0; 4],
+            stance_rest: [params.tuning(gait).landing_rest_m * scale; 4],
+            hip_target: [[0.0; 2]; 4],
+            liftoff_time: 0.0,
+            liftoff_pair: None,
+            speed_bias: 0.0,
+            step_start: None,
+            scale,
+        }
+    }
+
+    /// The gait being run.
+    #[must_use]
+    pub fn gait(&self) -> QuadrupedGait {
+        self.gait
+    }
+
+    /// Command a gait; the change happens at the next lift-off.
+    pub fn set_gait(&mut self, gait: QuadrupedGait) {
+        self.requested = gait;
+    }
+
+    /// The state of the active virtual leg (Figure 4): flight until a leg
+    /// of the active pair lands, then the state of its first leg in stance.
+    #[must_use]
+    pub fn phase(&self) -> Phase {
+        if !self.in_stance {
+            return Phase::Flight;
+        }
+        let pair = self.gait.pairs()[self.active];
+        pair.iter()
+            .map(|&i| self.leg_phase[i])
+            .find(|&p| p != Phase::Flight)
+            .unwrap_or(Phase::Unloading)
+    }
+
+    fn tuning(&self) -> GaitTuning {
+        *self.params.tuning(self.gait)
+    }
+
+    fn leg_stops(&self) -> Stops {
+        let l = self.scale;
+        Stops {
+            min: -0.36 * l,
+            max: 0.0,
+            stiffness: 2.0e5 * l * l,
+            damping: 500.0 * l.powf(2.5),
+        }
+    }
+
+    /// Whether the second leg of a gallop pair is still held back.
+    fn held_back(&self, slot: usize, time: f64) -> bool {
+        self.gait == QuadrupedGait::Gallop
+            && slot == 1
+            && (!self.in_stance
+                || time - self.touchdown_time < self.params.gallop_lag_s * self.scale.sqrt())
+    }
+
+    fn advance_phase(
+        &mut self,
+        input: &ControlInput<'_>,
+        drives: &[Drive],
+        descending: bool,
+        com_forward: f64,
+    ) {
+        let t = self.tuning();
+        let l = self.scale;
+        let pair = self.gait.pairs()[self.active];
+        let landing = t.landing_rest_m * l;
+        // Flight time of the pair that lifted off last ends at the first touch
+        // of any foot.
+        if let Some(p) = self.liftoff_pair
+            && input.contacts.iter().any(|c| c.touching)
+        {
+            let flight = input.time - self.liftoff_time;
+            self.flight_s[p] = flight;
+            let error = t.flight_s[p] * l.sqrt() - flight;
+            self.thrust[p] = (self.thrust[p] + self.params.flight_gain * l.sqrt() * error)
+                .clamp(0.0, self.params.max_thrust_m * l);
+            self.liftoff_pair = None;
+        }
+        for (slot, &i) in pair.iter().enumerate() {
+            if self.done[i] {
+                continue;
+            }
+            let leg = &input.creature.legs[i];
+            let touching = input.contacts[i].touching;
+            let q = input.data.q[leg.spring];
+            let qd = input.data.qd[leg.spring];
+            let phase = &mut self.leg_phase[i];
+            match *phase {
+                Phase::Flight => {
+                    let armed = if slot == 1 && self.gait == QuadrupedGait::Gallop {
+                        self.in_stance
+                    } else {
+                        descending || self.in_stance || !t.wait_for_descent
+                    };
+                    if touching && armed {
+                        *phase = Phase::Loading;
+                        self.leg_touchdown[i] = input.time;
+                        // A leg caught short stands at the length it landed with.
+                        self.stance_rest[i] = drives[leg.spring]
+                            .spring
+                            .rest
+                            .min(q + 0.02 * l)
+                            .max(landing - 0.08 * l);
+                        if !self.in_stance {
+                            self.in_stance = true;
+                            self.touchdown_time = input.time;
+                        }
+                    }
+                }
+                Phase::Loading
+                    if (qd < 0.0 && q < self.stance_rest[i] - 0.002 * l)
+                        || input.time - self.leg_touchdown[i] > 0.015 * l.sqrt() =>
+                {
+                    *phase = Phase::Compression;
+                }
+                Phase::Compression if qd >= 0.0 => *phase = Phase::Thrust,
+                Phase::Thrust if q >= self.stance_rest[i] - 0.005 * l => {
+                    *phase = Phase::Unloading;
+                }
+                _ => {}
+            }
+            if *phase != Phase::Flight && !touching {
+                // A foot bouncing off at once may land again.
+                self.done[i] = *phase != Phase::Loading
+                    || input.time - self.leg_touchdown[i] > 0.01 * l.sqrt();
+                *phase = Phase::Flight;
+            }
+        }
+        if self.in_stance
+            && pair.iter().all(|&i| !input.contacts[i].touching)
+            && pair.iter().any(|&i| self.done[i])
+        {
+            // Lift-off of the virtual leg: the pairs swap (Figure 4, flight).
+            let measured = input.time - self.touchdown_time;
+            self.stance_s[self.active] = measured.clamp(0.04 * l.sqrt(), 0.4 * l.sqrt());
+            self.liftoff_time = input.time;
+            self.liftoff_pair = Some(self.active);
+            // Integral speed correction from the step's mean speed.
+            if let Some((t0, x0)) = self.step_start
+                && input.time - t0 > 1e-3
+            {
+                let vd = self.params.speed_mps * l.sqrt();
+                let v = (com_forward - x0) / (input.time - t0);
+                self.speed_bias = (self.speed_bias + t.speed_gain * (vd - v))
+                    .clamp(-0.5 * vd.abs(), 0.5 * vd.abs());
+            }
+            self.step_start = Some((input.time, com_forward));
+            self.in_stance = false;
+            self.done = [false; 4];
+            self.leg_phase = [Phase::Flight; 4];
+            self.active = 1 - self.active;
+            if self.requested != self.gait {
+                self.switch_gait(pair);
+            }
+        }
+    }
+
+    fn switch_gait(&mut self, lifted: [usize; 2]) {
+        let l = self.scale;
+        self.gait = self.requested;
+        let t = self.tuning();
+        let pairs = self.gait.pairs();
+        // The next active pair is the one that did not just lift off the most.
+        let overlap = |p: [usize; 2]| p.iter().filter(|i| lifted.contains(i)).count();
+        self.active = if overlap(pairs[0]) <= overlap(pairs[1]) {
+            0
+        } else {
+            1
+        };
+        self.stance_s = [t.stance_s * l.sqrt(); 2];
+        self.thrust = [t.thrust_m * l; 2];
+        self.liftoff_pair = None;
+    }
+}
+
+impl Controller for QuadrupedRun {
+    fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
+        let creature = input.creature;
+        let data = input.data;
+        if creature.legs.len() != 4 {
+            return;
+        }
+        let l = self.scale;
+        let trunk = creature.trunk;
+        let trunk_rot = data.world[trunk].rot;
+        let trunk_pos = data.world[trunk].pos;
+        let pair = self.gait.pairs()[self.active];
+        let descending = pair
+            .iter()
+            .map(|&i| {
+                data.point_velocity_world(trunk, creature.legs[i].hip_in_trunk)
+                    .y
+            })
+            .sum::<f64>()
+            < 0.0;
+        let com = crate::energy::center_of_mass(&creature.model, data);
+        let fwd = heading_forward(self.params.heading);
+        self.advance_phase(input, drives, descending, com.dot(fwd));
+        let pair = self.gait.pairs()[self.active];
+        let idle = self.gait.pairs()[1 - self.active];
+        let p = self.params;
+        let t = self.tuning();
+        let stops = self.leg_stops();
+        let landing = t.landing_rest_m * l;
+        let short = t.idle_rest_m * l;
+        let thrust = self.thrust[self.active];
+        // The active pair lands as one virtual leg: each leg's landing length
+        // makes up for its hip's height above the pair's mean, so the feet
+        // reach the ground together although the trunk pitches and rolls.
+        let hip_y = |i: usize| (trunk_rot * creature.legs[i].hip_in_trunk).y;
+        let mean_hip_y = (hip_y(pair[0]) + hip_y(pair[1])) / 2.0;
+        let level = |i: usize| {
+            if self.gait == QuadrupedGait::Gallop {
+                0.0
+            } else {
+                (hip_y(i) - mean_hip_y).clamp(-0.08 * l, 0.08 * l)
+            }
+        };
+        // Leg springs: eq. 1 with a programmable rest.
+        for (i, leg) in creature.legs.iter().enumerate() {
+            let d = &mut drives[leg.spring];
+            d.stops = Some(stops);
+            d.spring.stiffness = t.leg_stiffness * l * l;
+            d.spring.damping = if input.contacts[i].touching {
+                t.leg_damping
+            } else {
+                t.leg_air_damping
+            } * l.powf(2.5);
+            d.spring.max_force = f64::INFINITY;
+            d.feedforward = 0.0;
+            let slot = pair.iter().position(|&j| j == i);
+            d.spring.rest = match slot {
+                None => short,
+                Some(_) if self.done[i] => short,
+                Some(s) => match self.leg_phase[i] {
+                    Phase::Thrust => self.stance_rest[i] + thrust,
+                    Phase::Unloading => short,
+                    Phase::Flight if self.held_back(s, input.time) => short,
+                    Phase::Flight if !descending && !self.in_stance && t.wait_for_descent => short,
+                    Phase::Flight => (landing + level(i)).min(0.0),
+                    _ => self.stance_rest[i],
+                },
+            };
+        }
+        // Foot placement (eq. 3) for the active pair's legs in the air.
+        let velocity = com_velocity(creature, data);
+        let desired = fwd * (p.speed_mps * l.sqrt() + self.speed_bias);
+        let reach = LEG_FULL_M * l + landing;
+        let max = p.max_hip_torque * l.powi(4);
+        let servo = HipServo {
+            kp: p.swing_kp * l.powi(4),
+            kv: p.swing_kv * l.powf(4.5),
+            max,
+            dt: input.dt,
+        };
+        let displacement = foot_displacement(
+            velocity,
+            desired,
+            self.stance_s[self.active],
+            t.placement_gain_s * l.sqrt(),
+        );
+        // Posture (eq. 4) and heading torques wanted on the trunk.
+        let swing = if self.active == 0 {
+            t.pitch_swing
+        } else {
+            -t.pitch_swing
+        };
+        let err = attitude_error(creature, data, p.heading, t.pitch_d + swing);
+        let rate = trunk_rate(creature, data);
+        let lateral = DVec3::Y.cross(fwd);
+        let pitch_t = -(err.dot(lateral) * t.pitch_kp * l.powi(4)
+            + rate.dot(lateral) * t.pitch_kv * l.powf(4.5));
+        let roll_t =
+            -(err.dot(fwd) * t.roll_kp * l.powi(4) + rate.dot(fwd) * t.roll_kv * l.powf(4.5));
+        let yaw_t = -(err.y * p.yaw_kp * l.powi(4) + rate.y * p.yaw_kv * l.powf(4.5));
+        let torque = lateral * pitch_t + fwd * roll_t;
+        let servoing = |ph: Phase| matches!(ph, Phase::Compression | Phase::Thrust);
+        let n = pair
+            .iter()
+            .filter(|&&i| !self.done[i] && servoing(self.leg_phase[i]))
+            .count()
+            .max(1) as f64;
+        // Yaw by horizontal foot forces about the centre of mass: G = c·(ŷ × r).
+        let lever: f64 = pair
+            .iter()
+            .filter(|&&i| !self.done[i] && servoing(self.leg_phase[i]))
+            .map(|&i| {
+                let r = input.contacts[i].position - com;
+                r.x * r.x + r.z * r.z
+            })
+            .sum();
+        let c = if lever > 1e-6 { yaw_t / lever } else { 0.0 };
+        let mut active_pitch = 0.0;
+        for (slot, &i) in pair.iter().enumerate() {
+            let leg = &creature.legs[i];
+            let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
+            active_pitch += data.q[leg.hip[1]] / 2.0;
+            let phase = self.leg_phase[i];
+            if self.done[i] {
+                servo.set(drives, &leg.hip, [0.0, 0.0], &mut self.hip_target[i]);
+                continue;
+            }
+            match phase {
+                Phase::Flight => {
+                    let spread = if slot == 1 && self.gait == QuadrupedGait::Gallop {
+                        fwd * (p.gallop_spread_m * l)
+                    } else {
+                        DVec3::ZERO
+                    };
+                    // Aim at where the hip will be at touchdown, so the
+                    // target stays put on the ground and the leg sweeps
+                    // back as the body travels (ground speed matching).
+                    let hip_v = data.point_velocity_world(trunk, leg.hip_in_trunk);
+                    let drop = hip_world.y
+                        - (reach * reach - displacement.length_squared())
+                            .max(0.0)
+                            .sqrt();
+                    let g = crate::GRAVITY_MPS2;
+                    let t_rem = if drop > 0.0 {
+                        (hip_v.y + (hip_v.y * hip_v.y + 2.0 * g * drop).sqrt()) / g
+                    } else {
+                        0.0
+                    }
+                    .min(0.5 * l.sqrt());
+                    let ahead = DVec3::new(hip_v.x, 0.0, hip_v.z) * t_rem;
+                    let foot =
+                        DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead + displacement + spread;
+                    let dir = leg_direction(trunk_rot, foot - hip_world, reach);
+                    let (roll, pitch) = gimbal_angles(dir);
+                    servo.set(drives, &leg.hip, [roll, pitch], &mut self.hip_target[i]);
+                }
+                Phase::Loading | Phase::Unloading => {
+                    for (&j, prev) in leg.hip.iter().zip(self.hip_target[i].iter_mut()) {
+                        drives[j].torque(0.0);
+                        *prev = data.q[j];
+                    }
+                }
+                Phase::Compression | Phase::Thrust => {
+                    let roll_axis = trunk_rot * DVec3::Z;
+                    let roll_q = data.q[leg.hip[0]];
+                    let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
+                    let foot = input.contacts[i].position;
+                    let r = foot - com;
+                    let g = DVec3::Y.cross(DVec3::new(r.x, 0.0, r.z)) * c;
+                    let moment = (foot - hip_world).cross(g);
+                    let roll_tau = -torque.dot(roll_axis) / n - roll_axis.dot(moment);
+                    let pitch_tau = -torque.dot(pitch_axis) / n - pitch_axis.dot(moment);
+                    drives[leg.hip[0]].torque(roll_tau.clamp(-max, max));
+                    let q = data.q[leg.spring];
+                    let spring_force =
+                        (t.leg_stiffness * l * l * (self.stance_rest[i] - q)).max(0.0);
+                    let lim = if t.posture_force_ratio.is_finite() {
+                        (t.posture_force_ratio * spring_force * (LEG_FULL_M * l + q)).min(max)
+                    } else {
+                        max
+                    };
+                    drives[leg.hip[1]].torque(pitch_tau.clamp(-lim, lim));
+                    self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
+                }
+            }
+        }
+        // The idle pair swings forward: in the trot it mirrors the active
+        // pair's sweep; in the bound and gallop, whose trunk pitches, it is
+        // brought to its landing direction in the world, ready for a short flight.
+        for &i in &idle {
+            let leg = &creature.legs[i];
+            let target = if self.gait == QuadrupedGait::Trot {
+                [0.0, -active_pitch]
+            } else {
+                let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
+                let foot = DVec3::new(hip_world.x, 0.0, hip_world.z) + displacement;
+                let (roll, pitch) =
+                    gimbal_angles(leg_direction(trunk_rot, foot - hip_world, reach));
+                [roll, pitch]
+            };
+            servo.set(drives, &leg.hip, target, &mut self.hip_target[i]);
+        }
+    }
+}
+
+/// Largest hip servo targets (rad): roll, pitch.
+const HIP_TARGET_LIMIT: [f64; 2] = [0.8, 1.3];
+
+/// Hip servo gains and torque limit.
+#[derive(Clone, Copy)]
+struct HipServo {
+    kp: f64,
+    kv: f64,
+    max: f64,
+    dt: f64,
+}
+
+impl HipServo {
+    /// Servo the hip joints to `targets` (eq. 5) with the targets' rate as
+    /// velocity feed-forward (`previous` holds last call's targets).
+    fn set(&self, drives: &mut [Drive], hip: &[usize], targets: [f64; 2], previous: &mut [f64; 2]) {
+        for ((&j, (&t, &lim)), prev) in hip
+            .iter()
+            .zip(targets.iter().zip(&HIP_TARGET_LIMIT))
+            .zip(previous.iter_mut())
+        {
+            let t = t.clamp(-lim, lim);
+            let rate = if self.dt > 0.0 {
+                ((t - *prev) / self.dt).clamp(-20.0, 20.0)
+            } else {
+                0.0
+            };
+            *prev = t;
+            drives[j].servo(self.kp, self.kv, t + self.kv / self.kp * rate);
+            drives[j].spring.max_force = self.max;
+        }
+    }
+}
