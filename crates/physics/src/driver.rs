@@ -9,7 +9,14 @@ use gaitlab_core::preset::{Creature as PresetCreature, PhysicsParams, PresetErro
 use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
 
+use crate::control::biped_gallop::{BipedGallop, BipedGallopParams, GallopStyle};
 use crate::control::biped_run::{BipedRun, BipedRunParams};
+use crate::control::kangaroo_hop::{
+    KangarooHop, KangarooHopParams, kangaroo_ground, kangaroo_start,
+};
+use crate::control::quadruped_run::{
+    QuadrupedGait, QuadrupedRun, QuadrupedRunParams, quadruped_start,
+};
 use crate::creature::{Creature, Species};
 use crate::ground::{GroundParams, Obstacle};
 use crate::metrics::{GaitRecorder, GaitSummary};
@@ -20,9 +27,9 @@ use crate::sim::{Controller, Sim, SimOptions};
 #[must_use]
 pub fn gait_names(species: Species) -> &'static [&'static str] {
     match species {
-        Species::Biped => &["run"],
-        Species::Quadruped => &[],
-        Species::Kangaroo => &[],
+        Species::Biped => &["run", "gallop", "gallop_alternate"],
+        Species::Quadruped => &["trot", "bound", "gallop"],
+        Species::Kangaroo => &["hop"],
     }
 }
 
@@ -44,6 +51,10 @@ pub struct PhysicsProbe {
     /// Forward speed of the centre of mass (m/s).
     pub speed_mps: f64,
 }
+
+/// The kangaroo starts no faster than this (m/s at scale 1) and its
+/// controller ramps to the desired speed: started at 5 m/s it tumbles.
+pub const KANGAROO_START_MPS: f64 = 2.0;
 
 /// Seconds after a fall before the creature is put back at the start.
 pub const FALL_RESET_S: f64 = 1.5;
@@ -74,18 +85,30 @@ pub struct PhysicsDriver {
 pub enum GaitController {
     /// Biped running (Figure 4).
     BipedRun(BipedRun),
+    /// Biped galloping, either style.
+    BipedGallop(BipedGallop),
+    /// Quadruped trot, bound or gallop on virtual legs.
+    Quadruped(QuadrupedRun),
+    /// The kangaroo's hop.
+    Kangaroo(KangarooHop),
 }
 
 impl GaitController {
     fn inner(&self) -> &dyn Controller {
         match self {
             GaitController::BipedRun(c) => c,
+            GaitController::BipedGallop(c) => c,
+            GaitController::Quadruped(c) => c,
+            GaitController::Kangaroo(c) => c,
         }
     }
 
     fn inner_mut(&mut self) -> &mut dyn Controller {
         match self {
             GaitController::BipedRun(c) => c,
+            GaitController::BipedGallop(c) => c,
+            GaitController::Quadruped(c) => c,
+            GaitController::Kangaroo(c) => c,
         }
     }
 }
@@ -181,7 +204,12 @@ impl PhysicsDriver {
             dt: params.dt_s * l.sqrt(),
             ..SimOptions::default()
         };
-        let mut sim = Sim::new(creature, GroundParams::default().scaled(l), options);
+        let ground = match creature.species {
+            Species::Kangaroo => kangaroo_ground().scaled(l),
+            _ => GroundParams::default().scaled(l),
+        };
+        let species = creature.species;
+        let mut sim = Sim::new(creature, ground, options);
         for o in &params.obstacles {
             sim.terrain.obstacles.push(Obstacle {
                 min_xz: [-10.0 * l, o.at_m * l],
@@ -196,6 +224,18 @@ impl PhysicsDriver {
             *v = params.speed_mps * l.sqrt();
         }
         sim.data.q.copy_from_slice(&start_q);
+        // The controllers' own starting states where they have one: the
+        // quadruped just above standing height, the kangaroo just before a
+        // landing at no more than 2 m/s (its controller ramps to the rest).
+        match (species, &controller) {
+            (Species::Quadruped, GaitController::Quadruped(c)) => {
+                quadruped_start(&mut sim, c.gait(), params.speed_mps);
+            }
+            (Species::Kangaroo, _) => {
+                kangaroo_start(&mut sim, params.speed_mps.clamp(0.0, KANGAROO_START_MPS))
+            }
+            _ => {}
+        }
         crate::kinematics::kinematics(&sim.creature.model, &mut sim.data);
         let legs = sim.creature.legs.len();
         let mut driver = Self {
@@ -338,7 +378,14 @@ impl PhysicsDriver {
     pub fn set_gait(&mut self, gait: &str) -> Result<(), PresetError> {
         let mut params = self.params.clone();
         params.gait = Some(gait.to_owned());
-        self.controller = make_controller(&self.sim.creature, gait, &params)?;
+        let next = make_controller(&self.sim.creature, gait, &params)?;
+        match (&mut self.controller, next) {
+            // The quadruped changes gait at its next lift-off, keeping its state.
+            (GaitController::Quadruped(running), GaitController::Quadruped(fresh)) => {
+                running.set_gait(fresh.gait())
+            }
+            (_, next) => self.controller = next,
+        }
         self.params = params;
         self.gait = gait.to_owned();
         Ok(())
@@ -391,13 +438,18 @@ fn make_controller(
             ),
         )
     };
+    let two_ball_legs =
+        creature.legs.len() == 2 && creature.legs.iter().all(|leg| leg.hip.len() == 3);
+    let biped_needs = || {
+        PresetError::new(
+            "scenario.physics.legs",
+            "the biped gaits need two legs with three hip joints each",
+        )
+    };
     match (creature.species, gait) {
         (Species::Biped, "run") => {
-            if creature.legs.len() != 2 || creature.legs.iter().any(|leg| leg.hip.len() != 3) {
-                return Err(PresetError::new(
-                    "scenario.physics.legs",
-                    "the biped run needs two legs with three hip joints each",
-                ));
+            if !two_ball_legs {
+                return Err(biped_needs());
             }
             let d = BipedRunParams::default();
             let p = BipedRunParams {
@@ -406,6 +458,67 @@ fn make_controller(
                 ..d
             };
             Ok(GaitController::BipedRun(BipedRun::new(p, l)))
+        }
+        (Species::Biped, "gallop" | "gallop_alternate") => {
+            if !two_ball_legs {
+                return Err(biped_needs());
+            }
+            let d = BipedGallopParams::default();
+            let style = if gait == "gallop" {
+                GallopStyle::TogetherSwing
+            } else {
+                GallopStyle::AlternateSwing
+            };
+            let p = BipedGallopParams {
+                speed_mps: params.speed_mps,
+                hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
+                style,
+                ..d
+            };
+            Ok(GaitController::BipedGallop(BipedGallop::new(p, l)))
+        }
+        (Species::Quadruped, "trot" | "bound" | "gallop") => {
+            if creature.legs.len() != 4 || creature.legs.iter().any(|leg| leg.hip.len() != 2) {
+                return Err(PresetError::new(
+                    "scenario.physics.legs",
+                    "the quadruped gaits need four legs with two hip joints each",
+                ));
+            }
+            let g = match gait {
+                "trot" => QuadrupedGait::Trot,
+                "bound" => QuadrupedGait::Bound,
+                _ => QuadrupedGait::Gallop,
+            };
+            let p = QuadrupedRunParams {
+                speed_mps: params.speed_mps,
+                ..QuadrupedRunParams::default()
+            };
+            Ok(GaitController::Quadruped(QuadrupedRun::new(p, g, l)))
+        }
+        (Species::Kangaroo, "hop") => {
+            let ok = creature.legs.len() == 1
+                && creature.legs[0].knee.is_some()
+                && creature.legs[0].hip.len() == 1
+                && creature.tail.len() == 3
+                && creature.neck.is_some()
+                && creature.model.joint_count() >= 10;
+            if !ok {
+                return Err(PresetError::new(
+                    "scenario.physics.legs",
+                    "the kangaroo hop needs a planar base, one leg with hip, knee and ankle, a three-joint tail and a neck",
+                ));
+            }
+            let d = KangarooHopParams::default();
+            let obstacle = params.obstacles.first();
+            let p = KangarooHopParams {
+                speed_mps: params.speed_mps,
+                hop_rise_m: params.hop_height_m.unwrap_or(d.hop_rise_m),
+                jump_at_m: obstacle.map(|o| o.at_m),
+                obstacle_height_m: obstacle.map_or(d.obstacle_height_m, |o| o.height_m),
+                obstacle_depth_m: obstacle.map_or(d.obstacle_depth_m, |o| o.depth_m),
+                ..d
+            };
+            Ok(GaitController::Kangaroo(KangarooHop::new(p)))
         }
         _ => Err(bad()),
     }

@@ -483,6 +483,22 @@ impl BipedGallop {
 }
 
 impl Controller for BipedGallop {
+    fn phase_name(&self) -> &'static str {
+        self.phase.name()
+    }
+
+    fn set_speed(&mut self, speed_mps: f64) {
+        self.params.speed_mps = speed_mps;
+    }
+
+    fn set_heading(&mut self, heading: f64) {
+        self.params.heading = heading;
+    }
+
+    fn set_hop_height(&mut self, height_m: f64) {
+        self.params.hop_height_m = height_m;
+    }
+
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         let creature = input.creature;
         if creature.legs.len() < 2 || creature.legs.iter().any(|g| g.hip.len() < 3) {

@@ -531,6 +531,18 @@ impl KangarooHop {
 }
 
 impl Controller for KangarooHop {
+    fn phase_name(&self) -> &'static str {
+        KangarooHop::phase_name(self)
+    }
+
+    fn set_speed(&mut self, speed_mps: f64) {
+        KangarooHop::set_speed(self, speed_mps);
+    }
+
+    fn set_hop_height(&mut self, height_m: f64) {
+        KangarooHop::set_hop_height(self, height_m);
+    }
+
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         let creature = input.creature;
         let data = input.data;

@@ -494,6 +494,18 @@ impl QuadrupedRun {
 }
 
 impl Controller for QuadrupedRun {
+    fn phase_name(&self) -> &'static str {
+        self.phase().name()
+    }
+
+    fn set_speed(&mut self, speed_mps: f64) {
+        self.params.speed_mps = speed_mps;
+    }
+
+    fn set_heading(&mut self, heading: f64) {
+        self.params.heading = heading;
+    }
+
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         let creature = input.creature;
         let data = input.data;
