@@ -185,7 +185,7 @@ cmd_test() {
   echo "== cargo clippy (native, all targets, warnings are errors)"
   cargo clippy --workspace --all-targets --quiet -- -D warnings
   echo "== cargo clippy (wasm32: the crates the browser app uses, and the app)"
-  cargo clippy -p gaitlab-core -p gaitlab-motion -p gaitlab-app --target "$WASM_TARGET" --quiet -- -D warnings
+  cargo clippy -p gaitlab-core -p gaitlab-motion -p gaitlab-physics -p gaitlab-app --target "$WASM_TARGET" --quiet -- -D warnings
 
   local status=0 log e2e_log
   log=$(mktemp)

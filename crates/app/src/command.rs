@@ -57,9 +57,11 @@ fn apply_views(views: &mut ViewOptions, value: &Value) -> Result<(), String> {
 
 impl Lab {
     /// Applies a JSON command object, e.g. `{"mode":"run","method":"dls"}`.
-    /// Keys: `engine` (`ik` or `poda`: loads the matching creature), `preset`,
-    /// `preset_json`, `gait`, `period_s`, `duty_factor`,
-    /// `speed_mps`, `stroke_m` (PODA gait values; each edit keeps eq. 7–8 true),
+    /// Keys: `engine` (`ik`, `poda` or `physics`: loads the matching creature),
+    /// `preset`, `preset_json`, `gait`, `period_s`, `duty_factor`,
+    /// `speed_mps`, `stroke_m` (PODA gait values; each edit keeps eq. 7–8 true;
+    /// `speed_mps` and `hop_height_m` are also the physics controllers' desired
+    /// speed and hop height), `gain` (`{"name", "value"}`: a physics controller gain),
     /// `phases`, `step_height_m`, `transfer_keys` (PODA gait shape),
     /// `center` (`{"joint", "center", "gain"}`: a PODA leg joint's eq. 6 center),
     /// `path` (`{"kind", "points": [[x, z], …], "closed"}`: the PODA body path),
@@ -84,8 +86,9 @@ impl Lab {
             serde_json::from_str(json).map_err(|e| format!("command is not JSON: {e}"))?;
         let object: &Map<String, Value> =
             value.as_object().ok_or("command must be a JSON object")?;
-        const KNOWN: [&str; 33] = [
+        const KNOWN: [&str; 34] = [
             "hop_height_m",
+            "gain",
             "engine",
             "preset",
             "preset_json",
@@ -155,6 +158,14 @@ impl Lab {
                     .ok_or_else(|| format!("{key}: expected a number"))?;
                 self.edit_gait(key, value)?;
             }
+        }
+        if let Some(v) = get("gain") {
+            let name = text("gain.name", v.get("name").ok_or("gain.name: missing")?)?;
+            let value = v
+                .get("value")
+                .and_then(Value::as_f64)
+                .ok_or("gain.value: expected a number")?;
+            self.set_gain(name, value)?;
         }
         if let Some(v) = get("phases") {
             let phases = v.as_array().ok_or("phases: expected an array of numbers")?;

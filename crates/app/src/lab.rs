@@ -515,6 +515,20 @@ impl Lab {
         Ok(())
     }
 
+    /// Sets a physics controller gain by name (the Gains sliders and the
+    /// `gain` command).
+    ///
+    /// # Errors
+    /// `gain: …` when the engine is not physics, `gain.NAME: reason` for an
+    /// unknown gain or a negative or non-finite value; nothing changes.
+    pub fn set_gain(&mut self, name: &str, value: f64) -> Result<(), String> {
+        let engine = self.creature.scenario.engine.name();
+        let Some(driver) = self.driver.physics_mut() else {
+            return Err(format!("gain: engine {engine} has no controller gains"));
+        };
+        driver.set_gain(name, value)
+    }
+
     /// Sets leg `leg`'s relative phase (eq. 9), the step height or the
     /// transfer key positions of the PODA gait.
     ///

@@ -30,8 +30,10 @@ pub fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     let phase = driver.phase_name();
     let time = driver.time();
     let resets = driver.resets();
+    let gains = driver.gains();
     let mut chosen = None;
     let mut edits: Vec<(&str, f64)> = Vec::new();
+    let mut gain_edits: Vec<(&'static str, f64)> = Vec::new();
     egui::CollapsingHeader::new("Physics (Raibert & Hodgins)")
         .default_open(true)
         .show(ui, |ui| {
@@ -58,9 +60,28 @@ pub fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
             {
                 edits.push(("hop_height_m", hop));
             }
-            ui.label(format!(
-                "state: {phase} · t = {time:.2} s · resets: {resets}"
-            ));
+            egui::CollapsingHeader::new("Gains").show(ui, |ui| {
+                ui.label("Up to 1000× the default: too much and the simulation blows up, and the creature is put back.");
+                for gain in &gains {
+                    let mut value = gain.value;
+                    let hi = if gain.default > 0.0 { gain.default * 1000.0 } else { 1.0 };
+                    if ui
+                        .add(
+                            egui::Slider::new(&mut value, 0.0..=hi)
+                                .logarithmic(true)
+                                .text(format!("{} ({})", gain.name, gain.unit)),
+                        )
+                        .on_hover_text(format!("default {}", gain.default))
+                        .changed()
+                    {
+                        gain_edits.push((gain.name, value));
+                    }
+                }
+                if ui.button("Default gains").clicked() {
+                    gain_edits.extend(gains.iter().map(|g| (g.name, g.default)));
+                }
+            });
+            ui.label(format!("state: {phase} · t = {time:.2} s · resets: {resets}"));
             ui.label(format!(
                 "speed {:.2} m/s of {:.2} · friction needed {:.2}",
                 summary.speed_mean_mps, summary.speed_desired_mps, summary.friction_needed_max
@@ -97,6 +118,11 @@ pub fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     }
     for (key, value) in edits {
         if let Err(error) = lab.edit_gait(key, value) {
+            lab.report_error(error);
+        }
+    }
+    for (name, value) in gain_edits {
+        if let Err(error) = lab.set_gain(name, value) {
             lab.report_error(error);
         }
     }

@@ -3,6 +3,7 @@
 //! output, follow recorded targets, and report the performance figures.
 
 mod bench;
+mod export;
 mod fail;
 mod load;
 mod report;
@@ -38,8 +39,10 @@ enum Command {
     Run(run::RunArgs),
     /// Follow recorded effector targets from a CSV file.
     Track(track::TrackArgs),
-    /// Performance figures: µs per IK iteration per method and preset.
+    /// Performance figures: µs per IK iteration per method and preset, physics steps per second.
     Bench(bench::BenchArgs),
+    /// Write a physics creature as a MuJoCo model (`--format mjcf`).
+    Export(export::ExportArgs),
 }
 
 fn main() -> ExitCode {
@@ -53,6 +56,7 @@ fn main() -> ExitCode {
         Command::Run(args) => run::run(&args),
         Command::Track(args) => track::track(&args),
         Command::Bench(args) => bench::bench(&args),
+        Command::Export(args) => export::export(&args),
     };
     match outcome {
         Ok(()) => ExitCode::SUCCESS,

@@ -84,31 +84,31 @@ pub struct PhysicsDriver {
 #[derive(Clone, Debug)]
 pub enum GaitController {
     /// Biped running (Figure 4).
-    BipedRun(BipedRun),
+    BipedRun(Box<BipedRun>),
     /// Biped galloping, either style.
-    BipedGallop(BipedGallop),
+    BipedGallop(Box<BipedGallop>),
     /// Quadruped trot, bound or gallop on virtual legs.
-    Quadruped(QuadrupedRun),
+    Quadruped(Box<QuadrupedRun>),
     /// The kangaroo's hop.
-    Kangaroo(KangarooHop),
+    Kangaroo(Box<KangarooHop>),
 }
 
 impl GaitController {
     fn inner(&self) -> &dyn Controller {
         match self {
-            GaitController::BipedRun(c) => c,
-            GaitController::BipedGallop(c) => c,
-            GaitController::Quadruped(c) => c,
-            GaitController::Kangaroo(c) => c,
+            GaitController::BipedRun(c) => c.as_ref(),
+            GaitController::BipedGallop(c) => c.as_ref(),
+            GaitController::Quadruped(c) => c.as_ref(),
+            GaitController::Kangaroo(c) => c.as_ref(),
         }
     }
 
     fn inner_mut(&mut self) -> &mut dyn Controller {
         match self {
-            GaitController::BipedRun(c) => c,
-            GaitController::BipedGallop(c) => c,
-            GaitController::Quadruped(c) => c,
-            GaitController::Kangaroo(c) => c,
+            GaitController::BipedRun(c) => c.as_mut(),
+            GaitController::BipedGallop(c) => c.as_mut(),
+            GaitController::Quadruped(c) => c.as_mut(),
+            GaitController::Kangaroo(c) => c.as_mut(),
         }
     }
 }
@@ -132,6 +132,14 @@ impl Controller for GaitController {
 
     fn set_hop_height(&mut self, height_m: f64) {
         self.inner_mut().set_hop_height(height_m);
+    }
+
+    fn gains(&self) -> Vec<crate::control::gains::Gain> {
+        self.inner().gains()
+    }
+
+    fn set_gain(&mut self, name: &str, value: f64) -> bool {
+        self.inner_mut().set_gain(name, value)
     }
 }
 
@@ -371,6 +379,75 @@ impl PhysicsDriver {
         self.controller.set_hop_height(height_m);
     }
 
+    /// The creature as a MuJoCo model (see [`crate::mjcf`]): its springs and
+    /// hip torque limits as the controller sets them at the start.
+    #[must_use]
+    pub fn mjcf(&self, name: &str) -> String {
+        let mut probe = self.start.clone();
+        let mut controller = self.controller.clone();
+        // One step lets the controller set its springs and servos.
+        let _ = probe.step(&mut controller);
+        let creature = &probe.creature;
+        let mut spring_joints: Vec<usize> = creature.legs.iter().map(|l| l.spring).collect();
+        spring_joints.extend(&creature.tail);
+        let springs = spring_joints
+            .iter()
+            .map(|&k| {
+                let s = probe.drives[k].spring;
+                (k, s.stiffness, s.damping, s.rest)
+            })
+            .collect();
+        let hip_torque_limit = creature
+            .legs
+            .iter()
+            .flat_map(|l| l.hip.iter())
+            .map(|&k| probe.drives[k].spring.max_force)
+            .filter(|m| m.is_finite())
+            .fold(0.0, f64::max);
+        let options = crate::mjcf::MjcfOptions {
+            name: name.to_owned(),
+            timestep_s: self.sim.options.dt,
+            root_position: if creature.model.free_base() {
+                self.start.data.base_position
+            } else {
+                DVec3::ZERO
+            },
+            springs,
+            hip_torque_limit: if hip_torque_limit > 0.0 {
+                hip_torque_limit
+            } else {
+                400.0 * self.params.scale.powi(4)
+            },
+            ground: self.sim.ground,
+        };
+        crate::mjcf::to_mjcf(creature, &options)
+    }
+
+    /// The running controller's tunable gains.
+    #[must_use]
+    pub fn gains(&self) -> Vec<crate::control::gains::Gain> {
+        self.controller.gains()
+    }
+
+    /// Set one of [`PhysicsDriver::gains`] by name (finite, ≥ 0; no upper
+    /// limit: an absurd gain blows up and the guard resets the creature).
+    ///
+    /// # Errors
+    /// `gain.NAME: reason` for an unknown gain or a negative or non-finite value.
+    pub fn set_gain(&mut self, name: &str, value: f64) -> Result<(), String> {
+        if self.controller.set_gain(name, value) {
+            Ok(())
+        } else if self.controller.gains().iter().any(|g| g.name == name) {
+            Err(format!("gain.{name}: must be a finite number ≥ 0"))
+        } else {
+            let names: Vec<&str> = self.controller.gains().iter().map(|g| g.name).collect();
+            Err(format!(
+                "gain.{name}: no such gain (this controller has: {})",
+                names.join(", ")
+            ))
+        }
+    }
+
     /// Change gait while running (the controller takes over from the current state).
     ///
     /// # Errors
@@ -457,7 +534,7 @@ fn make_controller(
                 hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
                 ..d
             };
-            Ok(GaitController::BipedRun(BipedRun::new(p, l)))
+            Ok(GaitController::BipedRun(Box::new(BipedRun::new(p, l))))
         }
         (Species::Biped, "gallop" | "gallop_alternate") => {
             if !two_ball_legs {
@@ -475,7 +552,9 @@ fn make_controller(
                 style,
                 ..d
             };
-            Ok(GaitController::BipedGallop(BipedGallop::new(p, l)))
+            Ok(GaitController::BipedGallop(Box::new(BipedGallop::new(
+                p, l,
+            ))))
         }
         (Species::Quadruped, "trot" | "bound" | "gallop") => {
             if creature.legs.len() != 4 || creature.legs.iter().any(|leg| leg.hip.len() != 2) {
@@ -493,7 +572,9 @@ fn make_controller(
                 speed_mps: params.speed_mps,
                 ..QuadrupedRunParams::default()
             };
-            Ok(GaitController::Quadruped(QuadrupedRun::new(p, g, l)))
+            Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(
+                p, g, l,
+            ))))
         }
         (Species::Kangaroo, "hop") => {
             let ok = creature.legs.len() == 1
@@ -518,7 +599,7 @@ fn make_controller(
                 obstacle_depth_m: obstacle.map_or(d.obstacle_depth_m, |o| o.depth_m),
                 ..d
             };
-            Ok(GaitController::Kangaroo(KangarooHop::new(p)))
+            Ok(GaitController::Kangaroo(Box::new(KangarooHop::new(p))))
         }
         _ => Err(bad()),
     }

@@ -38,5 +38,6 @@ pub mod driver;
 pub mod metrics;
 pub mod preset;
 pub use driver::PhysicsDriver;
+pub mod mjcf;
 pub mod step_bench;
 pub mod table2;

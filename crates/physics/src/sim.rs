@@ -100,6 +100,17 @@ pub trait Controller {
 
     /// Change the desired hop height (m at scale 1) while running.
     fn set_hop_height(&mut self, _height_m: f64) {}
+
+    /// The gains a person may tune while it runs.
+    fn gains(&self) -> Vec<crate::control::gains::Gain> {
+        Vec::new()
+    }
+
+    /// Set a gain by name; `false` when there is no such gain or the value is
+    /// negative or not finite.
+    fn set_gain(&mut self, _name: &str, _value: f64) -> bool {
+        false
+    }
 }
 
 /// Options of the simulation loop.

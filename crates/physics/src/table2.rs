@@ -16,6 +16,11 @@ pub enum Quantity {
     StrideLengthM,
     /// Stride duration (s).
     StrideDurationS,
+    /// One step's length (m): the biped's Table-2 "stride" (flight + one
+    /// stance), half of a full left–right cycle.
+    StepLengthM,
+    /// One step's duration (s), half of a full left–right cycle.
+    StepDurationS,
     /// Mean flight duration (s).
     FlightS,
     /// Gathered flight (after the front legs lift off; bound) (s).
@@ -95,8 +100,18 @@ const TROT: [PaperRow; 7] = [
 const BIPED_RUN: [PaperRow; 7] = [
     row("pitch magnitude (deg)", Quantity::PitchDeg, 2.0, 3.4),
     row("roll magnitude (deg)", Quantity::RollDeg, 6.7, 11.5),
-    row("stride length (m)", Quantity::StrideLengthM, 0.57, 0.74),
-    row("stride duration (s)", Quantity::StrideDurationS, 0.36, 0.47),
+    row(
+        "stride length (m), one step",
+        Quantity::StepLengthM,
+        0.57,
+        0.74,
+    ),
+    row(
+        "stride duration (s), one step",
+        Quantity::StepDurationS,
+        0.36,
+        0.47,
+    ),
     row("flight duration (s)", Quantity::FlightS, 0.18, 0.29),
     row("stance duration (s)", Quantity::StanceS, 0.18, 0.18),
     row(
@@ -183,6 +198,8 @@ pub fn measured(summary: &GaitSummary, quantity: Quantity, legs: &[&str]) -> Opt
         Quantity::RollDeg => positive(summary.roll_magnitude_deg),
         Quantity::StrideLengthM => positive(summary.stride_length_m),
         Quantity::StrideDurationS => positive(summary.stride_duration_s),
+        Quantity::StepLengthM => positive(summary.stride_length_m / 2.0),
+        Quantity::StepDurationS => positive(summary.stride_duration_s / 2.0),
         Quantity::FlightS => positive(summary.flight_duration_s),
         Quantity::GatheredFlightS => flight_after(true),
         Quantity::ExtendedFlightS => flight_after(false),

@@ -483,6 +483,10 @@ impl BipedGallop {
 }
 
 impl Controller for BipedGallop {
+    crate::tunable_gains!(BipedGallopParams;
+        leg_stiffness => "N/m", leg_damping => "N·s/m", posture_kp => "N·m/rad", posture_kv => "N·m·s/rad",
+        placement_gain_s => "s", swing_kp => "N·m/rad", swing_kv => "N·m·s/rad");
+
     fn phase_name(&self) -> &'static str {
         self.phase.name()
     }

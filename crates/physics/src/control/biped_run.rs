@@ -70,7 +70,7 @@ impl Default for BipedRunParams {
         Self {
             speed_mps: 1.5,
             heading: 0.0,
-            leg_stiffness: 12_000.0,
+            leg_stiffness: 20_000.0,
             leg_damping: 20.0,
             landing_rest_m: -0.03,
             thrust_m: 0.03,
@@ -82,7 +82,7 @@ impl Default for BipedRunParams {
             swing_kp: 150.0,
             swing_kv: 8.0,
             posture_kp: 1000.0,
-            posture_kv: 150.0,
+            posture_kv: 160.0,
             yaw_kp: 200.0,
             yaw_kv: 20.0,
             leg_yaw_kp: 2.0,
@@ -209,6 +209,10 @@ impl BipedRun {
 }
 
 impl Controller for BipedRun {
+    crate::tunable_gains!(BipedRunParams;
+        leg_stiffness => "N/m", leg_damping => "N·s/m", posture_kp => "N·m/rad", posture_kv => "N·m·s/rad",
+        placement_gain_s => "s", swing_kp => "N·m/rad", swing_kv => "N·m·s/rad");
+
     fn phase_name(&self) -> &'static str {
         self.phase.name()
     }

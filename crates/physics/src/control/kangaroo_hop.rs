@@ -531,6 +531,10 @@ impl KangarooHop {
 }
 
 impl Controller for KangarooHop {
+    crate::tunable_gains!(KangarooHopParams;
+        ankle_stiffness => "N·m/rad", ankle_damping => "N·m·s/rad", posture_kp => "N·m/rad", posture_kv => "N·m·s/rad",
+        placement_gain_s => "s", tail_stiffness => "N·m/rad", tail_damping => "N·m·s/rad");
+
     fn phase_name(&self) -> &'static str {
         KangarooHop::phase_name(self)
     }

@@ -6,6 +6,7 @@
 pub mod attitude;
 pub mod biped_gallop;
 pub mod biped_run;
+pub mod gains;
 pub mod kangaroo_hop;
 pub mod phase;
 pub mod placement;

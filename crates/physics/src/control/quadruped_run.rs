@@ -494,6 +494,49 @@ impl QuadrupedRun {
 }
 
 impl Controller for QuadrupedRun {
+    fn gains(&self) -> Vec<crate::control::gains::Gain> {
+        use crate::control::gains::Gain;
+        let t = self.params.tuning(self.gait);
+        let d = *QuadrupedRunParams::default().tuning(self.gait);
+        vec![
+            Gain::new("leg_stiffness", "N/m", t.leg_stiffness, d.leg_stiffness),
+            Gain::new("leg_damping", "N·s/m", t.leg_damping, d.leg_damping),
+            Gain::new(
+                "placement_gain_s",
+                "s",
+                t.placement_gain_s,
+                d.placement_gain_s,
+            ),
+            Gain::new("pitch_kp", "N·m/rad", t.pitch_kp, d.pitch_kp),
+            Gain::new("pitch_kv", "N·m·s/rad", t.pitch_kv, d.pitch_kv),
+            Gain::new("roll_kp", "N·m/rad", t.roll_kp, d.roll_kp),
+            Gain::new("roll_kv", "N·m·s/rad", t.roll_kv, d.roll_kv),
+        ]
+    }
+
+    fn set_gain(&mut self, name: &str, value: f64) -> bool {
+        if !(value.is_finite() && value >= 0.0) {
+            return false;
+        }
+        let t = match self.gait {
+            QuadrupedGait::Trot => &mut self.params.trot,
+            QuadrupedGait::Bound => &mut self.params.bound,
+            QuadrupedGait::Gallop => &mut self.params.gallop,
+        };
+        let slot = match name {
+            "leg_stiffness" => &mut t.leg_stiffness,
+            "leg_damping" => &mut t.leg_damping,
+            "placement_gain_s" => &mut t.placement_gain_s,
+            "pitch_kp" => &mut t.pitch_kp,
+            "pitch_kv" => &mut t.pitch_kv,
+            "roll_kp" => &mut t.roll_kp,
+            "roll_kv" => &mut t.roll_kv,
+            _ => return false,
+        };
+        *slot = value;
+        true
+    }
+
     fn phase_name(&self) -> &'static str {
         self.phase().name()
     }

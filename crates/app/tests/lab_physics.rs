@@ -1,0 +1,102 @@
+//! The physics engine in the lab (Raibert & Hodgins 1991): a physics preset
+//! runs under its controller, the gait, desired speed, hop height and gains
+//! change through the browser's command API, `state()` reports the running
+//! figures, and an absurd gain blows up, is caught, and the lab says why
+//! while the creature starts again.
+
+use gaitlab_app::{Lab, Settings};
+use serde_json::Value;
+
+fn state(lab: &Lab) -> Value {
+    serde_json::from_str(&lab.state_json()).expect("state is JSON")
+}
+
+fn run(lab: &mut Lab, seconds: f64) {
+    for _ in 0..(seconds * 60.0) as usize {
+        lab.advance(1.0 / 60.0);
+    }
+}
+
+#[test]
+fn a_physics_preset_runs_and_answers_commands() {
+    let mut lab = Lab::new(Settings::default());
+    lab.command(r#"{"preset":"raibert-biped","speed_mps":2.0}"#)
+        .expect("valid");
+    run(&mut lab, 8.0);
+    let s = state(&lab);
+    assert_eq!(s["engine"], "physics");
+    assert_eq!(s["gait"], "run");
+    let physics = &s["physics"];
+    assert_eq!(physics["speed_desired_mps"], 2.0);
+    let mean = physics["speed_mean_mps"].as_f64().expect("mean speed");
+    assert!((mean - 2.0).abs() < 0.2, "mean speed {mean}: {s}");
+    assert_eq!(physics["fell"], false);
+    assert!(physics["height_m"].as_f64().expect("height") > 0.6);
+    assert!(s["last_error"].is_null(), "{s}");
+
+    lab.command(r#"{"gait":"gallop_alternate","hop_height_m":0.1}"#)
+        .expect("valid");
+    run(&mut lab, 4.0);
+    let s = state(&lab);
+    assert_eq!(s["gait"], "gallop_alternate");
+    assert_eq!(s["physics"]["resets"], 0, "{s}");
+
+    for (bad, key) in [
+        (r#"{"gait":"trot"}"#, "gait"),
+        (r#"{"speed_mps":99}"#, "speed_mps"),
+        (r#"{"hop_height_m":-1}"#, "hop_height_m"),
+        (
+            r#"{"gain":{"name":"posture_kp","value":-5}}"#,
+            "gain.posture_kp",
+        ),
+        (r#"{"gain":{"name":"flux","value":1}}"#, "gain.flux"),
+        (r#"{"gain":{"value":1}}"#, "gain.name"),
+    ] {
+        let error = lab.command(bad).expect_err(bad);
+        assert!(error.starts_with(key), "{bad}: {error}");
+    }
+}
+
+#[test]
+fn an_absurd_gain_is_caught_and_the_lab_says_why() {
+    let mut lab = Lab::new(Settings::default());
+    lab.command(r#"{"preset":"raibert-biped"}"#).expect("valid");
+    run(&mut lab, 2.0);
+    lab.command(r#"{"gain":{"name":"leg_stiffness","value":1e9}}"#)
+        .expect("allowed");
+    run(&mut lab, 2.0);
+    let s = state(&lab);
+    let error = s["last_error"].as_str().unwrap_or_default();
+    assert!(
+        error.contains("blew up") && error.contains("put back"),
+        "{s}"
+    );
+    assert_eq!(s["physics"]["resets"], 1);
+    // Running again from the start, with finite figures.
+    assert!(
+        s["physics"]["height_m"]
+            .as_f64()
+            .is_some_and(f64::is_finite),
+        "{s}"
+    );
+    assert!(s["time_s"].as_f64().expect("time") < 2.0, "{s}");
+}
+
+#[test]
+fn the_engine_selector_reaches_the_physics_creatures() {
+    let mut lab = Lab::new(Settings::default());
+    lab.command(r#"{"engine":"poda","preset":"poda-quadruped"}"#)
+        .expect("valid");
+    lab.command(r#"{"engine":"physics"}"#).expect("valid");
+    assert_eq!(state(&lab)["preset"], "raibert-quadruped");
+    lab.command(r#"{"engine":"ik"}"#).expect("valid");
+    assert_eq!(state(&lab)["preset"], "ik-quadruped");
+    lab.command(r#"{"preset":"raibert-kangaroo"}"#)
+        .expect("valid");
+    run(&mut lab, 3.0);
+    let s = state(&lab);
+    assert_eq!(s["gait"], "hop");
+    assert_eq!(s["physics"]["fell"], false, "{s}");
+    let error = lab.command(r#"{"mode":"run","gain":{"name":"tail_stiffness","value":2}}"#);
+    assert!(error.is_ok(), "{error:?}");
+}

@@ -1,0 +1,50 @@
+//! `gaitlab export PRESET_OR_FILE --format mjcf`: a physics creature as a
+//! MuJoCo model (bodies, joints, inertias, springs, hip motors, soft foot
+//! contact), written to standard output or `--out FILE`.
+
+use clap::Args;
+use gaitlab_core::preset::Engine;
+use gaitlab_physics::PhysicsDriver;
+
+use crate::fail::Failure;
+use crate::load;
+
+/// Arguments of `gaitlab export`.
+#[derive(Args, Debug)]
+pub struct ExportArgs {
+    /// A bundled preset name or a preset JSON file (engine physics).
+    pub preset: String,
+    /// Output format: mjcf.
+    #[arg(long)]
+    pub format: String,
+    /// Write to this file instead of standard output.
+    #[arg(long)]
+    pub out: Option<String>,
+}
+
+/// `gaitlab export`.
+pub fn export(args: &ExportArgs) -> Result<(), Failure> {
+    if args.format != "mjcf" {
+        return Err(Failure::input(format!(
+            "--format: unknown format {:?} (use mjcf)",
+            args.format
+        )));
+    }
+    let creature = load::creature(&args.preset)?;
+    if creature.scenario.engine != Engine::Physics {
+        return Err(Failure::input(format!(
+            "{}: MJCF export is for physics creatures; this preset's engine is {}",
+            creature.name,
+            creature.scenario.engine.name()
+        )));
+    }
+    let driver = PhysicsDriver::new(&creature).map_err(Failure::input)?;
+    let xml = driver.mjcf(&creature.name);
+    match &args.out {
+        Some(path) => {
+            std::fs::write(path, xml).map_err(|e| Failure::input(format!("--out {path}: {e}")))?
+        }
+        None => print!("{xml}"),
+    }
+    Ok(())
+}

@@ -1,0 +1,91 @@
+//! Biped running (Raibert & Hodgins 1991, Figure 4) through the bundled
+//! preset and the driver: a minute without falling at several speeds with the
+//! mean speed within 10 % of desired after 3 s (the paper's claim), and the
+//! Table-2 figures beside the paper's animation column.
+
+use gaitlab_core::driver::Driver;
+use gaitlab_core::preset::load_bundled;
+use gaitlab_physics::PhysicsDriver;
+use gaitlab_physics::table2::{measured, paper_rows};
+
+fn run(speed: f64, seconds: f64) -> PhysicsDriver {
+    let preset = load_bundled("raibert-biped")
+        .expect("bundled")
+        .expect("valid");
+    let mut params = preset.scenario.physics.clone().expect("physics section");
+    params.speed_mps = speed;
+    let mut driver = PhysicsDriver::with_params(&preset, params).expect("driver");
+    driver.reset_after_fall = false;
+    let frames = (seconds * 60.0) as usize;
+    for _ in 0..frames {
+        driver.step(1.0 / 60.0);
+    }
+    driver
+}
+
+#[test]
+fn runs_a_minute_at_several_speeds_within_ten_percent() {
+    for speed in [1.0, 2.0, 2.5] {
+        let driver = run(speed, 60.0);
+        let s = driver.summary();
+        assert!(
+            !s.fell && driver.resets() == 0,
+            "fell at {speed} m/s: {:?}",
+            driver.message()
+        );
+        let error = (s.speed_mean_mps - speed).abs() / speed;
+        eprintln!(
+            "biped run {speed} m/s: mean {:.3} m/s ({:.1} %)",
+            s.speed_mean_mps,
+            error * 100.0
+        );
+        assert!(
+            error < 0.10,
+            "mean speed {} at desired {speed}",
+            s.speed_mean_mps
+        );
+    }
+}
+
+#[test]
+fn table_2_figures_beside_the_papers() {
+    let driver = run(1.6, 20.0);
+    let s = driver.summary();
+    let legs = ["left", "right"];
+    let mut within = 0;
+    let rows = paper_rows("run");
+    for row in rows {
+        let ours = measured(&s, row.quantity, &legs).expect("measured");
+        let ratio = ours / row.animation;
+        eprintln!(
+            "{:40} paper {:7.3} ours {:7.3} ({:+.0} %)",
+            row.label,
+            row.animation,
+            ours,
+            (ratio - 1.0) * 100.0
+        );
+        if (0.65..=1.35).contains(&ratio) {
+            within += 1;
+        }
+    }
+    // The figures that must hold: the step's timing (stride duration and
+    // stance are the paper's step, not two steps; see docs/physics.md).
+    let step_s = s.stride_duration_s / 2.0;
+    assert!((step_s - 0.47).abs() / 0.47 < 0.35, "step {step_s} s");
+    assert!(
+        (s.stance_duration_s - 0.18).abs() / 0.18 < 0.35,
+        "stance {} s",
+        s.stance_duration_s
+    );
+    assert!(
+        (s.flight_duration_s - 0.29).abs() / 0.29 < 0.35,
+        "flight {} s",
+        s.flight_duration_s
+    );
+    assert_eq!(
+        within,
+        rows.len(),
+        "{within} of {} Table-2 rows within ±35 %",
+        rows.len()
+    );
+}

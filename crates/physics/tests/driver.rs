@@ -1,0 +1,181 @@
+//! The physics driver as the app and CLI use it: every bundled creature and
+//! gait builds and runs; absurd gains blow up, are caught, and the creature is
+//! put back with a message; dynamic scaling (Table 1) reproduces the motion
+//! with positions ×L and time ×√L; bad physics presets name the field.
+
+use gaitlab_core::driver::Driver;
+use gaitlab_core::preset::{Creature as PresetCreature, load_bundled};
+use gaitlab_physics::PhysicsDriver;
+use gaitlab_physics::driver::gait_names;
+
+fn bundled(name: &str) -> PresetCreature {
+    load_bundled(name).expect("bundled").expect("valid")
+}
+
+#[test]
+fn every_bundled_creature_runs_every_gait_with_finite_poses() {
+    for name in ["raibert-biped", "raibert-quadruped", "raibert-kangaroo"] {
+        let preset = bundled(name);
+        let species = PhysicsDriver::new(&preset)
+            .expect("driver")
+            .sim()
+            .creature
+            .species;
+        for gait in gait_names(species) {
+            let mut params = preset.scenario.physics.clone().expect("physics");
+            params.gait = Some((*gait).to_owned());
+            let mut driver = PhysicsDriver::with_params(&preset, params).expect("gait builds");
+            for _ in 0..120 {
+                driver.step(1.0 / 60.0);
+                assert!(
+                    driver.pose().joints.iter().all(|q| q.is_finite()),
+                    "{name} {gait}"
+                );
+                assert!(driver.pose().root.position.is_finite(), "{name} {gait}");
+            }
+            assert!(
+                driver.time() > 1.9,
+                "{name} {gait} advanced to {}",
+                driver.time()
+            );
+            assert!(
+                driver.message().is_none_or(|m| !m.contains("blew up")),
+                "{name} {gait}: {:?}",
+                driver.message()
+            );
+        }
+    }
+}
+
+#[test]
+fn an_absurd_gain_blows_up_and_the_creature_is_put_back_with_a_reason() {
+    let preset = bundled("raibert-biped");
+    let mut driver = PhysicsDriver::new(&preset).expect("driver");
+    for _ in 0..60 {
+        driver.step(1.0 / 60.0);
+    }
+    assert!(driver.set_gain("leg_stiffness", -1.0).is_err());
+    assert!(
+        driver
+            .set_gain("warp_factor", 1.0)
+            .expect_err("unknown")
+            .contains("no such gain")
+    );
+    driver
+        .set_gain("leg_stiffness", 1e9)
+        .expect("absurd but allowed");
+    let mut seconds = 0.0;
+    while driver.resets() == 0 && seconds < 5.0 {
+        driver.step(1.0 / 60.0);
+        seconds += 1.0 / 60.0;
+    }
+    let message = driver.message().expect("a reason").to_owned();
+    eprintln!("after {seconds:.2} s: {message}");
+    assert_eq!(driver.resets(), 1);
+    assert!(
+        message.contains("blew up") && message.contains("put back"),
+        "{message}"
+    );
+    assert!(driver.time() < 0.1, "restarted, t = {}", driver.time());
+    assert!(driver.pose().joints.iter().all(|q| q.is_finite()));
+    // The restart rebuilds the controller with the preset's gains, so the
+    // creature runs again.
+    for _ in 0..120 {
+        driver.step(1.0 / 60.0);
+    }
+    assert_eq!(
+        driver.resets(),
+        1,
+        "runs again after the reset: {:?}",
+        driver.message()
+    );
+}
+
+#[test]
+fn scaling_by_l_reproduces_the_motion_with_positions_times_l_and_time_times_root_l() {
+    let preset = bundled("raibert-biped");
+    let drive = |l: f64| {
+        let mut params = preset.scenario.physics.clone().expect("physics");
+        params.scale = l;
+        let mut driver = PhysicsDriver::with_params(&preset, params).expect("driver");
+        // Equal step counts: the step is 0.4 ms × √L, so step k is time k·dt·√L.
+        let steps = 7500; // 3 s at L = 1
+        let mut trace = Vec::new();
+        for k in 0..steps {
+            driver.run_steps(1).expect("no blow-up");
+            if k % 250 == 0 {
+                let d = &driver.sim().data;
+                trace.push((driver.time(), d.base_position, d.base_orientation));
+            }
+        }
+        trace
+    };
+    let one = drive(1.0);
+    for l in [2.0, 0.5, 3.0] {
+        let scaled = drive(l);
+        let mut worst = 0.0_f64;
+        for ((t1, p1, r1), (tl, pl, rl)) in one.iter().zip(&scaled) {
+            assert!(
+                (tl - t1 * l.sqrt()).abs() < 1e-9 * l.sqrt().max(1.0),
+                "time {tl} vs {t1}·√{l}"
+            );
+            worst = worst.max((*pl / l - *p1).length());
+            // Angles do not scale (Table 1: angular displacement × 1).
+            let diff = (*r1 - *rl).length().min((*r1 + *rl).length());
+            assert!(
+                diff < 1e-9,
+                "L = {l}: orientation differs by {diff:e} at t = {t1}"
+            );
+        }
+        eprintln!("L = {l}: worst trunk position error {worst:e} m (in L = 1 units) over 3 s");
+        assert!(worst < 1e-6, "L = {l}: trunk off by {worst} m");
+    }
+}
+
+#[test]
+fn bad_physics_presets_name_the_field() {
+    let json = gaitlab_core::preset::bundled_json("raibert-biped").expect("bundled");
+    let cases = [
+        (
+            "/scenario/physics/bodies/0/mass_kg",
+            serde_json::json!(-1.0),
+            "scenario.physics.bodies[0].mass_kg",
+        ),
+        (
+            "/scenario/physics/legs/0/spring",
+            serde_json::json!("nowhere"),
+            "scenario.physics.legs[0].spring",
+        ),
+        (
+            "/scenario/physics/scale",
+            serde_json::json!(0.0),
+            "scenario.physics.scale",
+        ),
+        (
+            "/scenario/physics/dt_s",
+            serde_json::json!(1.0),
+            "scenario.physics.dt_s",
+        ),
+        (
+            "/scenario/physics/trunk/inertia_kgm2",
+            serde_json::json!([1.0, -2.0, 1.0]),
+            "scenario.physics.trunk.inertia_kgm2",
+        ),
+    ];
+    for (pointer, value, path) in cases {
+        let mut v: serde_json::Value = serde_json::from_str(json).expect("json");
+        *v.pointer_mut(pointer).expect(pointer) = value;
+        let error = PresetCreature::from_json(&v.to_string()).expect_err(pointer);
+        assert_eq!(error.path, path, "{error}");
+    }
+    let mut v: serde_json::Value = serde_json::from_str(json).expect("json");
+    *v.pointer_mut("/scenario/physics/gait").expect("gait") = serde_json::json!("moonwalk");
+    let preset =
+        PresetCreature::from_json(&v.to_string()).expect("gait names are the driver's to check");
+    let error = PhysicsDriver::new(&preset).expect_err("unknown gait");
+    assert_eq!(error.path, "scenario.physics.gait");
+    assert!(
+        error.reason.contains("run, gallop, gallop_alternate"),
+        "{error}"
+    );
+}
