@@ -87,6 +87,25 @@ pub fn run(json: &str, clock_ms: &mut dyn FnMut() -> f64) -> Result<String, Stri
         Some(Err(error)) => return Err(format!("bench.preset: {preset}: {error}")),
         None => return Err(format!("bench.preset: no bundled preset named {preset:?}")),
     };
+    if creature.scenario.engine == gaitlab_core::preset::Engine::Physics {
+        // Physics: integration steps per second, as `gaitlab bench` reports.
+        let step_options = gaitlab_physics::step_bench::StepBenchOptions {
+            repeats: options.repeats,
+            ..Default::default()
+        };
+        let timing = gaitlab_physics::step_bench::time_steps(&creature, &step_options, clock_ms)
+            .map_err(|e| format!("bench.{e}"))?;
+        return Ok(json!({
+            "preset": creature.name,
+            "engine": "physics",
+            "repeats": step_options.repeats,
+            "dt_s": timing.dt_s,
+            "steps_per_second": timing.steps_per_second,
+            "steps_per_second_best": timing.steps_per_second_best,
+            "realtime_factor": timing.realtime_factor,
+        })
+        .to_string());
+    }
     let timing = frame_bench::time_frames(&creature, &options, clock_ms)
         .map_err(|e| format!("bench.{e}"))?;
     Ok(json!({
@@ -143,6 +162,16 @@ mod tests {
         assert_eq!(value["engine"], "poda");
         // One tick (1 ms) per 20 frames: 50 µs per frame.
         assert!((value["us_per_frame"].as_f64().unwrap_or(0.0) - 50.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_physics_preset_times_integration_steps() {
+        let mut clock = ticking_clock();
+        let text = run(r#"{"preset": "raibert-biped", "repeats": 3}"#, &mut clock).expect("runs");
+        let value: Value = serde_json::from_str(&text).expect("JSON");
+        assert_eq!(value["engine"], "physics");
+        assert!(value["steps_per_second"].as_f64().is_some_and(|s| s > 0.0), "{value}");
+        assert!((value["dt_s"].as_f64().unwrap_or_default() - 0.0004).abs() < 1e-12);
     }
 
     #[test]

@@ -348,6 +348,13 @@ impl PhysicsDriver {
         self.recorder.summary()
     }
 
+    /// Start the Table-2 figures afresh from now (no settling time): for
+    /// measuring after a speed change has settled.
+    pub fn clear_metrics(&mut self) {
+        let legs = self.sim.creature.legs.len();
+        self.recorder = GaitRecorder::new(legs, self.params.speed_mps * self.params.scale.sqrt(), 0.0, self.sim.time);
+    }
+
     /// Why the creature was last put back at the start (a blow-up or a fall),
     /// until the next [`PhysicsDriver::take_message`].
     #[must_use]
