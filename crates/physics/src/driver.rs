@@ -14,6 +14,9 @@ use crate::control::biped_run::{BipedRun, BipedRunParams};
 use crate::control::kangaroo_hop::{
     KangarooHop, KangarooHopParams, kangaroo_ground, kangaroo_start,
 };
+use crate::control::quadruped_bound::{
+    BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
+};
 use crate::control::quadruped_run::{
     QuadrupedGait, QuadrupedRun, QuadrupedRunParams, quadruped_start,
 };
@@ -81,14 +84,18 @@ pub struct PhysicsDriver {
 }
 
 /// The controller of the gait running: one of the paper's state machines.
+/// (One lives per driver, so the variants' differing sizes do not matter.)
 #[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)]
 pub enum GaitController {
     /// Biped running (Figure 4).
     BipedRun(BipedRun),
     /// Biped galloping, either style.
     BipedGallop(BipedGallop),
-    /// Quadruped trot, bound or gallop on virtual legs.
+    /// Quadruped trot on virtual legs.
     Quadruped(QuadrupedRun),
+    /// Quadruped bound or gallop: front and rear pairs as a planar biped.
+    QuadrupedBound(QuadrupedBound),
     /// The kangaroo's hop.
     Kangaroo(KangarooHop),
 }
@@ -99,6 +106,7 @@ impl GaitController {
             GaitController::BipedRun(c) => c,
             GaitController::BipedGallop(c) => c,
             GaitController::Quadruped(c) => c,
+            GaitController::QuadrupedBound(c) => c,
             GaitController::Kangaroo(c) => c,
         }
     }
@@ -108,6 +116,7 @@ impl GaitController {
             GaitController::BipedRun(c) => c,
             GaitController::BipedGallop(c) => c,
             GaitController::Quadruped(c) => c,
+            GaitController::QuadrupedBound(c) => c,
             GaitController::Kangaroo(c) => c,
         }
     }
@@ -230,6 +239,9 @@ impl PhysicsDriver {
         match (species, &controller) {
             (Species::Quadruped, GaitController::Quadruped(c)) => {
                 quadruped_start(&mut sim, c.gait(), params.speed_mps);
+            }
+            (Species::Quadruped, GaitController::QuadrupedBound(_)) => {
+                bound_start(&mut sim, params.speed_mps);
             }
             (Species::Kangaroo, _) => {
                 kangaroo_start(&mut sim, params.speed_mps.clamp(0.0, KANGAROO_START_MPS))
@@ -384,6 +396,10 @@ impl PhysicsDriver {
             (GaitController::Quadruped(running), GaitController::Quadruped(fresh)) => {
                 running.set_gait(fresh.gait())
             }
+            // Bound and gallop are one controller in two styles.
+            (GaitController::QuadrupedBound(running), GaitController::QuadrupedBound(fresh)) => {
+                running.set_style(fresh.style())
+            }
             (_, next) => self.controller = next,
         }
         self.params = params;
@@ -484,16 +500,28 @@ fn make_controller(
                     "the quadruped gaits need four legs with two hip joints each",
                 ));
             }
-            let g = match gait {
-                "trot" => QuadrupedGait::Trot,
-                "bound" => QuadrupedGait::Bound,
-                _ => QuadrupedGait::Gallop,
+            if gait == "trot" {
+                let p = QuadrupedRunParams {
+                    speed_mps: params.speed_mps,
+                    ..QuadrupedRunParams::default()
+                };
+                return Ok(GaitController::Quadruped(QuadrupedRun::new(
+                    p,
+                    QuadrupedGait::Trot,
+                    l,
+                )));
+            }
+            let style = if gait == "bound" {
+                BoundStyle::Bound
+            } else {
+                BoundStyle::Gallop
             };
-            let p = QuadrupedRunParams {
+            let p = QuadrupedBoundParams {
                 speed_mps: params.speed_mps,
-                ..QuadrupedRunParams::default()
+                style,
+                ..QuadrupedBoundParams::default()
             };
-            Ok(GaitController::Quadruped(QuadrupedRun::new(p, g, l)))
+            Ok(GaitController::QuadrupedBound(QuadrupedBound::new(p, l)))
         }
         (Species::Kangaroo, "hop") => {
             let ok = creature.legs.len() == 1

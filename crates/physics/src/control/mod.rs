@@ -9,6 +9,7 @@ pub mod biped_run;
 pub mod kangaroo_hop;
 pub mod phase;
 pub mod placement;
+pub mod quadruped_bound;
 pub mod quadruped_run;
 
 pub use phase::Phase;
