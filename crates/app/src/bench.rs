@@ -170,7 +170,10 @@ mod tests {
         let text = run(r#"{"preset": "raibert-biped", "repeats": 3}"#, &mut clock).expect("runs");
         let value: Value = serde_json::from_str(&text).expect("JSON");
         assert_eq!(value["engine"], "physics");
-        assert!(value["steps_per_second"].as_f64().is_some_and(|s| s > 0.0), "{value}");
+        assert!(
+            value["steps_per_second"].as_f64().is_some_and(|s| s > 0.0),
+            "{value}"
+        );
         assert!((value["dt_s"].as_f64().unwrap_or_default() - 0.0004).abs() < 1e-12);
     }
 

@@ -29,7 +29,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 driver.step(1.0 / 60.0);
             }
             let s = driver.summary();
-            let legs: Vec<String> = driver.sim().creature.legs.iter().map(|l| l.name.clone()).collect();
+            let legs: Vec<String> = driver
+                .sim()
+                .creature
+                .legs
+                .iter()
+                .map(|l| l.name.clone())
+                .collect();
             let legs: Vec<&str> = legs.iter().map(String::as_str).collect();
             println!("### {preset_name} · {gait} at {speed} m/s\n");
             println!(
@@ -57,7 +63,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     Some(v) => {
                         let d = (v / row.animation - 1.0) * 100.0;
                         let mark = if d.abs() <= 35.0 { "" } else { " ✗" };
-                        println!("| {} | {} | {:.3} | {:+.0} %{mark} |", row.label, row.animation, v, d);
+                        println!(
+                            "| {} | {} | {:.3} | {:+.0} %{mark} |",
+                            row.label, row.animation, v, d
+                        );
                     }
                     None => println!("| {} | {} | — | |", row.label, row.animation),
                 }

@@ -14,6 +14,9 @@ use crate::control::biped_run::{BipedRun, BipedRunParams};
 use crate::control::kangaroo_hop::{
     KangarooHop, KangarooHopParams, kangaroo_ground, kangaroo_start,
 };
+use crate::control::quadruped_bound::{
+    BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
+};
 use crate::control::quadruped_run::{
     QuadrupedGait, QuadrupedRun, QuadrupedRunParams, quadruped_start,
 };
@@ -81,14 +84,17 @@ pub struct PhysicsDriver {
 }
 
 /// The controller of the gait running: one of the paper's state machines.
+/// (One lives per driver, so the variants' differing sizes do not matter.)
 #[derive(Clone, Debug)]
 pub enum GaitController {
     /// Biped running (Figure 4).
     BipedRun(Box<BipedRun>),
     /// Biped galloping, either style.
     BipedGallop(Box<BipedGallop>),
-    /// Quadruped trot, bound or gallop on virtual legs.
+    /// Quadruped trot on virtual legs.
     Quadruped(Box<QuadrupedRun>),
+    /// Quadruped bound or gallop: front and rear pairs as a planar biped.
+    QuadrupedBound(Box<QuadrupedBound>),
     /// The kangaroo's hop.
     Kangaroo(Box<KangarooHop>),
 }
@@ -99,6 +105,7 @@ impl GaitController {
             GaitController::BipedRun(c) => c.as_ref(),
             GaitController::BipedGallop(c) => c.as_ref(),
             GaitController::Quadruped(c) => c.as_ref(),
+            GaitController::QuadrupedBound(c) => c.as_ref(),
             GaitController::Kangaroo(c) => c.as_ref(),
         }
     }
@@ -108,6 +115,7 @@ impl GaitController {
             GaitController::BipedRun(c) => c.as_mut(),
             GaitController::BipedGallop(c) => c.as_mut(),
             GaitController::Quadruped(c) => c.as_mut(),
+            GaitController::QuadrupedBound(c) => c.as_mut(),
             GaitController::Kangaroo(c) => c.as_mut(),
         }
     }
@@ -239,6 +247,9 @@ impl PhysicsDriver {
             (Species::Quadruped, GaitController::Quadruped(c)) => {
                 quadruped_start(&mut sim, c.gait(), params.speed_mps);
             }
+            (Species::Quadruped, GaitController::QuadrupedBound(_)) => {
+                bound_start(&mut sim, params.speed_mps);
+            }
             (Species::Kangaroo, _) => {
                 kangaroo_start(&mut sim, params.speed_mps.clamp(0.0, KANGAROO_START_MPS))
             }
@@ -352,7 +363,12 @@ impl PhysicsDriver {
     /// measuring after a speed change has settled.
     pub fn clear_metrics(&mut self) {
         let legs = self.sim.creature.legs.len();
-        self.recorder = GaitRecorder::new(legs, self.params.speed_mps * self.params.scale.sqrt(), 0.0, self.sim.time);
+        self.recorder = GaitRecorder::new(
+            legs,
+            self.params.speed_mps * self.params.scale.sqrt(),
+            0.0,
+            self.sim.time,
+        );
     }
 
     /// Why the creature was last put back at the start (a blow-up or a fall),
@@ -468,6 +484,10 @@ impl PhysicsDriver {
             (GaitController::Quadruped(running), GaitController::Quadruped(fresh)) => {
                 running.set_gait(fresh.gait())
             }
+            // Bound and gallop are one controller in two styles.
+            (GaitController::QuadrupedBound(running), GaitController::QuadrupedBound(fresh)) => {
+                running.set_style(fresh.style())
+            }
             (_, next) => self.controller = next,
         }
         self.params = params;
@@ -570,18 +590,30 @@ fn make_controller(
                     "the quadruped gaits need four legs with two hip joints each",
                 ));
             }
-            let g = match gait {
-                "trot" => QuadrupedGait::Trot,
-                "bound" => QuadrupedGait::Bound,
-                _ => QuadrupedGait::Gallop,
+            if gait == "trot" {
+                let p = QuadrupedRunParams {
+                    speed_mps: params.speed_mps,
+                    ..QuadrupedRunParams::default()
+                };
+                return Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(
+                    p,
+                    QuadrupedGait::Trot,
+                    l,
+                ))));
+            }
+            let style = if gait == "bound" {
+                BoundStyle::Bound
+            } else {
+                BoundStyle::Gallop
             };
-            let p = QuadrupedRunParams {
+            let p = QuadrupedBoundParams {
                 speed_mps: params.speed_mps,
-                ..QuadrupedRunParams::default()
+                style,
+                ..QuadrupedBoundParams::default()
             };
-            Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(
-                p, g, l,
-            ))))
+            Ok(GaitController::QuadrupedBound(Box::new(
+                QuadrupedBound::new(p, l),
+            )))
         }
         (Species::Kangaroo, "hop") => {
             let ok = creature.legs.len() == 1

@@ -10,6 +10,7 @@ pub mod gains;
 pub mod kangaroo_hop;
 pub mod phase;
 pub mod placement;
+pub mod quadruped_bound;
 pub mod quadruped_run;
 
 pub use phase::Phase;

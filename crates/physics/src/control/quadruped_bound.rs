@@ -1,0 +1,664 @@
+//! Quadruped bounding and galloping as a planar two-legged runner
+//! (Raibert & Hodgins 1991, "Control" — eqs. 1–4 — Figure 4, "Gaits",
+//! Tables 2 and 3; after Raibert's 1990 trotting, pacing and bounding
+//! quadruped and Murphy & Raibert's planar bounding).
+//!
+//! In the sagittal plane the bounding quadruped is a biped whose "legs" are
+//! its front and rear pairs. The two feet of a pair move together (same hip
+//! angles), and each pair runs its own state machine of Figure 4: it lands,
+//! compresses, thrusts and lifts off on its own events. Both pairs get the
+//! same thrust (eq. 2's energy injection, one value regulated on the
+//! stride's total flight time), so their vertical impulses balance and the
+//! trunk's pitch oscillation is the gait's natural mode rather than
+//! something the hips fight. The only coordination is that a pair lengthens
+//! for landing only after the other pair has touched down since its own
+//! lift-off, so the pairs alternate (rear, extended flight, front, gathered
+//! flight).
+//!
+//! Each pair places its feet about its own hip's neutral point with eq. 3's
+//! speed correction, which also governs pitch: front feet placed further
+//! forward raise the nose. In stance the hips only damp the pitch rate
+//! weakly and pull the trunk toward a small pitch bias (eq. 4 with small
+//! gains); roll is servoed level by the hip roll joints, the torque split
+//! across the pair's feet; yaw toward the heading by differential fore–aft
+//! foot forces.
+//!
+//! The gallop ([`BoundStyle::Gallop`]) is the bound with the two legs of each
+//! pair separated: the second leg lands a little shorter (so some tens of
+//! milliseconds later) and a few centimetres further forward, giving single,
+//! double, single support within each pair's stance.
+//!
+//! All parameters are given at scale 1 and scaled by the creature's dynamic
+//! scale L (Table 1).
+
+use glam::{DQuat, DVec3};
+
+use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
+use super::phase::Phase;
+use super::placement::{foot_displacement, gimbal_angles, leg_direction};
+use crate::actuator::Stops;
+use crate::sim::{ControlInput, Controller, Drive, Sim};
+
+/// Hip-to-foot length of the quadruped's leg at full extension, at scale 1 (m).
+const LEG_FULL_M: f64 = 0.81;
+
+/// The pairs: front then rear; within a pair the leg that lands first in
+/// the gallop comes first (front-right 1, front-left 0, rear-right 3, rear-left 2).
+pub const PAIRS: [[usize; 2]; 2] = [[1, 0], [3, 2]];
+
+/// Index of the front pair in [`PAIRS`].
+pub const FRONT: usize = 0;
+/// Index of the rear pair in [`PAIRS`].
+pub const REAR: usize = 1;
+
+/// Bound or gallop.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum BoundStyle {
+    /// The legs of each pair strike and leave together.
+    #[default]
+    Bound,
+    /// The legs of each pair strike separated in time and space.
+    Gallop,
+}
+
+impl BoundStyle {
+    /// The gait's name.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Bound => "bound",
+            Self::Gallop => "gallop",
+        }
+    }
+}
+
+/// Parameters of [`QuadrupedBound`] at scale 1 (scaled by L while running).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct QuadrupedBoundParams {
+    /// Bound or gallop.
+    pub style: BoundStyle,
+    /// Desired forward speed ẋ_d (m/s).
+    pub speed_mps: f64,
+    /// Desired heading (rad about +y; 0 = +z).
+    pub heading: f64,
+    /// Leg spring stiffness k of eq. 1, per leg (N/m).
+    pub leg_stiffness: f64,
+    /// Leg spring damping b of eq. 1 in stance (N·s/m).
+    pub leg_damping: f64,
+    /// Leg damping while the foot is in the air (N·s/m).
+    pub leg_air_damping: f64,
+    /// Spring rest for landing (m of extension from full length, ≤ 0).
+    pub landing_rest_m: f64,
+    /// Spring rest of a shortened leg (m of extension).
+    pub short_rest_m: f64,
+    /// Initial thrust: extra rest length in the thrust state (m), the same
+    /// for both pairs.
+    pub thrust_m: f64,
+    /// Extra thrust of the rear pair over the front (m); 0 for equal thrusts.
+    pub rear_extra_thrust_m: f64,
+    /// Largest thrust (m).
+    pub max_thrust_m: f64,
+    /// Desired total flight per stride, gathered plus extended (s).
+    pub stride_flight_s: f64,
+    /// Thrust change per second of stride-flight error (m/s).
+    pub flight_gain: f64,
+    /// A pair stays short at least this long after its lift-off (s).
+    pub min_short_s: f64,
+    /// Initial guess of the stance duration T_s of eq. 3 (s).
+    pub stance_s: f64,
+    /// Foot placement gain k_ẋ of eq. 3 (s).
+    pub placement_gain_s: f64,
+    /// Change of the speed bias per stride per m/s of the stride's mean
+    /// speed error (dimensionless): removes eq. 3's steady speed error.
+    pub speed_integral_gain: f64,
+    /// Extra forward placement of the front feet (m): raises the nose.
+    pub front_offset_m: f64,
+    /// Pitch the stance hips pull the trunk toward (rad, positive nose down).
+    pub pitch_bias: f64,
+    /// Stance pitch stiffness toward the bias (N·m/rad), weak.
+    pub pitch_kp: f64,
+    /// Stance pitch-rate damping (N·m·s/rad).
+    pub pitch_kv: f64,
+    /// Stance roll servo stiffness (N·m/rad).
+    pub roll_kp: f64,
+    /// Stance roll damping (N·m·s/rad).
+    pub roll_kv: f64,
+    /// Stance yaw servo toward the heading (N·m/rad).
+    pub yaw_kp: f64,
+    /// Stance yaw damping (N·m·s/rad).
+    pub yaw_kv: f64,
+    /// Largest horizontal foot force the stance hips may ask for, as a
+    /// fraction of the leg's spring force (friction-safe posture torques).
+    pub posture_force_ratio: f64,
+    /// Longest look-ahead of the landing foot target (s): the leg sweeps
+    /// back over this last part of the flight to match ground speed.
+    pub sweep_s: f64,
+    /// Hip servo stiffness for positioning legs (N·m/rad).
+    pub swing_kp: f64,
+    /// Hip servo damping for positioning legs (N·m·s/rad).
+    pub swing_kv: f64,
+    /// Largest hip torque (N·m).
+    pub max_hip_torque: f64,
+    /// Gallop: how much shorter the second leg of a pair lands (m), which
+    /// delays its touchdown.
+    pub gallop_shorter_m: f64,
+    /// Gallop: how much further forward the second foot lands (m).
+    pub gallop_spread_m: f64,
+}
+
+impl Default for QuadrupedBoundParams {
+    fn default() -> Self {
+        Self {
+            style: BoundStyle::Bound,
+            speed_mps: 2.8,
+            heading: 0.0,
+            leg_stiffness: 4_500.0,
+            leg_damping: 15.0,
+            leg_air_damping: 120.0,
+            landing_rest_m: -0.08,
+            short_rest_m: -0.28,
+            thrust_m: 0.03,
+            rear_extra_thrust_m: 0.0,
+            max_thrust_m: 0.10,
+            stride_flight_s: 0.18,
+            flight_gain: 0.05,
+            min_short_s: 0.05,
+            stance_s: 0.09,
+            placement_gain_s: 0.1,
+            speed_integral_gain: 0.05,
+            front_offset_m: 0.0,
+            pitch_bias: 0.0,
+            pitch_kp: 50.0,
+            pitch_kv: 10.0,
+            roll_kp: 400.0,
+            roll_kv: 60.0,
+            yaw_kp: 200.0,
+            yaw_kv: 20.0,
+            posture_force_ratio: 0.5,
+            sweep_s: 0.07,
+            swing_kp: 300.0,
+            swing_kv: 15.0,
+            max_hip_torque: 400.0,
+            gallop_shorter_m: 0.025,
+            gallop_spread_m: 0.05,
+        }
+    }
+}
+
+/// One pair's state machine (Figure 4).
+#[derive(Clone, Copy, Debug)]
+struct PairState {
+    phase: Phase,
+    /// Whether the other pair touched down since this pair's lift-off.
+    armed: bool,
+    touchdown_s: f64,
+    liftoff_s: f64,
+    /// Measured stance duration (s), T_s of eq. 3.
+    stance_s: f64,
+    /// Each leg's stance rest (m).
+    rest: [f64; 2],
+    /// Whether each leg has touched in this stance.
+    touched: [bool; 2],
+}
+
+/// Put the quadruped of `sim` at the start of a bound at `speed_mps`
+/// (scale-1, scaled by √L): trunk level at landing height, rear legs
+/// extended for landing, front legs short, moving forward along +z.
+pub fn bound_start(sim: &mut Sim, speed_mps: f64) {
+    let l = sim.creature.scale;
+    let p = QuadrupedBoundParams::default();
+    sim.data.q.fill(0.0);
+    sim.data.qd.fill(0.0);
+    for (i, leg) in sim.creature.legs.iter().enumerate() {
+        let rear = PAIRS[REAR].contains(&i);
+        sim.data.q[leg.spring] = if rear {
+            p.landing_rest_m
+        } else {
+            p.short_rest_m
+        } * l;
+    }
+    sim.data.base_orientation = DQuat::IDENTITY;
+    sim.data.base_position = DVec3::new(0.0, (LEG_FULL_M + p.landing_rest_m + 0.04) * l, 0.0);
+    sim.data.base_velocity.angular = DVec3::ZERO;
+    sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, speed_mps * l.sqrt());
+    for c in &mut sim.contacts {
+        c.touching = false;
+    }
+}
+
+/// The bounding / galloping controller.
+#[derive(Clone, Debug)]
+pub struct QuadrupedBound {
+    /// Parameters (editable while running).
+    pub params: QuadrupedBoundParams,
+    pairs: [PairState; 2],
+    /// The common thrust (m).
+    pub thrust: f64,
+    /// Integral speed correction added to the desired speed (m/s).
+    pub speed_bias: f64,
+    /// Last measured flight after each pair's lift-off (s): gathered
+    /// (after the front pair) and extended (after the rear pair).
+    pub flight_s: [f64; 2],
+    /// Start of the current all-feet-off period and the pair that lifted last.
+    flight_start: Option<(f64, usize)>,
+    /// Flight accumulated since the last rear touchdown (s).
+    stride_flight_s: f64,
+    /// Time and forward position of the centre of mass at the last rear touchdown.
+    stride_start: Option<(f64, f64)>,
+    hip_target: [[f64; 2]; 4],
+    scale: f64,
+}
+
+impl QuadrupedBound {
+    /// A controller in flight, either pair free to land first.
+    #[must_use]
+    pub fn new(params: QuadrupedBoundParams, scale: f64) -> Self {
+        let pair = PairState {
+            phase: Phase::Flight,
+            armed: false,
+            touchdown_s: 0.0,
+            liftoff_s: f64::NEG_INFINITY,
+            stance_s: params.stance_s * scale.sqrt(),
+            rest: [params.landing_rest_m * scale; 2],
+            touched: [false; 2],
+        };
+        // The rear pair lands first; the front waits for it.
+        let mut pairs = [pair; 2];
+        pairs[REAR].armed = true;
+        Self {
+            params,
+            pairs,
+            thrust: params.thrust_m * scale,
+            speed_bias: 0.0,
+            flight_s: [0.0; 2],
+            flight_start: None,
+            stride_flight_s: 0.0,
+            stride_start: None,
+            hip_target: [[0.0; 2]; 4],
+            scale,
+        }
+    }
+
+    /// Bound or gallop.
+    #[must_use]
+    pub fn style(&self) -> BoundStyle {
+        self.params.style
+    }
+
+    /// Change between bound and gallop while running.
+    pub fn set_style(&mut self, style: BoundStyle) {
+        self.params.style = style;
+    }
+
+    /// The state of the pair `pair` (0 front, 1 rear).
+    #[must_use]
+    pub fn pair_phase(&self, pair: usize) -> Phase {
+        self.pairs[pair.min(1)].phase
+    }
+
+    /// The state shown for the creature: the rear pair's in its stance,
+    /// else the front pair's, else flight.
+    #[must_use]
+    pub fn phase(&self) -> Phase {
+        if self.pairs[REAR].phase != Phase::Flight {
+            self.pairs[REAR].phase
+        } else {
+            self.pairs[FRONT].phase
+        }
+    }
+
+    fn leg_stops(&self) -> Stops {
+        let l = self.scale;
+        Stops {
+            min: -0.36 * l,
+            max: 0.0,
+            stiffness: 2.0e5 * l * l,
+            damping: 500.0 * l.powf(2.5),
+        }
+    }
+
+    fn pair_thrust(&self, pair: usize) -> f64 {
+        let extra = if pair == REAR {
+            self.params.rear_extra_thrust_m * self.scale
+        } else {
+            0.0
+        };
+        (self.thrust + extra).max(0.0)
+    }
+
+    /// Advance both pairs' state machines on the contact and spring events.
+    fn advance(&mut self, input: &ControlInput<'_>, com_forward: f64) {
+        let l = self.scale;
+        let p = self.params;
+        let any_touch = input.contacts.iter().any(|c| c.touching);
+        // Flights (every foot off) and the thrust regulation on the stride's
+        // total flight, updated when the gathered flight ends.
+        match (self.flight_start, any_touch) {
+            (Some((t0, last)), true) => {
+                self.flight_s[last] = input.time - t0;
+                self.stride_flight_s += input.time - t0;
+                self.flight_start = None;
+            }
+            (None, false) => {
+                let last = if self.pairs[FRONT].liftoff_s >= self.pairs[REAR].liftoff_s {
+                    FRONT
+                } else {
+                    REAR
+                };
+                self.flight_start = Some((input.time, last));
+            }
+            _ => {}
+        }
+        for (k, &legs) in PAIRS.iter().enumerate() {
+            let touching = [
+                input.contacts[legs[0]].touching,
+                input.contacts[legs[1]].touching,
+            ];
+            let any = touching[0] || touching[1];
+            let (mut q, mut qd, mut n) = (0.0, 0.0, 0.0);
+            for (s, &i) in legs.iter().enumerate() {
+                if touching[s] {
+                    let spring = input.creature.legs[i].spring;
+                    q += input.data.q[spring] - self.pairs[k].rest[s];
+                    qd += input.data.qd[spring];
+                    n += 1.0;
+                }
+            }
+            if n > 0.0 {
+                q /= n;
+                qd /= n;
+            }
+            let time = input.time;
+            let pair = &mut self.pairs[k];
+            for s in 0..2 {
+                if touching[s] && pair.phase != Phase::Flight && !pair.touched[s] {
+                    pair.touched[s] = true;
+                    pair.rest[s] = input.data.q[input.creature.legs[legs[s]].spring]
+                        .clamp(p.short_rest_m * l, 0.0)
+                        .max(p.landing_rest_m * l - 0.1 * l)
+                        .min(p.landing_rest_m * l + 0.02 * l);
+                }
+            }
+            match pair.phase {
+                Phase::Flight if any => {
+                    pair.phase = Phase::Loading;
+                    pair.touchdown_s = time;
+                    pair.armed = false;
+                    for s in 0..2 {
+                        pair.touched[s] = touching[s];
+                        let q = input.data.q[input.creature.legs[legs[s]].spring];
+                        pair.rest[s] = q
+                            .max(p.landing_rest_m * l - 0.1 * l)
+                            .min(p.landing_rest_m * l + 0.02 * l);
+                    }
+                    self.pairs[1 - k].armed = true;
+                    if k == REAR {
+                        // Eq. 2's energy per stride: one thrust for both pairs,
+                        // regulated on the stride's total flight.
+                        if self.stride_start.is_some() {
+                            let error = p.stride_flight_s * l.sqrt() - self.stride_flight_s;
+                            self.thrust = (self.thrust + p.flight_gain * l.sqrt() * error)
+                                .clamp(0.0, p.max_thrust_m * l);
+                        }
+                        self.stride_flight_s = 0.0;
+                        if let Some((t0, x0)) = self.stride_start
+                            && time - t0 > 1e-3
+                        {
+                            let vd = p.speed_mps * l.sqrt();
+                            let v = (com_forward - x0) / (time - t0);
+                            let cap = 0.5 * vd.abs().max(0.5 * l.sqrt());
+                            self.speed_bias = (self.speed_bias + p.speed_integral_gain * (vd - v))
+                                .clamp(-cap, cap);
+                        }
+                        self.stride_start = Some((time, com_forward));
+                    }
+                    continue;
+                }
+                // A foot bouncing off at impact is still landing.
+                Phase::Loading if !any && time - pair.touchdown_s > 0.01 * l.sqrt() => {
+                    pair.phase = Phase::Flight;
+                    pair.liftoff_s = time;
+                }
+                Phase::Loading if !any => {}
+                Phase::Loading
+                    if (qd < 0.0 && q < -0.002 * l)
+                        || time - pair.touchdown_s > 0.015 * l.sqrt() =>
+                {
+                    pair.phase = Phase::Compression;
+                }
+                Phase::Compression if qd >= 0.0 => pair.phase = Phase::Thrust,
+                Phase::Thrust if q >= -0.005 * l => pair.phase = Phase::Unloading,
+                _ => {}
+            }
+            if matches!(
+                pair.phase,
+                Phase::Compression | Phase::Thrust | Phase::Unloading
+            ) && !any
+            {
+                pair.phase = Phase::Flight;
+                pair.liftoff_s = time;
+                pair.stance_s = (time - pair.touchdown_s).clamp(0.04 * l.sqrt(), 0.3 * l.sqrt());
+            }
+        }
+    }
+}
+
+/// Largest hip servo targets (rad): roll, pitch.
+const HIP_TARGET_LIMIT: [f64; 2] = [0.8, 1.3];
+
+/// Hip servo gains and torque limit.
+#[derive(Clone, Copy)]
+struct HipServo {
+    kp: f64,
+    kv: f64,
+    max: f64,
+    dt: f64,
+}
+
+impl HipServo {
+    /// Servo the hip joints to `targets` (eq. 5) with the targets' rate as
+    /// velocity feed-forward (`previous` holds last call's targets).
+    fn set(&self, drives: &mut [Drive], hip: &[usize], targets: [f64; 2], previous: &mut [f64; 2]) {
+        for ((&j, (&t, &lim)), prev) in hip
+            .iter()
+            .zip(targets.iter().zip(&HIP_TARGET_LIMIT))
+            .zip(previous.iter_mut())
+        {
+            let t = t.clamp(-lim, lim);
+            let rate = if self.dt > 0.0 {
+                ((t - *prev) / self.dt).clamp(-20.0, 20.0)
+            } else {
+                0.0
+            };
+            *prev = t;
+            drives[j].servo(self.kp, self.kv, t + self.kv / self.kp * rate);
+            drives[j].spring.max_force = self.max;
+        }
+    }
+}
+
+impl Controller for QuadrupedBound {
+    crate::tunable_gains!(QuadrupedBoundParams;
+        leg_stiffness => "N/m", leg_damping => "N·s/m", placement_gain_s => "s", pitch_kp => "N·m/rad",
+        pitch_kv => "N·m·s/rad", roll_kp => "N·m/rad", roll_kv => "N·m·s/rad");
+
+    fn phase_name(&self) -> &'static str {
+        self.phase().name()
+    }
+
+    fn set_speed(&mut self, speed_mps: f64) {
+        self.params.speed_mps = speed_mps;
+    }
+
+    fn set_heading(&mut self, heading: f64) {
+        self.params.heading = heading;
+    }
+
+    fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
+        let creature = input.creature;
+        let data = input.data;
+        if creature.legs.len() != 4 || creature.legs.iter().any(|leg| leg.hip.len() != 2) {
+            return;
+        }
+        let l = self.scale;
+        let p = self.params;
+        let fwd = heading_forward(p.heading);
+        let lateral = DVec3::Y.cross(fwd);
+        let com = crate::energy::center_of_mass(&creature.model, data);
+        self.advance(input, com.dot(fwd));
+
+        let trunk = creature.trunk;
+        let trunk_rot = data.world[trunk].rot;
+        let trunk_pos = data.world[trunk].pos;
+        let stops = self.leg_stops();
+        let landing = p.landing_rest_m * l;
+        let short = p.short_rest_m * l;
+        let gallop = p.style == BoundStyle::Gallop;
+
+        // Posture torques wanted on the trunk in stance (eq. 4, weak on pitch).
+        let err = attitude_error(creature, data, p.heading, p.pitch_bias);
+        let rate = trunk_rate(creature, data);
+        let pitch_t = -(err.dot(lateral) * p.pitch_kp * l.powi(4)
+            + rate.dot(lateral) * p.pitch_kv * l.powf(4.5));
+        let roll_t =
+            -(err.dot(fwd) * p.roll_kp * l.powi(4) + rate.dot(fwd) * p.roll_kv * l.powf(4.5));
+        let yaw_t = -(err.y * p.yaw_kp * l.powi(4) + rate.y * p.yaw_kv * l.powf(4.5));
+
+        let velocity = com_velocity(creature, data);
+        let desired = fwd * (p.speed_mps * l.sqrt() + self.speed_bias);
+        let reach = LEG_FULL_M * l + landing;
+        let max = p.max_hip_torque * l.powi(4);
+        let servo = HipServo {
+            kp: p.swing_kp * l.powi(4),
+            kv: p.swing_kv * l.powf(4.5),
+            max,
+            dt: input.dt,
+        };
+        let servoing = |ph: Phase| matches!(ph, Phase::Compression | Phase::Thrust);
+
+        for (k, &legs) in PAIRS.iter().enumerate() {
+            let pair = self.pairs[k];
+            let thrust = self.pair_thrust(k);
+            let in_flight = pair.phase == Phase::Flight;
+            // Lengthen for landing once armed and clear of the ground.
+            let extend = pair.armed && input.time - pair.liftoff_s > p.min_short_s * l.sqrt();
+            let displacement = foot_displacement(
+                velocity,
+                desired,
+                pair.stance_s,
+                p.placement_gain_s * l.sqrt(),
+            ) + if k == FRONT {
+                fwd * (p.front_offset_m * l)
+            } else {
+                DVec3::ZERO
+            };
+            // Stance legs of the pair sharing the posture torque.
+            let mut n = 0.0;
+            let mut lever = 0.0;
+            for (s, &i) in legs.iter().enumerate() {
+                if !in_flight
+                    && pair.touched[s]
+                    && input.contacts[i].touching
+                    && servoing(pair.phase)
+                {
+                    n += 1.0;
+                    let r = input.contacts[i].position - com;
+                    lever += r.x * r.x + r.z * r.z;
+                }
+            }
+            let yaw_c = if lever > 1e-6 { yaw_t / lever } else { 0.0 };
+            for (s, &i) in legs.iter().enumerate() {
+                let leg = &creature.legs[i];
+                let second = gallop && s == 1;
+                let touching = input.contacts[i].touching;
+                // Leg spring: eq. 1 with a programmable rest.
+                let airborne_leg = in_flight || !pair.touched[s];
+                let rest = if airborne_leg {
+                    if in_flight && !extend {
+                        short
+                    } else if second {
+                        landing - p.gallop_shorter_m * l
+                    } else {
+                        landing
+                    }
+                } else {
+                    match pair.phase {
+                        Phase::Thrust => pair.rest[s] + thrust,
+                        Phase::Unloading => short,
+                        _ if !touching && pair.phase != Phase::Loading => short,
+                        _ => pair.rest[s],
+                    }
+                };
+                {
+                    let d = &mut drives[leg.spring];
+                    d.stops = Some(stops);
+                    d.spring.stiffness = p.leg_stiffness * l * l;
+                    d.spring.damping = if touching {
+                        p.leg_damping
+                    } else {
+                        p.leg_air_damping
+                    } * l.powf(2.5);
+                    d.spring.max_force = f64::INFINITY;
+                    d.feedforward = 0.0;
+                    d.spring.rest = rest.min(0.0);
+                }
+                let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
+                if airborne_leg && !touching {
+                    // Foot placement (eq. 3) about the hip's neutral point, aimed
+                    // where the hip will be at touchdown but looking at most
+                    // `sweep_s` ahead: the leg waits at its landing angle and,
+                    // in the last moments, sweeps back so the heavy foot meets
+                    // the ground at little speed (ground speed matching).
+                    let hip_v = data.point_velocity_world(trunk, leg.hip_in_trunk);
+                    let drop = hip_world.y
+                        - (reach * reach - displacement.length_squared())
+                            .max(0.0)
+                            .sqrt();
+                    let g = crate::GRAVITY_MPS2;
+                    let t_rem = if drop > 0.0 {
+                        (hip_v.y + (hip_v.y * hip_v.y + 2.0 * g * drop).sqrt()) / g
+                    } else {
+                        0.0
+                    }
+                    .min(p.sweep_s * l.sqrt());
+                    let ahead = DVec3::new(hip_v.x, 0.0, hip_v.z) * t_rem;
+                    let spread = if second {
+                        fwd * (p.gallop_spread_m * l)
+                    } else {
+                        DVec3::ZERO
+                    };
+                    let foot =
+                        DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead + displacement + spread;
+                    let dir = leg_direction(trunk_rot, foot - hip_world, reach);
+                    let (roll, pitch) = gimbal_angles(dir);
+                    servo.set(drives, &leg.hip, [roll, pitch], &mut self.hip_target[i]);
+                } else if touching && servoing(pair.phase) && n > 0.0 {
+                    let roll_axis = trunk_rot * DVec3::Z;
+                    let roll_q = data.q[leg.hip[0]];
+                    let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
+                    let foot = input.contacts[i].position;
+                    let r = foot - com;
+                    let gy = DVec3::Y.cross(DVec3::new(r.x, 0.0, r.z)) * yaw_c;
+                    let moment = (foot - hip_world).cross(gy);
+                    let torque = lateral * pitch_t + fwd * roll_t;
+                    let roll_tau = -torque.dot(roll_axis) / n - roll_axis.dot(moment);
+                    let pitch_tau = -torque.dot(pitch_axis) / n - pitch_axis.dot(moment);
+                    let q = data.q[leg.spring];
+                    let spring_force = (p.leg_stiffness * l * l * (rest - q)).max(0.0);
+                    let lim =
+                        (p.posture_force_ratio * spring_force * (LEG_FULL_M * l + q)).min(max);
+                    drives[leg.hip[0]].torque(roll_tau.clamp(-max, max));
+                    drives[leg.hip[1]].torque(pitch_tau.clamp(-lim, lim));
+                    drives[leg.hip[0]].spring.max_force = max;
+                    drives[leg.hip[1]].spring.max_force = max;
+                    self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
+                } else {
+                    for (&j, prev) in leg.hip.iter().zip(self.hip_target[i].iter_mut()) {
+                        drives[j].torque(0.0);
+                        *prev = data.q[j];
+                    }
+                }
+            }
+        }
+    }
+}

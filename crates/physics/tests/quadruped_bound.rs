@@ -1,0 +1,136 @@
+//! Quadruped bound and gallop as a planar two-legged runner on front and rear
+//! pairs (Raibert & Hodgins 1991, "Gaits", Table 2): runs without falling at
+//! several speeds, the gait change trot → bound → gallop through the driver,
+//! and the Table-2 bound figures beside the paper's animation column.
+//!
+//! Tests marked `ignore` state acceptance targets the controller does not
+//! meet yet; run them with `cargo test -p gaitlab-physics -- --ignored`.
+
+use gaitlab_core::driver::Driver;
+use gaitlab_physics::control::quadruped_bound::{
+    BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
+};
+use gaitlab_physics::control::quadruped_run::quadruped_ground;
+use gaitlab_physics::creatures::quadruped;
+use gaitlab_physics::driver::PhysicsDriver;
+use gaitlab_physics::metrics::{GaitRecorder, GaitSummary};
+use gaitlab_physics::table2::{measured, paper_rows};
+use gaitlab_physics::{Sim, SimOptions};
+
+const LEG_NAMES: [&str; 4] = ["front-left", "front-right", "rear-left", "rear-right"];
+
+/// Run `style` at `speed` for `seconds` (stops early on a fall).
+fn run(style: BoundStyle, speed: f64, seconds: f64) -> GaitSummary {
+    let creature = quadruped(1.0).expect("quadruped builds");
+    let mut sim = Sim::new(creature, quadruped_ground(1.0), SimOptions::default());
+    bound_start(&mut sim, speed);
+    let params = QuadrupedBoundParams {
+        speed_mps: speed,
+        style,
+        ..Default::default()
+    };
+    let mut ctl = QuadrupedBound::new(params, 1.0);
+    let mut rec = GaitRecorder::new(4, speed, 0.0, 3.0);
+    while sim.time < seconds && !rec.fell() {
+        sim.step(&mut ctl).expect("no blow-up");
+        rec.record(&sim);
+    }
+    rec.summary()
+}
+
+fn check_runs(style: BoundStyle, speeds: &[f64], seconds: f64) {
+    for &v in speeds {
+        let s = run(style, v, seconds);
+        assert!(!s.fell, "{} at {v} fell", style.name());
+        let rel = (s.speed_mean_mps - v).abs() / v;
+        assert!(
+            rel < 0.10,
+            "{} at {v}: mean speed {:.3} m/s",
+            style.name(),
+            s.speed_mean_mps
+        );
+    }
+}
+
+#[test]
+fn bound_starts_rear_first_and_alternates() {
+    // The first seconds: the pairs take turns and the trunk pitches.
+    let s = run(BoundStyle::Bound, 2.8, 4.0);
+    assert!(!s.fell, "bound fell in its first 4 s");
+    assert!(
+        s.pitch_magnitude_deg > 3.0,
+        "pitch {:.1}",
+        s.pitch_magnitude_deg
+    );
+    assert!(!s.flights.is_empty(), "no flight phases");
+}
+
+#[test]
+#[ignore = "bound not yet stable for a minute at every speed (see the branch report)"]
+fn bound_runs_a_minute_at_its_speed() {
+    check_runs(BoundStyle::Bound, &[1.5, 2.3, 2.8], 60.0);
+}
+
+#[test]
+#[ignore = "gallop not yet stable for a minute at every speed (see the branch report)"]
+fn gallop_runs_a_minute_at_its_speed() {
+    check_runs(BoundStyle::Gallop, &[1.5, 2.3, 2.8], 60.0);
+}
+
+#[test]
+fn driver_routes_bound_and_gallop_to_the_pair_controller() {
+    let preset = gaitlab_core::preset::load_bundled("raibert-quadruped")
+        .expect("bundled preset")
+        .expect("preset parses");
+    let mut d = PhysicsDriver::new(&preset).expect("driver");
+    assert_eq!(d.gait(), "trot");
+    for g in ["bound", "gallop", "trot"] {
+        d.set_gait(g).expect("known gait");
+        assert_eq!(d.gait(), g);
+        d.step(1.0 / 60.0);
+    }
+    assert!(d.set_gait("pace").is_err());
+}
+
+#[test]
+#[ignore = "depends on a bound and gallop stable for a minute"]
+fn gait_change_trot_bound_gallop_through_the_driver() {
+    let preset = gaitlab_core::preset::load_bundled("raibert-quadruped")
+        .expect("bundled preset")
+        .expect("preset parses");
+    let mut d = PhysicsDriver::new(&preset).expect("driver");
+    d.reset_after_fall = false;
+    let mut t = 0.0;
+    for (until, gait) in [(5.0, "bound"), (15.0, "gallop"), (25.0, "")] {
+        while t < until {
+            d.step(1.0 / 60.0);
+            t += 1.0 / 60.0;
+        }
+        if !gait.is_empty() {
+            d.set_gait(gait).expect("known gait");
+        }
+    }
+    assert!(!d.summary().fell, "fell during trot → bound → gallop");
+    assert_eq!(d.resets(), 0);
+}
+
+/// Table 2, bound rows at 2.8 m/s beside the animation column, ±35 % each.
+#[test]
+#[ignore = "bound figures off the paper's (stance and leg compression short, stride short)"]
+fn table2_bound_side_by_side() {
+    let s = run(BoundStyle::Bound, 2.8, 20.0);
+    assert!(!s.fell);
+    let mut misses = Vec::new();
+    for row in paper_rows("bound") {
+        let ours = measured(&s, row.quantity, &LEG_NAMES).unwrap_or(0.0);
+        let rel = (ours - row.animation).abs() / row.animation;
+        println!(
+            "{:38} paper {:6.3} ours {ours:6.3}",
+            row.label, row.animation
+        );
+        if rel > 0.35 {
+            misses.push(row.label);
+        }
+    }
+    assert!(misses.is_empty(), "off by more than 35 %: {misses:?}");
+}
