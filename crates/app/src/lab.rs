@@ -912,6 +912,16 @@ impl Lab {
             self.driver.targets(),
             &self.settings.view,
         );
+        if let Some(driver) = self.driver.physics() {
+            let boxes = driver.sim().terrain.obstacles.iter().map(|o| {
+                (
+                    glam::DVec3::new(o.min_xz[0], 0.0, o.min_xz[1]),
+                    glam::DVec3::new(o.max_xz[0], o.height_m, o.max_xz[1]),
+                )
+            });
+            self.scene
+                .add_physics_overlay(driver.trunk_capsule(), boxes);
+        }
         if let Some(driver) = self.driver.poda()
             && self.settings.view.targets
         {

@@ -23,6 +23,7 @@ use crate::control::quadruped_run::{
 use crate::creature::{Creature, Species};
 use crate::ground::{GroundParams, Obstacle};
 use crate::metrics::{GaitRecorder, GaitSummary};
+use crate::model::Joint as BodyJoint;
 use crate::preset::creature_from_preset;
 use crate::sim::{Controller, Sim, SimOptions};
 
@@ -287,14 +288,27 @@ impl PhysicsDriver {
     fn update_pose(&mut self) {
         let data = &self.sim.data;
         let model = &self.sim.creature.model;
+        self.pose.joints.copy_from_slice(&data.q);
         if model.free_base() {
             self.pose.root.position = data.base_position;
             self.pose.root.rotation = DMat3::from_quat(data.base_orientation.normalize());
         } else {
+            // A planar base's leading slides move the whole creature: shown as
+            // root motion (the same world positions, and BVH root channels).
             self.pose.root.position = self.start_root;
             self.pose.root.rotation = DMat3::IDENTITY;
+            for (i, body) in model.bodies().iter().enumerate() {
+                let (BodyJoint::Prismatic(axis), Some(k)) = (body.joint, model.dof_of(i)) else {
+                    break;
+                };
+                let chained = body.parent.is_none_or(|p| p + 1 == i);
+                if !chained || body.mass > 0.0 || body.placement.rot != DMat3::IDENTITY {
+                    break;
+                }
+                self.pose.root.position += axis * data.q[k];
+                self.pose.joints[k] = 0.0;
+            }
         }
-        self.pose.joints.copy_from_slice(&data.q);
         let offset = usize::from(model.free_base());
         for (e, out) in self.skeleton.effectors().iter().zip(&mut self.effectors) {
             *out = data.point_world(e.joint + offset, e.offset);
@@ -323,6 +337,33 @@ impl PhysicsDriver {
     #[must_use]
     pub fn phase_name(&self) -> &'static str {
         self.controller.phase_name()
+    }
+
+    /// The trunk of a free-floating creature as a capsule `(a, b, radius)` in
+    /// the world: along the long axis of the uniform box with the trunk's mass
+    /// and principal moments. `None` for a planar model (its trunk is a link).
+    #[must_use]
+    pub fn trunk_capsule(&self) -> Option<(DVec3, DVec3, f64)> {
+        let model = &self.sim.creature.model;
+        let body = model
+            .bodies()
+            .first()
+            .filter(|b| model.free_base() && b.mass > 0.0)?;
+        let i = body.inertia_com;
+        let (ix, iy, iz) = (i.x_axis.x, i.y_axis.y, i.z_axis.z);
+        let half = |a: f64, b: f64, c: f64| (6.0 * (b + c - a) / body.mass).max(0.0).sqrt() / 2.0;
+        let h = DVec3::new(half(ix, iy, iz), half(iy, ix, iz), half(iz, ix, iy));
+        let (axis, long, radius) = if h.x >= h.y && h.x >= h.z {
+            (DVec3::X, h.x, (h.y + h.z) / 2.0)
+        } else if h.y >= h.z {
+            (DVec3::Y, h.y, (h.x + h.z) / 2.0)
+        } else {
+            (DVec3::Z, h.z, (h.x + h.y) / 2.0)
+        };
+        let w = self.sim.data.world[0];
+        let centre = w.rot * body.com + w.pos;
+        let reach = w.rot * axis * (long - radius).max(0.0);
+        Some((centre - reach, centre + reach, radius))
     }
 
     /// A snapshot of the trunk, first leg, ground force and state for plots.

@@ -17,6 +17,7 @@ pub mod camera;
 pub mod gait_overlay;
 pub mod gpu;
 pub mod mesh;
+pub mod physics_overlay;
 pub mod scene;
 pub mod viewport;
 
