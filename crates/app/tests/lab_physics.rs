@@ -100,3 +100,42 @@ fn the_engine_selector_reaches_the_physics_creatures() {
     let error = lab.command(r#"{"mode":"run","gain":{"name":"tail_stiffness","value":2}}"#);
     assert!(error.is_ok(), "{error:?}");
 }
+
+#[test]
+fn gaits_change_on_command_while_running() {
+    // The biped changes between all three gaits mid-run; the quadruped from
+    // trot to bound and back (bound to quadruped gallop still falls: see
+    // docs/physics.md).
+    // The change waits for the next flight, so it holds whenever it is asked for.
+    for (preset, gaits, hold_s) in [
+        (
+            "raibert-biped",
+            &["run", "gallop", "gallop_alternate", "run"][..],
+            4.0,
+        ),
+        (
+            "raibert-biped",
+            &["gallop", "run", "gallop_alternate"][..],
+            2.55,
+        ),
+        (
+            "raibert-biped",
+            &["run", "gallop_alternate", "gallop"][..],
+            3.1,
+        ),
+        ("raibert-quadruped", &["trot", "bound", "trot"][..], 4.0),
+    ] {
+        let mut lab = Lab::new(Settings::default());
+        lab.command(&format!(r#"{{"preset":"{preset}"}}"#))
+            .expect("valid");
+        for gait in gaits {
+            lab.command(&format!(r#"{{"gait":"{gait}"}}"#))
+                .expect("gait");
+            run(&mut lab, hold_s);
+            let s = state(&lab);
+            assert_eq!(s["gait"], *gait);
+            assert_eq!(s["physics"]["fell"], false, "{preset} fell in {gait}: {s}");
+            assert_eq!(s["physics"]["resets"], 0, "{preset} {gait}: {s}");
+        }
+    }
+}

@@ -56,17 +56,25 @@ pub fn accelerations(model: &Model, data: &mut Data) -> Result<(), DynamicsError
     // Pass 1: rigid-body inertias and bias forces.
     for i in 0..bodies.len() {
         let inertia = *model.inertia(i);
-        let v = data.velocity[i];
         data.art_inertia[i] = inertia;
-        data.art_bias[i] =
-            v.cross_force(inertia.mul(v)) - data.external[i] - gravity_force(model, data, i);
+        data.art_bias[i] = if bodies[i].mass > 0.0 {
+            let v = data.velocity[i];
+            v.cross_force(inertia.mul(v)) - data.external[i] - gravity_force(model, data, i)
+        } else {
+            // A massless link (a gimbal's inner axis) carries no momentum or weight.
+            Force::ZERO - data.external[i]
+        };
     }
     // Pass 2: articulated inertias, leaves to root.
     for i in (0..bodies.len()).rev() {
         let Some(k) = model.dof_of(i) else { continue };
         let s = bodies[i].joint.subspace();
         let ia = data.art_inertia[i];
-        let u_force = ia.mul(s);
+        let u_force = match bodies[i].joint {
+            crate::model::Joint::Revolute(axis) => ia.mul_angular(axis),
+            crate::model::Joint::Prismatic(axis) => ia.mul_linear(axis),
+            crate::model::Joint::Free => ia.mul(s),
+        };
         let d = s.dot(u_force);
         if !(d > 1e-14 && d.is_finite()) {
             return Err(DynamicsError {

@@ -77,6 +77,8 @@ pub struct PhysicsDriver {
     pose: Pose,
     effectors: Vec<DVec3>,
     fell_at: Option<f64>,
+    /// A controller waiting for the next flight to take over (a gait change).
+    pending: Option<GaitController>,
     /// Whether a fall puts the creature back at the start after
     /// [`FALL_RESET_S`] (the app's choice; a measuring run turns it off).
     pub reset_after_fall: bool,
@@ -277,6 +279,7 @@ impl PhysicsDriver {
             sim,
             controller,
             fell_at: None,
+            pending: None,
             reset_after_fall: true,
             message: None,
             resets: 0,
@@ -529,11 +532,28 @@ impl PhysicsDriver {
             (GaitController::QuadrupedBound(running), GaitController::QuadrupedBound(fresh)) => {
                 running.set_style(fresh.style())
             }
-            (_, next) => self.controller = next,
+            // Another state machine takes over at the next flight, when no
+            // foot is loaded and the body is falling toward a landing — the
+            // state every controller starts from.
+            (_, next) => self.pending = Some(next),
         }
         self.params = params;
         self.gait = gait.to_owned();
         Ok(())
+    }
+
+    /// Hand over to a pending controller once the creature is in flight and falling.
+    fn take_over(&mut self) {
+        if self.pending.is_none() || self.sim.contacts.iter().any(|c| c.touching) {
+            return;
+        }
+        let trunk = self.sim.creature.trunk;
+        let vy = self.sim.data.point_velocity_world(trunk, DVec3::ZERO).y;
+        if vy < 0.0
+            && let Some(next) = self.pending.take()
+        {
+            self.controller = next;
+        }
     }
 
     /// Take `steps` integration steps with nothing recorded — the work a
@@ -544,6 +564,7 @@ impl PhysicsDriver {
     pub fn run_steps(&mut self, steps: u32) -> Result<(), crate::sim::BlowUp> {
         for _ in 0..steps {
             self.sim.step(&mut self.controller)?;
+            self.take_over();
         }
         Ok(())
     }
@@ -560,6 +581,7 @@ impl PhysicsDriver {
         if let Ok(c) = make_controller(&self.sim.creature, &self.gait, &self.params) {
             self.controller = c;
         }
+        self.pending = None;
         self.fell_at = None;
         self.message = Some(why);
         self.resets += 1;
@@ -702,6 +724,7 @@ impl Driver for PhysicsDriver {
                 break;
             }
             self.recorder.record(&self.sim);
+            self.take_over();
             stepped += 1;
         }
         self.sim.settle_accumulator();

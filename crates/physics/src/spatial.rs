@@ -213,11 +213,13 @@ impl ParentLink {
     /// A child-frame inertia expressed in the parent frame (`Xᵀ I X`).
     #[must_use]
     pub fn inertia_to_parent(&self, i: &Inertia) -> Inertia {
-        let r = self.rot;
-        let rt = r.transpose();
-        let a = r * i.a * rt;
-        let b = r * i.b * rt;
-        let c = r * i.c * rt;
+        let (a, b, c) = if self.rot == DMat3::IDENTITY {
+            (i.a, i.b, i.c)
+        } else {
+            let r = self.rot;
+            let rt = r.transpose();
+            (r * i.a * rt, r * i.b * rt, r * i.c * rt)
+        };
         let rx = skew(self.pos);
         let b_rx = b * rx;
         Inertia {
@@ -280,7 +282,37 @@ impl Inertia {
     pub fn mul(&self, m: Motion) -> Force {
         Force {
             moment: self.a * m.angular + self.b * m.linear,
-            force: self.b.transpose() * m.angular + self.c * m.linear,
+            force: self.bt_mul(m.angular) + self.c * m.linear,
+        }
+    }
+
+    /// `bᵀ · w` without forming the transpose.
+    #[inline]
+    fn bt_mul(&self, w: DVec3) -> DVec3 {
+        DVec3::new(
+            self.b.x_axis.dot(w),
+            self.b.y_axis.dot(w),
+            self.b.z_axis.dot(w),
+        )
+    }
+
+    /// `I · (axis, 0)`: the force of a unit rotation about `axis` (a revolute
+    /// joint's `U = I S`).
+    #[must_use]
+    pub fn mul_angular(&self, axis: DVec3) -> Force {
+        Force {
+            moment: self.a * axis,
+            force: self.bt_mul(axis),
+        }
+    }
+
+    /// `I · (0, axis)`: the force of a unit translation along `axis` (a
+    /// prismatic joint's `U = I S`).
+    #[must_use]
+    pub fn mul_linear(&self, axis: DVec3) -> Force {
+        Force {
+            moment: self.b * axis,
+            force: self.c * axis,
         }
     }
 
