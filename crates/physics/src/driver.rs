@@ -60,6 +60,12 @@ pub struct PhysicsProbe {
 /// controller ramps to the desired speed: started at 5 m/s it tumbles.
 pub const KANGAROO_START_MPS: f64 = 2.0;
 
+/// How fast the desired heading turns (rad/s at scale 1, ×1/√L).
+pub const TURN_RATE_RAD_S: f64 = 0.5;
+
+/// A waypoint counts as reached within this distance (m at scale 1).
+pub const WAYPOINT_RADIUS_M: f64 = 0.75;
+
 /// Seconds after a fall before the creature is put back at the start.
 pub const FALL_RESET_S: f64 = 1.5;
 
@@ -77,6 +83,12 @@ pub struct PhysicsDriver {
     pose: Pose,
     effectors: Vec<DVec3>,
     fell_at: Option<f64>,
+    /// The desired heading as it turns toward its goal (rad about +y).
+    heading: f64,
+    /// Where the heading is turning to (rad).
+    heading_goal: f64,
+    /// The next waypoint of `params.waypoints`.
+    waypoint: usize,
     /// A controller waiting for the next flight to take over (a gait change).
     pending: Option<GaitController>,
     /// Whether a fall puts the creature back at the start after
@@ -279,6 +291,9 @@ impl PhysicsDriver {
             sim,
             controller,
             fell_at: None,
+            heading: 0.0,
+            heading_goal: 0.0,
+            waypoint: 0,
             pending: None,
             reset_after_fall: true,
             message: None,
@@ -542,6 +557,51 @@ impl PhysicsDriver {
         Ok(())
     }
 
+    /// Turn the desired heading toward `heading` (rad about +y; 0 = +z) at
+    /// [`TURN_RATE_RAD_S`]. Waypoints, if any, take over again at the next frame.
+    pub fn set_heading(&mut self, heading: f64) {
+        if heading.is_finite() {
+            self.heading_goal = heading;
+            self.params.waypoints.clear();
+        }
+    }
+
+    /// The desired heading now (rad).
+    #[must_use]
+    pub fn heading(&self) -> f64 {
+        self.heading
+    }
+
+    /// The next waypoint's index (equal to the count once all are reached).
+    #[must_use]
+    pub fn waypoint(&self) -> usize {
+        self.waypoint
+    }
+
+    /// Steer: aim at the next waypoint, and turn the heading toward its goal.
+    fn steer(&mut self, dt: f64) {
+        let l = self.params.scale;
+        if let Some(&[x, z]) = self.params.waypoints.get(self.waypoint) {
+            let com = crate::energy::center_of_mass(&self.sim.creature.model, &self.sim.data);
+            let to = DVec3::new(x * l - com.x, 0.0, z * l - com.z);
+            if to.length() < WAYPOINT_RADIUS_M * l {
+                self.waypoint += 1;
+            } else {
+                self.heading_goal = to.x.atan2(to.z);
+            }
+        }
+        let error = (self.heading_goal - self.heading + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
+            - std::f64::consts::PI;
+        let step = TURN_RATE_RAD_S / l.sqrt() * dt;
+        if error.abs() > 1e-12 {
+            self.heading += error.clamp(-step, step);
+            self.controller.set_heading(self.heading);
+            if let Some(next) = self.pending.as_mut() {
+                next.set_heading(self.heading);
+            }
+        }
+    }
+
     /// Hand over to a pending controller once the creature is in flight and falling.
     fn take_over(&mut self) {
         if self.pending.is_none() || self.sim.contacts.iter().any(|c| c.touching) {
@@ -582,6 +642,9 @@ impl PhysicsDriver {
             self.controller = c;
         }
         self.pending = None;
+        self.heading = 0.0;
+        self.heading_goal = 0.0;
+        self.waypoint = 0;
         self.fell_at = None;
         self.message = Some(why);
         self.resets += 1;
@@ -712,6 +775,7 @@ impl Driver for PhysicsDriver {
         if !(dt.is_finite() && dt > 0.0) {
             return;
         }
+        self.steer(dt);
         let mut stepped = 0;
         let budget =
             ((dt / self.sim.options.dt).ceil() as u32).min(self.sim.options.max_steps_per_advance);

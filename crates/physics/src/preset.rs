@@ -277,6 +277,7 @@ pub fn to_preset(creature: &Creature, meta: &PresetMeta) -> Preset {
         scale: 1.0,
         dt_s: 0.0004,
         obstacles: Vec::new(),
+        waypoints: Vec::new(),
     };
     Preset {
         format: Format::V1,

@@ -22,6 +22,8 @@ pub const DT_RANGE_S: (f64, f64) = (1e-5, 2e-3);
 pub const MAX_PHYSICS_SPEED_MPS: f64 = 15.0;
 /// Most obstacles on the ground.
 pub const MAX_OBSTACLES: usize = 32;
+/// Most waypoints of a path.
+pub const MAX_WAYPOINTS: usize = 64;
 
 /// Which of the paper's controller families drives the creature.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -165,6 +167,10 @@ pub struct PhysicsParams {
     /// Boxes on the ground.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub obstacles: Vec<ObstacleSpec>,
+    /// Waypoints `[x, z]` on the ground (m at scale 1) the creature steers
+    /// through in order, turning its desired heading toward the next one.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub waypoints: Vec<[f64; 2]>,
 }
 
 fn default_speed() -> f64 {
@@ -316,6 +322,17 @@ impl PhysicsParams {
                 at("obstacles"),
                 format!("at most {MAX_OBSTACLES} obstacles"),
             ));
+        }
+        if self.waypoints.len() > MAX_WAYPOINTS {
+            return Err(PresetError::new(at("waypoints"), format!("at most {MAX_WAYPOINTS} waypoints")));
+        }
+        for (i, w) in self.waypoints.iter().enumerate() {
+            if !w.iter().all(|x| x.is_finite() && x.abs() <= 1e4) {
+                return Err(PresetError::new(
+                    format!("{prefix}.waypoints[{i}]"),
+                    "must be [x, z] within ±10000 m",
+                ));
+            }
         }
         for (i, o) in self.obstacles.iter().enumerate() {
             let p = format!("{prefix}.obstacles[{i}]");
