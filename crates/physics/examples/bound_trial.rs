@@ -2,6 +2,8 @@
 //! and the Table-2 bound figures beside the paper's animation column.
 //! `cargo run --release -p gaitlab-physics --example bound_trial -- STYLE SPEED SECONDS [trace]`
 //! STYLE is bound or gallop. Overrides: QB="key=value,…" (parameter names).
+//! `… bound_trial -- driver` runs trot → bound → gallop through the physics
+//! driver with the bundled "raibert-quadruped" preset (default parameters).
 use gaitlab_physics::control::attitude::{attitude_error, com_velocity};
 use gaitlab_physics::control::quadruped_bound::{
     BoundStyle, FRONT, QuadrupedBound, QuadrupedBoundParams, REAR, bound_start,
@@ -16,6 +18,9 @@ const LEG_NAMES: [&str; 4] = ["front-left", "front-right", "rear-left", "rear-ri
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
+    if args.get(1).map(String::as_str) == Some("driver") {
+        return driver_change();
+    }
     let style = match args.get(1).map(String::as_str) {
         Some("gallop") => BoundStyle::Gallop,
         _ => BoundStyle::Bound,
@@ -29,6 +34,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         SimOptions::default(),
     );
     bound_start(&mut sim, speed);
+    // A small change of the start (QB_START_DV, m/s) to probe robustness.
+    if let Some(dv) = std::env::var("QB_START_DV")
+        .ok()
+        .and_then(|s| s.parse::<f64>().ok())
+    {
+        sim.data.base_velocity.linear.z += dv;
+    }
     let mut p = QuadrupedBoundParams {
         speed_mps: speed,
         style,
@@ -47,12 +59,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 "thrust_m" => &mut p.thrust_m,
                 "rear_extra_thrust_m" => &mut p.rear_extra_thrust_m,
                 "max_thrust_m" => &mut p.max_thrust_m,
+                "min_thrust_m" => &mut p.min_thrust_m,
                 "stride_flight_s" => &mut p.stride_flight_s,
                 "flight_gain" => &mut p.flight_gain,
+                "gathered_flight_s" => &mut p.gathered_flight_s,
+                "extended_flight_s" => &mut p.extended_flight_s,
+                "pair_flight_gain" => &mut p.pair_flight_gain,
+                "thrust_end" => &mut p.thrust_end,
                 "min_short_s" => &mut p.min_short_s,
                 "stance_s" => &mut p.stance_s,
                 "placement_gain_s" => &mut p.placement_gain_s,
                 "speed_integral_gain" => &mut p.speed_integral_gain,
+                "speed_bias_cap" => &mut p.speed_bias_cap,
+                "min_stride_s" => &mut p.min_stride_s,
                 "front_offset_m" => &mut p.front_offset_m,
                 "pitch_bias" => &mut p.pitch_bias,
                 "pitch_kp" => &mut p.pitch_kp,
@@ -120,7 +139,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let s = rec.summary();
     println!(
-        "{} t {:.1} fell {} speed {:.3}/{:.2} pitch {:.1} roll {:.1} friction {:.2} thrust {:.3}",
+        "{} t {:.1} fell {} speed {:.3}/{:.2} pitch {:.1} roll {:.1} friction {:.2} thrust {:.3} trim {:+.3} {:+.3}",
         style.name(),
         sim.time,
         s.fell,
@@ -129,7 +148,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         s.pitch_magnitude_deg,
         s.roll_magnitude_deg,
         s.friction_needed_max,
-        ctl.thrust
+        ctl.thrust,
+        ctl.trim[0],
+        ctl.trim[1]
     );
     for row in paper_rows("bound") {
         let ours = measured(&s, row.quantity, &LEG_NAMES);
@@ -139,6 +160,34 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             row.animation,
             ours.map_or("-".to_owned(), |v| format!("{v:6.3}"))
         );
+    }
+    Ok(())
+}
+
+/// Trot 5 s, bound 10 s, gallop 10 s through the driver.
+fn driver_change() -> Result<(), Box<dyn std::error::Error>> {
+    use gaitlab_core::driver::Driver;
+    let preset =
+        gaitlab_core::preset::load_bundled("raibert-quadruped").ok_or("no bundled preset")??;
+    let mut d = gaitlab_physics::driver::PhysicsDriver::new(&preset)?;
+    d.reset_after_fall = false;
+    let mut t = 0.0;
+    for (until, gait) in [(5.0, "bound"), (15.0, "gallop"), (25.0, "")] {
+        while t < until {
+            d.step(1.0 / 60.0);
+            t += 1.0 / 60.0;
+        }
+        let s = d.summary();
+        println!(
+            "driver t {t:.1} gait {} fell {} resets {} speed {:.3}",
+            d.gait(),
+            s.fell,
+            d.resets(),
+            s.speed_mean_mps
+        );
+        if !gait.is_empty() {
+            d.set_gait(gait)?;
+        }
     }
     Ok(())
 }

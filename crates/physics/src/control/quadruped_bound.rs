@@ -98,10 +98,24 @@ pub struct QuadrupedBoundParams {
     pub rear_extra_thrust_m: f64,
     /// Largest thrust (m).
     pub max_thrust_m: f64,
+    /// Smallest thrust (m); below 0 the thrust state shortens the leg and
+    /// takes energy out when the flights are too long.
+    pub min_thrust_m: f64,
     /// Desired total flight per stride, gathered plus extended (s).
     pub stride_flight_s: f64,
     /// Thrust change per second of stride-flight error (m/s).
     pub flight_gain: f64,
+    /// Desired gathered flight, after the front pair's lift-off (s).
+    pub gathered_flight_s: f64,
+    /// Desired extended flight, after the rear pair's lift-off (s); negative
+    /// for an overlap of the two stances.
+    pub extended_flight_s: f64,
+    /// Change of a pair's own thrust trim per second of error in the flight
+    /// that follows its lift-off (m/s); 0 for the common thrust only.
+    pub pair_flight_gain: f64,
+    /// The thrust state ends once the leg has extended this fraction of
+    /// the thrust past its landing rest (0: as soon as it is back at rest).
+    pub thrust_end: f64,
     /// A pair stays short at least this long after its lift-off (s).
     pub min_short_s: f64,
     /// Initial guess of the stance duration T_s of eq. 3 (s).
@@ -111,6 +125,11 @@ pub struct QuadrupedBoundParams {
     /// Change of the speed bias per stride per m/s of the stride's mean
     /// speed error (dimensionless): removes eq. 3's steady speed error.
     pub speed_integral_gain: f64,
+    /// Largest speed bias as a fraction of the desired speed.
+    pub speed_bias_cap: f64,
+    /// Shortest stride (s): a rear touchdown sooner than this after the
+    /// last one (a bounce) does not end the stride.
+    pub min_stride_s: f64,
     /// Extra forward placement of the front feet (m): raises the nose.
     pub front_offset_m: f64,
     /// Pitch the stance hips pull the trunk toward (rad, positive nose down).
@@ -152,35 +171,42 @@ impl Default for QuadrupedBoundParams {
             style: BoundStyle::Bound,
             speed_mps: 2.8,
             heading: 0.0,
-            leg_stiffness: 4_500.0,
-            leg_damping: 15.0,
+            leg_stiffness: 6_660.0,
+            leg_damping: 9.6,
             leg_air_damping: 120.0,
-            landing_rest_m: -0.08,
+            landing_rest_m: -0.116,
             short_rest_m: -0.28,
             thrust_m: 0.03,
             rear_extra_thrust_m: 0.0,
-            max_thrust_m: 0.10,
-            stride_flight_s: 0.18,
-            flight_gain: 0.05,
+            max_thrust_m: 0.068,
+            min_thrust_m: 0.0,
+            stride_flight_s: 0.12,
+            flight_gain: 0.121,
+            gathered_flight_s: 0.15,
+            extended_flight_s: 0.03,
+            pair_flight_gain: 0.0,
+            thrust_end: 0.67,
             min_short_s: 0.05,
             stance_s: 0.09,
-            placement_gain_s: 0.1,
-            speed_integral_gain: 0.05,
+            placement_gain_s: 0.138,
+            speed_integral_gain: 0.11,
+            speed_bias_cap: 1.0,
+            min_stride_s: 0.12,
             front_offset_m: 0.0,
             pitch_bias: 0.0,
-            pitch_kp: 50.0,
-            pitch_kv: 10.0,
+            pitch_kp: 160.0,
+            pitch_kv: 20.0,
             roll_kp: 400.0,
             roll_kv: 60.0,
             yaw_kp: 200.0,
             yaw_kv: 20.0,
-            posture_force_ratio: 0.5,
-            sweep_s: 0.07,
+            posture_force_ratio: 0.43,
+            sweep_s: 0.05,
             swing_kp: 300.0,
             swing_kv: 15.0,
             max_hip_torque: 400.0,
             gallop_shorter_m: 0.025,
-            gallop_spread_m: 0.05,
+            gallop_spread_m: 0.03,
         }
     }
 }
@@ -234,6 +260,8 @@ pub struct QuadrupedBound {
     pairs: [PairState; 2],
     /// The common thrust (m).
     pub thrust: f64,
+    /// Each pair's own thrust trim added to the common thrust (m).
+    pub trim: [f64; 2],
     /// Integral speed correction added to the desired speed (m/s).
     pub speed_bias: f64,
     /// Last measured flight after each pair's lift-off (s): gathered
@@ -269,6 +297,7 @@ impl QuadrupedBound {
             params,
             pairs,
             thrust: params.thrust_m * scale,
+            trim: [0.0; 2],
             speed_bias: 0.0,
             flight_s: [0.0; 2],
             flight_start: None,
@@ -323,7 +352,24 @@ impl QuadrupedBound {
         } else {
             0.0
         };
-        (self.thrust + extra).max(0.0)
+        let l = self.scale;
+        (self.thrust + extra + self.trim[pair])
+            .clamp(self.params.min_thrust_m * l, self.params.max_thrust_m * l)
+    }
+
+    /// Regulate pair `k`'s trim on the flight `flight` (s) that followed
+    /// its lift-off (negative: overlap with the other pair's stance).
+    fn regulate_pair(&mut self, k: usize, flight: f64) {
+        let p = self.params;
+        let l = self.scale;
+        let target = if k == FRONT {
+            p.gathered_flight_s
+        } else {
+            p.extended_flight_s
+        } * l.sqrt();
+        let max = p.max_thrust_m * l;
+        self.trim[k] =
+            (self.trim[k] + p.pair_flight_gain * l.sqrt() * (target - flight)).clamp(-max, max);
     }
 
     /// Advance both pairs' state machines on the contact and spring events.
@@ -349,7 +395,11 @@ impl QuadrupedBound {
             }
             _ => {}
         }
+        let thrusts = [self.pair_thrust(FRONT), self.pair_thrust(REAR)];
+        // Flights to regulate each pair's trim on: (pair, flight).
+        let mut events: [Option<(usize, f64)>; 2] = [None; 2];
         for (k, &legs) in PAIRS.iter().enumerate() {
+            let other = self.pairs[1 - k];
             let touching = [
                 input.contacts[legs[0]].touching,
                 input.contacts[legs[1]].touching,
@@ -391,14 +441,23 @@ impl QuadrupedBound {
                             .max(p.landing_rest_m * l - 0.1 * l)
                             .min(p.landing_rest_m * l + 0.02 * l);
                     }
+                    // The other pair's flight ends with this touchdown.
+                    if other.phase == Phase::Flight && other.liftoff_s > pair.liftoff_s {
+                        events[k] = Some((1 - k, time - other.liftoff_s));
+                    }
                     self.pairs[1 - k].armed = true;
-                    if k == REAR {
+                    // A stride runs from one rear touchdown to the next; a
+                    // rear bounce sooner than `min_stride_s` is the same stride.
+                    let stride_done = self
+                        .stride_start
+                        .is_none_or(|(t0, _)| time - t0 >= p.min_stride_s * l.sqrt());
+                    if k == REAR && stride_done {
                         // Eq. 2's energy per stride: one thrust for both pairs,
                         // regulated on the stride's total flight.
                         if self.stride_start.is_some() {
                             let error = p.stride_flight_s * l.sqrt() - self.stride_flight_s;
                             self.thrust = (self.thrust + p.flight_gain * l.sqrt() * error)
-                                .clamp(0.0, p.max_thrust_m * l);
+                                .clamp(p.min_thrust_m * l, p.max_thrust_m * l);
                         }
                         self.stride_flight_s = 0.0;
                         if let Some((t0, x0)) = self.stride_start
@@ -406,7 +465,7 @@ impl QuadrupedBound {
                         {
                             let vd = p.speed_mps * l.sqrt();
                             let v = (com_forward - x0) / (time - t0);
-                            let cap = 0.5 * vd.abs().max(0.5 * l.sqrt());
+                            let cap = p.speed_bias_cap * vd.abs().max(0.5 * l.sqrt());
                             self.speed_bias = (self.speed_bias + p.speed_integral_gain * (vd - v))
                                 .clamp(-cap, cap);
                         }
@@ -427,7 +486,9 @@ impl QuadrupedBound {
                     pair.phase = Phase::Compression;
                 }
                 Phase::Compression if qd >= 0.0 => pair.phase = Phase::Thrust,
-                Phase::Thrust if q >= -0.005 * l => pair.phase = Phase::Unloading,
+                Phase::Thrust if q >= p.thrust_end * thrusts[k] - 0.005 * l => {
+                    pair.phase = Phase::Unloading;
+                }
                 _ => {}
             }
             if matches!(
@@ -438,7 +499,14 @@ impl QuadrupedBound {
                 pair.phase = Phase::Flight;
                 pair.liftoff_s = time;
                 pair.stance_s = (time - pair.touchdown_s).clamp(0.04 * l.sqrt(), 0.3 * l.sqrt());
+                // The other pair landed during this stance: no flight.
+                if other.phase != Phase::Flight && other.touchdown_s > pair.touchdown_s {
+                    events[k] = Some((k, other.touchdown_s - time));
+                }
             }
+        }
+        for (k, flight) in events.into_iter().flatten() {
+            self.regulate_pair(k, flight);
         }
     }
 }
