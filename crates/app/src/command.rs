@@ -338,6 +338,8 @@ impl Lab {
                     "phase": driver.phase_name(),
                     "speed_desired_mps": driver.params().speed_mps,
                     "hop_height_m": driver.params().hop_height_m,
+                    "heading_deg": driver.heading().to_degrees(),
+                    "waypoint": driver.waypoint(),
                     "speed_mean_mps": s.speed_mean_mps,
                     "fell": s.fell,
                     "resets": driver.resets(),

@@ -398,6 +398,11 @@ impl Lab {
     /// Applies a new figure heading (restarts the motion facing that way).
     pub fn set_heading_deg(&mut self, degrees: f64) {
         self.settings.heading_deg = degrees.clamp(-180.0, 180.0);
+        if let Some(driver) = self.driver.physics_mut() {
+            // A running creature turns toward the new heading (no reset).
+            driver.set_heading(self.settings.heading_deg.to_radians());
+            return;
+        }
         if let Some(driver) = self.driver.thesis_mut() {
             driver.set_origin(RootTransform {
                 rotation: DMat3::from_rotation_y(self.settings.heading_deg.to_radians()),

@@ -26,7 +26,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         tangential_stiffness: env("GTK", g0.tangential_stiffness),
         ..g0
     };
-    let mut sim = Sim::new(biped(1.0)?, ground, SimOptions { control_every: env("EVERY", 1.0) as u32, ..SimOptions::default() });
+    let mut sim = Sim::new(
+        biped(1.0)?,
+        ground,
+        SimOptions {
+            control_every: env("EVERY", 1.0) as u32,
+            ..SimOptions::default()
+        },
+    );
     sim.data.base_position.y = 0.9;
     sim.data.base_velocity.linear.z = speed;
     let d = BipedRunParams::default();

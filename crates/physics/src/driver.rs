@@ -590,7 +590,8 @@ impl PhysicsDriver {
                 self.heading_goal = to.x.atan2(to.z);
             }
         }
-        let error = (self.heading_goal - self.heading + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
+        let error = (self.heading_goal - self.heading + std::f64::consts::PI)
+            .rem_euclid(std::f64::consts::TAU)
             - std::f64::consts::PI;
         let step = TURN_RATE_RAD_S / l.sqrt() * dt;
         if error.abs() > 1e-12 {

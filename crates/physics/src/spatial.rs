@@ -220,6 +220,10 @@ impl ParentLink {
             let rt = r.transpose();
             (r * i.a * rt, r * i.b * rt, r * i.c * rt)
         };
+        if self.pos == DVec3::ZERO {
+            // A joint at the parent's origin (a gimbal's inner axis): rotation only.
+            return Inertia { a, b, c };
+        }
         let rx = skew(self.pos);
         let b_rx = b * rx;
         Inertia {

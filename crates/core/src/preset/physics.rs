@@ -324,7 +324,10 @@ impl PhysicsParams {
             ));
         }
         if self.waypoints.len() > MAX_WAYPOINTS {
-            return Err(PresetError::new(at("waypoints"), format!("at most {MAX_WAYPOINTS} waypoints")));
+            return Err(PresetError::new(
+                at("waypoints"),
+                format!("at most {MAX_WAYPOINTS} waypoints"),
+            ));
         }
         for (i, w) in self.waypoints.iter().enumerate() {
             if !w.iter().all(|x| x.is_finite() && x.abs() <= 1e4) {

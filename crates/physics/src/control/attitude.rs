@@ -33,6 +33,24 @@ pub fn trunk_rate(creature: &Creature, data: &Data) -> DVec3 {
     data.world[creature.trunk].rot * data.velocity[creature.trunk].angular
 }
 
+/// Position (m) and velocity (m/s) of the whole creature's centre of mass,
+/// world coordinates, in one pass over the bodies.
+#[must_use]
+pub fn com_state(creature: &Creature, data: &Data) -> (DVec3, DVec3) {
+    let model = &creature.model;
+    let (mut p, mut v) = (DVec3::ZERO, DVec3::ZERO);
+    for (i, b) in model.bodies().iter().enumerate() {
+        if b.mass > 0.0 {
+            let w = data.world[i];
+            let vel = data.velocity[i];
+            p += (w.rot * b.com + w.pos) * b.mass;
+            v += w.rot * (vel.linear + vel.angular.cross(b.com)) * b.mass;
+        }
+    }
+    let m = model.total_mass();
+    (p / m, v / m)
+}
+
 /// Velocity of the whole creature's centre of mass (world, m/s).
 #[must_use]
 pub fn com_velocity(creature: &Creature, data: &Data) -> DVec3 {

@@ -6,7 +6,7 @@
 
 use glam::{DQuat, DVec3};
 
-use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
+use super::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
 use crate::actuator::Stops;
@@ -236,7 +236,7 @@ impl Controller for BipedRun {
         let creature = input.creature;
         let data = input.data;
         let trunk_rot = data.world[creature.trunk].rot;
-        let velocity = com_velocity(creature, data);
+        let (com, velocity) = com_state(creature, data);
         let desired = heading_forward(p.heading) * (p.speed_mps * l.sqrt() + self.speed_bias);
         let stops = self.leg_stops();
         // Leg lengths: the spring of eq. 1 with a programmable rest.
@@ -266,7 +266,6 @@ impl Controller for BipedRun {
         let active = &creature.legs[self.active];
         let idle = &creature.legs[1 - self.active];
         let reach = 0.83 * l + p.landing_rest_m * l;
-        let com = crate::energy::center_of_mass(&creature.model, data);
         let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.powf(4.5));
         let max = p.max_hip_torque * l.powi(4);
         match self.phase {
