@@ -9,33 +9,14 @@ use gaitlab_core::preset::{Creature as PresetCreature, PhysicsParams, PresetErro
 use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
 
-use crate::control::biped_gallop::{BipedGallop, BipedGallopParams, GallopStyle};
-use crate::control::biped_run::{BipedRun, BipedRunParams};
-use crate::control::kangaroo_hop::{
-    KangarooHop, KangarooHopParams, kangaroo_ground, kangaroo_start,
-};
-use crate::control::quadruped_bound::{
-    BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
-};
-use crate::control::quadruped_run::{
-    QuadrupedGait, QuadrupedRun, QuadrupedRunParams, quadruped_start,
-};
-use crate::creature::{Creature, Species};
+use crate::control::kangaroo_hop::kangaroo_ground;
+use crate::creature::Species;
+use crate::gait_controller::{GaitController, gait_names, make_controller, start_state};
 use crate::ground::{GroundParams, Obstacle};
 use crate::metrics::{GaitRecorder, GaitSummary};
 use crate::model::Joint as BodyJoint;
 use crate::preset::creature_from_preset;
 use crate::sim::{Controller, Sim, SimOptions};
-
-/// The gaits of each model, the default first.
-#[must_use]
-pub fn gait_names(species: Species) -> &'static [&'static str] {
-    match species {
-        Species::Biped => &["run", "gallop", "gallop_alternate"],
-        Species::Quadruped => &["trot", "bound", "gallop"],
-        Species::Kangaroo => &["hop"],
-    }
-}
 
 /// What the live plots show each frame.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -55,10 +36,6 @@ pub struct PhysicsProbe {
     /// Forward speed of the centre of mass (m/s).
     pub speed_mps: f64,
 }
-
-/// The kangaroo starts no faster than this (m/s at scale 1) and its
-/// controller ramps to the desired speed: started at 5 m/s it tumbles.
-pub const KANGAROO_START_MPS: f64 = 2.0;
 
 /// How fast the desired heading turns (rad/s at scale 1, ×1/√L).
 pub const TURN_RATE_RAD_S: f64 = 0.5;
@@ -96,74 +73,6 @@ pub struct PhysicsDriver {
     pub reset_after_fall: bool,
     message: Option<String>,
     resets: u32,
-}
-
-/// The controller of the gait running: one of the paper's state machines.
-/// (One lives per driver, so the variants' differing sizes do not matter.)
-#[derive(Clone, Debug)]
-pub enum GaitController {
-    /// Biped running (Figure 4).
-    BipedRun(Box<BipedRun>),
-    /// Biped galloping, either style.
-    BipedGallop(Box<BipedGallop>),
-    /// Quadruped trot on virtual legs.
-    Quadruped(Box<QuadrupedRun>),
-    /// Quadruped bound or gallop: front and rear pairs as a planar biped.
-    QuadrupedBound(Box<QuadrupedBound>),
-    /// The kangaroo's hop.
-    Kangaroo(Box<KangarooHop>),
-}
-
-impl GaitController {
-    fn inner(&self) -> &dyn Controller {
-        match self {
-            GaitController::BipedRun(c) => c.as_ref(),
-            GaitController::BipedGallop(c) => c.as_ref(),
-            GaitController::Quadruped(c) => c.as_ref(),
-            GaitController::QuadrupedBound(c) => c.as_ref(),
-            GaitController::Kangaroo(c) => c.as_ref(),
-        }
-    }
-
-    fn inner_mut(&mut self) -> &mut dyn Controller {
-        match self {
-            GaitController::BipedRun(c) => c.as_mut(),
-            GaitController::BipedGallop(c) => c.as_mut(),
-            GaitController::Quadruped(c) => c.as_mut(),
-            GaitController::QuadrupedBound(c) => c.as_mut(),
-            GaitController::Kangaroo(c) => c.as_mut(),
-        }
-    }
-}
-
-impl Controller for GaitController {
-    fn control(&mut self, input: &crate::sim::ControlInput<'_>, drives: &mut [crate::sim::Drive]) {
-        self.inner_mut().control(input, drives);
-    }
-
-    fn phase_name(&self) -> &'static str {
-        self.inner().phase_name()
-    }
-
-    fn set_speed(&mut self, speed_mps: f64) {
-        self.inner_mut().set_speed(speed_mps);
-    }
-
-    fn set_heading(&mut self, heading: f64) {
-        self.inner_mut().set_heading(heading);
-    }
-
-    fn set_hop_height(&mut self, height_m: f64) {
-        self.inner_mut().set_hop_height(height_m);
-    }
-
-    fn gains(&self) -> Vec<crate::control::gains::Gain> {
-        self.inner().gains()
-    }
-
-    fn set_gain(&mut self, name: &str, value: f64) -> bool {
-        self.inner_mut().set_gain(name, value)
-    }
 }
 
 fn scaled_skeleton(skeleton: &Skeleton, l: f64) -> Result<Skeleton, PresetError> {
@@ -239,7 +148,6 @@ impl PhysicsDriver {
             Species::Kangaroo => kangaroo_ground().scaled(l),
             _ => GroundParams::default().scaled(l),
         };
-        let species = creature.species;
         let mut sim = Sim::new(creature, ground, options);
         for o in &params.obstacles {
             sim.terrain.obstacles.push(Obstacle {
@@ -255,21 +163,7 @@ impl PhysicsDriver {
             *v = params.speed_mps * l.sqrt();
         }
         sim.data.q.copy_from_slice(&start_q);
-        // The controllers' own starting states where they have one: the
-        // quadruped just above standing height, the kangaroo just before a
-        // landing at no more than 2 m/s (its controller ramps to the rest).
-        match (species, &controller) {
-            (Species::Quadruped, GaitController::Quadruped(c)) => {
-                quadruped_start(&mut sim, c.gait(), params.speed_mps);
-            }
-            (Species::Quadruped, GaitController::QuadrupedBound(_)) => {
-                bound_start(&mut sim, params.speed_mps);
-            }
-            (Species::Kangaroo, _) => {
-                kangaroo_start(&mut sim, params.speed_mps.clamp(0.0, KANGAROO_START_MPS))
-            }
-            _ => {}
-        }
+        start_state(&mut sim, &controller, params.speed_mps);
         crate::kinematics::kinematics(&sim.creature.model, &mut sim.data);
         let legs = sim.creature.legs.len();
         let mut driver = Self {
@@ -650,124 +544,6 @@ impl PhysicsDriver {
         self.message = Some(why);
         self.resets += 1;
         self.update_pose();
-    }
-}
-
-fn make_controller(
-    creature: &Creature,
-    gait: &str,
-    params: &PhysicsParams,
-) -> Result<GaitController, PresetError> {
-    let l = creature.scale;
-    let bad = || {
-        let names = gait_names(creature.species);
-        PresetError::new(
-            "scenario.physics.gait",
-            format!(
-                "unknown gait \"{gait}\" (this model has: {})",
-                names.join(", ")
-            ),
-        )
-    };
-    let two_ball_legs =
-        creature.legs.len() == 2 && creature.legs.iter().all(|leg| leg.hip.len() == 3);
-    let biped_needs = || {
-        PresetError::new(
-            "scenario.physics.legs",
-            "the biped gaits need two legs with three hip joints each",
-        )
-    };
-    match (creature.species, gait) {
-        (Species::Biped, "run") => {
-            if !two_ball_legs {
-                return Err(biped_needs());
-            }
-            let d = BipedRunParams::default();
-            let p = BipedRunParams {
-                speed_mps: params.speed_mps,
-                hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
-                ..d
-            };
-            Ok(GaitController::BipedRun(Box::new(BipedRun::new(p, l))))
-        }
-        (Species::Biped, "gallop" | "gallop_alternate") => {
-            if !two_ball_legs {
-                return Err(biped_needs());
-            }
-            let d = BipedGallopParams::default();
-            let style = if gait == "gallop" {
-                GallopStyle::TogetherSwing
-            } else {
-                GallopStyle::AlternateSwing
-            };
-            let p = BipedGallopParams {
-                speed_mps: params.speed_mps,
-                hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
-                style,
-                ..d
-            };
-            Ok(GaitController::BipedGallop(Box::new(BipedGallop::new(
-                p, l,
-            ))))
-        }
-        (Species::Quadruped, "trot" | "bound" | "gallop") => {
-            if creature.legs.len() != 4 || creature.legs.iter().any(|leg| leg.hip.len() != 2) {
-                return Err(PresetError::new(
-                    "scenario.physics.legs",
-                    "the quadruped gaits need four legs with two hip joints each",
-                ));
-            }
-            if gait == "trot" {
-                let p = QuadrupedRunParams {
-                    speed_mps: params.speed_mps,
-                    ..QuadrupedRunParams::default()
-                };
-                return Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(
-                    p,
-                    QuadrupedGait::Trot,
-                    l,
-                ))));
-            }
-            let style = if gait == "bound" {
-                BoundStyle::Bound
-            } else {
-                BoundStyle::Gallop
-            };
-            let p = QuadrupedBoundParams {
-                speed_mps: params.speed_mps,
-                style,
-                ..QuadrupedBoundParams::default()
-            };
-            Ok(GaitController::QuadrupedBound(Box::new(
-                QuadrupedBound::new(p, l),
-            )))
-        }
-        (Species::Kangaroo, "hop") => {
-            let ok = creature.legs.len() == 1
-                && creature.legs[0].knee.is_some()
-                && creature.legs[0].hip.len() == 1
-                && creature.tail.len() == 3
-                && creature.neck.is_some()
-                && creature.model.joint_count() >= 10;
-            if !ok {
-                return Err(PresetError::new(
-                    "scenario.physics.legs",
-                    "the kangaroo hop needs a planar base, one leg with hip, knee and ankle, a three-joint tail and a neck",
-                ));
-            }
-            let d = KangarooHopParams::default();
-            let obstacle = params.obstacles.first();
-            let p = KangarooHopParams {
-                speed_mps: params.speed_mps,
-                hop_rise_m: params.hop_height_m.unwrap_or(d.hop_rise_m),
-                jump_at_m: obstacle.map(|o| o.at_m),
-                obstacle_height_m: obstacle.map_or(d.obstacle_height_m, |o| o.height_m),
-                obstacle_depth_m: obstacle.map_or(d.obstacle_depth_m, |o| o.depth_m),
-                ..d
-            };
-            Ok(GaitController::Kangaroo(Box::new(KangarooHop::new(p))))
-        }
-        _ => Err(bad()),
     }
 }
 
