@@ -11,7 +11,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ("raibert-biped", "run", &[1.0, 2.0, 2.5]),
         ("raibert-biped", "gallop", &[1.0, 1.5, 2.0]),
         ("raibert-biped", "gallop_alternate", &[1.0, 1.5, 2.0]),
-        ("raibert-quadruped", "trot", &[1.5, 2.3]),
+        ("raibert-quadruped", "trot", &[1.0, 1.5, 1.9, 2.3]),
         ("raibert-quadruped", "bound", &[1.5, 2.3, 2.8]),
         ("raibert-quadruped", "gallop", &[1.5, 2.3, 2.8]),
         ("raibert-kangaroo", "hop", &[2.0, 3.5, 5.0]),
