@@ -54,10 +54,5 @@ pub fn com_state(creature: &Creature, data: &Data) -> (DVec3, DVec3) {
 /// Velocity of the whole creature's centre of mass (world, m/s).
 #[must_use]
 pub fn com_velocity(creature: &Creature, data: &Data) -> DVec3 {
-    let model = &creature.model;
-    let mut p = DVec3::ZERO;
-    for (i, b) in model.bodies().iter().enumerate() {
-        p += data.point_velocity_world(i, b.com) * b.mass;
-    }
-    p / model.total_mass()
+    com_state(creature, data).1
 }

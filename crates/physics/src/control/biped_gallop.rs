@@ -23,9 +23,11 @@
 use glam::{DQuat, DVec3};
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
+use super::hip_servo::set_hip;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
 use crate::actuator::Stops;
+use crate::creatures::BIPED_LEG_M;
 use crate::sim::{ControlInput, Controller, Drive};
 
 /// How the legs swing forward (Raibert & Hodgins 1991, "Gaits").
@@ -418,7 +420,7 @@ impl BipedGallop {
         let p = self.params;
         let l = self.scale;
         if self.apex_height.is_finite() {
-            let landing_height = (0.83 + p.landing_rest_m) * l;
+            let landing_height = (BIPED_LEG_M + p.landing_rest_m) * l;
             let error = (landing_height + p.hop_height_m * l) - self.apex_height;
             self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
         }
@@ -520,7 +522,7 @@ impl Controller for BipedGallop {
         let stops = self.leg_stops();
 
         let com = crate::energy::center_of_mass(&creature.model, data);
-        let reach = 0.83 * l + p.landing_rest_m * l;
+        let reach = (BIPED_LEG_M + p.landing_rest_m) * l;
         let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.powf(4.5));
         let (ykp, ykv) = (p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.powf(4.5));
         let max = p.max_hip_torque * l.powi(4);
@@ -630,12 +632,5 @@ impl Controller for BipedGallop {
                 }
             }
         }
-    }
-}
-
-fn set_hip(drives: &mut [Drive], hip: &[usize], targets: [f64; 2], kp: f64, kv: f64, max: f64) {
-    for (&j, &t) in hip.iter().zip(&targets) {
-        drives[j].servo(kp, kv, t);
-        drives[j].spring.max_force = max;
     }
 }

@@ -7,9 +7,11 @@
 use glam::{DQuat, DVec3};
 
 use super::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
+use super::hip_servo::set_hip;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
 use crate::actuator::Stops;
+use crate::creatures::BIPED_LEG_M;
 use crate::sim::{ControlInput, Controller, Drive};
 
 /// Parameters of biped running; lengths are leg-spring coordinates
@@ -265,7 +267,7 @@ impl Controller for BipedRun {
         // The active leg: placed for landing in flight, posture servo in stance.
         let active = &creature.legs[self.active];
         let idle = &creature.legs[1 - self.active];
-        let reach = 0.83 * l + p.landing_rest_m * l;
+        let reach = (BIPED_LEG_M + p.landing_rest_m) * l;
         let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.powf(4.5));
         let max = p.max_hip_torque * l.powi(4);
         match self.phase {
@@ -322,12 +324,5 @@ impl Controller for BipedRun {
         let mirror = [-data.q[active.hip[0]], -data.q[active.hip[1]]];
         set_hip(drives, &idle.hip[..2], mirror, kp, kv, max);
         drives[idle.hip[2]].servo(p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.powf(4.5), 0.0);
-    }
-}
-
-fn set_hip(drives: &mut [Drive], hip: &[usize], targets: [f64; 2], kp: f64, kv: f64, max: f64) {
-    for (&j, &t) in hip.iter().zip(&targets) {
-        drives[j].servo(kp, kv, t);
-        drives[j].spring.max_force = max;
     }
 }

@@ -7,6 +7,7 @@ pub mod attitude;
 pub mod biped_gallop;
 pub mod biped_run;
 pub mod gains;
+pub mod hip_servo;
 pub mod kangaroo_hop;
 pub mod phase;
 pub mod placement;

@@ -23,14 +23,13 @@
 use glam::{DQuat, DVec3};
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
+use super::hip_servo::HipServo;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
 use crate::actuator::Stops;
+use crate::creatures::QUADRUPED_LEG_M;
 use crate::ground::GroundParams;
 use crate::sim::{ControlInput, Controller, Drive, Sim};
-
-/// Hip-to-foot length of the quadruped's leg at full extension, at scale 1 (m).
-const LEG_FULL_M: f64 = 0.81;
 
 /// The quadruped's running gaits.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -255,7 +254,11 @@ pub fn quadruped_start(sim: &mut Sim, gait: QuadrupedGait, speed_mps: f64) {
         sim.data.q[leg.spring] = tuning.idle_rest_m * l;
     }
     sim.data.base_orientation = DQuat::IDENTITY;
-    sim.data.base_position = DVec3::new(0.0, (LEG_FULL_M + tuning.landing_rest_m + 0.03) * l, 0.0);
+    sim.data.base_position = DVec3::new(
+        0.0,
+        (QUADRUPED_LEG_M + tuning.landing_rest_m + 0.03) * l,
+        0.0,
+    );
     sim.data.base_velocity.angular = DVec3::ZERO;
     sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, speed_mps * l.sqrt());
     for c in &mut sim.contacts {
@@ -620,7 +623,7 @@ impl Controller for QuadrupedRun {
         // Foot placement (eq. 3) for the active pair's legs in the air.
         let velocity = com_velocity(creature, data);
         let desired = fwd * (p.speed_mps * l.sqrt() + self.speed_bias);
-        let reach = LEG_FULL_M * l + landing;
+        let reach = QUADRUPED_LEG_M * l + landing;
         let max = p.max_hip_torque * l.powi(4);
         let servo = HipServo {
             kp: p.swing_kp * l.powi(4),
@@ -725,7 +728,7 @@ impl Controller for QuadrupedRun {
                     let spring_force =
                         (t.leg_stiffness * l * l * (self.stance_rest[i] - q)).max(0.0);
                     let lim = if t.posture_force_ratio.is_finite() {
-                        (t.posture_force_ratio * spring_force * (LEG_FULL_M * l + q)).min(max)
+                        (t.posture_force_ratio * spring_force * (QUADRUPED_LEG_M * l + q)).min(max)
                     } else {
                         max
                     };
@@ -749,40 +752,6 @@ impl Controller for QuadrupedRun {
                 [roll, pitch]
             };
             servo.set(drives, &leg.hip, target, &mut self.hip_target[i]);
-        }
-    }
-}
-
-/// Largest hip servo targets (rad): roll, pitch.
-const HIP_TARGET_LIMIT: [f64; 2] = [0.8, 1.3];
-
-/// Hip servo gains and torque limit.
-#[derive(Clone, Copy)]
-struct HipServo {
-    kp: f64,
-    kv: f64,
-    max: f64,
-    dt: f64,
-}
-
-impl HipServo {
-    /// Servo the hip joints to `targets` (eq. 5) with the targets' rate as
-    /// velocity feed-forward (`previous` holds last call's targets).
-    fn set(&self, drives: &mut [Drive], hip: &[usize], targets: [f64; 2], previous: &mut [f64; 2]) {
-        for ((&j, (&t, &lim)), prev) in hip
-            .iter()
-            .zip(targets.iter().zip(&HIP_TARGET_LIMIT))
-            .zip(previous.iter_mut())
-        {
-            let t = t.clamp(-lim, lim);
-            let rate = if self.dt > 0.0 {
-                ((t - *prev) / self.dt).clamp(-20.0, 20.0)
-            } else {
-                0.0
-            };
-            *prev = t;
-            drives[j].servo(self.kp, self.kv, t + self.kv / self.kp * rate);
-            drives[j].spring.max_force = self.max;
         }
     }
 }

@@ -25,6 +25,9 @@ const LOWER_COM_M: f64 = 0.22;
 const LOWER_MASS_KG: f64 = 0.64;
 const LOWER_INERTIA: [f64; 3] = [0.02, 0.02, 0.00018];
 
+/// Hip-to-foot length with the leg spring at zero (m at scale 1).
+pub const LEG_LENGTH_M: f64 = UPPER_LENGTH_M + LOWER_LENGTH_M;
+
 /// The biped at dynamic scale `l` (1 = the paper's robot). The leg length
 /// from hip to foot is `(0.20 + 0.63)·l + q_spring`.
 ///

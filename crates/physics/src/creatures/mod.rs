@@ -6,6 +6,6 @@ mod build;
 mod kangaroo;
 mod quadruped;
 
-pub use biped::biped;
+pub use biped::{LEG_LENGTH_M as BIPED_LEG_M, biped};
 pub use kangaroo::kangaroo;
-pub use quadruped::quadruped;
+pub use quadruped::{LEG_LENGTH_M as QUADRUPED_LEG_M, quadruped};

@@ -26,6 +26,9 @@ const LOWER_COM_M: f64 = 0.2;
 const LOWER_MASS_KG: f64 = 1.0;
 const LOWER_INERTIA: [f64; 3] = [0.0035, 0.0035, 0.0];
 
+/// Hip-to-foot length with the leg spring at zero (m at scale 1).
+pub const LEG_LENGTH_M: f64 = UPPER_LENGTH_M + LOWER_LENGTH_M;
+
 /// The legs in order: front-left, front-right, rear-left, rear-right.
 pub const LEG_NAMES: [&str; 4] = ["front-left", "front-right", "rear-left", "rear-right"];
 
