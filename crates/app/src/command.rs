@@ -68,6 +68,8 @@ impl Lab {
     /// `mode`, `method`, `paused` (or `pause`),
     /// `reset`, `step`, `lambda`, `gamma_max`, `max_step`, `null_space_gain`,
     /// `enforce_limits`, `heading_deg`, `plots`, `plot_joints` (joint names),
+    /// `compare` (an object of `views`, `scenario`, `options`, or `false`: the
+    /// side-by-side IK comparison, see [`crate::compare`]),
     /// `record` (motion take on/off), `save` (`"bvh"` or `"csv"`: download the
     /// take), `video_size`, `record_video` (on/off), `views` (an object of view flags).
     /// Keys apply in that order; the first bad key stops the command with an
@@ -86,7 +88,8 @@ impl Lab {
             serde_json::from_str(json).map_err(|e| format!("command is not JSON: {e}"))?;
         let object: &Map<String, Value> =
             value.as_object().ok_or("command must be a JSON object")?;
-        const KNOWN: [&str; 34] = [
+        const KNOWN: [&str; 35] = [
+            "compare",
             "hop_height_m",
             "gain",
             "engine",
@@ -211,9 +214,12 @@ impl Lab {
         if let Some(v) = get("method") {
             let name = text("method", v)?;
             let method = Method::parse(name).ok_or_else(|| {
-                format!("method: unknown method {name:?} (transpose, pinv, dls, sdls)")
+                format!("method: unknown method {name:?} (transpose, pinv, dls, sdls, ccd)")
             })?;
             self.set_method(method);
+        }
+        if let Some(v) = get("compare") {
+            self.apply_compare_command(v)?;
         }
         for key in ["paused", "pause"] {
             if let Some(v) = get(key) {
@@ -378,7 +384,11 @@ impl Lab {
                 })
             }),
             "method": self.settings.method.name(),
-            "methods": [self.settings.method.name()],
+            "methods": self.compare.as_ref().map_or_else(
+                || vec![self.settings.method.name()],
+                |c| c.config.views.iter().map(|m| m.name()).collect(),
+            ),
+            "compare": self.compare_state(),
             "paused": self.paused,
             "frame": self.frame,
             "time_s": self.driver.time(),

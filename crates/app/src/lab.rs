@@ -110,6 +110,8 @@ pub struct Lab {
     pub(crate) footprints: std::collections::VecDeque<glam::DVec3>,
     /// Each PODA leg's last recorded footprint.
     last_planted: Vec<glam::DVec3>,
+    /// The side-by-side IK comparison, when one runs (it replaces the single view).
+    pub(crate) compare: Option<crate::compare::Comparison>,
 }
 
 /// An edit of the PODA gait's shape (see [`Lab::edit_gait_shape`]).
@@ -257,6 +259,7 @@ impl Lab {
             gait_derived: Vec::new(),
             footprints: std::collections::VecDeque::with_capacity(MAX_FOOTPRINTS),
             last_planted: Vec::new(),
+            compare: None,
         };
         lab.after_reset();
         lab
@@ -348,6 +351,7 @@ impl Lab {
         self.preset_changed = true;
         self.link_changed = true;
         self.after_reset();
+        self.rebuild_compare();
         Ok(())
     }
 
@@ -356,6 +360,9 @@ impl Lab {
         self.settings.mode = mode;
         if let Some(driver) = self.driver.thesis_mut() {
             driver.set_mode(mode);
+        }
+        if let Some(compare) = self.compare.as_mut() {
+            compare.set_mode(mode);
         }
         self.link_changed = true;
     }
@@ -610,6 +617,9 @@ impl Lab {
     /// Back to time 0 and the rest pose.
     pub fn reset(&mut self) {
         self.driver.reset();
+        if let Some(compare) = self.compare.as_mut() {
+            compare.reset();
+        }
         self.after_reset();
     }
 
@@ -662,6 +672,12 @@ impl Lab {
         }
         let started = self.clock.as_ref().map(|clock| clock());
         for _ in 0..steps {
+            if let Some(compare) = self.compare.as_mut() {
+                // The views replace the single figure, in lock step.
+                compare.step(dt, self.clock.as_deref());
+                self.frame += 1;
+                continue;
+            }
             self.driver.step(dt);
             self.frame += 1;
             if let Some(physics) = self.driver.physics_mut() {
@@ -906,6 +922,9 @@ impl Lab {
     }
 
     fn refresh_scene(&mut self) {
+        if let Some(compare) = self.compare.as_mut() {
+            compare.refresh_scenes(&self.settings.view);
+        }
         // The driver's skeleton: a physics creature's is scaled by L (Table 1).
         let skeleton = self.driver.skeleton();
         let pose = self.driver.pose();

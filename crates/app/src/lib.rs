@@ -7,11 +7,14 @@ pub mod view;
 
 pub mod bench;
 pub mod command;
+pub mod compare;
 pub mod history;
 pub mod lab;
+mod lab_compare;
 pub mod lab_driver;
 pub mod link;
 mod panels;
+mod panels_compare;
 mod panels_gait;
 mod panels_path;
 mod panels_physics;

@@ -12,12 +12,13 @@ use crate::lab::Lab;
 use crate::settings::VideoSize;
 
 /// Human labels of the methods, in the thesis' order.
-fn method_label(method: Method) -> &'static str {
+pub(crate) fn method_label(method: Method) -> &'static str {
     match method {
         Method::Transpose => "Jacobian transpose",
         Method::Pinv => "Pseudoinverse",
         Method::Dls => "Damped least squares",
         Method::Sdls => "Selectively damped LS",
+        Method::Ccd => "Cyclic coordinate descent",
     }
 }
 

@@ -7,7 +7,7 @@ use egui_plot::{Legend, Line, Plot, PlotPoints};
 use crate::history::History;
 use crate::lab::{Lab, MAX_PLOT_JOINTS};
 use crate::render::viewport;
-use crate::{panels, panels_gait, panels_path, panels_physics};
+use crate::{panels, panels_compare, panels_gait, panels_path, panels_physics};
 
 impl Lab {
     /// Shows the whole lab in `ui` and advances the animation by the frame's time.
@@ -33,7 +33,10 @@ impl Lab {
                         panels_gait::gait(ui, self);
                         panels_path::path(ui, self);
                     } else {
-                        panels::method(ui, self);
+                        panels_compare::controls(ui, self);
+                        if self.compare.is_none() {
+                            panels::method(ui, self);
+                        }
                         panels::motion(ui, self);
                         panels::speed_and_targets(ui, self);
                     }
@@ -43,7 +46,12 @@ impl Lab {
                     self.readout(ui);
                 });
             });
-        if self.settings.plots {
+        if self.compare.is_some() {
+            egui::Panel::bottom("gaitlab-compare")
+                .resizable(true)
+                .default_size(330.0)
+                .show(ui, |ui| panels_compare::cards(ui, self));
+        } else if self.settings.plots {
             egui::Panel::bottom("gaitlab-plots")
                 .resizable(true)
                 .default_size(170.0)
@@ -61,7 +69,24 @@ impl Lab {
                     }
                 });
             }
-            let rect = viewport::show(ui, &self.scene, &mut self.camera, &self.settings.view).rect;
+            let rect = match &self.compare {
+                Some(compare) => {
+                    let labels: Vec<String> = compare
+                        .views()
+                        .iter()
+                        .enumerate()
+                        .map(|(i, v)| format!("{} · {}", i + 1, v.method.label()))
+                        .collect();
+                    let panes: Vec<_> = compare
+                        .views()
+                        .iter()
+                        .zip(&labels)
+                        .map(|(v, label)| (&v.scene, label.as_str()))
+                        .collect();
+                    viewport::show_split(ui, &panes, &mut self.camera, &self.settings.view).rect
+                }
+                None => viewport::show(ui, &self.scene, &mut self.camera, &self.settings.view).rect,
+            };
             let ppp = ui.ctx().pixels_per_point();
             self.view_rect_px = [
                 rect.min.x * ppp,

@@ -32,7 +32,7 @@ pub struct BenchArgs {
     /// Presets to measure (default: human and ik-quadruped, and every PODA preset).
     #[arg(long = "preset")]
     pub presets: Vec<String>,
-    /// Methods to measure (default: all four).
+    /// Methods to measure (default: all five).
     #[arg(long = "method")]
     pub methods: Vec<String>,
     /// Timed repetitions of each case; the median (and the best) is reported.

@@ -32,7 +32,7 @@ pub struct RunArgs {
     /// Desired speed, m/s (physics engine; default: the preset's).
     #[arg(long)]
     pub speed: Option<f64>,
-    /// IK method: transpose, pinv, dls, sdls (default: the preset's).
+    /// IK method: transpose, pinv, dls, sdls, ccd (default: the preset's).
     #[arg(long)]
     pub method: Option<String>,
     /// Simulated seconds.
@@ -52,7 +52,7 @@ pub fn method(name: Option<&str>, default: Method) -> Result<Method, Failure> {
         None => Ok(default),
         Some(name) => Method::parse(name).ok_or_else(|| {
             Failure::input(format!(
-                "--method: unknown method {name:?} (use transpose, pinv, dls or sdls)"
+                "--method: unknown method {name:?} (use transpose, pinv, dls, sdls or ccd)"
             ))
         }),
     }

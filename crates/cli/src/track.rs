@@ -20,7 +20,7 @@ pub struct TrackArgs {
     /// CSV of targets: header `t` then `x,y,z` per effector in effector order, world metres.
     #[arg(long)]
     pub targets: String,
-    /// IK method: transpose, pinv, dls, sdls (default: the preset's).
+    /// IK method: transpose, pinv, dls, sdls, ccd (default: the preset's).
     #[arg(long)]
     pub method: Option<String>,
     /// Frames per second to sample the recording at (default: the preset's).

@@ -63,7 +63,7 @@ fn every_method_converges_on_reachable_targets() {
         for method in Method::ALL {
             let mut values = vec![0.0; 12];
             let (iterations, tolerance) = match method {
-                Method::Transpose => (3000, 2e-3),
+                Method::Transpose | Method::Ccd => (3000, 2e-3),
                 _ => (300, 1e-4),
             };
             let error = solve(

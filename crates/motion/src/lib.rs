@@ -10,6 +10,7 @@ pub mod frame_bench;
 mod ik_stage;
 pub mod poda;
 mod script;
+pub mod stretch;
 mod thesis_driver;
 mod track;
 

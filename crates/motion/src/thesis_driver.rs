@@ -16,6 +16,7 @@ use glam::{DMat3, DVec3};
 use crate::error::DriverError;
 use crate::ik_stage::IkStage;
 use crate::script::{Limb, ScriptSample, ThesisScript};
+use crate::stretch::{LimbReach, StretchOptions};
 
 /// Most IK iterations per frame a parameter set may ask for (the preset limit).
 pub use gaitlab_core::preset::MAX_ITERATIONS_PER_FRAME;
@@ -57,6 +58,8 @@ pub struct ThesisDriver {
     transition_from: ThesisMode,
     /// Time at which the blend from `transition_from` to `mode` starts, seconds.
     transition_start: f64,
+    /// The singularity scenario, when on: its options and each limb's reach.
+    stretch: Option<(StretchOptions, [Option<LimbReach>; 4])>,
 }
 
 impl ThesisDriver {
@@ -103,6 +106,7 @@ impl ThesisDriver {
             sample,
             transition_from: mode,
             transition_start: 0.0,
+            stretch: None,
         };
         driver.apply_weights();
         driver.reset();
@@ -190,6 +194,30 @@ impl ThesisDriver {
         self.origin = origin;
     }
 
+    /// Turns the singularity scenario on (every limb target pulled along the
+    /// limb to about its full reach, see [`crate::stretch`]) or off. Takes
+    /// effect at the next frame.
+    pub fn set_stretch(&mut self, stretch: Option<StretchOptions>) {
+        self.stretch = stretch.map(|options| {
+            let rest = Kinematics::of(
+                &self.skeleton,
+                &Pose {
+                    root: RootTransform::default(),
+                    joints: self.skeleton.rest_values(),
+                },
+            );
+            let limbs = Limb::ALL
+                .map(|limb| LimbReach::of(&self.skeleton, &rest, self.roles[limb.index()]));
+            (options, limbs)
+        });
+    }
+
+    /// The singularity scenario's options, when it is on.
+    #[must_use]
+    pub fn stretch(&self) -> Option<StretchOptions> {
+        self.stretch.map(|(options, _)| options)
+    }
+
     /// The script for the current parameters and mode.
     #[must_use]
     pub fn script(&self) -> ThesisScript<'_> {
@@ -267,7 +295,11 @@ impl ThesisDriver {
         }
         for limb in Limb::ALL {
             let e = self.roles[limb.index()];
-            let cycle = self.sample.target(limb) - root_height;
+            let stretched = self
+                .stretch
+                .as_ref()
+                .and_then(|(options, limbs)| Some(limbs[limb.index()]?.target(options, self.time)));
+            let cycle = stretched.unwrap_or_else(|| self.sample.target(limb) - root_height);
             let relative = self.rest_offset[e].lerp(cycle, blend);
             targets.position[e] = root_position + heading * relative;
         }

@@ -28,7 +28,73 @@ pub fn show(
     camera: &mut Camera,
     view: &ViewOptions,
 ) -> egui::Response {
-    // All the space left; a sensible size where that is unbounded (a scroll area).
+    let (rect, response) = allocate(ui);
+    steer(ui, &response, scene, camera, view);
+    draw(ui, rect, response.id.value(), scene, camera, view);
+    response
+}
+
+/// Shows several scenes through one shared camera, side by side: 2 panes split
+/// the space left and right, 4 make a 2 × 2 grid (any other count makes
+/// columns). Each pane is labelled with its text in the top-left corner.
+/// Gestures anywhere move the shared camera; framing and follow use the first
+/// scene.
+pub fn show_split(
+    ui: &mut egui::Ui,
+    panes: &[(&Scene, &str)],
+    camera: &mut Camera,
+    view: &ViewOptions,
+) -> egui::Response {
+    let (rect, response) = allocate(ui);
+    if let Some((first, _)) = panes.first() {
+        steer(ui, &response, first, camera, view);
+    }
+    let text_color = ui.visuals().strong_text_color();
+    let backdrop = ui.visuals().extreme_bg_color.gamma_multiply(0.8);
+    for (i, ((scene, label), pane)) in panes.iter().zip(split_rects(rect, panes.len())).enumerate()
+    {
+        draw(ui, pane, response.id.with(i).value(), scene, camera, view);
+        let painter = ui.painter().with_clip_rect(pane);
+        let galley = painter.layout_no_wrap(
+            (*label).to_owned(),
+            egui::FontId::proportional(14.0),
+            text_color,
+        );
+        let at = pane.left_top() + egui::vec2(6.0, 4.0);
+        painter.rect_filled(
+            Rect::from_min_size(at, galley.size()).expand(3.0),
+            3.0,
+            backdrop,
+        );
+        painter.galley(at, galley, text_color);
+    }
+    response
+}
+
+/// The panes of [`show_split`]: `count` rectangles tiling `rect` with a 2-point gap.
+#[must_use]
+pub fn split_rects(rect: Rect, count: usize) -> Vec<Rect> {
+    let gap = 2.0;
+    let (columns, rows) = match count {
+        0 | 1 => (1, 1),
+        4 => (2, 2),
+        n => (n, 1),
+    };
+    let width = (rect.width() - gap * (columns - 1) as f32) / columns as f32;
+    let height = (rect.height() - gap * (rows - 1) as f32) / rows as f32;
+    (0..count.max(1))
+        .map(|i| {
+            let (c, r) = (i % columns, i / columns);
+            Rect::from_min_size(
+                rect.min + egui::vec2(c as f32 * (width + gap), r as f32 * (height + gap)),
+                egui::vec2(width.max(1.0), height.max(1.0)),
+            )
+        })
+        .collect()
+}
+
+/// All the space left in `ui` (a sensible size where that is unbounded).
+fn allocate(ui: &mut egui::Ui) -> (Rect, egui::Response) {
     let available = ui.available_size();
     let size = egui::vec2(
         if available.x.is_finite() {
@@ -43,10 +109,19 @@ pub fn show(
         },
     )
     .max(egui::vec2(1.0, 1.0));
-    let (rect, response) = ui.allocate_exact_size(size, egui::Sense::click_and_drag());
+    ui.allocate_exact_size(size, egui::Sense::click_and_drag())
+}
 
+/// Gestures, first framing and follow mode for the camera.
+fn steer(
+    ui: &egui::Ui,
+    response: &egui::Response,
+    scene: &Scene,
+    camera: &mut Camera,
+    view: &ViewOptions,
+) {
     camera.perspective = view.perspective;
-    if camera.handle_input(&response) {
+    if camera.handle_input(response) {
         ui.ctx().request_repaint();
     }
     if response.dragged() {
@@ -68,28 +143,32 @@ pub fn show(
             ui.ctx().request_repaint();
         }
     }
+}
 
-    if ui.is_rect_visible(rect) {
-        let style = ViewStyle::from_visuals(ui.visuals());
-        if gpu::is_installed(ui.ctx()) {
-            let callback = SceneCallback::new(
-                response.id.value(),
-                ui.ctx().cumulative_frame_nr(),
-                rect,
-                *camera,
-                std::sync::Arc::clone(scene.frame()),
-                view,
-                style,
-            );
-            ui.painter()
-                .add(egui_wgpu::Callback::new_paint_callback(rect, callback));
-        } else {
-            let mut shapes = Vec::new();
-            fallback_shapes(rect, scene.frame(), camera, view, &style, &mut shapes);
-            ui.painter().extend(shapes);
-        }
+/// Draws `scene` into `rect` (wgpu when installed, else egui shapes); `id`
+/// keys the view's GPU targets.
+fn draw(ui: &egui::Ui, rect: Rect, id: u64, scene: &Scene, camera: &Camera, view: &ViewOptions) {
+    if !ui.is_rect_visible(rect) {
+        return;
     }
-    response
+    let style = ViewStyle::from_visuals(ui.visuals());
+    if gpu::is_installed(ui.ctx()) {
+        let callback = SceneCallback::new(
+            id,
+            ui.ctx().cumulative_frame_nr(),
+            rect,
+            *camera,
+            std::sync::Arc::clone(scene.frame()),
+            view,
+            style,
+        );
+        ui.painter()
+            .add(egui_wgpu::Callback::new_paint_callback(rect, callback));
+    } else {
+        let mut shapes = Vec::new();
+        fallback_shapes(rect, scene.frame(), camera, view, &style, &mut shapes);
+        ui.painter().with_clip_rect(rect).extend(shapes);
+    }
 }
 
 fn color32(c: [f32; 4]) -> Color32 {

@@ -1,7 +1,9 @@
 //! Jacobian inverse kinematics (She 2006 §4.4: transpose, pseudoinverse, DLS,
 //! SDLS) with PODA's null-space "center angles and gains" (eq. 6), joint limits
-//! and the thesis' per-joint "wounded" weights (§5.1.1).
+//! and the thesis' per-joint "wounded" weights (§5.1.1); plus cyclic
+//! coordinate descent as a non-Jacobian contrast.
 
+mod ccd;
 mod dls;
 mod eigen;
 mod nullspace;

@@ -15,11 +15,20 @@ pub enum Method {
     Dls,
     /// Selectively damped least squares (Buss & Kim 2005, §4.4.5).
     Sdls,
+    /// Cyclic coordinate descent (Wang & Chen 1991): no Jacobian, one joint at a
+    /// time from the effectors back to the root; the non-Jacobian contrast.
+    Ccd,
 }
 
 impl Method {
-    /// Every method, in the thesis' order.
-    pub const ALL: [Method; 4] = [Method::Transpose, Method::Pinv, Method::Dls, Method::Sdls];
+    /// Every method: the thesis' four in its order, then CCD.
+    pub const ALL: [Method; 5] = [
+        Method::Transpose,
+        Method::Pinv,
+        Method::Dls,
+        Method::Sdls,
+        Method::Ccd,
+    ];
 
     /// The short name used in presets, URLs and the CLI.
     #[must_use]
@@ -29,10 +38,11 @@ impl Method {
             Method::Pinv => "pinv",
             Method::Dls => "dls",
             Method::Sdls => "sdls",
+            Method::Ccd => "ccd",
         }
     }
 
-    /// Parses a short name (`transpose`, `pinv`, `dls`, `sdls`; also `pseudoinverse`, `jt`).
+    /// Parses a short name (`transpose`, `pinv`, `dls`, `sdls`, `ccd`; also `pseudoinverse`, `jt`).
     #[must_use]
     pub fn parse(name: &str) -> Option<Self> {
         match name.to_ascii_lowercase().as_str() {
@@ -40,6 +50,7 @@ impl Method {
             "pinv" | "pseudoinverse" => Some(Method::Pinv),
             "dls" => Some(Method::Dls),
             "sdls" => Some(Method::Sdls),
+            "ccd" => Some(Method::Ccd),
             _ => None,
         }
     }
@@ -77,8 +88,8 @@ pub struct IkOptions {
     /// SDLS γmax, the largest change of any joint per iteration, radians. Default π/4
     /// (the thesis misprints 4/π).
     pub gamma_max: f64,
-    /// Largest joint change per iteration for transpose, pinv and DLS, radians
-    /// (metres for prismatic joints). Default 0.2.
+    /// Largest joint change per iteration for transpose, pinv and DLS, and per
+    /// joint turn for CCD, radians (metres for prismatic joints). Default 0.2.
     pub max_step: f64,
     /// Singular values below `rank_tolerance · σ_max` count as zero. Default 1e-6.
     pub rank_tolerance: f64,

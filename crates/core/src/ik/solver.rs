@@ -15,6 +15,7 @@
 use glam::{DMat3, DQuat, DVec3};
 use nalgebra::DMatrix;
 
+use super::ccd::CcdWorkspace;
 use super::dls::DlsWorkspace;
 use super::nullspace::add_null_space;
 use super::pinv::{filtered_step, pinv_step};
@@ -101,6 +102,7 @@ pub struct IkSolver {
     svd: ThinSvd,
     dls: DlsWorkspace,
     sdls: SdlsWorkspace,
+    ccd: CcdWorkspace,
 }
 
 impl IkSolver {
@@ -128,6 +130,7 @@ impl IkSolver {
             svd: ThinSvd::default(),
             dls: DlsWorkspace::default(),
             sdls: SdlsWorkspace::default(),
+            ccd: CcdWorkspace::default(),
         }
     }
 
@@ -201,6 +204,21 @@ impl IkSolver {
             *self = Self::new(skeleton, self.options.clone());
         }
         self.kinematics.update(skeleton, root, values);
+        if self.options.method == Method::Ccd {
+            self.step.copy_from_slice(&values[..n]);
+            let status = self.ccd.sweep(
+                skeleton,
+                &self.kinematics,
+                values,
+                targets,
+                &self.weights,
+                &self.options,
+            );
+            for (step, value) in self.step.iter_mut().zip(values.iter()) {
+                *step = value - *step;
+            }
+            return status;
+        }
         fill_jacobian(skeleton, &self.kinematics, &mut self.jacobian);
         let mut status = self.task_error(skeleton, targets);
 
@@ -384,6 +402,8 @@ impl IkSolver {
                 options.gamma_max,
                 &mut self.free,
             ),
+            // Handled before the Jacobian is built (see `iterate`).
+            Method::Ccd => self.free.fill(0.0),
         }
         let (method, max_step) = (options.method, options.max_step);
         if null_space {

@@ -1,0 +1,81 @@
+//! The lab's side of the IK comparison ([`crate::compare`]): starting and
+//! leaving it, the `compare` command and the `compare` state object
+//! (DESIGN.md "Browser"). Comparison runs on the IK engine only.
+
+use serde_json::Value;
+
+use crate::compare::{CompareConfig, Comparison};
+use crate::lab::Lab;
+
+impl Lab {
+    /// The running comparison, if any.
+    #[must_use]
+    pub fn comparison(&self) -> Option<&Comparison> {
+        self.compare.as_ref()
+    }
+
+    /// The running comparison, mutably.
+    pub fn comparison_mut(&mut self) -> Option<&mut Comparison> {
+        self.compare.as_mut()
+    }
+
+    /// Starts (or restarts) a comparison with `config`, from time 0.
+    ///
+    /// # Errors
+    /// `compare: …` when the engine is not `ik`; nothing changes then.
+    pub fn start_compare(&mut self, config: CompareConfig) -> Result<(), String> {
+        let Some(template) = self.driver.thesis() else {
+            return Err(format!(
+                "compare: engine {} has no IK methods to compare (use the ik engine: human or ik-quadruped)",
+                self.creature.scenario.engine.name()
+            ));
+        };
+        let mut template = template.clone();
+        gaitlab_core::driver::Driver::reset(&mut template);
+        self.compare = Some(Comparison::new(config, &template, &self.settings.view));
+        self.frame = 0;
+        self.link_changed = true;
+        Ok(())
+    }
+
+    /// Leaves the comparison (the single view carries on).
+    pub fn stop_compare(&mut self) {
+        if self.compare.take().is_some() {
+            self.link_changed = true;
+        }
+    }
+
+    /// Applies the `compare` command's value: `false` leaves, an object starts
+    /// or reconfigures (see [`crate::compare`] for the shape).
+    ///
+    /// # Errors
+    /// `compare…: reason`; nothing changes then.
+    pub fn apply_compare_command(&mut self, value: &Value) -> Result<(), String> {
+        if value == &Value::Bool(false) || value.is_null() {
+            self.stop_compare();
+            return Ok(());
+        }
+        let mut base = self.settings.ik.clone();
+        base.method = self.settings.method;
+        let config =
+            CompareConfig::from_json(value, &base, self.compare.as_ref().map(|c| &c.config))?;
+        self.start_compare(config)
+    }
+
+    /// The state's `compare` value: `null`, or the configuration plus metrics.
+    #[must_use]
+    pub fn compare_state(&self) -> Value {
+        self.compare.as_ref().map_or(Value::Null, Comparison::state)
+    }
+
+    /// After the creature changed: rebuild the comparison on it, or leave it
+    /// with a message when the new engine cannot compare.
+    pub(crate) fn rebuild_compare(&mut self) {
+        let Some(config) = self.compare.take().map(|c| c.config) else {
+            return;
+        };
+        if let Err(error) = self.start_compare(config) {
+            self.report_error(error);
+        }
+    }
+}

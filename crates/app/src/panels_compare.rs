@@ -1,0 +1,245 @@
+//! The side-by-side panels ([`crate::compare`]): the "Side by side" controls
+//! (on/off, 2 or 4 views, each view's method, the scenario) and one card per
+//! view with the method's formula, its parameters as sliders, a table of its
+//! figures and a live error plot.
+
+use egui_plot::{Line, Plot, PlotPoints};
+
+use crate::compare::{CompareConfig, CompareMethod, CompareScenario, DEFAULT_VIEWS, Parameter};
+use crate::lab::Lab;
+
+/// The "Side by side" section of the left panel (IK engine only).
+pub fn controls(ui: &mut egui::Ui, lab: &mut Lab) {
+    egui::CollapsingHeader::new("Side by side")
+        .default_open(false)
+        .show(ui, |ui| {
+            let mut on = lab.comparison().is_some();
+            if ui
+                .checkbox(&mut on, "Compare methods")
+                .on_hover_text(
+                    "Run 2 or 4 IK methods side by side on the same figure and targets, \
+                     in lock step, with one shared camera",
+                )
+                .changed()
+            {
+                if on {
+                    let config =
+                        CompareConfig::new(&DEFAULT_VIEWS, CompareScenario::Script, &base(lab));
+                    if let Err(error) = lab.start_compare(config) {
+                        lab.report_error(error);
+                    }
+                } else {
+                    lab.stop_compare();
+                }
+            }
+            let Some(current) = lab.comparison().map(|c| c.config.clone()) else {
+                return;
+            };
+            let mut config = current.clone();
+            ui.horizontal(|ui| {
+                for (count, tip) in [
+                    (2, "Two views, left and right"),
+                    (4, "Four views in a 2 × 2 grid"),
+                ] {
+                    if ui
+                        .radio(config.views.len() == count, format!("{count} views"))
+                        .on_hover_text(tip)
+                        .clicked()
+                    {
+                        resize(&mut config, count, &base(lab));
+                    }
+                }
+            });
+            for i in 0..config.views.len() {
+                let mut method = config.views[i];
+                egui::ComboBox::from_label(format!("View {}", i + 1))
+                    .selected_text(method.label())
+                    .show_ui(ui, |ui| {
+                        for m in CompareMethod::ALL {
+                            ui.selectable_value(&mut method, m, m.label())
+                                .on_hover_text(m.behaviour());
+                        }
+                    })
+                    .response
+                    .on_hover_text("The IK method this view runs");
+                if method != config.views[i] {
+                    config.views[i] = method;
+                    config.options[i] = method.options(&base(lab));
+                }
+            }
+            egui::ComboBox::from_label("Scenario")
+                .selected_text(scenario_label(config.scenario))
+                .show_ui(ui, |ui| {
+                    for s in [CompareScenario::Script, CompareScenario::Singularity] {
+                        ui.selectable_value(&mut config.scenario, s, scenario_label(s));
+                    }
+                })
+                .response
+                .on_hover_text(
+                    "Where the targets go: the thesis script of the chosen motion, or every \
+                     limb pulled to its full reach and beyond (a singular, stretched pose)",
+                );
+            if config != current
+                && let Err(error) = lab.start_compare(config)
+            {
+                lab.report_error(error);
+            }
+        });
+}
+
+fn scenario_label(scenario: CompareScenario) -> &'static str {
+    match scenario {
+        CompareScenario::Script => "Thesis script",
+        CompareScenario::Singularity => "Singularity (stretched limbs)",
+    }
+}
+
+/// The lab's IK options, the defaults of a new view.
+fn base(lab: &Lab) -> gaitlab_core::ik::IkOptions {
+    let mut options = lab.settings.ik.clone();
+    options.method = lab.settings.method;
+    options
+}
+
+/// Keeps the first `count` views, or adds the default views not yet shown.
+fn resize(config: &mut CompareConfig, count: usize, base: &gaitlab_core::ik::IkOptions) {
+    config.views.truncate(count);
+    config.options.truncate(count);
+    for m in DEFAULT_VIEWS.into_iter().chain(CompareMethod::ALL) {
+        if config.views.len() >= count {
+            break;
+        }
+        if !config.views.contains(&m) {
+            config.views.push(m);
+            config.options.push(m.options(base));
+        }
+    }
+}
+
+/// One card per view, in columns: formula, behaviour, parameter sliders,
+/// figures and the live error plot.
+pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
+    let Some(compare) = lab.comparison_mut() else {
+        return;
+    };
+    let count = compare.views().len();
+    let mut edits = Vec::new();
+    egui::ScrollArea::vertical().show(ui, |ui| {
+        ui.columns(count.max(1), |columns| {
+            for (i, (ui, view)) in columns.iter_mut().zip(compare.views()).enumerate() {
+                let method = view.method;
+                ui.strong(format!("{} · {}", i + 1, method.label()))
+                    .on_hover_text(method.behaviour());
+                ui.monospace(method.formula())
+                    .on_hover_text("The update rule of one IK iteration");
+                ui.small(method.behaviour());
+                let mut options = compare.config.options[i].clone();
+                let mut changed = false;
+                for &parameter in method.parameters() {
+                    changed |= slider(ui, parameter, &mut options);
+                }
+                if changed {
+                    edits.push((i, options));
+                }
+                let m = view.metrics();
+                egui::Grid::new(("compare-table", i))
+                    .num_columns(2)
+                    .striped(true)
+                    .show(ui, |ui| {
+                        let rows = [
+                            ("mean error", format!("{:.2} mm", view.mean_error_m() * 1e3), "Mean effector-to-target distance since the reset, averaged over the effectors"),
+                            ("max error", format!("{:.2} mm", view.max_error_m() * 1e3), "Largest effector-to-target distance since the reset"),
+                            ("µs / iteration", format!("{:.1}", m.us_per_iteration()), "Wall time per IK iteration (forward kinematics, Jacobian, solve)"),
+                            ("jitter", format!("{:.2e} rad", m.jitter_rad()), "Joint-velocity jitter: mean |Δ²θ| over the joints and the last 4 s, radians per frame²"),
+                            ("limit hits", m.limit_hits.to_string(), "Times a joint ran into one of its limits since the reset"),
+                        ];
+                        for (name, value, tip) in rows {
+                            ui.label(name).on_hover_text(tip);
+                            ui.label(value).on_hover_text(tip);
+                            ui.end_row();
+                        }
+                    });
+                let points: Vec<[f64; 2]> = view
+                    .history
+                    .points(0)
+                    .map(|[t, v]| [t, v * 1e3])
+                    .collect();
+                Plot::new(("compare-plot", i))
+                    .height(90.0)
+                    .allow_drag(false)
+                    .allow_zoom(false)
+                    .allow_scroll(false)
+                    .include_y(0.0)
+                    .include_y(1.0)
+                    .show(ui, |plot| {
+                        plot.line(Line::new("max error (mm)", PlotPoints::from(points)));
+                    })
+                    .response
+                    .on_hover_text("Largest effector error per frame, mm");
+            }
+        });
+    });
+    for (i, options) in edits {
+        compare.set_options(i, options);
+    }
+}
+
+/// A slider for `parameter` of `options`; whether it changed.
+fn slider(
+    ui: &mut egui::Ui,
+    parameter: Parameter,
+    options: &mut gaitlab_core::ik::IkOptions,
+) -> bool {
+    let (lo, hi) = parameter.range();
+    let slot = parameter.slot(options);
+    let (text, tip, degrees, logarithmic) = match parameter {
+        Parameter::Lambda => (
+            "λ (m)",
+            "DLS damping λ: larger is smoother but less accurate",
+            false,
+            true,
+        ),
+        Parameter::GammaMax => (
+            "γmax (°)",
+            "SDLS: largest change of any joint per iteration",
+            true,
+            false,
+        ),
+        Parameter::MaxStep => (
+            "α clamp (°)",
+            "Largest joint change per iteration (max step)",
+            true,
+            false,
+        ),
+        Parameter::RankTolerance => (
+            "rank tol.",
+            "Singular values below this fraction of σmax count as zero",
+            false,
+            true,
+        ),
+        Parameter::NullSpaceGain => (
+            "null-space k",
+            "Gain of the pull toward the center angles (PODA eq. 6)",
+            false,
+            false,
+        ),
+    };
+    let mut value = if degrees { slot.to_degrees() } else { *slot };
+    let range = if degrees {
+        lo.to_degrees()..=hi.to_degrees()
+    } else {
+        lo..=hi
+    };
+    let changed = ui
+        .add(
+            egui::Slider::new(&mut value, range)
+                .logarithmic(logarithmic)
+                .text(text),
+        )
+        .on_hover_text(tip)
+        .changed();
+    if changed {
+        *slot = if degrees { value.to_radians() } else { value }.clamp(lo, hi);
+    }
+    changed
+}

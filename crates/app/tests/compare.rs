@@ -1,0 +1,186 @@
+//! The side-by-side IK comparison: the singularity scenario ranks the
+//! pseudoinverse's jitter worst (She 2006 §4.4: pinv is unstable near
+//! singular configurations, DLS and SDLS are not), the views run in lock step,
+//! and the `compare` command and state round-trip.
+
+use gaitlab_app::{Lab, Settings};
+use serde_json::Value;
+
+fn lab(preset: &str) -> Lab {
+    let mut lab = Lab::new(Settings::default());
+    if let Err(error) = lab.set_preset(preset) {
+        panic!("{error}");
+    }
+    lab
+}
+
+fn state(lab: &Lab) -> Value {
+    match serde_json::from_str(&lab.state_json()) {
+        Ok(value) => value,
+        Err(error) => panic!("{error}"),
+    }
+}
+
+/// Runs `seconds` of the comparison in whole frames and returns the state's
+/// metrics as (method, jitter_rad, mean_error_m).
+fn run(lab: &mut Lab, seconds: f64) -> Vec<(String, f64, f64, u64)> {
+    let frames = (seconds / lab.frame_seconds()).round() as usize;
+    lab.set_paused(true);
+    for _ in 0..frames {
+        lab.single_step();
+        lab.advance(0.0);
+    }
+    let state = state(lab);
+    let Some(metrics) = state["compare"]["metrics"].as_array() else {
+        panic!("no metrics in {state}")
+    };
+    metrics
+        .iter()
+        .map(|m| {
+            (
+                m["method"].as_str().unwrap_or("?").to_owned(),
+                m["jitter_rad"].as_f64().unwrap_or(f64::NAN),
+                m["mean_error_m"].as_f64().unwrap_or(f64::NAN),
+                m["limit_hits"].as_u64().unwrap_or(0),
+            )
+        })
+        .collect()
+}
+
+/// Asserts pinv's jitter is at least `factor` times every other view's.
+fn assert_pinv_worst(preset: &str, views: &str, factor: f64) {
+    let mut lab = lab(preset);
+    let command = format!(r#"{{"compare":{{"views":{views},"scenario":"singularity"}}}}"#);
+    if let Err(error) = lab.command(&command) {
+        panic!("{error}");
+    }
+    let figures = run(&mut lab, 12.0);
+    for (method, jitter, error, hits) in &figures {
+        println!(
+            "{preset:>13} singularity {method:>9}: jitter {jitter:.3e} rad/frame², mean error {:.1} mm, limit hits {hits}",
+            error * 1e3
+        );
+    }
+    let pinv = figures
+        .iter()
+        .find(|f| f.0 == "pinv")
+        .map_or(f64::NAN, |f| f.1);
+    for (method, jitter, _, _) in &figures {
+        if method != "pinv" {
+            assert!(
+                pinv > factor * jitter,
+                "{preset}: pinv jitter {pinv:e} is not clearly worst ({method}: {jitter:e})"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_singularity_scenario_ranks_pinv_jitter_worst_on_the_human() {
+    // The human's legs have few joints and bent-knee limits: the margin is smaller.
+    assert_pinv_worst("human", r#"["transpose","pinv","dls","sdls"]"#, 1.5);
+    assert_pinv_worst("human", r#"["pinv","ccd"]"#, 1.5);
+}
+
+#[test]
+fn the_singularity_scenario_ranks_pinv_jitter_worst_on_the_quadruped() {
+    assert_pinv_worst("ik-quadruped", r#"["transpose","pinv","dls","sdls"]"#, 20.0);
+    assert_pinv_worst("ik-quadruped", r#"["pinv","ccd","dls-ns","sdls"]"#, 5.0);
+}
+
+#[test]
+fn the_views_advance_in_lock_step_with_the_same_targets() {
+    let mut lab = lab("ik-quadruped");
+    if let Err(error) = lab.command(r#"{"compare":{"views":["transpose","pinv","dls","ccd"]}}"#) {
+        panic!("{error}");
+    }
+    lab.set_paused(true);
+    for _ in 0..37 {
+        lab.single_step();
+        lab.advance(0.0);
+    }
+    assert_eq!(lab.frame(), 37);
+    let Some(compare) = lab.comparison() else {
+        panic!("no comparison")
+    };
+    let views = compare.views();
+    assert_eq!(views.len(), 4);
+    use gaitlab_core::driver::Driver;
+    let first = views[0].driver();
+    for view in views {
+        assert_eq!(view.driver().time(), first.time());
+        assert_eq!(view.metrics().iterations, views[0].metrics().iterations);
+        let (Some(a), Some(b)) = (view.driver().targets(), first.targets()) else {
+            panic!("targets")
+        };
+        assert_eq!(a.position, b.position, "{}", view.method.name());
+    }
+    assert!((first.time() - 37.0 * lab.frame_seconds()).abs() < 1e-9);
+    // Different methods give different poses from the same targets.
+    assert_ne!(views[0].driver().pose().joints, views[3].driver().pose().joints);
+}
+
+#[test]
+fn the_compare_state_restores_through_the_command_and_bad_input_is_named() {
+    let mut lab = lab("human");
+    let command = r#"{"compare":{"views":["sdls","dls-ns"],"scenario":"singularity","options":[{"gamma_max":0.5},{"lambda":0.2,"null_space_gain":0.4}]}}"#;
+    if let Err(error) = lab.command(command) {
+        panic!("{error}");
+    }
+    let saved = state(&lab)["compare"].clone();
+    assert_eq!(saved["views"], serde_json::json!(["sdls", "dls-ns"]));
+    assert_eq!(saved["options"][0]["gamma_max"], 0.5);
+    assert_eq!(saved["options"][1]["lambda"], 0.2);
+    assert_eq!(saved["metrics"].as_array().map(Vec::len), Some(2));
+    assert_eq!(state(&lab)["methods"], serde_json::json!(["sdls", "dls-ns"]));
+
+    // A fresh lab given the state's object verbatim has the same configuration.
+    let mut other = self::lab("human");
+    let replay = serde_json::json!({ "compare": saved }).to_string();
+    if let Err(error) = other.command(&replay) {
+        panic!("{error}");
+    }
+    let restored = state(&other)["compare"].clone();
+    for key in ["views", "scenario", "options"] {
+        assert_eq!(restored[key], saved[key], "{key}");
+    }
+
+    for (bad, field) in [
+        (r#"{"compare":{"views":["pinv"]}}"#, "compare.views: expected 2 or 4"),
+        (r#"{"compare":{"views":["pinv","magic"]}}"#, "compare.views[1]"),
+        (r#"{"compare":{"scenario":"moon"}}"#, "compare.scenario"),
+        (r#"{"compare":{"options":[{"lambda":-1},{}],"views":["dls","pinv"]}}"#, "compare.options[0].lambda"),
+        (r#"{"compare":{"colour":1}}"#, "compare.colour"),
+        (r#"{"compare":3}"#, "compare: expected an object"),
+    ] {
+        match other.command(bad) {
+            Ok(()) => panic!("{bad} was accepted"),
+            Err(error) => assert!(error.starts_with(field), "{bad}: {error}"),
+        }
+    }
+    // Still the restored comparison after the bad commands.
+    assert_eq!(state(&other)["compare"]["views"], saved["views"]);
+    if let Err(error) = other.command(r#"{"compare":false}"#) {
+        panic!("{error}");
+    }
+    assert!(state(&other)["compare"].is_null());
+}
+
+#[test]
+fn engines_without_ik_methods_refuse_to_compare() {
+    let mut lab = lab("poda-quadruped");
+    match lab.command(r#"{"compare":{"views":["pinv","dls"]}}"#) {
+        Ok(()) => panic!("poda compared"),
+        Err(error) => assert!(error.contains("engine poda"), "{error}"),
+    }
+    // Leaving the ik engine while comparing ends the comparison with a message.
+    let mut lab = self::lab("human");
+    if let Err(error) = lab.command(r#"{"compare":{"views":["pinv","dls"]}}"#) {
+        panic!("{error}");
+    }
+    if let Err(error) = lab.command(r#"{"engine":"physics"}"#) {
+        panic!("{error}");
+    }
+    assert!(lab.comparison().is_none());
+    assert!(lab.last_error().is_some_and(|e| e.starts_with("compare:")));
+}
