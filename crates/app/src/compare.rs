@@ -111,17 +111,18 @@ impl CompareMethod {
         }
     }
 
-    /// The method's update rule in Unicode text.
+    /// The method's update rule in Unicode text (`^T` transpose, `_i` subscript).
     #[must_use]
     pub fn formula(self) -> &'static str {
+        // Only glyphs egui's bundled monospace font (Hack) has: no ᵀ or ᵢ.
         match self {
-            CompareMethod::Transpose => "Δθ = α Jᵀe,  α = ⟨e, JJᵀe⟩ / ‖JJᵀe‖²",
-            CompareMethod::Pinv => "Δθ = J⁺e = Σᵢ σᵢ⁻¹ vᵢ uᵢᵀ e",
-            CompareMethod::Dls => "Δθ = Jᵀ(JJᵀ + λ²I)⁻¹ e",
-            CompareMethod::Sdls => "Δθ = ClampMaxAbs(Σᵢ ClampMaxAbs(σᵢ⁻¹ αᵢ vᵢ, γᵢ), γmax)",
-            CompareMethod::PinvCentering => "Δθ = J⁺e + (I − J⁺J)(−k∇H),  H = Σ αⱼ(θⱼ − θcⱼ)²",
-            CompareMethod::DlsCentering => "Δθ = Σᵢ σᵢ/(σᵢ² + λ²) vᵢ uᵢᵀ e + (I − J⁺J)(−k∇H)",
-            CompareMethod::Ccd => "θⱼ += atan2(Σ a·(u × v), Σ u·v)  for j = leaf … root",
+            CompareMethod::Transpose => "Δθ = α J^T e,  α = ⟨e, JJ^T e⟩ / ‖JJ^T e‖²",
+            CompareMethod::Pinv => "Δθ = J⁺e = Σ σ_i⁻¹ v_i u_i^T e",
+            CompareMethod::Dls => "Δθ = J^T (JJ^T + λ²I)⁻¹ e",
+            CompareMethod::Sdls => "Δθ = ClampMaxAbs(Σ ClampMaxAbs(σ_i⁻¹ α_i v_i, γ_i), γmax)",
+            CompareMethod::PinvCentering => "Δθ = J⁺e + (I − J⁺J)(−k∇H),  H = Σ α_j (θ_j − θc_j)²",
+            CompareMethod::DlsCentering => "Δθ = Σ σ_i/(σ_i² + λ²) v_i u_i^T e + (I − J⁺J)(−k∇H)",
+            CompareMethod::Ccd => "θ_j += atan2(Σ a·(u × v), Σ u·v),  j = leaf … root",
         }
     }
 

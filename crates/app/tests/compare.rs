@@ -117,7 +117,10 @@ fn the_views_advance_in_lock_step_with_the_same_targets() {
     }
     assert!((first.time() - 37.0 * lab.frame_seconds()).abs() < 1e-9);
     // Different methods give different poses from the same targets.
-    assert_ne!(views[0].driver().pose().joints, views[3].driver().pose().joints);
+    assert_ne!(
+        views[0].driver().pose().joints,
+        views[3].driver().pose().joints
+    );
 }
 
 #[test]
@@ -132,7 +135,10 @@ fn the_compare_state_restores_through_the_command_and_bad_input_is_named() {
     assert_eq!(saved["options"][0]["gamma_max"], 0.5);
     assert_eq!(saved["options"][1]["lambda"], 0.2);
     assert_eq!(saved["metrics"].as_array().map(Vec::len), Some(2));
-    assert_eq!(state(&lab)["methods"], serde_json::json!(["sdls", "dls-ns"]));
+    assert_eq!(
+        state(&lab)["methods"],
+        serde_json::json!(["sdls", "dls-ns"])
+    );
 
     // A fresh lab given the state's object verbatim has the same configuration.
     let mut other = self::lab("human");
@@ -146,10 +152,19 @@ fn the_compare_state_restores_through_the_command_and_bad_input_is_named() {
     }
 
     for (bad, field) in [
-        (r#"{"compare":{"views":["pinv"]}}"#, "compare.views: expected 2 or 4"),
-        (r#"{"compare":{"views":["pinv","magic"]}}"#, "compare.views[1]"),
+        (
+            r#"{"compare":{"views":["pinv"]}}"#,
+            "compare.views: expected 2 or 4",
+        ),
+        (
+            r#"{"compare":{"views":["pinv","magic"]}}"#,
+            "compare.views[1]",
+        ),
         (r#"{"compare":{"scenario":"moon"}}"#, "compare.scenario"),
-        (r#"{"compare":{"options":[{"lambda":-1},{}],"views":["dls","pinv"]}}"#, "compare.options[0].lambda"),
+        (
+            r#"{"compare":{"options":[{"lambda":-1},{}],"views":["dls","pinv"]}}"#,
+            "compare.options[0].lambda",
+        ),
         (r#"{"compare":{"colour":1}}"#, "compare.colour"),
         (r#"{"compare":3}"#, "compare: expected an object"),
     ] {

@@ -180,3 +180,49 @@ fn the_engine_selector_switches_to_poda() {
     assert_eq!(harness.state().creature().name, "poda-biped");
     assert!(harness.state().driver().poda().is_some());
 }
+
+#[test]
+fn the_side_by_side_controls_change_the_comparison() {
+    let mut harness = harness();
+    harness.run();
+    harness.get_by_label("Side by side").click();
+    harness.run();
+    harness.get_by_label("Compare methods").click();
+    harness.run();
+    let views = |h: &Harness<'static, Lab>| -> Vec<&'static str> {
+        h.state()
+            .comparison()
+            .map(|c| c.config.views.iter().map(|m| m.name()).collect())
+            .unwrap_or_default()
+    };
+    assert_eq!(views(&harness), ["transpose", "pinv", "dls", "sdls"]);
+    // Four method cards with their formulas and sliders.
+    harness.get_by_label("Δθ = J^T (JJ^T + λ²I)⁻¹ e");
+    assert!(harness.query_all_by_label("jitter").count() == 4);
+    harness.get_by_label("2 views").click();
+    harness.run();
+    assert_eq!(views(&harness), ["transpose", "pinv"]);
+    harness.get_by_label("4 views").click();
+    harness.run();
+    assert_eq!(views(&harness), ["transpose", "pinv", "dls", "sdls"]);
+    // View 1's method: open its combo box and pick CCD.
+    harness.get_by_label("View 1").click();
+    harness.run();
+    harness.get_by_label("Cyclic coordinate descent").click();
+    harness.run();
+    assert_eq!(views(&harness), ["ccd", "pinv", "dls", "sdls"]);
+    harness.get_by_label("Scenario").click();
+    harness.run();
+    harness
+        .get_by_label("Singularity (stretched limbs)")
+        .click();
+    harness.run();
+    let scenario = harness.state().comparison().map(|c| c.config.scenario);
+    assert_eq!(
+        scenario,
+        Some(gaitlab_app::compare::CompareScenario::Singularity)
+    );
+    harness.get_by_label("Compare methods").click();
+    harness.run();
+    assert!(harness.state().comparison().is_none());
+}
