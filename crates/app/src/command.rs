@@ -65,11 +65,11 @@ impl Lab {
     /// `phases`, `step_height_m`, `transfer_keys` (PODA gait shape),
     /// `center` (`{"joint", "center", "gain"}`: a PODA leg joint's eq. 6 center),
     /// `path` (`{"kind", "points": [[x, z], …], "closed"}`: the PODA body path),
-    /// `mode`, `method`, `paused` (or `pause`),
+    /// `mode`, `method`, `compare` (an object of `views`, `scenario`,
+    /// `options`, or `false`: the side-by-side IK comparison, see
+    /// [`crate::compare`]), `paused` (or `pause`),
     /// `reset`, `step`, `lambda`, `gamma_max`, `max_step`, `null_space_gain`,
     /// `enforce_limits`, `heading_deg`, `plots`, `plot_joints` (joint names),
-    /// `compare` (an object of `views`, `scenario`, `options`, or `false`: the
-    /// side-by-side IK comparison, see [`crate::compare`]),
     /// `record` (motion take on/off), `save` (`"bvh"` or `"csv"`: download the
     /// take), `video_size`, `record_video` (on/off), `views` (an object of view flags).
     /// Keys apply in that order; the first bad key stops the command with an
@@ -394,6 +394,7 @@ impl Lab {
             "time_s": self.driver.time(),
             "fps": self.fps,
             "sim_us_per_frame": self.sim_us_per_frame,
+            "view_rect_px": self.view_rect_px,
             "joints": skeleton.joint_count(),
             "views": [{ "method": self.settings.method.name(), "effectors": effectors }],
             "view_options": self.settings.view,
