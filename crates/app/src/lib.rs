@@ -6,12 +6,16 @@ pub mod render;
 pub mod view;
 
 pub mod bench;
+pub mod camera_state;
 pub mod command;
+pub mod editor;
 pub mod history;
 pub mod lab;
 pub mod lab_driver;
 pub mod link;
+pub mod link_state;
 mod panels;
+mod panels_editor;
 mod panels_gait;
 mod panels_path;
 mod panels_physics;
@@ -22,6 +26,8 @@ mod ui;
 mod web;
 #[cfg(target_arch = "wasm32")]
 mod web_download;
+#[cfg(target_arch = "wasm32")]
+mod web_file;
 #[cfg(target_arch = "wasm32")]
 mod web_video;
 
