@@ -46,6 +46,7 @@ pub const LINK_KEYS: &[(&str, &str)] = &[
     ("views", "/view_options"),
     ("camera", "/camera"),
     ("paused", "/paused"),
+    ("editor_open", "/editor/open"),
 ];
 
 /// The first non-null value `state` holds for command `key`.
