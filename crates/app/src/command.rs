@@ -71,7 +71,11 @@ impl Lab {
     /// `reset`, `step`, `lambda`, `gamma_max`, `max_step`, `null_space_gain`,
     /// `enforce_limits`, `heading_deg`, `plots`, `plot_joints` (joint names),
     /// `record` (motion take on/off), `save` (`"bvh"` or `"csv"`: download the
-    /// take), `video_size`, `record_video` (on/off), `views` (an object of view flags).
+    /// take), `video_size`, `record_video` (on/off), `views` (an object of view flags),
+    /// `camera` (see [`crate::camera_state`]), `editor_open`, `editor_text`,
+    /// `editor_revert`, `editor_apply` (the preset editor; a bad preset is an
+    /// error and the creature stays), `download_preset`; `gains` (an object
+    /// `{name: value}`) goes with `gain`.
     /// Keys apply in that order; the first bad key stops the command with an
     /// error naming it, and what came before it stays applied.
     ///
@@ -88,7 +92,7 @@ impl Lab {
             serde_json::from_str(json).map_err(|e| format!("command is not JSON: {e}"))?;
         let object: &Map<String, Value> =
             value.as_object().ok_or("command must be a JSON object")?;
-        const KNOWN: [&str; 35] = [
+        const KNOWN: &[&str] = &[
             "compare",
             "hop_height_m",
             "gain",
@@ -124,11 +128,16 @@ impl Lab {
             "save",
             "record_video",
             "video_size",
+            "views",
+            "camera",
+            "gains",
+            "editor_open",
+            "editor_text",
+            "editor_apply",
+            "editor_revert",
+            "download_preset",
         ];
-        if let Some(unknown) = object
-            .keys()
-            .find(|k| !KNOWN.contains(&k.as_str()) && k.as_str() != "views")
-        {
+        if let Some(unknown) = object.keys().find(|k| !KNOWN.contains(&k.as_str())) {
             return Err(format!("{unknown}: unknown command"));
         }
         let get = |key: &str| object.get(key);
@@ -169,6 +178,17 @@ impl Lab {
                 .and_then(Value::as_f64)
                 .ok_or("gain.value: expected a number")?;
             self.set_gain(name, value)?;
+        }
+        if let Some(v) = get("gains") {
+            let gains = v
+                .as_object()
+                .ok_or("gains: expected an object of gain values by name")?;
+            for (name, value) in gains {
+                let value = value
+                    .as_f64()
+                    .ok_or_else(|| format!("gains.{name}: expected a number"))?;
+                self.set_gain(name, value)?;
+            }
         }
         if let Some(v) = get("phases") {
             let phases = v.as_array().ok_or("phases: expected an array of numbers")?;
@@ -302,6 +322,30 @@ impl Lab {
             apply_views(&mut views, v)?;
             self.settings.view = views;
         }
+        if let Some(v) = get("camera") {
+            crate::camera_state::apply_camera(&mut self.camera, &mut self.settings.view, v)?;
+        }
+        if let Some(v) = get("editor_open") {
+            self.set_editor_open(flag("editor_open", v)?);
+        }
+        if let Some(v) = get("editor_text") {
+            self.set_editor_text(text("editor_text", v)?);
+        }
+        if let Some(v) = get("editor_revert")
+            && flag("editor_revert", v)?
+        {
+            self.editor_revert();
+        }
+        if let Some(v) = get("editor_apply")
+            && flag("editor_apply", v)?
+        {
+            self.editor_apply()?;
+        }
+        if let Some(v) = get("download_preset")
+            && flag("download_preset", v)?
+        {
+            self.download_preset();
+        }
         Ok(())
     }
 
@@ -358,6 +402,11 @@ impl Lab {
                     "stance_duration_s": s.stance_duration_s,
                     "friction_needed_max": s.friction_needed_max,
                     "steps": driver.sim().steps,
+                    "gains": driver
+                        .gains()
+                        .iter()
+                        .map(|g| (g.name.to_owned(), Value::from(g.value)))
+                        .collect::<Map<String, Value>>(),
                 })
             }),
             "poda": self.driver.poda().map(|driver| {
@@ -398,13 +447,22 @@ impl Lab {
             "joints": skeleton.joint_count(),
             "views": [{ "method": self.settings.method.name(), "effectors": effectors }],
             "view_options": self.settings.view,
+            "ik": {
+                "lambda": self.settings.ik.lambda,
+                "gamma_max": self.settings.ik.gamma_max,
+                "max_step": self.settings.ik.max_step,
+                "null_space_gain": self.settings.ik.null_space_gain,
+                "enforce_limits": self.settings.ik.enforce_limits,
+            },
+            "plots": self.settings.plots,
+            "editor": {
+                "open": self.editor.open,
+                "dirty": self.editor.dirty(),
+                "error": self.editor.error,
+            },
             "heading_deg": self.settings.heading_deg,
             "backend": self.backend,
-            "camera": {
-                "yaw_deg": f64::from(self.camera.yaw.to_degrees()),
-                "pitch_deg": f64::from(self.camera.pitch.to_degrees()),
-                "distance_m": f64::from(self.camera.distance),
-            },
+            "camera": crate::camera_state::camera_json(&self.camera, &self.settings.view),
             "plot_joints": self
                 .plot_joints
                 .iter()

@@ -112,6 +112,15 @@ pub struct Lab {
     last_planted: Vec<glam::DVec3>,
     /// The side-by-side IK comparison, when one runs (it replaces the single view).
     pub(crate) compare: Option<crate::compare::Comparison>,
+    /// The preset editor.
+    pub(crate) editor: crate::editor::PresetEditor,
+    /// The page's address without query or fragment (the web glue sets it;
+    /// empty natively), the base of [`Lab::share_link`].
+    pub page_url: String,
+    /// The link "Copy link" made last, shown for copying by hand.
+    pub(crate) shown_link: Option<String>,
+    /// Set when the person asked to pick a preset file (the web glue opens the picker).
+    pub(crate) file_pick_requested: bool,
 }
 
 /// An edit of the PODA gait's shape (see [`Lab::edit_gait_shape`]).
@@ -260,6 +269,10 @@ impl Lab {
             footprints: std::collections::VecDeque::with_capacity(MAX_FOOTPRINTS),
             last_planted: Vec::new(),
             compare: None,
+            editor: crate::editor::PresetEditor::default(),
+            page_url: String::new(),
+            shown_link: None,
+            file_pick_requested: false,
         };
         lab.after_reset();
         lab
@@ -343,6 +356,7 @@ impl Lab {
         self.creature = creature;
         self.driver = driver;
         self.custom_preset = custom;
+        self.editor.preset_changed();
         // A take belongs to its skeleton.
         self.take = None;
         self.recording = false;

@@ -6,15 +6,19 @@ pub mod render;
 pub mod view;
 
 pub mod bench;
+pub mod camera_state;
 pub mod command;
 pub mod compare;
+pub mod editor;
 pub mod history;
 pub mod lab;
 mod lab_compare;
 pub mod lab_driver;
 pub mod link;
+pub mod link_state;
 mod panels;
 mod panels_compare;
+mod panels_editor;
 mod panels_gait;
 mod panels_path;
 mod panels_physics;
@@ -25,6 +29,8 @@ mod ui;
 mod web;
 #[cfg(target_arch = "wasm32")]
 mod web_download;
+#[cfg(target_arch = "wasm32")]
+mod web_file;
 #[cfg(target_arch = "wasm32")]
 mod web_video;
 

@@ -7,7 +7,7 @@ use egui_plot::{Legend, Line, Plot, PlotPoints};
 use crate::history::History;
 use crate::lab::{Lab, MAX_PLOT_JOINTS};
 use crate::render::viewport;
-use crate::{panels, panels_compare, panels_gait, panels_path, panels_physics};
+use crate::{panels, panels_compare, panels_editor, panels_gait, panels_path, panels_physics};
 
 impl Lab {
     /// Shows the whole lab in `ui` and advances the animation by the frame's time.
@@ -15,6 +15,8 @@ impl Lab {
         let dt = ui.input(|i| f64::from(i.stable_dt));
         self.note_frame_time(dt);
         self.keyboard(ui);
+        #[cfg(not(target_arch = "wasm32"))]
+        self.take_dropped_file(ui);
         self.advance(dt);
 
         egui::Panel::left("gaitlab-controls")
@@ -25,6 +27,7 @@ impl Lab {
                     ui.heading("gaitlab");
                     panels::engine(ui, self);
                     panels::preset(ui, self);
+                    panels_editor::share(ui, self);
                     panels::buttons(ui, self);
                     ui.separator();
                     if self.driver.physics().is_some() {
@@ -57,6 +60,7 @@ impl Lab {
                 .default_size(170.0)
                 .show(ui, |ui| self.plots(ui));
         }
+        panels_editor::editor_window(&ui.ctx().clone(), self);
         egui::CentralPanel::default().show(ui, |ui| {
             if let Some(error) = self.last_error.clone() {
                 ui.horizontal(|ui| {

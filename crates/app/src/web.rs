@@ -1,8 +1,10 @@
 //! The web glue (wasm32 only): starts eframe on a canvas, publishes
 //! `window.gaitlab.state()` / `window.gaitlab.command(json)` (DESIGN.md
-//! "Browser"), reads the link on load, keeps the URL in step with
-//! `history.replaceState` (and `pushState` for preset changes, so Back works),
-//! persists the settings, and signals the page once the first frame is drawn.
+//! "Browser") and `window.gaitlab.link()` (the full-state link "Copy link"
+//! copies, see [`crate::link_state`]), reads the link on load, keeps the URL in
+//! step with `history.replaceState` (and `pushState` for preset changes, so
+//! Back works), feeds picked and dropped preset files to the lab, persists the
+//! settings, and signals the page once the first frame is drawn.
 
 use std::cell::Cell;
 use std::rc::Rc;
@@ -14,6 +16,7 @@ use crate::lab::Lab;
 use crate::link;
 use crate::settings::Settings;
 use crate::web_download::offer_text;
+use crate::web_file::{self, Inbox};
 use crate::web_video::VideoRecorder;
 
 /// Depth buffer bits requested from eframe (the 3-D view's pass matches it).
@@ -69,6 +72,10 @@ struct WebApp {
     canvas: web_sys::HtmlCanvasElement,
     /// The video recording in progress, if any.
     video: Option<VideoRecorder>,
+    /// Preset files read and waiting to load.
+    files: Inbox,
+    /// The hidden file input "Load file…" clicks.
+    file_input: Option<web_sys::HtmlInputElement>,
 }
 
 impl WebApp {
@@ -95,6 +102,21 @@ impl WebApp {
         let mut lab = Lab::new(settings);
         lab.set_clock(Box::new(now_ms));
         lab.backend = backend;
+        if let Some(location) = window().map(|w| w.location()) {
+            lab.page_url = format!(
+                "{}{}",
+                location.origin().unwrap_or_default(),
+                location.pathname().unwrap_or_default()
+            );
+        }
+        let files = Inbox::default();
+        let file_input = match web_file::install_input(&files, &cc.egui_ctx) {
+            Ok(input) => Some(input),
+            Err(error) => {
+                lab.report_error(format!("file picker: {error:?}"));
+                None
+            }
+        };
         let mut app = Self {
             lab,
             egui_ctx: cc.egui_ctx.clone(),
@@ -102,48 +124,44 @@ impl WebApp {
             url_changed,
             canvas,
             video: None,
+            files,
+            file_input,
         };
         app.apply_url();
         app
     }
 
-    /// Applies the page's `?query` and `#p=` link; a bad link leaves a message
-    /// and the defaults.
+    /// Applies the page's `?query` and `#p=` link ([`Lab::open_link`]); a bad
+    /// link leaves a message and the default preset.
     fn apply_url(&mut self) {
         let Some(location) = window().map(|w| w.location()) else {
             return;
         };
         let query = location.search().unwrap_or_default();
         let fragment = location.hash().unwrap_or_default();
-        let request = link::parse(&query, &fragment);
-        let mut errors = request.errors.clone();
-        if let Some(json) = &request.custom_preset {
-            if let Err(error) = self.lab.set_custom_preset(json) {
-                errors.push(format!("link: {error}"));
-            }
-        } else if let Some(name) = &request.preset
-            && name != &self.lab.creature().name
-            && let Err(error) = self.lab.set_preset(name)
-        {
-            errors.push(format!("link: {error}"));
-            if let Err(error) = self.lab.set_preset(gaitlab_core::preset::DEFAULT_PRESET) {
-                errors.push(error);
-            }
-        }
-        for (key, value) in [("mode", &request.mode), ("method", &request.method)] {
-            if let Some(value) = value {
-                let command = serde_json::json!({ key: value }).to_string();
-                if let Err(error) = self.lab.command(&command) {
-                    errors.push(format!("link: {error}"));
-                }
+        self.lab.open_link(&query, &fragment);
+    }
+
+    /// Loads preset files that were picked or dropped, and opens the picker
+    /// when the person asked for it.
+    fn sync_files(&mut self, ctx: &egui::Context) {
+        web_file::take_dropped(ctx, &self.files);
+        let arrived: Vec<web_file::Arrived> = self.files.borrow_mut().drain(..).collect();
+        for (name, bytes) in arrived {
+            match bytes {
+                // load_preset_file shows its own problems.
+                Ok(bytes) => drop(self.lab.load_preset_file(&name, &bytes)),
+                Err(error) => self.lab.report_error(format!("file {name}: {error}")),
             }
         }
-        if !errors.is_empty() {
-            self.lab.report_error(errors.join("; "));
+        if std::mem::take(&mut self.lab.file_pick_requested) {
+            match &self.file_input {
+                Some(input) => input.click(),
+                None => self
+                    .lab
+                    .report_error("file picker: not available on this page"),
+            }
         }
-        // The link has been applied: don't rewrite it on the first frame.
-        self.lab.link_changed = false;
-        self.lab.preset_changed = false;
     }
 
     /// Mirrors the lab's state in the address bar.
@@ -254,9 +272,10 @@ impl eframe::App for WebApp {
         if self.url_changed.replace(false) {
             self.apply_url();
         }
+        let ctx = ui.ctx().clone();
+        self.sync_files(&ctx);
         self.lab.ui(ui);
         self.deliver_download();
-        let ctx = ui.ctx().clone();
         self.sync_video(&ctx);
         self.update_url();
         self.signal_first_frame();
@@ -271,7 +290,7 @@ impl eframe::App for WebApp {
     }
 }
 
-/// Publishes `window.gaitlab = { state(), command(json), bench(json) }` over the running app.
+/// Publishes `window.gaitlab = { state(), command(json), link(), bench(json) }` over the running app.
 fn publish_api(runner: &Rc<eframe::WebRunner>) -> Result<(), JsValue> {
     let window = window().ok_or("no window")?;
     let api = js_sys::Object::new();
@@ -299,6 +318,11 @@ fn publish_api(runner: &Rc<eframe::WebRunner>) -> Result<(), JsValue> {
             None => "the app is not running".to_owned(),
         }
     });
+    let link_runner = Rc::clone(runner);
+    let link = Closure::<dyn Fn() -> String>::new(move || match link_runner.app_mut::<WebApp>() {
+        Some(app) => app.lab.share_link().unwrap_or_else(|error| error),
+        None => String::new(),
+    });
     // The benchmark runs in the page's main thread and owns its own driver: the
     // running lab is untouched.
     let bench = Closure::<dyn Fn(JsValue) -> String>::new(move |json: JsValue| {
@@ -311,12 +335,14 @@ fn publish_api(runner: &Rc<eframe::WebRunner>) -> Result<(), JsValue> {
     });
     js_sys::Reflect::set(&api, &"state".into(), state.as_ref().unchecked_ref())?;
     js_sys::Reflect::set(&api, &"bench".into(), bench.as_ref().unchecked_ref())?;
+    js_sys::Reflect::set(&api, &"link".into(), link.as_ref().unchecked_ref())?;
     js_sys::Reflect::set(&api, &"command".into(), command.as_ref().unchecked_ref())?;
     js_sys::Reflect::set(&window, &"gaitlab".into(), &api)?;
     // The page lives as long as the app: the closures stay alive with it.
     state.forget();
     command.forget();
     bench.forget();
+    link.forget();
     Ok(())
 }
 

@@ -226,3 +226,65 @@ fn the_side_by_side_controls_change_the_comparison() {
     harness.run();
     assert!(harness.state().comparison().is_none());
 }
+
+#[test]
+fn the_preset_editor_shows_the_json_path_of_a_bad_edit_and_keeps_the_creature() {
+    let mut harness = harness();
+    harness.run();
+    harness.get_by_label("Edit preset…").click();
+    harness.run();
+    assert!(harness.state().editor().open, "the button opens the editor");
+    harness.get_by_label("Preset editor");
+    let good = harness.state().editor().text.clone();
+    // A joint axis of zero length: the core names its JSON path.
+    let bad = good.replacen("\"axis\": [1, 0, 0]", "\"axis\": [0, 0, 0]", 1);
+    assert_ne!(bad, good);
+    harness.state_mut().set_editor_text(&bad);
+    harness.run();
+    harness.get_by_label("edited, not applied");
+    harness.get_by_label("Apply").click();
+    harness.run();
+    let error = harness
+        .state()
+        .editor()
+        .error
+        .clone()
+        .expect("the bad edit is refused");
+    assert!(
+        error.contains("skeleton.joints[0].axis"),
+        "the message names the JSON path: {error}"
+    );
+    let shown = format!("Invalid preset: {error}");
+    harness.get_by_label(&shown);
+    assert_eq!(harness.state().creature().name, "human", "the old creature runs");
+    assert_eq!(harness.state().creature().skeleton.joints()[0].axis.x, 1.0);
+
+    // A good edit (a new name) changes the running creature.
+    let renamed = good.replacen("\"name\": \"human\"", "\"name\": \"human-tall\"", 1);
+    harness.state_mut().set_editor_text(&renamed);
+    harness.run();
+    harness.get_by_label("Apply").click();
+    harness.run();
+    assert!(harness.state().editor().error.is_none());
+    assert_eq!(harness.state().creature().name, "human-tall");
+    assert!(harness.query_by_label(&shown).is_none(), "the message is gone");
+}
+
+#[test]
+fn copy_link_shows_the_link_and_download_preset_queues_the_json() {
+    let mut harness = harness();
+    harness.run();
+    harness.get_by_label("Copy link").click();
+    harness.run();
+    let expected = harness.state().share_link().expect("a link");
+    assert!(expected.starts_with("#p="), "natively the page address is empty");
+    harness.get_by_value(&expected);
+    harness.get_by_label("Download preset").click();
+    harness.run();
+    let download = harness.state_mut().take_download().expect("queued");
+    assert_eq!(download.file_name, "human.json");
+    assert_eq!(
+        download.text,
+        gaitlab_core::preset::bundled_json("human").expect("bundled")
+    );
+}

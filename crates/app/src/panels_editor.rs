@@ -1,0 +1,147 @@
+//! The Share panel and the preset editor window (issue 6 items 2–3): "Copy
+//! link" (the full-state link of [`crate::link_state`], copied and shown for
+//! copying by hand), and a monospace JSON editor of the running preset with
+//! Apply / Revert, file loading and download, its validation message (the
+//! core's `json.path: reason`) under the text.
+
+use crate::lab::Lab;
+
+/// Colour of problem messages.
+const PROBLEM: egui::Color32 = egui::Color32::from_rgb(230, 90, 70);
+
+/// The Share row: Copy link, Edit preset, Load preset file, Download preset.
+pub fn share(ui: &mut egui::Ui, lab: &mut Lab) {
+    ui.horizontal_wrapped(|ui| {
+        if ui
+            .button("Copy link")
+            .on_hover_text(
+                "Copy a link that opens this lab exactly as it is now: preset, engine, \
+                 settings and camera",
+            )
+            .clicked()
+        {
+            match lab.share_link() {
+                Ok(link) => {
+                    ui.ctx().copy_text(link.clone());
+                    lab.shown_link = Some(link);
+                }
+                Err(error) => lab.report_error(error),
+            }
+        }
+        let label = if lab.editor.open {
+            "Close editor"
+        } else {
+            "Edit preset…"
+        };
+        if ui
+            .button(label)
+            .on_hover_text("Edit the creature's preset JSON and apply it")
+            .clicked()
+        {
+            lab.set_editor_open(!lab.editor.open);
+        }
+        if ui
+            .button("Load file…")
+            .on_hover_text("Load a preset JSON file (or drop one onto the page); at most 256 KiB")
+            .clicked()
+        {
+            lab.file_pick_requested = true;
+        }
+        if ui
+            .button("Download preset")
+            .on_hover_text("Save the running preset as a JSON file")
+            .clicked()
+        {
+            lab.download_preset();
+        }
+    });
+    let mut close = false;
+    if let Some(link) = &lab.shown_link {
+        ui.horizontal(|ui| {
+            let mut shown = link.as_str();
+            ui.add(
+                egui::TextEdit::singleline(&mut shown)
+                    .desired_width(ui.available_width() - 30.0)
+                    .font(egui::TextStyle::Monospace),
+            )
+            .on_hover_text("The link, copied to the clipboard; select it to copy it by hand");
+            close = ui
+                .small_button("×")
+                .on_hover_text("Hide the link")
+                .clicked();
+        });
+    }
+    if close {
+        lab.shown_link = None;
+    }
+}
+
+/// The preset editor window, when open.
+pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
+    if !lab.editor.open {
+        return;
+    }
+    lab.editor_sync();
+    let mut open = true;
+    let mut apply = false;
+    let mut revert = false;
+    egui::Window::new("Preset editor")
+        .open(&mut open)
+        .default_size([520.0, 520.0])
+        .vscroll(false)
+        .show(ctx, |ui| {
+            ui.horizontal(|ui| {
+                apply = ui
+                    .button("Apply")
+                    .on_hover_text("Validate the JSON and run it (a bad preset changes nothing)")
+                    .clicked();
+                revert = ui
+                    .add_enabled(lab.editor.dirty(), egui::Button::new("Revert"))
+                    .on_hover_text("Put the running preset's JSON back")
+                    .clicked();
+                if ui
+                    .button("Load file…")
+                    .on_hover_text("Load a preset JSON file (or drop one onto the page)")
+                    .clicked()
+                {
+                    lab.file_pick_requested = true;
+                }
+                if ui
+                    .button("Download")
+                    .on_hover_text("Save the running preset as a JSON file")
+                    .clicked()
+                {
+                    lab.download_preset();
+                }
+                if lab.editor.dirty() {
+                    ui.label("edited, not applied");
+                }
+            });
+            // Room under the text for the validation message.
+            let text_height = (ui.available_height() - 48.0).max(120.0);
+            egui::ScrollArea::vertical()
+                .max_height(text_height)
+                .show(ui, |ui| {
+                    ui.add(
+                        egui::TextEdit::multiline(&mut lab.editor.text)
+                            .code_editor()
+                            .desired_width(f32::INFINITY)
+                            .desired_rows(24),
+                    )
+                    .on_hover_text("The preset JSON (DESIGN.md limits: 256 KiB, 512 joints)");
+                });
+            if let Some(error) = &lab.editor.error {
+                ui.colored_label(PROBLEM, format!("Invalid preset: {error}"));
+            }
+        });
+    if apply {
+        // The message is kept in the editor; the creature stays on a bad edit.
+        let _ = lab.editor_apply();
+    }
+    if revert {
+        lab.editor_revert();
+    }
+    if !open {
+        lab.set_editor_open(false);
+    }
+}

@@ -1,0 +1,186 @@
+// Browser tests for full-state links and preset files (issue 6 items 2–3): "Copy link"
+// (window.gaitlab.link()) opened in a fresh browser context gives the same state() field by field;
+// broken links (flipped bytes, truncated, a 10 MB fragment) leave the app running with a message
+// and the default preset; a preset file set on the file input and one dropped on the canvas load.
+// Run after ./build.sh: `cd tests/e2e && node --test --test-concurrency=1 link.test.mjs`.
+
+import { after, before, describe, it } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import {
+  assertDrawn, command, frameExceeds, launch, loadApp, repoRoot, serveDist, shootCanvas, state,
+} from './harness.mjs';
+
+const T = { timeout: 240_000 };
+
+/**
+ * state() fields that are live counters, not settings, and so differ between two labs opened from
+ * one link: the frame counter, simulated time, frame rate and timing, and `views` (each effector's
+ * error at the current frame). Everything else must match exactly.
+ */
+const LIVE = ['frame', 'time_s', 'fps', 'sim_us_per_frame', 'views'];
+
+const presetJson = (name) => readFileSync(join(repoRoot, 'presets', `${name}.json`), 'utf8');
+
+function settled(s) {
+  const out = { ...s };
+  for (const key of LIVE) delete out[key];
+  return out;
+}
+
+/** The app's last_error once it has one (links are read before the first frame). */
+async function lastError(page) {
+  return (await state(page)).last_error ?? '';
+}
+
+let server;
+before(async () => { server = await serveDist(); });
+after(async () => { await server?.close(); });
+
+describe('full-state links (WebGL2 path)', () => {
+  let first; // the browser that makes the link
+  let second; // a fresh browser context (its own profile) that opens it
+  before(async () => {
+    first = await launch('webgl2');
+    second = await launch('webgl2');
+  });
+  after(async () => {
+    await first?.close();
+    await second?.close();
+  });
+
+  it('a copied link restores state() field by field in a fresh context', T, async () => {
+    const a = await loadApp(first, server.url);
+    let original;
+    let link;
+    try {
+      assert.equal(await command(a.page, { preset: 'hexapod' }), 'ok');
+      assert.equal((await state(a.page)).preset, 'hexapod');
+      // An edited preset through the editor: the IK quadruped renamed, one limb lengthened.
+      const edited = presetJson('ik-quadruped').replace('"name": "ik-quadruped"', '"name": "quad-edited"');
+      assert.notEqual(edited, presetJson('ik-quadruped'));
+      assert.equal(await command(a.page, { editor_open: true, editor_text: edited, editor_apply: true }), 'ok');
+      for (const c of [
+        { mode: 'wounded-run', method: 'dls', lambda: 0.21, max_step: 0.15 },
+        { views: { follow: false, grid: false, world_axes: true } },
+        { camera: { yaw_deg: -35, pitch_deg: 20, distance_m: 4.25, target_m: [0.3, 0.5, 1.25] } },
+        { heading_deg: 15, plots: false },
+      ]) assert.equal(await command(a.page, c), 'ok', JSON.stringify(c));
+      assert.ok(await frameExceeds(a.page, 5), 'the app runs');
+      assert.equal(await command(a.page, { paused: true }), 'ok');
+      original = await state(a.page);
+      assert.equal(original.preset, 'quad-edited');
+      assert.equal(original.custom_preset, true);
+      assert.equal(original.ik.lambda, 0.21);
+      assert.equal(original.view_options.grid, false);
+      link = await a.page.evaluate(() => window.gaitlab.link());
+      assert.ok(link.startsWith(`${server.url}#p=`), link.slice(0, 80));
+      console.log(`link: ${link.length} characters`);
+      a.assertClean();
+    } finally {
+      await a.page.close().catch(() => {});
+    }
+
+    const b = await loadApp(second, link);
+    try {
+      const restored = await state(b.page);
+      assert.equal(restored.last_error, null);
+      const want = settled(original);
+      const got = settled(restored);
+      for (const key of Object.keys(want)) assert.deepEqual(got[key], want[key], `state().${key}`);
+      assert.deepEqual(Object.keys(got).sort(), Object.keys(want).sort());
+      // The same link again from the restored app.
+      assert.equal(await b.page.evaluate(() => window.gaitlab.link()), link);
+      assertDrawn(await shootCanvas(b.page, 'link-restored'), 'restored link');
+      b.assertClean();
+    } finally {
+      await b.page.close().catch(() => {});
+    }
+  });
+
+  it('broken links leave the app running with a message and the default preset', T, async () => {
+    const a = await loadApp(first, server.url);
+    let payload;
+    try {
+      assert.equal(await command(a.page, { preset: 'hexapod', method: 'pinv' }), 'ok');
+      const link = await a.page.evaluate(() => window.gaitlab.link());
+      payload = link.slice(link.indexOf('#p=') + 3);
+    } finally {
+      await a.page.close().catch(() => {});
+    }
+    const flip = (text, at) => text.slice(0, at) + (text[at] === 'Q' ? 'w' : 'Q') + text.slice(at + 1);
+    const cases = [
+      ['flipped bytes', flip(flip(flip(payload, 4), 5), 6), /link: /],
+      ['truncated', payload.slice(0, Math.floor(payload.length / 2)), /link: #p=/],
+      ['10 MB', 'A'.repeat(10 * 1024 * 1024), /link: #p= is longer than 128 KiB/],
+    ];
+    for (const [what, broken, message] of cases) {
+      const p = await second.open();
+      try {
+        if (broken.length > 1_000_000) {
+          // Chromium refuses to navigate to URLs over 2 MB: load the app, then put the fragment in
+          // the address bar as a script would (a same-document navigation the app follows).
+          await p.page.goto(server.url, { waitUntil: 'load' });
+          await p.page.waitForFunction(() => typeof window.gaitlab?.state === 'function', null, { timeout: 60_000 });
+          assert.equal(await command(p.page, { preset: 'hexapod' }), 'ok');
+          await p.page.evaluate((h) => { window.location.hash = h; }, `p=${broken}`);
+          await p.page.waitForFunction(() => (JSON.parse(window.gaitlab.state()).last_error ?? '').includes('link'),
+            null, { timeout: 30_000, polling: 100 });
+        } else {
+          await p.page.goto(`${server.url}#p=${broken}`, { waitUntil: 'load' });
+          await p.page.waitForFunction(() => typeof window.gaitlab?.state === 'function', null, { timeout: 60_000 });
+        }
+        const error = await lastError(p.page);
+        assert.match(error, message, `${what}: ${error}`);
+        const s = await state(p.page);
+        assert.equal(s.preset, 'human', `${what}: the default preset`);
+        assert.ok(await frameExceeds(p.page, s.frame + 3), `${what}: the app keeps running`);
+        console.log(`${what}: ${error}`);
+        p.assertClean();
+      } finally {
+        await p.page.close().catch(() => {});
+      }
+    }
+  });
+
+  it('a preset file set on the file input and one dropped on the canvas both load', T, async () => {
+    const p = await loadApp(first, server.url);
+    try {
+      assert.equal((await state(p.page)).preset, 'human');
+      await p.page.setInputFiles('#gaitlab-preset-file', {
+        name: 'hexapod.json', mimeType: 'application/json', buffer: Buffer.from(presetJson('hexapod')),
+      });
+      await p.page.waitForFunction(() => JSON.parse(window.gaitlab.state()).preset === 'hexapod',
+        null, { timeout: 30_000, polling: 100 });
+      assert.equal((await state(p.page)).custom_preset, true);
+
+      const text = presetJson('ik-quadruped');
+      await p.page.evaluate((json) => {
+        const transfer = new DataTransfer();
+        transfer.items.add(new File([json], 'quadruped.json', { type: 'application/json' }));
+        const canvas = document.getElementById('gaitlab-canvas');
+        for (const type of ['dragenter', 'dragover', 'drop']) {
+          canvas.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
+        }
+      }, text);
+      await p.page.waitForFunction(() => JSON.parse(window.gaitlab.state()).preset === 'ik-quadruped',
+        null, { timeout: 30_000, polling: 100 });
+
+      // A bad file: its problem names the JSON path and the creature stays.
+      await p.page.setInputFiles('#gaitlab-preset-file', {
+        name: 'bad.json', mimeType: 'application/json',
+        buffer: Buffer.from(presetJson('human').replace('"axis": [1, 0, 0]', '"axis": [0, 0, 0]')),
+      });
+      await p.page.waitForFunction(() => (JSON.parse(window.gaitlab.state()).editor.error ?? '').includes('axis'),
+        null, { timeout: 30_000, polling: 100 });
+      const s = await state(p.page);
+      assert.match(s.editor.error, /^file bad\.json: preset: skeleton\.joints\[0\]\.axis/);
+      assert.equal(s.editor.open, true, 'the bad file opens in the editor');
+      assert.equal(s.preset, 'ik-quadruped');
+      p.assertClean();
+    } finally {
+      await p.page.close().catch(() => {});
+    }
+  });
+});
