@@ -458,8 +458,11 @@ impl Lab {
             },
             "theme": self.settings.theme.name(),
             "dark": self.dark_mode,
-            "narrow": self.narrow,
-            "controls_open": self.controls_open,
+            "layout": {
+                "narrow": self.narrow,
+                "controls_open": self.controls_open,
+                "controls_button_pt": self.controls_button_pt,
+            },
             "video": {
                 "recording": self.video_recording,
                 "frames": self.video_frames,

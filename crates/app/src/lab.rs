@@ -116,6 +116,9 @@ pub struct Lab {
     pub(crate) narrow: bool,
     /// Whether the phone layout's controls drawer is open.
     pub(crate) controls_open: bool,
+    /// The phone layout's "Controls" button, points (CSS pixels) `[x, y, w, h]`
+    /// (zeros in the wide layout), for tests that tap it.
+    pub(crate) controls_button_pt: [f32; 4],
     /// Whether the last frame was drawn with dark visuals.
     pub(crate) dark_mode: bool,
 }
@@ -268,6 +271,7 @@ impl Lab {
             narrow_override: None,
             narrow: false,
             controls_open: false,
+            controls_button_pt: [0.0; 4],
             dark_mode: true,
         };
         lab.after_reset();

@@ -35,6 +35,7 @@ impl Lab {
         if self.narrow {
             self.phone_layout(ui);
         } else {
+            self.controls_button_pt = [0.0; 4];
             egui::Panel::left("gaitlab-controls")
                 .resizable(true)
                 .default_size(290.0)
@@ -116,13 +117,14 @@ impl Lab {
                 } else {
                     "Controls"
                 };
-                if ui
+                let toggle = ui
                     .selectable_label(self.controls_open, label)
                     .on_hover_text(
                         "Open or close the control panels over the lower part of the screen",
-                    )
-                    .clicked()
-                {
+                    );
+                let r = toggle.rect;
+                self.controls_button_pt = [r.min.x, r.min.y, r.width(), r.height()];
+                if toggle.clicked() {
                     self.controls_open = !self.controls_open;
                 }
                 panels::buttons(ui, self);
