@@ -9,6 +9,7 @@ use serde_json::{Map, Value, json};
 
 use crate::lab::{GaitShapeEdit, Lab};
 use crate::settings::VideoSize;
+use crate::theme::Theme;
 use crate::view::ViewOptions;
 
 /// Longest command text accepted, bytes (a custom preset rides in `preset_json`).
@@ -70,12 +71,15 @@ impl Lab {
     /// [`crate::compare`]), `paused` (or `pause`),
     /// `reset`, `step`, `lambda`, `gamma_max`, `max_step`, `null_space_gain`,
     /// `enforce_limits`, `heading_deg`, `plots`, `plot_joints` (joint names),
-    /// `record` (motion take on/off), `save` (`"bvh"` or `"csv"`: download the
-    /// take), `video_size`, `record_video` (on/off), `views` (an object of view flags),
-    /// `camera` (see [`crate::camera_state`]), `editor_open`, `editor_text`,
-    /// `editor_revert`, `editor_apply` (the preset editor; a bad preset is an
-    /// error and the creature stays), `download_preset`; `gains` (an object
-    /// `{name: value}`) goes with `gain`.
+    /// `record` (motion take on/off), `last_s` (seconds the panel's saves
+    /// write, 0 all), `save` (`"bvh"` or `"csv"`, or `{"format", "last_s"}`:
+    /// download the take or its last seconds), `video_size`, `record_video`
+    /// (on/off), `theme` (`system`, `light`, `dark`), `narrow` (true/false
+    /// forces the phone layout on or off, null follows the width), `views`
+    /// (an object of view flags), `camera` (see [`crate::camera_state`]),
+    /// `editor_open`, `editor_text`, `editor_revert`, `editor_apply` (the
+    /// preset editor; a bad preset is an error and the creature stays),
+    /// `download_preset`; `gains` (an object `{name: value}`) goes with `gain`.
     /// Keys apply in that order; the first bad key stops the command with an
     /// error naming it, and what came before it stays applied.
     ///
@@ -136,6 +140,9 @@ impl Lab {
             "editor_apply",
             "editor_revert",
             "download_preset",
+            "last_s",
+            "theme",
+            "narrow",
         ];
         if let Some(unknown) = object.keys().find(|k| !KNOWN.contains(&k.as_str())) {
             return Err(format!("{unknown}: unknown command"));
@@ -305,8 +312,11 @@ impl Lab {
                 self.stop_recording();
             }
         }
+        if let Some(v) = get("last_s") {
+            self.settings.export_last_s = number("last_s", v, 0.0, crate::recording::MAX_TAKE_S)?;
+        }
         if let Some(v) = get("save") {
-            self.save_take(text("save", v)?)?;
+            self.apply_save(v)?;
         }
         if let Some(v) = get("video_size") {
             let name = text("video_size", v)?;
@@ -316,6 +326,17 @@ impl Lab {
         }
         if let Some(v) = get("record_video") {
             self.set_video_recording(flag("record_video", v)?);
+        }
+        if let Some(v) = get("theme") {
+            let name = text("theme", v)?;
+            self.settings.theme = Theme::parse(name)
+                .ok_or_else(|| format!("theme: unknown theme {name:?} (system, light, dark)"))?;
+        }
+        if let Some(v) = get("narrow") {
+            self.narrow_override = match v {
+                Value::Null => None,
+                v => Some(flag("narrow", v)?),
+            };
         }
         if let Some(v) = get("views") {
             let mut views = self.settings.view.clone();
@@ -347,6 +368,35 @@ impl Lab {
             self.download_preset();
         }
         Ok(())
+    }
+
+    /// `save`: `"bvh"` / `"csv"` (the last [`Settings::export_last_s`]
+    /// seconds, all for 0) or `{"format": "bvh", "last_s": 5}`.
+    ///
+    /// [`Settings::export_last_s`]: crate::Settings::export_last_s
+    fn apply_save(&mut self, value: &Value) -> Result<(), String> {
+        if let Some(format) = value.as_str() {
+            return self.save_take_as_set(format);
+        }
+        let object = value
+            .as_object()
+            .ok_or("save: expected \"bvh\", \"csv\" or {\"format\", \"last_s\"}")?;
+        if let Some(key) = object
+            .keys()
+            .find(|k| !["format", "last_s"].contains(&k.as_str()))
+        {
+            return Err(format!("save.{key}: unknown key (format, last_s)"));
+        }
+        let format = text(
+            "save.format",
+            object.get("format").ok_or("save.format: missing")?,
+        )?;
+        let last_s = match object.get("last_s") {
+            None | Some(Value::Null) => None,
+            Some(v) => Some(number("save.last_s", v, 0.0, crate::recording::MAX_TAKE_S)?)
+                .filter(|&s| s > 0.0),
+        };
+        self.save_take(format, last_s)
     }
 
     /// The state as one JSON object: preset, engine, mode, gait, method(s),
@@ -472,6 +522,14 @@ impl Lab {
                 "active": self.recording,
                 "frames": self.take.as_ref().map_or(0, crate::recording::Take::frames),
                 "seconds": self.take.as_ref().map_or(0.0, crate::recording::Take::seconds),
+                "last_s": self.settings.export_last_s,
+            },
+            "theme": self.settings.theme.name(),
+            "dark": self.dark_mode,
+            "layout": {
+                "narrow": self.narrow,
+                "controls_open": self.controls_open,
+                "controls_button_pt": self.controls_button_pt,
             },
             "video": {
                 "recording": self.video_recording,

@@ -121,6 +121,17 @@ pub struct Lab {
     pub(crate) shown_link: Option<String>,
     /// Set when the person asked to pick a preset file (the web glue opens the picker).
     pub(crate) file_pick_requested: bool,
+    /// Forces the phone layout on or off (`None`: by the screen width).
+    pub(crate) narrow_override: Option<bool>,
+    /// Whether the last frame used the phone layout (controls in a drawer).
+    pub(crate) narrow: bool,
+    /// Whether the phone layout's controls drawer is open.
+    pub(crate) controls_open: bool,
+    /// The phone layout's "Controls" button, points (CSS pixels) `[x, y, w, h]`
+    /// (zeros in the wide layout), for tests that tap it.
+    pub(crate) controls_button_pt: [f32; 4],
+    /// Whether the last frame was drawn with dark visuals.
+    pub(crate) dark_mode: bool,
 }
 
 /// An edit of the PODA gait's shape (see [`Lab::edit_gait_shape`]).
@@ -273,6 +284,11 @@ impl Lab {
             page_url: String::new(),
             shown_link: None,
             file_pick_requested: false,
+            narrow_override: None,
+            narrow: false,
+            controls_open: false,
+            controls_button_pt: [0.0; 4],
+            dark_mode: true,
         };
         lab.after_reset();
         lab
@@ -778,9 +794,11 @@ impl Lab {
 
     /// Starts a new motion take (the previous one is dropped).
     pub fn start_recording(&mut self) {
+        // The driver's skeleton is the one drawn (a physics creature's is scaled by L).
         self.take = Some(Take::new(
-            &self.creature.skeleton,
+            self.driver.skeleton(),
             1.0 / self.frame_seconds(),
+            self.driver.targets().is_some(),
         ));
         self.recording = true;
     }
@@ -802,19 +820,20 @@ impl Lab {
         self.take.as_ref()
     }
 
-    /// Queues the take as a `bvh` or `csv` file for the person.
+    /// Queues the take as a `bvh` or `csv` file for the person: its last
+    /// `last_s` seconds, or the whole take for `None`.
     ///
     /// # Errors
-    /// An unknown format, no take, or the writer's reason.
-    pub fn save_take(&mut self, format: &str) -> Result<(), String> {
+    /// An unknown format, no take, a bad `last_s`, or the writer's reason.
+    pub fn save_take(&mut self, format: &str, last_s: Option<f64>) -> Result<(), String> {
         let take = self
             .take
             .as_ref()
             .ok_or("save: nothing recorded yet (start a recording first)")?;
-        let skeleton = &self.creature.skeleton;
+        let skeleton = self.driver.skeleton();
         let (text, mime) = match format {
-            "bvh" => (take.to_bvh(skeleton)?, "text/plain"),
-            "csv" => (take.to_csv(skeleton)?, "text/csv"),
+            "bvh" => (take.to_bvh(skeleton, last_s)?, "text/plain"),
+            "csv" => (take.to_csv(skeleton, last_s)?, "text/csv"),
             other => return Err(format!("save: unknown format {other:?} (bvh, csv)")),
         };
         let file_name = format!(
@@ -829,6 +848,16 @@ impl Lab {
             text,
         });
         Ok(())
+    }
+
+    /// Queues the take as a file with the panel's "last N seconds" setting
+    /// ([`Settings::export_last_s`]; 0 means the whole take).
+    ///
+    /// # Errors
+    /// As [`Lab::save_take`].
+    pub fn save_take_as_set(&mut self, format: &str) -> Result<(), String> {
+        let last_s = self.settings.export_last_s;
+        self.save_take(format, (last_s > 0.0).then_some(last_s))
     }
 
     /// Takes the file queued for the person, if any.

@@ -24,6 +24,7 @@ mod panels_path;
 mod panels_physics;
 pub mod recording;
 pub mod settings;
+pub mod theme;
 mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;

@@ -31,29 +31,50 @@ pub fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
                 .selected_text(current.as_str())
                 .show_ui(ui, |ui| {
                     for name in gait_names(legs) {
-                        if ui.selectable_label(name == current, name).clicked() {
+                        if ui
+                            .selectable_label(name == current, name)
+                            .on_hover_text("Switch to this gait (blends over one cycle)")
+                            .clicked()
+                        {
                             chosen = Some(name);
                         }
                     }
-                });
-            for (key, mut value, range, label) in [
-                ("period_s", gait.period_s(), 0.2..=3.0, "Period P (s)"),
+                })
+                .response
+                .on_hover_text("A named gait: its duty factor and relative phases");
+            for (key, mut value, range, label, hint) in [
+                (
+                    "period_s",
+                    gait.period_s(),
+                    0.2..=3.0,
+                    "Period P (s)",
+                    "Time of one gait cycle, seconds (eq. 7–8 derive the rest)",
+                ),
                 (
                     "duty_factor",
                     gait.duty_factor(),
                     0.05..=0.95,
                     "Duty factor",
+                    "Fraction of the period each leg supports (unitless, 0–1)",
                 ),
                 (
                     "speed_mps",
                     gait.speed_mps(),
                     0.02..=4.0,
                     "Body speed (m/s)",
+                    "Forward body speed along the path, metres per second",
                 ),
-                ("stroke_m", gait.stroke_m(), 0.01..=1.5, "Stroke (m)"),
+                (
+                    "stroke_m",
+                    gait.stroke_m(),
+                    0.01..=1.5,
+                    "Stroke (m)",
+                    "Distance a supporting foot travels relative to the body, metres",
+                ),
             ] {
                 if ui
                     .add(egui::Slider::new(&mut value, range).text(label))
+                    .on_hover_text(hint)
                     .changed()
                 {
                     edits.push((key, value));
@@ -154,9 +175,15 @@ fn centers(ui: &mut egui::Ui, lab: &mut Lab) {
                         let unit = if revolute { "°" } else { " m" };
                         let moved = ui
                             .add(egui::DragValue::new(&mut shown).speed(0.5).suffix(unit))
+                            .on_hover_text(if revolute {
+                                "Center angle the null-space term pulls this joint to, degrees (eq. 6)"
+                            } else {
+                                "Center length the null-space term pulls this joint to, metres (eq. 6)"
+                            })
                             .changed();
                         let weighted = ui
                             .add(egui::Slider::new(&mut new_gain, 0.0..=1.0).text("gain"))
+                            .on_hover_text("How strongly this joint is pulled to its center (eq. 6, unitless 0–1)")
                             .changed();
                         if moved || weighted {
                             let value = if revolute { shown.to_radians() } else { shown };
@@ -191,6 +218,7 @@ fn shape(ui: &mut egui::Ui, lab: &mut Lab) {
         for (leg, (name, phase)) in names.iter().zip(phases.iter_mut()).enumerate() {
             if ui
                 .add(egui::Slider::new(phase, 0.0..=0.999).text(name.as_str()))
+                .on_hover_text("Relative phase of this leg: when it lifts, as a fraction of the period (eq. 9)")
                 .changed()
             {
                 edits.push(GaitShapeEdit::Phase { leg, phase: *phase });
@@ -198,6 +226,7 @@ fn shape(ui: &mut egui::Ui, lab: &mut Lab) {
         }
         if ui
             .add(egui::Slider::new(&mut step_height, 0.005..=0.3).text("Step height (m)"))
+            .on_hover_text("Highest point of a transferring foot above its support line, metres")
             .changed()
         {
             edits.push(GaitShapeEdit::StepHeight(step_height));
@@ -207,9 +236,11 @@ fn shape(ui: &mut egui::Ui, lab: &mut Lab) {
             ui.horizontal(|ui| {
                 keys_changed |= ui
                     .add(egui::DragValue::new(along).speed(0.005).range(0.01..=0.99))
+                    .on_hover_text("Key position along the step, fraction of the step length (0–1)")
                     .changed();
                 keys_changed |= ui
                     .add(egui::DragValue::new(height).speed(0.01).range(0.0..=2.0))
+                    .on_hover_text("Key height, fraction of the step height")
                     .changed();
             });
         }

@@ -66,7 +66,11 @@ pub fn path(ui: &mut egui::Ui, lab: &mut Lab) {
                 ("Circle", "circle"),
                 ("S-curve", "s-curve"),
             ] {
-                if ui.button(label).clicked() {
+                if ui
+                    .button(label)
+                    .on_hover_text("Replace the body path with this shape, starting at the body")
+                    .clicked()
+                {
                     spec = preset_path(name, body);
                     changed = true;
                 }
@@ -75,9 +79,11 @@ pub fn path(ui: &mut egui::Ui, lab: &mut Lab) {
         ui.horizontal(|ui| {
             changed |= ui
                 .radio_value(&mut spec.kind, PathKindSpec::CatmullRom, "Catmull-Rom")
+                .on_hover_text("Spline through every control point")
                 .changed();
             changed |= ui
                 .radio_value(&mut spec.kind, PathKindSpec::BSpline, "B-spline")
+                .on_hover_text("Smoother spline near (not through) the control points")
                 .changed();
         });
         changed |= top_down(ui, &mut spec, &samples, body);
@@ -131,11 +137,16 @@ fn top_down(ui: &mut egui::Ui, spec: &mut PathSpec, samples: &[DVec2], body: DVe
     for (k, point) in spec.points.iter_mut().enumerate() {
         let at = to_screen(DVec2::from(*point));
         let handle = egui::Rect::from_center_size(at, egui::vec2(4.0, 4.0) * HANDLE_RADIUS);
-        let response = ui.interact(
-            handle,
-            ui.scope_id().with(("path-point", k)),
-            egui::Sense::drag(),
-        );
+        let response = ui
+            .interact(
+                handle,
+                ui.scope_id().with(("path-point", k)),
+                egui::Sense::drag(),
+            )
+            .on_hover_text(format!(
+                "Control point {k} at x {:.2} m, z {:.2} m: drag to move it",
+                point[0], point[1]
+            ));
         if response.dragged() {
             let delta = response.drag_delta();
             point[0] += f64::from(delta.x) / scale;

@@ -41,11 +41,17 @@ pub fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 .selected_text(current.as_str())
                 .show_ui(ui, |ui| {
                     for &name in names {
-                        if ui.selectable_label(name == current, name).clicked() {
+                        if ui
+                            .selectable_label(name == current, name)
+                            .on_hover_text("Switch the state machine to this gait")
+                            .clicked()
+                        {
                             chosen = Some(name);
                         }
                     }
-                });
+                })
+                .response
+                .on_hover_text("The gait the controllers' state machine runs");
             if ui
                 .add(egui::Slider::new(&mut speed, -1.0..=6.0).text("Desired speed (m/s)"))
                 .on_hover_text("ẋ_d of eq. 3: foot placement about the neutral point regulates it")
@@ -71,13 +77,17 @@ pub fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                                 .logarithmic(true)
                                 .text(format!("{} ({})", gain.name, gain.unit)),
                         )
-                        .on_hover_text(format!("default {}", gain.default))
+                        .on_hover_text(format!("Controller gain {} in {}; default {}", gain.name, gain.unit, gain.default))
                         .changed()
                     {
                         gain_edits.push((gain.name, value));
                     }
                 }
-                if ui.button("Default gains").clicked() {
+                if ui
+                    .button("Default gains")
+                    .on_hover_text("Put every gain back to its default")
+                    .clicked()
+                {
                     gain_edits.extend(gains.iter().map(|g| (g.name, g.default)));
                 }
             });

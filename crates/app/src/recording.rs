@@ -1,9 +1,11 @@
 //! The recording panel's motion take (She 2006 §6.2 "Recording panel", which
 //! records every animation frame): each simulated frame's pose, effector
 //! positions and targets, kept in flat buffers and written out on demand as
-//! BVH or as the pose CSV of the core's exporters. A take is capped at
-//! [`MAX_TAKE_S`] of animation so memory stays bounded; buffers are reserved
-//! up front, so recording does not allocate every frame.
+//! BVH or as the pose CSV of the core's exporters — the whole take or only its
+//! last N seconds (issue 6 "download the last N seconds", the same frames
+//! `gaitlab run --last N` writes). A take is capped at [`MAX_TAKE_S`] of
+//! animation so memory stays bounded; buffers are reserved up front, so
+//! recording does not allocate every frame.
 
 use gaitlab_core::export::{BvhWriter, PoseCsvColumns, PoseCsvWriter};
 use gaitlab_core::{Pose, RootTransform, Skeleton};
@@ -20,6 +22,8 @@ pub struct Take {
     fps: f64,
     joints: usize,
     effectors: usize,
+    /// Whether the driver has effector targets (the CSV gets target columns).
+    has_targets: bool,
     max_frames: usize,
     times: Vec<f64>,
     roots: Vec<RootTransform>,
@@ -33,10 +37,26 @@ fn frames_for(seconds: f64, fps: f64) -> usize {
     (seconds * fps).ceil().max(1.0) as usize
 }
 
+/// Frames in the last `seconds` of animation at `fps`, rounded to the nearest
+/// frame and at least one (the rule `gaitlab run --last` uses too).
+///
+/// # Errors
+/// `last_s: reason` when `seconds` is not finite and positive.
+pub fn last_frames(seconds: f64, fps: f64) -> Result<usize, String> {
+    if !(seconds.is_finite() && seconds > 0.0 && seconds <= MAX_TAKE_S) {
+        return Err(format!(
+            "last_s: must be more than 0 and at most {MAX_TAKE_S} s, not {seconds}"
+        ));
+    }
+    // At most MAX_TAKE_S · 1000 fps: a small whole number.
+    Ok((seconds * fps).round().max(1.0) as usize)
+}
+
 impl Take {
-    /// An empty take for `skeleton` animated at `fps` frames per second.
+    /// An empty take for `skeleton` (the driver's, as drawn) animated at `fps`
+    /// frames per second; `has_targets` says whether the CSV gets target columns.
     #[must_use]
-    pub fn new(skeleton: &Skeleton, fps: f64) -> Self {
+    pub fn new(skeleton: &Skeleton, fps: f64, has_targets: bool) -> Self {
         let fps = if fps.is_finite() && fps > 0.0 {
             fps
         } else {
@@ -49,6 +69,7 @@ impl Take {
             fps,
             joints,
             effectors,
+            has_targets,
             max_frames: frames_for(MAX_TAKE_S, fps),
             times: Vec::with_capacity(reserve),
             roots: Vec::with_capacity(reserve),
@@ -94,6 +115,21 @@ impl Take {
         true
     }
 
+    /// The frames of the last `last_s` seconds (all of them for `None`).
+    ///
+    /// # Errors
+    /// An empty take or a bad `last_s`.
+    pub fn frame_range(&self, last_s: Option<f64>) -> Result<std::ops::Range<usize>, String> {
+        if self.frames() == 0 {
+            return Err("recording: nothing recorded yet".to_owned());
+        }
+        let count = match last_s {
+            None => self.frames(),
+            Some(seconds) => last_frames(seconds, self.fps)?.min(self.frames()),
+        };
+        Ok(self.frames() - count..self.frames())
+    }
+
     fn pose_into(&self, frame: usize, pose: &mut Pose) {
         pose.root = self.roots[frame];
         pose.joints.clear();
@@ -101,23 +137,22 @@ impl Take {
             .extend_from_slice(&self.values[frame * self.joints..(frame + 1) * self.joints]);
     }
 
-    /// The take as a BVH file (degrees, `Zrotation Xrotation Yrotation`).
+    /// The take, or its last `last_s` seconds, as a BVH file (degrees,
+    /// `Zrotation Xrotation Yrotation`).
     ///
     /// # Errors
-    /// The writer's reason (an empty take, a non-finite pose).
-    pub fn to_bvh(&self, skeleton: &Skeleton) -> Result<String, String> {
-        if self.frames() == 0 {
-            return Err("recording: nothing recorded yet".to_owned());
-        }
+    /// The writer's reason (an empty take, a non-finite pose, a bad `last_s`).
+    pub fn to_bvh(&self, skeleton: &Skeleton, last_s: Option<f64>) -> Result<String, String> {
+        let frames = self.frame_range(last_s)?;
         let fail = |e: gaitlab_core::export::WriteError| format!("recording: BVH: {e}");
         let mut writer = BvhWriter::new(skeleton, self.fps).map_err(fail)?;
         let mut out = String::new();
-        writer.write_header(&mut out, self.frames()).map_err(fail)?;
+        writer.write_header(&mut out, frames.len()).map_err(fail)?;
         let mut pose = Pose {
             root: RootTransform::default(),
             joints: Vec::with_capacity(self.joints),
         };
-        for frame in 0..self.frames() {
+        for frame in frames {
             self.pose_into(frame, &mut pose);
             writer.write_frame(&mut out, &pose).map_err(fail)?;
         }
@@ -125,20 +160,19 @@ impl Take {
         Ok(out)
     }
 
-    /// The take as a pose CSV with effector positions and targets.
+    /// The take, or its last `last_s` seconds, as a pose CSV with effector
+    /// positions (and targets, when the driver has them).
     ///
     /// # Errors
-    /// The writer's reason.
-    pub fn to_csv(&self, skeleton: &Skeleton) -> Result<String, String> {
-        if self.frames() == 0 {
-            return Err("recording: nothing recorded yet".to_owned());
-        }
+    /// The writer's reason, an empty take or a bad `last_s`.
+    pub fn to_csv(&self, skeleton: &Skeleton, last_s: Option<f64>) -> Result<String, String> {
+        let frames = self.frame_range(last_s)?;
         let fail = |e: gaitlab_core::export::WriteError| format!("recording: CSV: {e}");
         let writer = PoseCsvWriter::new(
             skeleton,
             PoseCsvColumns {
                 effector_positions: true,
-                effector_targets: true,
+                effector_targets: self.has_targets,
             },
         );
         let mut out = String::new();
@@ -148,7 +182,7 @@ impl Take {
             joints: Vec::with_capacity(self.joints),
         };
         let k = self.effectors;
-        for frame in 0..self.frames() {
+        for frame in frames {
             self.pose_into(frame, &mut pose);
             let span = frame * k..(frame + 1) * k;
             writer

@@ -5,6 +5,7 @@ use gaitlab_core::ik::{IkOptions, Method};
 use gaitlab_core::preset::thesis::ThesisMode;
 use serde::{Deserialize, Serialize};
 
+use crate::theme::Theme;
 use crate::view::ViewOptions;
 
 /// Settings kept across reloads. Unknown or damaged stored settings fall back to
@@ -30,6 +31,10 @@ pub struct Settings {
     pub plot_joints: Vec<String>,
     /// Frame size of video recordings of the 3-D view.
     pub video_size: VideoSize,
+    /// Seconds at the end of the take that "Save BVH" / "Save CSV" write; 0 writes the whole take.
+    pub export_last_s: f64,
+    /// Light, dark, or the system's colour scheme.
+    pub theme: Theme,
 }
 
 /// Frame size of a video recording (She 2006 §6.2: "users can set the frame size").
@@ -103,6 +108,8 @@ impl Default for Settings {
             plots: true,
             plot_joints: Vec::new(),
             video_size: VideoSize::View,
+            export_last_s: 0.0,
+            theme: Theme::System,
         }
     }
 }

@@ -1,6 +1,9 @@
 //! The lab's layout: controls on the left, live plots at the bottom, the 3-D
 //! view in the middle, an error banner on top when something went wrong, and
-//! the keyboard shortcuts (space pause, R reset, . single step).
+//! the keyboard shortcuts (space pause, R reset, . single step). Below
+//! [`NARROW_WIDTH_PT`] (a phone, issue 6 "Comfort") the controls become a
+//! drawer toggled from a slim top bar and the plots are hidden, so the 3-D
+//! view keeps most of the screen.
 
 use egui_plot::{Legend, Line, Plot, PlotPoints};
 
@@ -9,9 +12,18 @@ use crate::lab::{Lab, MAX_PLOT_JOINTS};
 use crate::render::viewport;
 use crate::{panels, panels_compare, panels_editor, panels_gait, panels_path, panels_physics};
 
+/// Below this width (points, i.e. CSS pixels) the lab takes its phone layout:
+/// the 3-D view fills the screen under a slim bar, the controls open as a
+/// drawer over the lower part of the screen, and the plots are hidden.
+pub const NARROW_WIDTH_PT: f32 = 600.0;
+
+/// Share of the screen height the phone layout's controls drawer takes.
+const DRAWER_HEIGHT_FRACTION: f32 = 0.45;
+
 impl Lab {
     /// Shows the whole lab in `ui` and advances the animation by the frame's time.
     pub fn ui(&mut self, ui: &mut egui::Ui) {
+        self.apply_theme(ui);
         let dt = ui.input(|i| f64::from(i.stable_dt));
         self.note_frame_time(dt);
         self.keyboard(ui);
@@ -19,56 +31,47 @@ impl Lab {
         self.take_dropped_file(ui);
         self.advance(dt);
 
-        egui::Panel::left("gaitlab-controls")
-            .resizable(true)
-            .default_size(290.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    ui.heading("gaitlab");
-                    panels::engine(ui, self);
-                    panels::preset(ui, self);
-                    panels_editor::share(ui, self);
-                    panels::buttons(ui, self);
-                    ui.separator();
-                    if self.driver.physics().is_some() {
-                        panels_physics::physics(ui, self);
-                    } else if self.driver.poda().is_some() {
-                        panels_gait::gait(ui, self);
-                        panels_path::path(ui, self);
-                    } else {
-                        panels_compare::controls(ui, self);
-                        if self.compare.is_none() {
-                            panels::method(ui, self);
-                        }
-                        panels::motion(ui, self);
-                        panels::speed_and_targets(ui, self);
-                    }
-                    panels::view(ui, self);
-                    panels::recording(ui, self);
-                    ui.separator();
-                    self.readout(ui);
+        self.narrow = self
+            .narrow_override
+            .unwrap_or(ui.available_width() < NARROW_WIDTH_PT);
+        if self.narrow {
+            self.phone_layout(ui);
+        } else {
+            self.controls_button_pt = [0.0; 4];
+            egui::Panel::left("gaitlab-controls")
+                .resizable(true)
+                .default_size(290.0)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical().show(ui, |ui| {
+                        ui.heading("gaitlab");
+                        self.controls(ui);
+                    });
                 });
-            });
-        if self.compare.is_some() {
-            egui::Panel::bottom("gaitlab-compare")
-                .resizable(true)
-                .default_size(330.0)
-                .show(ui, |ui| panels_compare::cards(ui, self));
-        } else if self.settings.plots {
-            egui::Panel::bottom("gaitlab-plots")
-                .resizable(true)
-                .default_size(170.0)
-                .show(ui, |ui| self.plots(ui));
+            if self.compare.is_some() {
+                egui::Panel::bottom("gaitlab-compare")
+                    .resizable(true)
+                    .default_size(330.0)
+                    .show(ui, |ui| panels_compare::cards(ui, self));
+            } else if self.settings.plots {
+                egui::Panel::bottom("gaitlab-plots")
+                    .resizable(true)
+                    .default_size(170.0)
+                    .show(ui, |ui| self.plots(ui));
+            }
         }
         panels_editor::editor_window(&ui.ctx().clone(), self);
         egui::CentralPanel::default().show(ui, |ui| {
             if let Some(error) = self.last_error.clone() {
-                ui.horizontal(|ui| {
+                ui.horizontal_wrapped(|ui| {
                     ui.colored_label(
                         egui::Color32::from_rgb(230, 90, 70),
                         format!("Problem: {error}"),
                     );
-                    if ui.small_button("Dismiss").clicked() {
+                    if ui
+                        .small_button("Dismiss")
+                        .on_hover_text("Hide this message")
+                        .clicked()
+                    {
                         self.clear_error();
                     }
                 });
@@ -102,6 +105,100 @@ impl Lab {
         if !self.paused {
             ui.ctx().request_repaint();
         }
+    }
+
+    /// Every control panel, top to bottom (the wide layout's side panel and
+    /// the phone layout's drawer).
+    fn controls(&mut self, ui: &mut egui::Ui) {
+        panels::engine(ui, self);
+        panels::preset(ui, self);
+        panels_editor::share(ui, self);
+        panels::buttons(ui, self);
+        ui.separator();
+        if self.driver.physics().is_some() {
+            panels_physics::physics(ui, self);
+        } else if self.driver.poda().is_some() {
+            panels_gait::gait(ui, self);
+            panels_path::path(ui, self);
+        } else {
+            panels_compare::controls(ui, self);
+            if self.compare.is_none() {
+                panels::method(ui, self);
+            }
+            panels::motion(ui, self);
+            panels::speed_and_targets(ui, self);
+        }
+        panels::view(ui, self);
+        panels::recording(ui, self);
+        ui.separator();
+        self.readout(ui);
+    }
+
+    /// The phone layout: a slim bar (controls drawer toggle, Reset, Play,
+    /// Step) over a full-width 3-D view; the drawer, when open, takes the
+    /// lower [`DRAWER_HEIGHT_FRACTION`] of the screen with bigger touch targets.
+    fn phone_layout(&mut self, ui: &mut egui::Ui) {
+        egui::Panel::top("gaitlab-phone-bar").show(ui, |ui| {
+            ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
+            ui.horizontal_wrapped(|ui| {
+                let label = if self.controls_open {
+                    "Hide controls"
+                } else {
+                    "Controls"
+                };
+                let toggle = ui
+                    .selectable_label(self.controls_open, label)
+                    .on_hover_text(
+                        "Open or close the control panels over the lower part of the screen",
+                    );
+                let r = toggle.rect;
+                self.controls_button_pt = [r.min.x, r.min.y, r.width(), r.height()];
+                if toggle.clicked() {
+                    self.controls_open = !self.controls_open;
+                }
+                panels::buttons(ui, self);
+            });
+        });
+        if !self.controls_open {
+            return;
+        }
+        let height = (ui.available_height() * DRAWER_HEIGHT_FRACTION).max(160.0);
+        egui::Panel::bottom("gaitlab-phone-controls")
+            .resizable(false)
+            .exact_size(height)
+            .show(ui, |ui| {
+                let spacing = ui.spacing_mut();
+                spacing.button_padding = egui::vec2(10.0, 6.0);
+                spacing.interact_size.y = 30.0;
+                spacing.item_spacing.y = 8.0;
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    ui.set_width(ui.available_width());
+                    self.controls(ui);
+                });
+            });
+    }
+
+    /// Applies the chosen theme to egui (it takes effect from the next frame)
+    /// and notes whether this frame is dark.
+    fn apply_theme(&mut self, ui: &egui::Ui) {
+        let wanted = self.settings.theme.preference();
+        if ui.ctx().options(|o| o.theme_preference) != wanted {
+            ui.ctx().set_theme(wanted);
+            ui.ctx().request_repaint();
+        }
+        self.dark_mode = ui.visuals().dark_mode;
+    }
+
+    /// Whether the last frame used the phone layout.
+    #[must_use]
+    pub fn narrow(&self) -> bool {
+        self.narrow
+    }
+
+    /// Whether the phone layout's controls drawer is open.
+    #[must_use]
+    pub fn controls_open(&self) -> bool {
+        self.controls_open
     }
 
     fn keyboard(&mut self, ui: &egui::Ui) {
@@ -190,7 +287,7 @@ impl Lab {
     /// [`MAX_PLOT_JOINTS`] plotted).
     fn joint_picker(&mut self, ui: &mut egui::Ui) {
         let mut chosen: Option<Vec<String>> = None;
-        ui.menu_button("Joints…", |ui| {
+        let menu = ui.menu_button("Joints…", |ui| {
             egui::ScrollArea::vertical()
                 .max_height(300.0)
                 .show(ui, |ui| {
@@ -201,6 +298,9 @@ impl Lab {
                         let enabled = on || !full;
                         if ui
                             .add_enabled(enabled, egui::Checkbox::new(&mut on, joint.name.as_str()))
+                            .on_hover_text(format!(
+                                "Plot this joint's angle (degrees; prismatic joints in millimetres), at most {MAX_PLOT_JOINTS}"
+                            ))
                             .changed()
                         {
                             let mut names: Vec<String> = self
@@ -217,6 +317,8 @@ impl Lab {
                     }
                 });
         });
+        menu.response
+            .on_hover_text("Choose which joints' angles the plot shows");
         if let Some(names) = chosen
             && let Err(error) = self.set_plot_joints(&names)
         {

@@ -256,7 +256,11 @@ fn the_preset_editor_shows_the_json_path_of_a_bad_edit_and_keeps_the_creature() 
     );
     let shown = format!("Invalid preset: {error}");
     harness.get_by_label(&shown);
-    assert_eq!(harness.state().creature().name, "human", "the old creature runs");
+    assert_eq!(
+        harness.state().creature().name,
+        "human",
+        "the old creature runs"
+    );
     assert_eq!(harness.state().creature().skeleton.joints()[0].axis.x, 1.0);
 
     // A good edit (a new name) changes the running creature.
@@ -267,7 +271,10 @@ fn the_preset_editor_shows_the_json_path_of_a_bad_edit_and_keeps_the_creature() 
     harness.run();
     assert!(harness.state().editor().error.is_none());
     assert_eq!(harness.state().creature().name, "human-tall");
-    assert!(harness.query_by_label(&shown).is_none(), "the message is gone");
+    assert!(
+        harness.query_by_label(&shown).is_none(),
+        "the message is gone"
+    );
 }
 
 #[test]
@@ -277,7 +284,10 @@ fn copy_link_shows_the_link_and_download_preset_queues_the_json() {
     harness.get_by_label("Copy link").click();
     harness.run();
     let expected = harness.state().share_link().expect("a link");
-    assert!(expected.starts_with("#p="), "natively the page address is empty");
+    assert!(
+        expected.starts_with("#p="),
+        "natively the page address is empty"
+    );
     harness.get_by_value(&expected);
     harness.get_by_label("Download preset").click();
     harness.run();

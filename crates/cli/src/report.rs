@@ -24,6 +24,26 @@ pub struct Outputs {
     /// Print one JSON object of metrics.
     #[arg(long)]
     pub json: bool,
+    /// Write only the last S seconds of the motion to --bvh and --csv (the
+    /// browser's "Save the last S s"; rounded to whole frames, at least one).
+    #[arg(long, value_name = "S")]
+    pub last: Option<f64>,
+}
+
+/// Frames written to the files when `frames` are run at `fps` and only the
+/// `last` seconds are wanted: `round(last · fps)`, at least 1, at most `frames`.
+pub fn written_frames(last: Option<f64>, frames: usize, fps: f64) -> Result<usize, Failure> {
+    let Some(seconds) = last else {
+        return Ok(frames);
+    };
+    if !(seconds.is_finite() && seconds > 0.0 && seconds <= crate::run::MAX_SECONDS) {
+        return Err(Failure::input(format!(
+            "--last: must be more than 0 and at most {} s",
+            crate::run::MAX_SECONDS
+        )));
+    }
+    // At most MAX_SECONDS · MAX_FPS: a small whole number.
+    Ok(((seconds * fps).round().max(1.0) as usize).min(frames))
 }
 
 /// Figures measured by [`drive`].
@@ -47,13 +67,15 @@ pub fn drive(
     outputs: &Outputs,
 ) -> Result<Measured, Failure> {
     let dt = 1.0 / fps;
+    let written = written_frames(outputs.last, frames, fps)?;
+    let first_written = frames - written;
     let skeleton = driver.skeleton().clone();
     let mut bvh = match outputs.bvh.as_deref() {
         Some(path) => {
             let mut sink = FileSink::create(path)?;
             let mut writer = BvhWriter::new(&skeleton, fps).map_err(Failure::input)?;
             writer
-                .write_header(&mut sink, frames)
+                .write_header(&mut sink, written)
                 .map_err(|e| sink.fail(e))?;
             Some((sink, writer))
         }
@@ -77,7 +99,7 @@ pub fn drive(
     let start = Instant::now();
     let mut step_seconds = 0.0;
     let mut within_limits = true;
-    for _ in 0..frames {
+    for frame in 0..frames {
         let before = Instant::now();
         driver.step(dt);
         step_seconds += before.elapsed().as_secs_f64();
@@ -87,6 +109,9 @@ pub fn drive(
                 .limits
                 .is_none_or(|(lo, hi)| *value >= lo - 1e-9 && *value <= hi + 1e-9);
             within_limits &= value.is_finite() && inside;
+        }
+        if frame < first_written {
+            continue;
         }
         if let Some((sink, writer)) = bvh.as_mut() {
             writer.write_frame(sink, pose).map_err(|e| sink.fail(e))?;
