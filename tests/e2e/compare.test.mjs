@@ -115,7 +115,7 @@ describe('side-by-side IK comparison (WebGL2)', () => {
       assert.match(await command(page, { compare: { views: ['pinv', 'dls'] } }), /^compare: engine poda/);
       assert.deepEqual(p.problems, [], 'no console problems');
     } finally {
-      await p.close();
+      await p.page.close().catch(() => {});
     }
   });
 });

@@ -17,7 +17,8 @@ const T = { timeout: 240_000 };
 /**
  * state() fields that are live counters, not settings, and so differ between two labs opened from
  * one link: the frame counter, simulated time, frame rate and timing, and `views` (each effector's
- * error at the current frame). Everything else must match exactly.
+ * error at the current frame), and the comparison's live metrics. Everything else must match
+ * exactly.
  */
 const LIVE = ['frame', 'time_s', 'fps', 'sim_us_per_frame', 'views'];
 
@@ -26,6 +27,8 @@ const presetJson = (name) => readFileSync(join(repoRoot, 'presets', `${name}.jso
 function settled(s) {
   const out = { ...s };
   for (const key of LIVE) delete out[key];
+  // The side-by-side comparison's live figures (its configuration must match).
+  if (out.compare) out.compare = { ...out.compare, metrics: undefined };
   return out;
 }
 
@@ -66,6 +69,7 @@ describe('full-state links (WebGL2 path)', () => {
         { views: { follow: false, grid: false, world_axes: true } },
         { camera: { yaw_deg: -35, pitch_deg: 20, distance_m: 4.25, target_m: [0.3, 0.5, 1.25] } },
         { heading_deg: 15, plots: false },
+        { compare: { views: ['pinv', 'dls'], scenario: 'singularity', options: [{}, { lambda: 0.3 }] } },
       ]) assert.equal(await command(a.page, c), 'ok', JSON.stringify(c));
       assert.ok(await frameExceeds(a.page, 5), 'the app runs');
       assert.equal(await command(a.page, { paused: true }), 'ok');
@@ -74,6 +78,8 @@ describe('full-state links (WebGL2 path)', () => {
       assert.equal(original.custom_preset, true);
       assert.equal(original.ik.lambda, 0.21);
       assert.equal(original.view_options.grid, false);
+      assert.deepEqual(original.compare.views, ['pinv', 'dls']);
+      assert.equal(original.compare.options[1].lambda, 0.3);
       link = await a.page.evaluate(() => window.gaitlab.link());
       assert.ok(link.startsWith(`${server.url}#p=`), link.slice(0, 80));
       console.log(`link: ${link.length} characters`);

@@ -17,6 +17,7 @@ pub mod export;
 pub mod fk;
 pub mod ik;
 pub mod jacobian;
+pub mod portable;
 pub mod pose;
 pub mod preset;
 pub mod skeleton;

@@ -2,7 +2,7 @@
 //! and Taylor polynomials on [−π/4, π/4], accurate to a few units in the last
 //! place. It is plain arithmetic, so native and WebAssembly builds give the same
 //! bits (the platform libm need not), and it is several times cheaper than a
-//! libm call in the FK loop. Arguments beyond ±2²⁰ rad fall back to `f64::sin_cos`.
+//! libm call in the FK loop. Arguments beyond ±2²⁰ rad fall back to `libm::sincos`.
 
 use std::f64::consts::FRAC_2_PI;
 
@@ -24,7 +24,7 @@ const REDUCTION_LIMIT: f64 = 1_048_576.0;
 pub fn sin_cos(x: f64) -> (f64, f64) {
     // NaN fails this comparison too and goes to the fallback.
     if x.abs().partial_cmp(&REDUCTION_LIMIT) != Some(std::cmp::Ordering::Less) {
-        return x.sin_cos();
+        return libm::sincos(x);
     }
     // Round to the nearest integer by the 1.5·2⁵² trick (exact for |v| < 2⁵¹);
     // `f64::round` is a library call on baseline x86-64.
@@ -81,6 +81,7 @@ fn kernel(r: f64) -> (f64, f64) {
 }
 
 #[cfg(test)]
+#[allow(clippy::disallowed_methods)] // compares with the platform functions
 mod tests {
     use super::*;
 

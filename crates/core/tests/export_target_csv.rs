@@ -7,6 +7,7 @@ use gaitlab_core::export::{
     CsvError, MAX_TARGET_CSV_BYTES, MAX_TARGET_ROWS, TargetCsvWriter, TargetTrack, WriteError,
     parse_target_csv, write_target_csv,
 };
+use gaitlab_core::portable::Portable;
 use glam::DVec3;
 
 /// Two effectors, CRLF ends, a quoted and padded header, a blank line.
@@ -81,7 +82,7 @@ fn writer_and_reader_round_trip_exactly() {
     let positions: Vec<DVec3> = (0..200 * 3)
         .map(|i| {
             let x = f64::from(i);
-            DVec3::new((0.37 * x).sin(), 1e-9 * x, -(x / 7.0).cos() * 1e6)
+            DVec3::new((0.37 * x).psin(), 1e-9 * x, -(x / 7.0).pcos() * 1e6)
         })
         .collect();
     let track = TargetTrack::new(times, positions, 3).expect("valid track");

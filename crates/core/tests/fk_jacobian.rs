@@ -1,6 +1,7 @@
 //! Forward kinematics against hand-computed poses, and the geometric Jacobian
 //! against central finite differences of forward kinematics.
 
+use gaitlab_core::portable::Portable;
 mod common;
 
 use std::f64::consts::FRAC_PI_2;
@@ -33,7 +34,7 @@ fn planar_arm_matches_hand_computed_positions() {
         joints: vec![30f64.to_radians(), 60f64.to_radians()],
     };
     let kin = Kinematics::of(&arm, &pose);
-    let expected = DVec3::new(30f64.to_radians().cos(), 0.5 + 0.5, 0.0);
+    let expected = DVec3::new(30f64.to_radians().pcos(), 0.5 + 0.5, 0.0);
     close(kin.effector_position[0], expected, 1e-12);
 }
 

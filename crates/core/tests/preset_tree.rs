@@ -2,6 +2,7 @@
 //! first (She 2006 §3.1's tree), and PODA Denavit–Hartenberg limbs give exactly
 //! the same kinematics as the same limb written joint by joint.
 
+use gaitlab_core::portable::Portable;
 use std::f64::consts::FRAC_PI_2;
 
 use gaitlab_core::preset::{self, Creature, Preset};
@@ -161,7 +162,7 @@ fn dh_arm() -> Creature {
 /// (prismatic), the effector at the last row's constant translation.
 fn joint_arm() -> Creature {
     let [r0, r1, r2] = ROWS;
-    let tip = DVec3::new(r2.2 * r2.5.cos(), r2.2 * r2.5.sin(), 0.0);
+    let tip = DVec3::new(r2.2 * r2.5.pcos(), r2.2 * r2.5.psin(), 0.0);
     creature_with(json!({
         "root": {"position": [0, 1, 0]},
         "joints": [

@@ -31,6 +31,7 @@
 //! `2·|front.z − back.z|·frequency/slowdown` would leave it sliding backward at
 //! mid-stance.
 
+use gaitlab_core::portable::Portable;
 use std::f64::consts::{PI, TAU};
 
 use gaitlab_core::preset::thesis::{CycleShape, ThesisMode, ThesisParams};
@@ -181,7 +182,7 @@ impl<'a> ThesisScript<'a> {
         let shape = self.shape();
         let right_phase = phase - PI;
         let mirror = DVec3::new(-1.0, 1.0, 1.0);
-        let bounce = 0.5 * shape.bounce_m * (2.0 * phase).cos();
+        let bounce = 0.5 * shape.bounce_m * (2.0 * phase).pcos();
         let bounce = if self.mode.running() { -bounce } else { bounce };
         let ride = DVec3::new(0.0, bounce, 0.0);
         ScriptSample {
@@ -204,7 +205,7 @@ impl<'a> ThesisScript<'a> {
 
 /// Left foot target at phase `phase`.
 fn foot(shape: &CycleShape, phase: f64) -> DVec3 {
-    let (sin, cos) = phase.sin_cos();
+    let (sin, cos) = phase.psin_cos();
     let mid = 0.5 * (shape.front_foot + shape.back_foot);
     let half = 0.5 * (shape.front_foot - shape.back_foot);
     let lift = cos.max(0.0);
@@ -215,5 +216,5 @@ fn foot(shape: &CycleShape, phase: f64) -> DVec3 {
 fn hand(shape: &CycleShape, phase: f64) -> DVec3 {
     let mid = 0.5 * (shape.front_hand + shape.back_hand);
     let half = 0.5 * (shape.front_hand - shape.back_hand);
-    mid - half * phase.sin()
+    mid - half * phase.psin()
 }

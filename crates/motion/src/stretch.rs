@@ -5,6 +5,7 @@
 //! around the limb's full reach, so the limb spends its time fully stretched —
 //! the configuration where the Jacobian loses rank.
 
+use gaitlab_core::portable::Portable;
 use gaitlab_core::{Kinematics, Skeleton};
 use glam::DVec3;
 
@@ -84,7 +85,7 @@ impl LimbReach {
     #[must_use]
     pub fn target(&self, options: &StretchOptions, t_s: f64) -> DVec3 {
         let swing = if options.period_s > 0.0 {
-            (std::f64::consts::TAU * t_s / options.period_s).sin()
+            (std::f64::consts::TAU * t_s / options.period_s).psin()
         } else {
             0.0
         };

@@ -5,6 +5,7 @@
 //! and a strong pronk leaves the ground.
 
 use gaitlab_core::driver::Driver;
+use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::{Creature, PathSpec, PodaParams, load_bundled};
 use gaitlab_motion::PodaDriver;
 use gaitlab_motion::poda::gait_names;
@@ -24,7 +25,7 @@ fn circle(r: f64) -> PathSpec {
     let points = (0..16)
         .map(|k| {
             let a = f64::from(k) / 16.0 * std::f64::consts::TAU;
-            [r * a.cos() - r, r * a.sin()]
+            [r * a.pcos() - r, r * a.psin()]
         })
         .collect();
     PathSpec {

@@ -2,6 +2,7 @@
 //! known joint motion produces, reports the same IK metrics as the thesis
 //! driver, and refuses a track with the wrong number of effectors.
 
+use gaitlab_core::portable::Portable;
 mod common;
 
 use gaitlab_core::Kinematics;
@@ -22,7 +23,7 @@ fn motion(skeleton: &gaitlab_core::Skeleton, t: f64) -> Vec<f64> {
         .iter()
         .enumerate()
         .map(|(j, joint)| {
-            let value = joint.rest + 0.15 * (std::f64::consts::TAU * t + j as f64).sin();
+            let value = joint.rest + 0.15 * (std::f64::consts::TAU * t + j as f64).psin();
             joint.clamp(value)
         })
         .collect()

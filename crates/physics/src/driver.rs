@@ -5,6 +5,7 @@
 //! says why when the simulation blows up (Raibert & Hodgins 1991, Figure 2).
 
 use gaitlab_core::driver::Driver;
+use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::{Creature as PresetCreature, PhysicsParams, PresetError};
 use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
@@ -481,7 +482,7 @@ impl PhysicsDriver {
             if to.length() < WAYPOINT_RADIUS_M * l {
                 self.waypoint += 1;
             } else {
-                self.heading_goal = to.x.atan2(to.z);
+                self.heading_goal = to.x.patan2(to.z);
             }
         }
         let error = (self.heading_goal - self.heading + std::f64::consts::PI)

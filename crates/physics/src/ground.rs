@@ -8,6 +8,7 @@
 //! The terrain is flat ground at height 0 plus optional boxes (steps and
 //! obstacles); only their tops carry feet.
 
+use gaitlab_core::portable::Portable;
 use glam::DVec3;
 
 use crate::creature::Creature;
@@ -63,11 +64,11 @@ impl GroundParams {
     pub fn scaled(&self, l: f64) -> Self {
         Self {
             vertical_stiffness: self.vertical_stiffness * l.powi(2),
-            vertical_damping: self.vertical_damping * l.powf(2.5),
+            vertical_damping: self.vertical_damping * l.ppowf(2.5),
             tangential_stiffness: self.tangential_stiffness * l.powi(2),
-            tangential_damping: self.tangential_damping * l.powf(2.5),
+            tangential_damping: self.tangential_damping * l.ppowf(2.5),
             torsional_stiffness: self.torsional_stiffness * l.powi(4),
-            torsional_damping: self.torsional_damping * l.powf(4.5),
+            torsional_damping: self.torsional_damping * l.ppowf(4.5),
             pad: self.pad.map(|p| PawPad {
                 stiffness_n: p.stiffness_n * l.powi(3),
                 thickness_m: p.thickness_m * l,
@@ -133,7 +134,7 @@ pub struct FootContact {
 /// The heading of a body's forward (z) axis about the world vertical (rad).
 fn yaw_of(data: &Data, body: usize) -> f64 {
     let fwd = data.world[body].rot.z_axis;
-    fwd.x.atan2(fwd.z)
+    fwd.x.patan2(fwd.z)
 }
 
 fn wrap_angle(a: f64) -> f64 {

@@ -9,6 +9,7 @@
 //! angles reproduce the matrix to rounding error even at gimbal lock (x = ±90°),
 //! where only `z ± y` is determined and the split between them is arbitrary.
 
+use crate::portable::Portable;
 use glam::{DMat3, DQuat, DVec3};
 
 /// ZXY Euler angles of `rotation`, radians: the returned `DVec3 { x, y, z }`
@@ -27,14 +28,14 @@ pub fn euler_zxy(rotation: DMat3) -> DVec3 {
     let m01 = rotation.y_axis.x;
     let m11 = rotation.y_axis.y;
     let m21 = rotation.y_axis.z;
-    let x = m21.atan2(m01.hypot(m11));
-    let z = (-m01).atan2(m11);
-    let (sin_z, cos_z) = z.sin_cos();
+    let x = m21.patan2(m01.phypot(m11));
+    let z = (-m01).patan2(m11);
+    let (sin_z, cos_z) = z.psin_cos();
     // Row 0 of Rz(z)ᵀ·R = Rx(x)·Ry(y) is (cos y, 0, sin y): free of cos x, so
     // y stays exact (and consistent with whatever z was) near gimbal lock.
     let cos_y = cos_z * rotation.x_axis.x + sin_z * rotation.x_axis.y;
     let sin_y = cos_z * rotation.z_axis.x + sin_z * rotation.z_axis.y;
-    let y = sin_y.atan2(cos_y);
+    let y = sin_y.patan2(cos_y);
     DVec3::new(x, y, z)
 }
 
@@ -61,7 +62,7 @@ pub fn rotation_vector(rotation: DMat3) -> DVec3 {
     if sin_half <= 0.0 || !sin_half.is_finite() {
         return DVec3::ZERO;
     }
-    let angle = 2.0 * sin_half.atan2(q.w);
+    let angle = 2.0 * sin_half.patan2(q.w);
     v * (angle / sin_half)
 }
 

@@ -15,6 +15,7 @@
 //! joint's turn without a new forward-kinematics pass: a joint's anchor and axis
 //! depend only on its ancestors, which the sweep has not reached yet.
 
+use crate::portable::Portable;
 use glam::DVec3;
 
 use super::{IkOptions, IkStatus, JointWeight, Targets};
@@ -158,7 +159,7 @@ fn best_turn(
     if sine == 0.0 && cosine == 0.0 {
         0.0
     } else {
-        sine.atan2(cosine)
+        sine.patan2(cosine)
     }
 }
 

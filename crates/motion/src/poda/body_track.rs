@@ -17,6 +17,7 @@
 //! Translation is planned one gait period further ahead than yaw, because a
 //! leg's yaw target lies one period after its mid-stance.
 
+use gaitlab_core::portable::Portable;
 use std::collections::VecDeque;
 
 use glam::DVec2;
@@ -291,7 +292,7 @@ impl BodyTrack {
     fn travel_heading(&self, t_s: f64) -> f64 {
         let velocity = self.interpolate(t_s).velocity;
         if velocity.length_squared() > 1e-12 {
-            velocity.x.atan2(velocity.y)
+            velocity.x.patan2(velocity.y)
         } else {
             self.interpolate(t_s).yaw_rad
         }
@@ -452,7 +453,7 @@ mod tests {
         let states = run(&mut track, &path, &gait, 12.0);
         let mut worst: f64 = 0.0;
         for state in states.iter().filter(|s| s.t_s > 3.0) {
-            let travel = state.velocity.x.atan2(state.velocity.y);
+            let travel = state.velocity.x.patan2(state.velocity.y);
             worst = worst.max(wrap(state.yaw_rad - travel).abs());
             let distance = (state.position - DVec2::new(-radius, 0.0)).length();
             assert!(

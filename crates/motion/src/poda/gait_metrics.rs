@@ -222,6 +222,7 @@ impl GaitMetrics {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use gaitlab_core::portable::Portable;
 
     #[test]
     fn interpolated_contacts_give_duty_period_and_phase() {
@@ -233,7 +234,7 @@ mod tests {
             if s < 0.6 {
                 0.0
             } else {
-                0.05 * (std::f64::consts::PI * (s - 0.6) / 0.4).sin()
+                0.05 * (std::f64::consts::PI * (s - 0.6) / 0.4).psin()
             }
         };
         let mut t_prev = 0.0;

@@ -10,6 +10,7 @@
 //! least squares, `Jᵀ(JJᵀ + λ²I)⁻¹`, with λ² growing as the leg straightens,
 //! so a fully stretched leg neither explodes nor freezes.
 
+use gaitlab_core::portable::Portable;
 use gaitlab_core::{JointKind, Kinematics, Skeleton};
 use glam::{DMat3, DVec3};
 
@@ -232,9 +233,9 @@ fn smallest_eigenvalue(m: &DMat3) -> f64 {
     let p = (p2 / 6.0).sqrt();
     let shifted = (*m - DMat3::from_diagonal(DVec3::splat(q))) * (1.0 / p);
     let r = (shifted.determinant() / 2.0).clamp(-1.0, 1.0);
-    let phi = r.acos() / 3.0;
+    let phi = r.pacos() / 3.0;
     // Eigenvalues q + 2p·cos(φ + 2πk/3); the smallest is k = 1.
-    q + 2.0 * p * (phi + 2.0 * std::f64::consts::PI / 3.0).cos()
+    q + 2.0 * p * (phi + 2.0 * std::f64::consts::PI / 3.0).pcos()
 }
 
 #[cfg(test)]

@@ -15,6 +15,7 @@
 //! table plus safeguarded Newton steps, landing within about 1e-12 m of the
 //! asked distance along the curve.
 
+use gaitlab_core::portable::Portable;
 use glam::{DVec2, DVec3};
 
 use super::spline::{Basis, CurvePoint, eval_curve};
@@ -172,7 +173,7 @@ impl BodyPath {
         check_xz(start, || "start".into())?;
         check(heading_rad, "heading_rad", -1e6, 1e6, "rad")?;
         check(length_m, "length_m", MIN_LENGTH_M, MAX_COORD_M, "m")?;
-        let end = start + DVec2::new(heading_rad.sin(), heading_rad.cos()) * length_m;
+        let end = start + DVec2::new(heading_rad.psin(), heading_rad.pcos()) * length_m;
         Self::new(&[start, end], PathKind::CatmullRom, false)
     }
 
@@ -198,7 +199,7 @@ impl BodyPath {
         let step = std::f64::consts::TAU / 16.0 * if counter_clockwise { 1.0 } else { -1.0 };
         let points: Vec<DVec2> = (0..16_u8)
             .map(|k| start_angle_rad + step * f64::from(k))
-            .map(|a| centre + radius_m * DVec2::new(a.sin(), a.cos()))
+            .map(|a| centre + radius_m * DVec2::new(a.psin(), a.pcos()))
             .collect();
         Self::new(&points, PathKind::CatmullRom, true)
     }
@@ -344,7 +345,7 @@ impl BodyPath {
         PathSample {
             position: DVec2::new(c.position.x, c.position.z) + tangent * beyond_m,
             tangent,
-            heading_rad: tangent.x.atan2(tangent.y),
+            heading_rad: tangent.x.patan2(tangent.y),
             curvature_per_m: curvature,
         }
     }
@@ -466,7 +467,8 @@ mod tests {
         assert!(kmin * r > 0.9 && kmax * r < 1.15);
         let start = ccw.sample(0.0);
         assert!(
-            (start.position - centre - r * DVec2::new(0.3f64.sin(), 0.3f64.cos())).length() < 1e-12
+            (start.position - centre - r * DVec2::new(0.3f64.psin(), 0.3f64.pcos())).length()
+                < 1e-12
         );
         assert!((start.heading_rad - (0.3 + FRAC_PI_2)).abs() < 1e-9);
         let cw = BodyPath::circle(centre, r, 0.3, false).expect("circle");
@@ -477,7 +479,7 @@ mod tests {
     #[test]
     fn straight_path_and_extrapolation() {
         let (start, h) = (DVec2::new(1.0, 2.0), 0.7_f64);
-        let dir = DVec2::new(h.sin(), h.cos());
+        let dir = DVec2::new(h.psin(), h.pcos());
         let path = BodyPath::straight(start, h, 3.0).expect("straight");
         assert!((path.length_m() - 3.0).abs() < 1e-12);
         for d in [-0.5, 0.0, 1.2, 3.0, 3.5] {

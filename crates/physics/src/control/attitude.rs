@@ -2,6 +2,7 @@
 //! and yaw relative to a heading, the body's angular rate, and the horizontal
 //! velocity of the centre of mass (the ϕ, ϕ̇ and ẋ of eqs. 3–4).
 
+use gaitlab_core::portable::Portable;
 use glam::{DQuat, DVec3};
 
 use crate::creature::Creature;
@@ -10,7 +11,7 @@ use crate::data::Data;
 /// The unit forward vector on the ground for a heading (rad about +y; 0 = +z).
 #[must_use]
 pub fn heading_forward(heading: f64) -> DVec3 {
-    DVec3::new(heading.sin(), 0.0, heading.cos())
+    DVec3::new(heading.psin(), 0.0, heading.pcos())
 }
 
 /// The trunk's orientation error from upright at `heading` (plus a desired

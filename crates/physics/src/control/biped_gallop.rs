@@ -20,6 +20,7 @@
 //! support, shared in proportion to the load each carries. Everything scales
 //! with the creature's L ("Dynamic Scaling", Table 1).
 
+use gaitlab_core::portable::Portable;
 use glam::{DQuat, DVec3};
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
@@ -312,7 +313,7 @@ impl BipedGallop {
             min: -0.25 * l,
             max: 0.0,
             stiffness: 2.0e5 * l * l,
-            damping: 500.0 * l.powf(2.5),
+            damping: 500.0 * l.ppowf(2.5),
         }
     }
 
@@ -523,17 +524,17 @@ impl Controller for BipedGallop {
 
         let com = crate::energy::center_of_mass(&creature.model, data);
         let reach = (BIPED_LEG_M + p.landing_rest_m) * l;
-        let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.powf(4.5));
-        let (ykp, ykv) = (p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.powf(4.5));
+        let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.ppowf(4.5));
+        let (ykp, ykv) = (p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.ppowf(4.5));
         let max = p.max_hip_torque * l.powi(4);
 
         // Eq. 4 on pitch and roll (and a yaw servo): the torque the trunk
         // needs, shared by the legs in support in proportion to their load.
         let err = attitude_error(creature, data, p.heading, self.pitch_d);
         let rate = trunk_rate(creature, data);
-        let (pkp, pkv) = (p.posture_kp * l.powi(4), p.posture_kv * l.powf(4.5));
+        let (pkp, pkv) = (p.posture_kp * l.powi(4), p.posture_kv * l.ppowf(4.5));
         let posture = -err * pkp - rate * pkv;
-        let yaw = -err.y * p.yaw_kp * l.powi(4) - rate.y * p.yaw_kv * l.powf(4.5);
+        let yaw = -err.y * p.yaw_kp * l.powi(4) - rate.y * p.yaw_kv * l.ppowf(4.5);
         let servoing = |s: &GallopLeg| {
             matches!(
                 s.phase,
@@ -575,7 +576,7 @@ impl Controller for BipedGallop {
             let d = &mut drives[leg.spring];
             d.stops = Some(stops);
             d.spring.stiffness = p.leg_stiffness * l * l;
-            d.spring.damping = p.leg_damping * l.powf(2.5);
+            d.spring.damping = p.leg_damping * l.ppowf(2.5);
             d.spring.max_force = f64::INFINITY;
             d.feedforward = 0.0;
             d.spring.rest = state.rest;

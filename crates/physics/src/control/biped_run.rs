@@ -4,6 +4,7 @@
 //! (eq. 1–2), speed by foot placement (eq. 3), trunk attitude by the active
 //! hip in stance (eq. 4).
 
+use gaitlab_core::portable::Portable;
 use glam::{DQuat, DVec3};
 
 use super::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
@@ -149,7 +150,7 @@ impl BipedRun {
             min: -0.25 * l,
             max: 0.0,
             stiffness: 2.0e5 * l * l,
-            damping: 500.0 * l.powf(2.5),
+            damping: 500.0 * l.ppowf(2.5),
         }
     }
 
@@ -260,7 +261,7 @@ impl Controller for BipedRun {
             let d = &mut drives[leg.spring];
             d.stops = Some(stops);
             d.spring.stiffness = p.leg_stiffness * l * l;
-            d.spring.damping = p.leg_damping * l.powf(2.5);
+            d.spring.damping = p.leg_damping * l.ppowf(2.5);
             d.feedforward = 0.0;
             d.spring.rest = self.rest[i];
         }
@@ -268,7 +269,7 @@ impl Controller for BipedRun {
         let active = &creature.legs[self.active];
         let idle = &creature.legs[1 - self.active];
         let reach = (BIPED_LEG_M + p.landing_rest_m) * l;
-        let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.powf(4.5));
+        let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.ppowf(4.5));
         let max = p.max_hip_torque * l.powi(4);
         match self.phase {
             Phase::Flight => {
@@ -286,7 +287,7 @@ impl Controller for BipedRun {
                 set_hip(drives, &active.hip[..2], [roll, pitch], kp, kv, max);
                 drives[active.hip[2]].servo(
                     p.leg_yaw_kp * l.powi(4),
-                    p.leg_yaw_kv * l.powf(4.5),
+                    p.leg_yaw_kv * l.ppowf(4.5),
                     0.0,
                 );
             }
@@ -296,7 +297,7 @@ impl Controller for BipedRun {
                 }
                 drives[active.hip[2]].servo(
                     p.leg_yaw_kp * l.powi(4),
-                    p.leg_yaw_kv * l.powf(4.5),
+                    p.leg_yaw_kv * l.ppowf(4.5),
                     0.0,
                 );
             }
@@ -305,7 +306,7 @@ impl Controller for BipedRun {
                 // by the hip joints as its reaction.
                 let err = attitude_error(creature, data, p.heading, 0.0);
                 let rate = trunk_rate(creature, data);
-                let (pkp, pkv) = (p.posture_kp * l.powi(4), p.posture_kv * l.powf(4.5));
+                let (pkp, pkv) = (p.posture_kp * l.powi(4), p.posture_kv * l.ppowf(4.5));
                 let torque = -err * pkp - rate * pkv;
                 let roll_axis = trunk_rot * DVec3::Z;
                 let roll_q = data.q[active.hip[0]];
@@ -314,7 +315,7 @@ impl Controller for BipedRun {
                 drives[active.hip[1]].torque((-torque.dot(pitch_axis)).clamp(-max, max));
                 // The leg turns on a tiny inertia: only a torque the loaded
                 // foot's torsional grip can hold.
-                let yaw = -err.y * p.yaw_kp * l.powi(4) - rate.y * p.yaw_kv * l.powf(4.5);
+                let yaw = -err.y * p.yaw_kp * l.powi(4) - rate.y * p.yaw_kv * l.ppowf(4.5);
                 let grip = p.max_yaw_torque * l.powi(4);
                 drives[active.hip[2]].torque((-yaw).clamp(-grip, grip));
             }
@@ -323,6 +324,6 @@ impl Controller for BipedRun {
         // on the trunk with opposite torques and cancel.
         let mirror = [-data.q[active.hip[0]], -data.q[active.hip[1]]];
         set_hip(drives, &idle.hip[..2], mirror, kp, kv, max);
-        drives[idle.hip[2]].servo(p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.powf(4.5), 0.0);
+        drives[idle.hip[2]].servo(p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.ppowf(4.5), 0.0);
     }
 }

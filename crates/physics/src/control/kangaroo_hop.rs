@@ -32,6 +32,7 @@
 //! (Table 1): lengths ×L, times ×√L, speeds ×√L, torsional stiffness ×L⁴,
 //! torsional damping ×L^4.5.
 
+use gaitlab_core::portable::Portable;
 use glam::{DVec2, DVec3};
 
 use super::attitude::com_velocity;
@@ -223,12 +224,12 @@ fn leg_geometry(creature: &Creature) -> Option<LegGeometry> {
 /// Unit direction (forward, up) of a link at absolute angle `a` (rad about +x,
 /// 0 hanging down, positive swinging back).
 fn dir(a: f64) -> DVec2 {
-    DVec2::new(-a.sin(), -a.cos())
+    DVec2::new(-a.psin(), -a.pcos())
 }
 
 /// Absolute angle of the direction `v` (forward, up).
 fn angle_of(v: DVec2) -> f64 {
-    (-v.x).atan2(-v.y)
+    (-v.x).patan2(-v.y)
 }
 
 /// A world point in the sagittal plane (forward, up).
@@ -251,7 +252,7 @@ fn leg_ik(g: &LegGeometry, toe: DVec2, ankle: f64, pitch: f64) -> (f64, f64) {
     let gamma = angle_of(toe);
     let alpha = ((l1 * l1 + d * d - s * s) / (2.0 * l1 * d))
         .clamp(-1.0, 1.0)
-        .acos();
+        .pacos();
     let a1 = gamma - alpha;
     let knee = l1 * dir(a1);
     let toe_at = d * dir(gamma);
@@ -479,7 +480,7 @@ impl KangarooHop {
     fn ankle_gains(&self, l: f64) -> (f64, f64) {
         let p = &self.params;
         let mut k = p.ankle_stiffness * l.powi(4);
-        let mut b = p.ankle_damping * l.powf(4.5);
+        let mut b = p.ankle_damping * l.ppowf(4.5);
         match self.jump {
             JumpStage::Takeoff => k *= p.jump_stiffness_factor,
             JumpStage::Landing if self.phase != Phase::Flight => b *= p.landing_damping_factor,
@@ -567,7 +568,7 @@ impl Controller for KangarooHop {
         self.ramp_speed(input.dt, l);
         self.advance_phase(input, com, com_v);
         let p = self.params;
-        let (t4, t45) = (l.powi(4), l.powf(4.5));
+        let (t4, t45) = (l.powi(4), l.ppowf(4.5));
         let max = p.max_torque * t4;
         let pitch = data.q[2];
         let pitch_rate = data.qd[2];

@@ -3,6 +3,7 @@
 //! for the speed error — and the hip angles that point a leg at that foot
 //! position.
 
+use gaitlab_core::portable::Portable;
 use glam::{DMat3, DVec3};
 
 /// Eq. 3 on the ground plane: the desired foot displacement from the
@@ -22,8 +23,8 @@ pub fn foot_displacement(velocity: DVec3, desired: DVec3, stance_s: f64, gain_s:
 #[must_use]
 pub fn gimbal_angles(direction: DVec3) -> (f64, f64) {
     let u = direction.normalize_or(DVec3::NEG_Y);
-    let pitch = (-u.z).clamp(-1.0, 1.0).asin();
-    let roll = u.x.atan2(-u.y);
+    let pitch = (-u.z).clamp(-1.0, 1.0).pasin();
+    let roll = u.x.patan2(-u.y);
     (roll, pitch)
 }
 

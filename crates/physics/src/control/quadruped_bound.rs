@@ -31,6 +31,7 @@
 //! All parameters are given at scale 1 and scaled by the creature's dynamic
 //! scale L (Table 1).
 
+use gaitlab_core::portable::Portable;
 use glam::{DQuat, DVec3};
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
@@ -341,7 +342,7 @@ impl QuadrupedBound {
             min: -0.36 * l,
             max: 0.0,
             stiffness: 2.0e5 * l * l,
-            damping: 500.0 * l.powf(2.5),
+            damping: 500.0 * l.ppowf(2.5),
         }
     }
 
@@ -552,10 +553,10 @@ impl Controller for QuadrupedBound {
         let err = attitude_error(creature, data, p.heading, p.pitch_bias);
         let rate = trunk_rate(creature, data);
         let pitch_t = -(err.dot(lateral) * p.pitch_kp * l.powi(4)
-            + rate.dot(lateral) * p.pitch_kv * l.powf(4.5));
+            + rate.dot(lateral) * p.pitch_kv * l.ppowf(4.5));
         let roll_t =
-            -(err.dot(fwd) * p.roll_kp * l.powi(4) + rate.dot(fwd) * p.roll_kv * l.powf(4.5));
-        let yaw_t = -(err.y * p.yaw_kp * l.powi(4) + rate.y * p.yaw_kv * l.powf(4.5));
+            -(err.dot(fwd) * p.roll_kp * l.powi(4) + rate.dot(fwd) * p.roll_kv * l.ppowf(4.5));
+        let yaw_t = -(err.y * p.yaw_kp * l.powi(4) + rate.y * p.yaw_kv * l.ppowf(4.5));
 
         let velocity = com_velocity(creature, data);
         let desired = fwd * (p.speed_mps * l.sqrt() + self.speed_bias);
@@ -563,7 +564,7 @@ impl Controller for QuadrupedBound {
         let max = p.max_hip_torque * l.powi(4);
         let servo = HipServo {
             kp: p.swing_kp * l.powi(4),
-            kv: p.swing_kv * l.powf(4.5),
+            kv: p.swing_kv * l.ppowf(4.5),
             max,
             dt: input.dt,
         };
@@ -630,7 +631,7 @@ impl Controller for QuadrupedBound {
                         p.leg_damping
                     } else {
                         p.leg_air_damping
-                    } * l.powf(2.5);
+                    } * l.ppowf(2.5);
                     d.spring.max_force = f64::INFINITY;
                     d.feedforward = 0.0;
                     d.spring.rest = rest.min(0.0);

@@ -20,6 +20,7 @@
 //! for the trot and bound. Every parameter is given for the creature at scale
 //! 1 and scaled by its dynamic scale L (Table 1).
 
+use gaitlab_core::portable::Portable;
 use glam::{DQuat, DVec3};
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
@@ -364,7 +365,7 @@ impl QuadrupedRun {
             min: -0.36 * l,
             max: 0.0,
             stiffness: 2.0e5 * l * l,
-            damping: 500.0 * l.powf(2.5),
+            damping: 500.0 * l.ppowf(2.5),
         }
     }
 
@@ -603,7 +604,7 @@ impl Controller for QuadrupedRun {
                 t.leg_damping
             } else {
                 t.leg_air_damping
-            } * l.powf(2.5);
+            } * l.ppowf(2.5);
             d.spring.max_force = f64::INFINITY;
             d.feedforward = 0.0;
             let slot = pair.iter().position(|&j| j == i);
@@ -627,7 +628,7 @@ impl Controller for QuadrupedRun {
         let max = p.max_hip_torque * l.powi(4);
         let servo = HipServo {
             kp: p.swing_kp * l.powi(4),
-            kv: p.swing_kv * l.powf(4.5),
+            kv: p.swing_kv * l.ppowf(4.5),
             max,
             dt: input.dt,
         };
@@ -647,10 +648,10 @@ impl Controller for QuadrupedRun {
         let rate = trunk_rate(creature, data);
         let lateral = DVec3::Y.cross(fwd);
         let pitch_t = -(err.dot(lateral) * t.pitch_kp * l.powi(4)
-            + rate.dot(lateral) * t.pitch_kv * l.powf(4.5));
+            + rate.dot(lateral) * t.pitch_kv * l.ppowf(4.5));
         let roll_t =
-            -(err.dot(fwd) * t.roll_kp * l.powi(4) + rate.dot(fwd) * t.roll_kv * l.powf(4.5));
-        let yaw_t = -(err.y * p.yaw_kp * l.powi(4) + rate.y * p.yaw_kv * l.powf(4.5));
+            -(err.dot(fwd) * t.roll_kp * l.powi(4) + rate.dot(fwd) * t.roll_kv * l.ppowf(4.5));
+        let yaw_t = -(err.y * p.yaw_kp * l.powi(4) + rate.y * p.yaw_kv * l.ppowf(4.5));
         let torque = lateral * pitch_t + fwd * roll_t;
         let servoing = |ph: Phase| matches!(ph, Phase::Compression | Phase::Thrust);
         let n = pair
