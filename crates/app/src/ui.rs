@@ -113,7 +113,10 @@ impl Lab {
         panels::engine(ui, self);
         panels::preset(ui, self);
         panels_editor::share(ui, self);
-        panels::buttons(ui, self);
+        // The phone layout's bar above the drawer has these already.
+        if !self.narrow {
+            panels::buttons(ui, self);
+        }
         ui.separator();
         if self.driver.physics().is_some() {
             panels_physics::physics(ui, self);
@@ -225,12 +228,23 @@ impl Lab {
     }
 
     fn readout(&self, ui: &mut egui::Ui) {
+        // Side by side, the views' drivers run and the single one waits.
+        let time_s = self
+            .compare
+            .as_ref()
+            .and_then(|c| c.views().first())
+            .map_or_else(
+                || gaitlab_core::driver::Driver::time(&self.driver),
+                |view| gaitlab_core::driver::Driver::time(&view.driver),
+            );
         ui.label(format!(
             "frame {} · t = {:.2} s · {:.0} fps",
-            self.frame,
-            gaitlab_core::driver::Driver::time(&self.driver),
-            self.fps
+            self.frame, time_s, self.fps
         ));
+        if self.compare.is_some() {
+            ui.label("Side by side: each view's errors are in its card below.");
+            return;
+        }
         if self.sim_us_per_frame > 0.0 {
             ui.label(format!(
                 "simulation + IK: {:.1} µs per frame",

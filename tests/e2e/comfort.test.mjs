@@ -1,0 +1,104 @@
+// Browser tests of the comfort features (issue 6 item 5): the phone layout (a 390 × 844 touch
+// screen: the 3-D view fills the width, a tap on "Controls" opens the drawer, the view keeps
+// drawing) and the light/dark theme (the panels' pixels follow the setting). Touch orbit and
+// pinch zoom are tested in features.test.mjs ("high-DPI and touch").
+
+import { after, before, describe, it } from 'node:test';
+import assert from 'node:assert/strict';
+import {
+  assertDrawn, command, launch, loadApp, pngStats, serveDist, shootCanvas, sleep, state,
+} from './harness.mjs';
+
+const T = { timeout: 240_000 };
+
+let server;
+before(async () => { server = await serveDist(); });
+after(async () => { await server?.close(); });
+
+async function withApp(browser, fn) {
+  const p = await loadApp(browser, server.url);
+  try {
+    await fn(p);
+    p.assertClean();
+  } finally {
+    await p.page.close().catch(() => {});
+  }
+}
+
+/** Waits until `pred(state())` holds (polling the page). */
+async function until(page, pred, what, timeout = 20_000) {
+  const end = Date.now() + timeout;
+  for (;;) {
+    const s = await state(page);
+    if (pred(s)) return s;
+    if (Date.now() > end) throw new Error(`timed out waiting for ${what}: ${JSON.stringify(s.layout)}`);
+    await sleep(100);
+  }
+}
+
+describe('phone layout (WebGL2, 390 × 844 touch screen)', () => {
+  let browser;
+  before(async () => { browser = await launch('webgl2', { hasTouch: true, viewport: { width: 390, height: 844 } }); });
+  after(async () => { await browser?.close(); });
+
+  it('fills the width with the 3-D view and opens the controls drawer by a tap', T, async () => {
+    await withApp(browser, async ({ page }) => {
+      assert.equal(await command(page, { paused: true }), 'ok');
+      let s = await until(page, (x) => x.layout.narrow && x.layout.controls_button_pt[2] > 0, 'the phone layout');
+      assert.equal(s.layout.controls_open, false, 'the drawer starts closed');
+      const [, , vw, vh] = s.view_rect_px;
+      assert.ok(vw >= 0.95 * 390, `the 3-D view takes the width: ${vw} px of 390`);
+      assert.ok(vh >= 0.8 * 844, `and most of the height: ${vh} px of 844`);
+      assertDrawn(await shootCanvas(page, 'phone-closed.png'), 'phone layout');
+
+      // A finger tap on the "Controls" button (CSS pixels = egui points at DPR 1).
+      const [bx, by, bw, bh] = s.layout.controls_button_pt;
+      const cdp = await page.context().newCDPSession(page);
+      const at = [{ x: bx + bw / 2, y: by + bh / 2, id: 0 }];
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at });
+      await sleep(80);
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+      s = await until(page, (x) => x.layout.controls_open, 'the drawer to open');
+      const [, , vw2, vh2] = s.view_rect_px;
+      assert.ok(vw2 >= 0.95 * 390, `the view keeps the width under the drawer: ${vw2}`);
+      assert.ok(vh2 > 0.3 * 844 && vh2 < vh, `the drawer takes the lower part: view ${vh} → ${vh2} px`);
+      const shot = await shootCanvas(page, 'phone-drawer.png');
+      // The drawer's panels are in the lower part of the screen, the figure above them.
+      const drawer = pngStats(shot.png, { x0: 0.05, y0: 0.7, x1: 0.95, y1: 0.95 });
+      assert.ok(drawer.distinct > 8, `the drawer shows controls (${drawer.distinct} colours); see ${shot.file}`);
+      const view = pngStats(shot.png, { x0: 0.1, y0: 0.1, x1: 0.9, y1: 0.4 });
+      assert.ok(view.stddev > 5, `the view above the drawer still draws (stddev ${view.stddev.toFixed(1)})`);
+
+      // The app keeps working in this layout: a method change reaches the state.
+      assert.equal(await command(page, { method: 'sdls' }), 'ok');
+      assert.equal((await state(page)).method, 'sdls');
+    });
+  });
+});
+
+describe('light and dark theme (WebGL2)', () => {
+  let browser;
+  before(async () => { browser = await launch('webgl2'); });
+  after(async () => { await browser?.close(); });
+
+  it('paints the panels light or dark as set, and keeps the setting in state()', T, async () => {
+    await withApp(browser, async ({ page }) => {
+      assert.equal(await command(page, { paused: true }), 'ok');
+      // The side panel's lower part: its background, few widgets.
+      const panel = { x0: 0.005, y0: 0.75, x1: 0.2, y1: 0.78 };
+      const looks = {};
+      for (const theme of ['light', 'dark']) {
+        assert.equal(await command(page, { theme }), 'ok');
+        const s = await until(page, (x) => x.theme === theme && x.dark === (theme === 'dark'), `theme ${theme}`);
+        assert.equal(s.theme, theme);
+        await sleep(300);
+        looks[theme] = pngStats((await shootCanvas(page, `theme-${theme}.png`)).png, panel).mean;
+      }
+      console.log(`# panel luminance: light ${looks.light.toFixed(0)}, dark ${looks.dark.toFixed(0)}`);
+      assert.ok(looks.light > 180, `light panels are light: ${looks.light}`);
+      assert.ok(looks.dark < 80, `dark panels are dark: ${looks.dark}`);
+      assert.match(await command(page, { theme: 'sepia' }), /^theme: unknown theme "sepia"/);
+      assert.equal((await state(page)).theme, 'dark', 'a bad theme changes nothing');
+    });
+  });
+});
