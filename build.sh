@@ -87,7 +87,8 @@ need_chromium() {
   fi
 }
 
-# playwright-core and pngjs exactly as tests/e2e/package-lock.json pins them (no browser download).
+# playwright-core, pngjs and three (its BVHLoader reads exported BVH) exactly as
+# tests/e2e/package-lock.json pins them (no browser download).
 need_e2e_modules() {
   need_node
   if [ ! -f "$E2E_DIR/node_modules/.package-lock.json" ] ||
