@@ -6,7 +6,7 @@
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  assertDrawn, command, launch, loadApp, pngStats, serveDist, shootCanvas, sleep, state,
+  assertDrawn, command, launch, pngStats, serveDist, shootCanvas, sleep, state, withLoadedApp,
 } from './harness.mjs';
 
 const T = { timeout: 240_000 };
@@ -15,15 +15,7 @@ let server;
 before(async () => { server = await serveDist(); });
 after(async () => { await server?.close(); });
 
-async function withApp(browser, fn) {
-  const p = await loadApp(browser, server.url);
-  try {
-    await fn(p);
-    p.assertClean();
-  } finally {
-    await p.page.close().catch(() => {});
-  }
-}
+const withApp = (browser, fn) => withLoadedApp(browser, server.url, fn);
 
 /** Waits until `pred(state())` holds (polling the page). */
 async function until(page, pred, what, timeout = 20_000) {

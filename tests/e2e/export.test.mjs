@@ -17,7 +17,9 @@ import { join } from 'node:path';
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
 import { BVHLoader } from 'three/examples/jsm/loaders/BVHLoader.js';
-import { command, launch, loadApp, repoRoot, saveArtifact, serveDist, sleep, state } from './harness.mjs';
+import {
+  command, launch, repoRoot, saveArtifact, serveDist, sleep, state, withLoadedApp,
+} from './harness.mjs';
 
 const T = { timeout: 600_000 };
 
@@ -25,16 +27,7 @@ let server;
 before(async () => { server = await serveDist(); });
 after(async () => { await server?.close(); });
 
-/** Runs `fn(p)` on a freshly loaded app and always closes the page. */
-async function withApp(browser, fn) {
-  const p = await loadApp(browser, server.url);
-  try {
-    await fn(p);
-    p.assertClean();
-  } finally {
-    await p.page.close().catch(() => {});
-  }
-}
+const withApp = (browser, fn) => withLoadedApp(browser, server.url, fn);
 
 /** Sends `cmd` and resolves to the download it triggers (its name and bytes). */
 async function downloadFrom(page, cmd, timeout = 60_000) {

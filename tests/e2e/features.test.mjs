@@ -6,7 +6,8 @@ import { readFileSync } from 'node:fs';
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  assertDrawn, command, frameExceeds, launch, loadApp, saveArtifact, serveDist, shootCanvas, sleep, state,
+  assertDrawn, command, frameExceeds, launch, saveArtifact, serveDist, shootCanvas, sleep, state,
+  withLoadedApp,
 } from './harness.mjs';
 
 const T = { timeout: 240_000 };
@@ -15,16 +16,7 @@ let server;
 before(async () => { server = await serveDist(); });
 after(async () => { await server?.close(); });
 
-/** Runs `fn(p)` on a freshly loaded app and always closes the page. */
-async function withApp(browser, fn, query = '') {
-  const p = await loadApp(browser, server.url + query);
-  try {
-    await fn(p);
-    p.assertClean();
-  } finally {
-    await p.page.close().catch(() => {});
-  }
-}
+const withApp = (browser, fn, query = '') => withLoadedApp(browser, server.url + query, fn);
 
 /** Sends `cmd` and resolves to the download it triggers (its name and bytes). */
 async function downloadFrom(page, cmd, timeout = 60_000) {

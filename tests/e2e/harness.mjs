@@ -320,6 +320,20 @@ export async function loadApp(browser, url, opts = {}) {
   return p;
 }
 
+/**
+ * Runs `fn(p)` on the app freshly loaded from `url`, fails on console problems, and always closes
+ * the page.
+ */
+export async function withLoadedApp(browser, url, fn) {
+  const p = await loadApp(browser, url);
+  try {
+    await fn(p);
+    p.assertClean();
+  } finally {
+    await p.page.close().catch(() => {});
+  }
+}
+
 /** Screenshot of the canvas, its statistics, and an artifact file. */
 export async function shootCanvas(page, name) {
   const canvas = page.locator('#gaitlab-canvas');

@@ -1,14 +1,20 @@
-// The long run of issue 3's acceptance: for GAITLAB_SOAK_S seconds (default 120) the app cycles
-// every IK preset × mode × method, then every PODA creature × gait, then every physics creature ×
-// gait, while animating; it must stay silent on the console, keep animating, apply every switch, keep
-// every effector error finite, keep PODA's planted feet from slipping and keep the simulated
-// creatures finite and up.
+// The browser soak (issues 3 and 7): for GAITLAB_SOAK_S seconds (default 120, the short version
+// CI runs; `GAITLAB_SOAK_S=600` is the 10-minute soak) the app cycles every IK preset × mode ×
+// method, side-by-side comparisons, every PODA creature × gait and every physics creature × gait,
+// a few seconds each, while animating. It must stay silent on the console, keep animating, apply
+// every switch, keep every effector error finite, keep PODA's planted feet from slipping and keep
+// the simulated creatures finite and up. Memory: after warm-up (the first pass over the cycle, or
+// its first half when the run is one pass) the JS heap (after a forced GC) and the wasm linear
+// memory may not grow by more than 10 %.
 
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
 import { command, frameExceeds, launch, loadApp, saveArtifact, serveDist, state } from './harness.mjs';
 
 const SOAK_S = Number(process.env.GAITLAB_SOAK_S ?? 120);
+/** Seconds on each switch: 3 s ("every few seconds"), shorter when the run is too short for one pass. */
+const SLOT_MAX_S = 3;
+const MAX_GROWTH = 0.10;
 const PRESETS = ['human', 'ik-quadruped'];
 const MODES = ['walk', 'run', 'wounded-walk', 'wounded-run'];
 const METHODS = ['transpose', 'pinv', 'dls', 'sdls'];
@@ -24,6 +30,23 @@ const PHYSICS_GAITS = {
   'raibert-kangaroo': ['hop'],
 };
 
+// Side by side (IK engine): four views, then two, in both scenarios.
+const COMPARES = [
+  { preset: 'human', compare: { views: ['transpose', 'pinv', 'dls', 'sdls'], scenario: 'singularity' } },
+  { preset: 'ik-quadruped', compare: { views: ['pinv-ns', 'ccd'], scenario: 'script' } },
+  { preset: 'human', compare: { views: ['dls-ns', 'ccd', 'sdls', 'pinv'], scenario: 'script' } },
+];
+
+/** JS heap in use after a forced garbage collection, and the wasm linear memory, bytes. */
+async function memory(cdp, page) {
+  await cdp.send('HeapProfiler.collectGarbage');
+  const { usedSize } = await cdp.send('Runtime.getHeapUsage');
+  const s = await state(page);
+  return { js_heap_bytes: usedSize, wasm_bytes: s.wasm_memory_bytes };
+}
+
+const mib = (b) => (b / 2 ** 20).toFixed(2);
+
 let server;
 before(async () => { server = await serveDist(); });
 after(async () => { await server?.close(); });
@@ -33,36 +56,61 @@ describe(`soak: ${SOAK_S} s cycling every preset, mode and method (WebGL2)`, () 
   before(async () => { browser = await launch('webgl2'); });
   after(async () => { await browser?.close(); });
 
-  it('stays clean and keeps animating', { timeout: (SOAK_S + 180) * 1000 }, async () => {
+  it('stays clean, keeps animating and keeps its memory', { timeout: (SOAK_S + 240) * 1000 }, async () => {
     const p = await loadApp(browser, server.url);
     try {
-      const combos = [
-        ...PRESETS.flatMap((preset) => MODES.flatMap((mode) => METHODS.map((method) => ({ preset, mode, method })))),
+      const ik = PRESETS.flatMap((preset) => MODES.flatMap((mode) => METHODS.map((method) => ({ preset, mode, method }))));
+      // Comparisons interleaved with the IK combos (each one leaves the comparison it found).
+      const cycle = [
+        ...ik.slice(0, 16), COMPARES[0], ...ik.slice(16, 24), COMPARES[1], ...ik.slice(24), COMPARES[2],
         ...Object.entries(PODA_GAITS).flatMap(([preset, gaits]) => gaits.map((gait) => ({ preset, gait }))),
         ...Object.entries(PHYSICS_GAITS).flatMap(([preset, gaits]) => gaits.map((gait) => ({ preset, gait }))),
       ];
-      const slotMs = (SOAK_S * 1000) / combos.length;
+      const slotMs = Math.min(SLOT_MAX_S * 1000, (SOAK_S * 1000) / cycle.length);
+      const switches = Math.max(cycle.length, Math.floor((SOAK_S * 1000) / slotMs));
+      const passes = Math.ceil(switches / cycle.length);
+      const combos = Array.from({ length: passes }, () => cycle).flat().slice(0, switches);
+      // Warm-up: the first pass when two or more fit, else the first half of the one pass.
+      const warmUpAt = switches >= 2 * cycle.length ? cycle.length : Math.floor(cycle.length / 2);
+      const cdp = await p.page.context().newCDPSession(p.page);
+      const memoryLog = [{ at_s: 0, ...(await memory(cdp, p.page)) }];
+      let warm = null;
       const started = Date.now();
       const log = [];
       let preset = '';
+      let comparing = false;
       for (const [i, combo] of combos.entries()) {
+        if (i === warmUpAt) {
+          warm = { at_s: (Date.now() - started) / 1000, ...(await memory(cdp, p.page)) };
+          memoryLog.push(warm);
+        }
         // Switching preset restarts the figure; mode, method and gait switch live, mid-stride.
         const { preset: _, ...live } = combo;
         // Physics creatures start each gait afresh (a live change is tested in lab_physics.rs).
-        const change = combo.preset === preset && !combo.preset.startsWith('raibert-') ? live : combo;
+        let change = combo.preset === preset && !combo.preset.startsWith('raibert-') ? live : combo;
+        if (comparing && !combo.compare) change = { compare: false, ...change };
         preset = combo.preset;
+        comparing = Boolean(combo.compare);
         const answer = await command(p.page, change);
-        assert.equal(answer, 'ok', `command(${JSON.stringify(combo)}) → ${answer}`);
+        assert.equal(answer, 'ok', `command(${JSON.stringify(change)}) → ${answer}`);
         const s0 = await state(p.page);
         const physics = combo.preset.startsWith('raibert-');
-        if (combo.gait) assert.deepEqual([s0.engine, s0.preset, s0.gait], [physics ? 'physics' : 'poda', combo.preset, combo.gait]);
-        else assert.deepEqual([s0.preset, s0.mode, s0.method], [combo.preset, combo.mode, combo.method]);
+        if (combo.compare) assert.deepEqual([s0.preset, s0.compare?.views], [combo.preset, combo.compare.views]);
+        else if (combo.gait) assert.deepEqual([s0.engine, s0.preset, s0.gait], [physics ? 'physics' : 'poda', combo.preset, combo.gait]);
+        else assert.deepEqual([s0.preset, s0.mode, s0.method, s0.compare], [combo.preset, combo.mode, combo.method, null]);
         assert.ok(await frameExceeds(p.page, s0.frame + 2, 30_000),
           `${JSON.stringify(combo)}: the animation advances (stuck at frame ${s0.frame})`);
         const until = started + (i + 1) * slotMs;
         while (Date.now() < until) await new Promise((ok) => setTimeout(ok, Math.min(500, until - Date.now())));
         const s = await state(p.page);
         assert.equal(s.last_error, null, `${JSON.stringify(combo)}: ${s.last_error}`);
+        if (combo.compare) {
+          const metrics = s.compare.metrics;
+          assert.ok(metrics.every((m) => Number.isFinite(m.mean_error_m) && Number.isFinite(m.jitter_rad)),
+            `${JSON.stringify(combo)}: comparison metrics ${JSON.stringify(metrics)}`);
+          log.push({ ...combo, frame: s.frame, fps: s.fps, sim_us_per_frame: s.sim_us_per_frame });
+          continue;
+        }
         if (physics) {
           assert.ok(Number.isFinite(s.physics.height_m) && s.physics.height_m > 0.1, `${JSON.stringify(combo)}: trunk at ${s.physics.height_m} m`);
           assert.equal(s.physics.fell, false, `${JSON.stringify(combo)}: fell`);
@@ -78,8 +126,21 @@ describe(`soak: ${SOAK_S} s cycling every preset, mode and method (WebGL2)`, () 
           max_error_mm: Math.max(...errors) * 1e3 });
       }
       const elapsed = (Date.now() - started) / 1000;
-      saveArtifact('soak.json', Buffer.from(JSON.stringify({ seconds: elapsed, combos: log }, null, 1)));
+      const end = { at_s: elapsed, ...(await memory(cdp, p.page)) };
+      memoryLog.push(end);
+      saveArtifact('soak.json', Buffer.from(JSON.stringify({ seconds: elapsed, switches: combos.length, memory: memoryLog,
+        combos: log }, null, 1)));
+      console.log(`# soak: ${elapsed.toFixed(0)} s, ${combos.length} switches (${passes} pass(es) of ${cycle.length}, `
+        + `${(slotMs / 1000).toFixed(1)} s each), console problems: ${p.problems.length}`);
+      for (const m of memoryLog) {
+        console.log(`# memory at ${m.at_s.toFixed(0)} s: JS heap ${mib(m.js_heap_bytes)} MiB, wasm ${mib(m.wasm_bytes)} MiB`);
+      }
       assert.ok(elapsed >= SOAK_S, `ran ${elapsed.toFixed(1)} s`);
+      for (const key of ['js_heap_bytes', 'wasm_bytes']) {
+        const growth = end[key] / warm[key] - 1;
+        assert.ok(growth <= MAX_GROWTH,
+          `${key} grew ${(growth * 100).toFixed(1)} % after warm-up: ${mib(warm[key])} → ${mib(end[key])} MiB`);
+      }
       p.assertClean();
     } finally {
       await p.page.close().catch(() => {});

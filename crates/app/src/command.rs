@@ -493,6 +493,7 @@ impl Lab {
             "time_s": self.driver.time(),
             "fps": self.fps,
             "sim_us_per_frame": self.sim_us_per_frame,
+            "wasm_memory_bytes": crate::memory::wasm_memory_bytes(),
             "view_rect_px": self.view_rect_px,
             "joints": skeleton.joint_count(),
             "views": [{ "method": self.settings.method.name(), "effectors": effectors }],

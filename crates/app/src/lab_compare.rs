@@ -68,12 +68,17 @@ impl Lab {
         self.compare.as_ref().map_or(Value::Null, Comparison::state)
     }
 
-    /// After the creature changed: rebuild the comparison on it, or leave it
-    /// with a message when the new engine cannot compare.
+    /// After the creature changed: rebuild the comparison on it. Picking a
+    /// PODA or physics creature ends the comparison quietly: the person chose
+    /// another engine, which is not a mistake.
     pub(crate) fn rebuild_compare(&mut self) {
         let Some(config) = self.compare.take().map(|c| c.config) else {
             return;
         };
+        if self.driver.thesis().is_none() {
+            self.link_changed = true;
+            return;
+        }
         if let Err(error) = self.start_compare(config) {
             self.report_error(error);
         }

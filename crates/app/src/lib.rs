@@ -16,6 +16,7 @@ mod lab_compare;
 pub mod lab_driver;
 pub mod link;
 pub mod link_state;
+pub mod memory;
 mod panels;
 mod panels_compare;
 mod panels_editor;

@@ -188,14 +188,35 @@ fn engines_without_ik_methods_refuse_to_compare() {
         Ok(()) => panic!("poda compared"),
         Err(error) => assert!(error.contains("engine poda"), "{error}"),
     }
-    // Leaving the ik engine while comparing ends the comparison with a message.
-    let mut lab = self::lab("human");
-    if let Err(error) = lab.command(r#"{"compare":{"views":["pinv","dls"]}}"#) {
-        panic!("{error}");
+}
+
+#[test]
+fn picking_a_creature_of_another_engine_ends_the_comparison_quietly() {
+    let mut lab = lab("human");
+    let started = lab.command(r#"{"compare": {"views": ["pinv", "dls"]}}"#);
+    assert_eq!(started, Ok(()));
+    // Another IK creature keeps the comparison, rebuilt on it.
+    assert_eq!(lab.command(r#"{"preset": "ik-quadruped"}"#), Ok(()));
+    assert_eq!(
+        state(&lab)["compare"]["views"],
+        serde_json::json!(["pinv", "dls"])
+    );
+    for switch in [
+        r#"{"preset": "poda-quadruped"}"#,
+        r#"{"preset": "raibert-biped"}"#,
+        r#"{"engine": "physics"}"#,
+    ] {
+        assert_eq!(
+            lab.command(r#"{"preset": "human", "compare": {"views": ["pinv", "dls"]}}"#),
+            Ok(())
+        );
+        assert_eq!(lab.command(switch), Ok(()));
+        let state = state(&lab);
+        assert!(state["compare"].is_null(), "{switch}: {}", state["compare"]);
+        assert_eq!(
+            lab.last_error(),
+            None,
+            "{switch}: no message for a deliberate switch"
+        );
     }
-    if let Err(error) = lab.command(r#"{"engine":"physics"}"#) {
-        panic!("{error}");
-    }
-    assert!(lab.comparison().is_none());
-    assert!(lab.last_error().is_some_and(|e| e.starts_with("compare:")));
 }
