@@ -8,6 +8,9 @@
 #                               build and the browser tests (what CI runs); --native skips the
 #                               last two
 #   ./build.sh bench            the performance figures (`gaitlab bench`)
+#   ./build.sh bench --check [BASELINE] [--tolerance-pct N]
+#                               run the same cases and compare with bench/baseline.json (or BASELINE):
+#                               exits 3 naming each case more than N% (default 25) slower
 #   ./build.sh bench --browser [--path webgpu]  wasm vs native per-frame time, and the time to first frame
 #   ./build.sh cli ...          run the gaitlab CLI in release mode with the given arguments
 # Missing tools are installed on the way: Rust (rustup) with rustfmt, clippy and the wasm32 target,
@@ -273,5 +276,5 @@ case "${1:-build}" in
   bench) shift; cmd_bench "$@" ;;
   cli) shift; cmd_cli "$@" ;;
   serve) shift; cmd_serve "$@" ;;
-  *) echo "usage: ./build.sh [build [--opt] | serve [PORT] | test [--native] | bench [--browser] | cli ARGS...]" >&2; exit 2 ;;
+  *) echo "usage: ./build.sh [build [--opt] | serve [PORT] | test [--native] | bench [--check [BASELINE] | --browser] | cli ARGS...]" >&2; exit 2 ;;
 esac

@@ -1,35 +1,39 @@
-//! `gaitlab bench [--json]`: the performance figures. For each preset and IK
-//! method it reports the µs one IK iteration takes (forward kinematics,
-//! Jacobian, solve and update; She 2006 §4.4), measured over the targets of
-//! the preset's own thesis walk, and the µs per animation frame of the whole
-//! driver. For each PODA preset (Girard & Maciejewski 1985) it reports the µs
-//! per frame of the gait engine: leg states, footholds, foot targets and the
-//! IK of every leg.
+//! `gaitlab bench [--json] [--check BASELINE]`: the performance figures of
+//! [`gaitlab_bench::suite`] — µs per IK iteration (She 2006 §4.4) and per
+//! animation frame for each thesis preset and method, µs per PODA frame
+//! (Girard & Maciejewski 1985), physics steps per second (Raibert & Hodgins
+//! 1991) — the same suite `window.gaitlab.bench('{"suite": true}')` runs in the
+//! browser. `--check` compares the run with a committed baseline
+//! ([`gaitlab_bench::compare`]) and fails on a case more than 25 % slower.
 
-use std::hint::black_box;
 use std::time::Instant;
 
 use clap::Args;
-use gaitlab_core::driver::Driver;
-use gaitlab_core::ik::{IkSolver, Method, Targets};
-use gaitlab_core::preset::Engine;
-use gaitlab_core::preset::thesis::ThesisMode;
-use gaitlab_core::{Creature, RootTransform};
-use gaitlab_motion::ThesisDriver;
-use gaitlab_motion::frame_bench::{self, FrameBenchOptions, median_and_best};
-use gaitlab_physics::step_bench::{StepBenchOptions, time_steps};
-use serde_json::{Value, json};
+use gaitlab_bench::compare::DEFAULT_TOLERANCE_PCT;
+use gaitlab_bench::{DEFAULT_PRESETS, SuiteOptions, cases_of, compare, run_suite};
+use gaitlab_core::ik::Method;
+use serde_json::Value;
 
 use crate::fail::Failure;
 use crate::load;
 
+/// Longest baseline file read, bytes.
+const MAX_BASELINE_BYTES: usize = 1024 * 1024;
+
 /// Arguments of `gaitlab bench`.
 #[derive(Args, Debug)]
 pub struct BenchArgs {
-    /// Print one JSON object instead of a table.
+    /// Print one JSON object instead of a table (write it to bench/baseline.json to make a baseline).
     #[arg(long)]
     pub json: bool,
-    /// Presets to measure (default: human and ik-quadruped, and every PODA preset).
+    /// Compare with a baseline written by `--json` (default bench/baseline.json): prints
+    /// current vs baseline per case and exits 3 naming each case more than the tolerance slower.
+    #[arg(long, value_name = "BASELINE", num_args = 0..=1, default_missing_value = "bench/baseline.json")]
+    pub check: Option<String>,
+    /// Slowdown allowed by `--check`, percent.
+    #[arg(long, default_value_t = DEFAULT_TOLERANCE_PCT)]
+    pub tolerance_pct: f64,
+    /// Presets to measure (default: human and ik-quadruped, and every PODA and physics preset).
     #[arg(long = "preset")]
     pub presets: Vec<String>,
     /// Methods to measure (default: all five).
@@ -40,132 +44,30 @@ pub struct BenchArgs {
     pub repeats: usize,
 }
 
-/// Targets the issue sets for this machine, µs per iteration: (preset, method, budget).
-const BUDGETS: [(&str, Method, f64); 3] = [
-    ("human", Method::Sdls, 10.0),
-    ("human", Method::Dls, 3.0),
-    ("ik-quadruped", Method::Sdls, 65.0),
-];
-
-/// PODA frame budgets, µs per frame: (preset, budget). The issue asks ≤ 1 ms
-/// for the 63-joint animal.
-const PODA_BUDGETS: [(&str, f64); 1] = [("poda-quadruped", 1000.0)];
-
-/// Physics budgets: (preset, steps per second, real-time factor). The issue
-/// asks ≥ 200 000 steps/s and ≥ 80× real time for the biped with contact.
-const PHYSICS_BUDGETS: [(&str, f64, f64); 1] = [("raibert-biped", 200_000.0, 80.0)];
-
-/// Default physics presets measured.
-const PHYSICS_PRESETS: [&str; 3] = ["raibert-biped", "raibert-quadruped", "raibert-kangaroo"];
-
-/// Default PODA presets measured.
-const PODA_PRESETS: [&str; 4] = ["poda-quadruped", "poda-biped", "hexapod", "insect-14"];
-
-/// One frame of recorded targets.
-struct Frame {
-    root: RootTransform,
-    targets: Targets,
-}
-
-/// Records 10 s of the preset's thesis walk (60 fps) as a target sequence.
-fn record(creature: &Creature) -> Result<Vec<Frame>, Failure> {
-    let scenario = &creature.scenario;
-    let mut driver = ThesisDriver::new(
-        creature.skeleton.clone(),
-        scenario.thesis.clone(),
-        ThesisMode::Walk,
-        scenario.ik_options(),
-    )
-    .map_err(|e| Failure::input(format!("{}: scenario.thesis.{e}", creature.name)))?;
-    let mut frames = Vec::with_capacity(600);
-    for _ in 0..600 {
-        driver.step(1.0 / 60.0);
-        if let Some(targets) = driver.targets() {
-            frames.push(Frame {
-                root: driver.pose().root,
-                targets: targets.clone(),
-            });
-        }
-    }
-    Ok(frames)
-}
-
-/// Median and minimum of the timed samples.
-#[derive(Clone, Copy)]
-struct Timing {
-    median: f64,
-    best: f64,
-}
-
-fn summarize(mut values: Vec<f64>) -> Timing {
-    let (median, best) = median_and_best(&mut values);
-    Timing { median, best }
-}
-
-/// µs per IK iteration of `method` over `frames`, `iterations` per frame.
-fn time_iterations(
-    creature: &Creature,
-    frames: &[Frame],
-    method: Method,
-    iterations: usize,
-    repeats: usize,
-) -> Timing {
-    let mut options = creature.scenario.ik_options();
-    options.method = method;
-    let skeleton = &creature.skeleton;
-    let mut solver = IkSolver::new(skeleton, options);
-    let mut values = skeleton.rest_values();
-    // Warm up (and reach the steady tracking state).
-    for frame in frames.iter().take(60) {
-        for _ in 0..iterations {
-            black_box(solver.iterate(skeleton, &frame.root, &mut values, &frame.targets));
-        }
-    }
-    let samples = (0..repeats.max(1))
-        .map(|_| {
-            let start = Instant::now();
-            for frame in frames {
-                for _ in 0..iterations {
-                    black_box(solver.iterate(skeleton, &frame.root, &mut values, &frame.targets));
-                }
-            }
-            start.elapsed().as_secs_f64() * 1e6 / (frames.len() * iterations) as f64
-        })
-        .collect();
-    summarize(samples)
-}
-
-/// µs per frame of the creature's driver (thesis: script + IK iterations;
-/// PODA: gait, footholds and leg IK), timed by the same routine the browser's
-/// `window.gaitlab.bench()` runs.
-fn time_frames(creature: &Creature, method: Method, repeats: usize) -> Result<Timing, Failure> {
-    let options = FrameBenchOptions {
-        method,
-        repeats: repeats.max(1),
-        ..FrameBenchOptions::default()
-    };
-    let epoch = Instant::now();
-    let mut clock = || epoch.elapsed().as_secs_f64() * 1e3;
-    let timing = frame_bench::time_frames(creature, &options, &mut clock)
-        .map_err(|e| Failure::input(format!("{}: {e}", creature.name)))?;
-    Ok(Timing {
-        median: timing.median_us,
-        best: timing.best_us,
-    })
-}
-
 /// `gaitlab bench`.
 pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
-    let presets = if args.presets.is_empty() {
-        ["human", "ik-quadruped"]
-            .into_iter()
-            .chain(PODA_PRESETS)
-            .chain(PHYSICS_PRESETS)
-            .map(str::to_owned)
-            .collect()
+    if !(args.tolerance_pct.is_finite() && args.tolerance_pct >= 0.0) {
+        return Err(Failure::input("--tolerance-pct: must be a number ≥ 0"));
+    }
+    // Read the baseline first: a bad path should not cost a whole run.
+    let baseline = match &args.check {
+        Some(path) => {
+            let text = load::read_limited(path, MAX_BASELINE_BYTES, "baseline")?;
+            let report: Value = serde_json::from_str(&text)
+                .map_err(|e| Failure::input(format!("{path}: not JSON: {e}")))?;
+            Some(cases_of(&report).map_err(|e| Failure::input(format!("{path}: {e}")))?)
+        }
+        None => None,
+    };
+    let names: Vec<String> = if args.presets.is_empty() {
+        DEFAULT_PRESETS.iter().map(|&n| n.to_owned()).collect()
     } else {
         args.presets.clone()
     };
+    let creatures = names
+        .iter()
+        .map(|name| load::creature(name))
+        .collect::<Result<Vec<_>, _>>()?;
     let methods = if args.methods.is_empty() {
         Method::ALL.to_vec()
     } else {
@@ -174,96 +76,77 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
             .map(|m| crate::run::method(Some(m), Method::Sdls))
             .collect::<Result<Vec<_>, _>>()?
     };
-    let mut rows = Vec::new();
-    let mut poda_rows = Vec::new();
-    let mut physics_rows = Vec::new();
-    for name in &presets {
-        let creature = load::creature(name)?;
-        if creature.scenario.engine == Engine::Physics {
-            let epoch = Instant::now();
-            let mut clock = || epoch.elapsed().as_secs_f64() * 1e3;
-            let options = StepBenchOptions {
-                repeats: args.repeats,
-                ..StepBenchOptions::default()
-            };
-            let timing = match time_steps(&creature, &options, &mut clock) {
-                Ok(t) => t,
-                // A gait not yet available is reported, not fatal.
-                Err(e) if e.path == "scenario.physics.gait" => {
-                    physics_rows.push(json!({"preset": creature.name, "error": e.to_string()}));
-                    continue;
-                }
-                Err(e) => return Err(Failure::input(e)),
-            };
-            let budget = PHYSICS_BUDGETS.iter().find(|(p, _, _)| p == name);
-            physics_rows.push(json!({
-                "preset": creature.name,
-                "joints": creature.skeleton.joint_count(),
-                "dt_s": timing.dt_s,
-                "steps_per_second": timing.steps_per_second,
-                "steps_per_second_best": timing.steps_per_second_best,
-                "realtime_factor": timing.realtime_factor,
-                "budget_steps_per_second": budget.map(|b| b.1),
-                "budget_realtime_factor": budget.map(|b| b.2),
-                "within_budget": budget.map(|b| timing.steps_per_second >= b.1 && timing.realtime_factor >= b.2),
-            }));
-            continue;
-        }
-        if creature.scenario.engine == Engine::Poda {
-            // The same per-frame routine as the browser's bench; the method is unused.
-            let timing = time_frames(&creature, Method::Sdls, args.repeats)?;
-            let budget = PODA_BUDGETS
+    let options = SuiteOptions {
+        methods,
+        repeats: args.repeats,
+    };
+    let epoch = Instant::now();
+    let mut clock = || epoch.elapsed().as_secs_f64() * 1e3;
+    let mut report = run_suite(&creatures, &options, &mut clock).map_err(Failure::input)?;
+    report["platform"] = "native".into();
+    report["cpus"] = std::thread::available_parallelism()
+        .map_or(1, std::num::NonZero::get)
+        .into();
+    if let Some(baseline) = baseline {
+        let mut current = cases_of(&report).map_err(Failure::input)?;
+        let mut result = compare(&baseline, &current, args.tolerance_pct);
+        // Timing noise: a slower case is measured once more before it fails, and
+        // keeps its faster median. A real slowdown is slow both times.
+        let mut slower: Vec<&str> = result
+            .regressions()
+            .filter_map(|r| preset_of(&r.case))
+            .collect();
+        slower.sort_unstable();
+        slower.dedup();
+        if !slower.is_empty() {
+            let again: Vec<_> = creatures
                 .iter()
-                .find(|(p, _)| p == name)
-                .map(|(_, b)| *b);
-            poda_rows.push(json!({
-                "preset": creature.name,
-                "joints": creature.skeleton.joint_count(),
-                "legs": creature.scenario.poda_params().legs.len(),
-                "us_per_frame": timing.median,
-                "us_per_frame_best": timing.best,
-                "budget_us_per_frame": budget,
-                "within_budget": budget.map(|b| timing.median <= b),
-            }));
-            continue;
+                .filter(|c| slower.contains(&c.name.as_str()))
+                .cloned()
+                .collect();
+            eprintln!(
+                "bench: measuring {} again: {}",
+                again.len(),
+                slower.join(", ")
+            );
+            let second = run_suite(&again, &options, &mut clock).map_err(Failure::input)?;
+            for (case, us) in cases_of(&second).map_err(Failure::input)? {
+                current
+                    .entry(case)
+                    .and_modify(|first| *first = first.min(us))
+                    .or_insert(us);
+            }
+            result = compare(&baseline, &current, args.tolerance_pct);
         }
-        let frames = record(&creature)?;
-        let iterations = creature.scenario.thesis.iterations_per_frame;
-        for &method in &methods {
-            let us_per_iteration =
-                time_iterations(&creature, &frames, method, iterations, args.repeats);
-            let us_per_frame = time_frames(&creature, method, args.repeats)?;
-            let budget = BUDGETS
-                .iter()
-                .find(|(p, m, _)| p == name && *m == method)
-                .map(|(_, _, b)| *b);
-            rows.push(json!({
-                "preset": creature.name,
-                "joints": creature.skeleton.joint_count(),
-                "effectors": creature.skeleton.effector_count(),
-                "method": method.name(),
-                "us_per_iteration": us_per_iteration.median,
-                "us_per_iteration_best": us_per_iteration.best,
-                "iterations_per_frame": iterations,
-                "us_per_frame": us_per_frame.median,
-                "us_per_frame_best": us_per_frame.best,
-                "budget_us_per_iteration": budget,
-                "within_budget": budget.map(|b| us_per_iteration.median <= b),
-            }));
+        println!("{}", result.table());
+        if !result.passed() {
+            let slower: Vec<String> = result
+                .regressions()
+                .map(|r| match r.ratio() {
+                    Some(ratio) if ratio.is_finite() => format!("{} ({ratio:.2}×)", r.case),
+                    _ => format!("{} (no figure)", r.case),
+                })
+                .collect();
+            return Err(Failure::check(format!(
+                "bench: {} case(s) more than {}% slower than the baseline: {}",
+                slower.len(),
+                args.tolerance_pct,
+                slower.join(", ")
+            )));
         }
+        return Ok(());
     }
-    let report = json!({
-        "ik": rows,
-        "poda": poda_rows,
-        "physics": physics_rows,
-        "cpus": std::thread::available_parallelism().map_or(1, |n| n.get()),
-    });
     if args.json {
         println!("{report}");
     } else {
         print_table(&report);
     }
     Ok(())
+}
+
+/// The preset of a case name (`ik/human/sdls/iteration` → `human`).
+fn preset_of(case: &str) -> Option<&str> {
+    case.split('/').nth(1)
 }
 
 /// `≤B ok` / `≤B MISS` for a row with a budget under `key`, else empty.

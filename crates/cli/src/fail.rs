@@ -1,5 +1,6 @@
 //! The CLI's error type: a message printed as `error: <message>` and an exit
-//! code (2 for bad input — a preset, a target file, an argument — 1 for I/O).
+//! code (2 for bad input — a preset, a target file, an argument — 1 for I/O,
+//! 3 for a check that ran and failed).
 
 use std::fmt::Display;
 
@@ -18,6 +19,14 @@ impl Failure {
         Self {
             message: message.to_string(),
             code: 2,
+        }
+    }
+
+    /// A check ran and failed, e.g. `gaitlab bench --check` found a slower case (exit code 3).
+    pub fn check(message: impl Display) -> Self {
+        Self {
+            message: message.to_string(),
+            code: 3,
         }
     }
 

@@ -98,6 +98,42 @@ pub fn median_and_best(samples: &mut [f64]) -> (f64, f64) {
     )
 }
 
+/// The driver [`time_frames`] times for `creature` (its engine's: the thesis
+/// driver with `options.mode` and `options.method`, or the PODA engine), and
+/// the most IK iterations a frame may run (per leg for PODA). Shared with the
+/// criterion benches so they time the same construction.
+///
+/// # Errors
+/// A physics creature (timed by `gaitlab_physics::step_bench`), or thesis
+/// parameters that cannot drive the skeleton.
+pub fn frame_driver(
+    creature: &Creature,
+    options: &FrameBenchOptions,
+) -> Result<(Box<dyn Driver>, usize), DriverError> {
+    let scenario = &creature.scenario;
+    match scenario.engine {
+        Engine::Ik => {
+            let mut ik = scenario.ik_options();
+            ik.method = options.method;
+            let driver = ThesisDriver::new(
+                creature.skeleton.clone(),
+                scenario.thesis.clone(),
+                options.mode,
+                ik,
+            )?;
+            Ok((Box::new(driver), scenario.thesis.iterations_per_frame))
+        }
+        Engine::Poda => Ok((
+            Box::new(PodaDriver::new(creature)?),
+            scenario.poda_params().iterations_per_frame,
+        )),
+        Engine::Physics => Err(DriverError::new(
+            "scenario.engine",
+            "physics creatures are timed in steps per second by gaitlab-physics's bench",
+        )),
+    }
+}
+
 /// Times the driver of `creature`'s engine per `options` (`mode` and
 /// `method` apply to the thesis driver); `clock_ms` reads a monotonic clock in
 /// milliseconds. `iterations_per_frame` is the most IK iterations a frame may
@@ -111,30 +147,7 @@ pub fn time_frames(
     clock_ms: &mut dyn FnMut() -> f64,
 ) -> Result<FrameTiming, DriverError> {
     check_options(options)?;
-    let scenario = &creature.scenario;
-    let (mut driver, iterations_per_frame): (Box<dyn Driver>, usize) = match scenario.engine {
-        Engine::Ik => {
-            let mut ik = scenario.ik_options();
-            ik.method = options.method;
-            let driver = ThesisDriver::new(
-                creature.skeleton.clone(),
-                scenario.thesis.clone(),
-                options.mode,
-                ik,
-            )?;
-            (Box::new(driver), scenario.thesis.iterations_per_frame)
-        }
-        Engine::Poda => (
-            Box::new(PodaDriver::new(creature)?),
-            scenario.poda_params().iterations_per_frame,
-        ),
-        Engine::Physics => {
-            return Err(DriverError::new(
-                "scenario.engine",
-                "physics creatures are timed in steps per second by gaitlab-physics's bench",
-            ));
-        }
-    };
+    let (mut driver, iterations_per_frame) = frame_driver(creature, options)?;
     for _ in 0..options.warmup_frames {
         driver.step(options.frame_s);
     }

@@ -42,6 +42,28 @@ pub struct StepTiming {
     pub dt_s: f64,
 }
 
+/// The preset's creature at its gait after `warmup_s` simulated seconds
+/// (the state [`time_steps`] times from; shared with the criterion benches).
+///
+/// # Errors
+/// The preset does not make a physics driver, or the warm-up blew up
+/// (reported at `scenario.physics`).
+pub fn warmed_driver(preset: &PresetCreature, warmup_s: f64) -> Result<PhysicsDriver, PresetError> {
+    let mut driver = PhysicsDriver::new(preset)?;
+    let dt = driver.sim().options.dt;
+    driver.run_steps(steps_in(warmup_s, dt)).map_err(blew_up)?;
+    Ok(driver)
+}
+
+/// Integration steps of `dt` seconds in `seconds` (at least one).
+fn steps_in(seconds: f64, dt: f64) -> u32 {
+    (seconds / dt).round().max(1.0) as u32
+}
+
+fn blew_up(e: crate::sim::BlowUp) -> PresetError {
+    PresetError::new("scenario.physics", e.to_string())
+}
+
 /// Time the preset's creature at its gait; `clock_ms` reads a monotonic clock.
 ///
 /// # Errors
@@ -52,16 +74,13 @@ pub fn time_steps(
     options: &StepBenchOptions,
     clock_ms: &mut dyn FnMut() -> f64,
 ) -> Result<StepTiming, PresetError> {
-    let mut driver = PhysicsDriver::new(preset)?;
+    let mut driver = warmed_driver(preset, options.warmup_s)?;
     let dt = driver.sim().options.dt;
-    let steps = |s: f64| (s / dt).round().max(1.0) as u32;
-    let blew = |e: crate::sim::BlowUp| PresetError::new("scenario.physics", e.to_string());
-    driver.run_steps(steps(options.warmup_s)).map_err(blew)?;
-    let n = steps(options.seconds);
+    let n = steps_in(options.seconds, dt);
     let mut rates = Vec::with_capacity(options.repeats.max(1));
     for _ in 0..options.repeats.max(1) {
         let start = clock_ms();
-        driver.run_steps(n).map_err(blew)?;
+        driver.run_steps(n).map_err(blew_up)?;
         let ms = (clock_ms() - start).max(1e-6);
         rates.push(f64::from(n) / (ms / 1e3));
     }
