@@ -5,6 +5,8 @@
 //!
 //! Storage is column-major `n × n` in a flat slice, matching nalgebra's layout.
 
+use crate::portable::Portable;
+
 /// Reusable workspace for decompositions of size up to `capacity`.
 #[derive(Clone, Debug, Default)]
 pub struct SymmetricEigen {
@@ -198,7 +200,9 @@ impl SymmetricEigen {
                     }
                     let g = d[l];
                     let mut p = (d[l + 1] - g) / (2.0 * e[l]);
-                    let mut r = (p * p + 1.0).sqrt();
+                    // hypot, not sqrt(p² + 1): p is huge when e[l] is tiny
+                    // beside the gap d[l+1] − d[l], and p² would overflow.
+                    let mut r = p.phypot(1.0);
                     if p < 0.0 {
                         r = -r;
                     }
@@ -223,7 +227,7 @@ impl SymmetricEigen {
                         s2 = s;
                         let g = c * e[i];
                         let h = c * p;
-                        r = (p * p + e[i] * e[i]).sqrt();
+                        r = p.phypot(e[i]);
                         e[i + 1] = s * r;
                         s = e[i] / r;
                         c = p / r;
@@ -249,7 +253,11 @@ impl SymmetricEigen {
             d[l] += f;
             e[l] = 0.0;
         }
-        Ok(())
+        if d.iter().all(|x| x.is_finite()) {
+            Ok(())
+        } else {
+            Err(NoConvergence)
+        }
     }
 }
 
@@ -315,5 +323,41 @@ mod tests {
         check(&(&j * j.transpose()));
         check(&nalgebra::DMatrix::zeros(4, 4));
         check(&nalgebra::DMatrix::identity(5, 5));
+    }
+
+    /// Regression (found by tests/prop_ik.rs): a zero diagonal entry coupled
+    /// to the rest by a tiny off-diagonal ε (a Jacobian row that is zero up to
+    /// rounding) made the QL shift p = (d₁ − d₀)/2ε so large that p² overflowed:
+    /// below ε ≈ 1e-155 the eigenvalues came back NaN with `Ok`, and the IK
+    /// iteration failed without a step. The eigenvalues are known in closed
+    /// form (ε² is below rounding): {0, 1} and {0, 1 − √2, 1 + √2}.
+    #[test]
+    fn a_tiny_coupling_beside_a_zero_diagonal_does_not_overflow() {
+        let root2 = std::f64::consts::SQRT_2;
+        for eps in [1e-100, 1e-160, 1e-200, 1e-250, 1e-300] {
+            let cases: [(usize, &[f64], &[f64]); 2] = [
+                (2, &[0.0, eps, eps, 1.0], &[0.0, 1.0]),
+                (
+                    3,
+                    &[0.0, eps, 0.0, eps, 0.0, 1.0, 0.0, 1.0, 2.0],
+                    &[1.0 - root2, 0.0, 1.0 + root2],
+                ),
+            ];
+            for (n, a, expected) in cases {
+                let mut eig = SymmetricEigen::with_capacity(n);
+                assert_eq!(eig.compute(a, n), Ok(()), "n = {n}, ε = {eps:e}");
+                let mut values = eig.values().to_vec();
+                values.sort_by(f64::total_cmp);
+                for (x, y) in values.iter().zip(expected) {
+                    assert!((x - y).abs() < 1e-14, "ε = {eps:e}: {values:?}");
+                }
+                for i in 0..n {
+                    let q = eig.vector(i);
+                    assert!(q.iter().all(|x| x.is_finite()), "ε = {eps:e}: {q:?}");
+                    let norm: f64 = q.iter().map(|x| x * x).sum();
+                    assert!((norm - 1.0).abs() < 1e-14, "ε = {eps:e}: |q| = {norm}");
+                }
+            }
+        }
     }
 }

@@ -679,8 +679,13 @@ impl Controller for QuadrupedBound {
                     let pitch_tau = -torque.dot(pitch_axis) / n - pitch_axis.dot(moment);
                     let q = data.q[leg.spring];
                     let spring_force = (p.leg_stiffness * l * l * (rest - q)).max(0.0);
-                    let lim =
-                        (p.posture_force_ratio * spring_force * (QUADRUPED_LEG_M * l + q)).min(max);
+                    // At most `max`, never negative: the leg's length
+                    // (QUADRUPED_LEG_M·l + q) goes negative when the leg is driven
+                    // past its stop (a tall obstacle), and clamp(-lim, lim) panics
+                    // on a negative lim.
+                    let lim = (p.posture_force_ratio * spring_force * (QUADRUPED_LEG_M * l + q))
+                        .min(max)
+                        .max(0.0);
                     drives[leg.hip[0]].torque(roll_tau.clamp(-max, max));
                     drives[leg.hip[1]].torque(pitch_tau.clamp(-lim, lim));
                     drives[leg.hip[0]].spring.max_force = max;

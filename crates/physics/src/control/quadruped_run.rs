@@ -728,8 +728,13 @@ impl Controller for QuadrupedRun {
                     let q = data.q[leg.spring];
                     let spring_force =
                         (t.leg_stiffness * l * l * (self.stance_rest[i] - q)).max(0.0);
+                    // In [0, max]: a leg driven past its stop has a negative
+                    // length QUADRUPED_LEG_M·l + q, and clamp(-lim, lim) panics
+                    // on a negative lim.
                     let lim = if t.posture_force_ratio.is_finite() {
-                        (t.posture_force_ratio * spring_force * (QUADRUPED_LEG_M * l + q)).min(max)
+                        (t.posture_force_ratio * spring_force * (QUADRUPED_LEG_M * l + q))
+                            .min(max)
+                            .max(0.0)
                     } else {
                         max
                     };
