@@ -83,6 +83,9 @@ describe(`soak: ${SOAK_S} s cycling every preset, mode and method (WebGL2)`, () 
         if (i === warmUpAt) {
           warm = { at_s: (Date.now() - started) / 1000, ...(await memory(cdp, p.page)) };
           memoryLog.push(warm);
+        } else if (i > 0 && i % cycle.length === 0) {
+          // The end of each further pass: the trend (a leak climbs every pass, a heap settles).
+          memoryLog.push({ at_s: (Date.now() - started) / 1000, ...(await memory(cdp, p.page)) });
         }
         // Switching preset restarts the figure; mode, method and gait switch live, mid-stride.
         const { preset: _, ...live } = combo;
