@@ -12,6 +12,7 @@
 #                               run the same cases and compare with bench/baseline.json (or BASELINE):
 #                               exits 3 naming each case more than N% (default 25) slower
 #   ./build.sh bench --browser [--path webgpu]  wasm vs native per-frame time, and the time to first frame
+#   ./build.sh bench --suite [--json OUT]  every bench case natively and in wasm (window.gaitlab.bench)
 #   ./build.sh cli ...          run the gaitlab CLI in release mode with the given arguments
 # Missing tools are installed on the way: Rust (rustup) with rustfmt, clippy and the wasm32 target,
 # wasm-bindgen-cli at the version in Cargo.lock, and for the browser tests Debian's chromium and
@@ -239,6 +240,16 @@ cmd_test() {
 
 cmd_bench() {
   need_rust
+  if [ "${1:-}" = "--suite" ]; then
+    # The performance budget's table: every suite case natively and in wasm, with the ratio.
+    cmd_build
+    need_node; need_chromium; need_e2e_modules
+    local native_json="$PWD/$TARGET_DIR/bench-native.json"
+    case "$TARGET_DIR" in /*) native_json="$TARGET_DIR/bench-native.json" ;; esac
+    cargo run --release --quiet -p gaitlab-cli -- bench --json > "$native_json"
+    (cd "$E2E_DIR" && node bench-suite.mjs --native "$native_json" "${@:2}")
+    return
+  fi
   if [ "${1:-}" != "--browser" ]; then
     cargo run --release --quiet -p gaitlab-cli -- bench "$@"
     return
@@ -276,5 +287,5 @@ case "${1:-build}" in
   bench) shift; cmd_bench "$@" ;;
   cli) shift; cmd_cli "$@" ;;
   serve) shift; cmd_serve "$@" ;;
-  *) echo "usage: ./build.sh [build [--opt] | serve [PORT] | test [--native] | bench [--check [BASELINE] | --browser] | cli ARGS...]" >&2; exit 2 ;;
+  *) echo "usage: ./build.sh [build [--opt] | serve [PORT] | test [--native] | bench [--check [BASELINE] | --browser | --suite] | cli ARGS...]" >&2; exit 2 ;;
 esac

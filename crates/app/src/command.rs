@@ -494,6 +494,8 @@ impl Lab {
             "fps": self.fps,
             "sim_us_per_frame": self.sim_us_per_frame,
             "wasm_memory_bytes": crate::memory::wasm_memory_bytes(),
+            "wasm_heap_live_bytes": crate::memory::wasm_heap_bytes().map(|(live, _)| live),
+            "wasm_heap_peak_bytes": crate::memory::wasm_heap_bytes().map(|(_, peak)| peak),
             "view_rect_px": self.view_rect_px,
             "joints": skeleton.joint_count(),
             "views": [{ "method": self.settings.method.name(), "effectors": effectors }],

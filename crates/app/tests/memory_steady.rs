@@ -5,6 +5,9 @@
 //! second. A counting global allocator measures the
 //! live bytes; the browser soak (tests/e2e/soak.test.mjs) measures the wasm
 //! memory and JS heap of the whole page.
+//! Native only: in the browser build the app installs its own counting
+//! allocator (`gaitlab_app::memory`), and there can be only one.
+#![cfg(not(target_arch = "wasm32"))]
 #![allow(unsafe_code)] // the counting allocator forwards to the system allocator
 
 use std::alloc::{GlobalAlloc, Layout, System};
