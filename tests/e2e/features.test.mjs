@@ -73,8 +73,12 @@ describe('recording panel and bench API (WebGL2)', () => {
       if (video.name.endsWith('.webm')) {
         assert.deepEqual([...video.bytes.subarray(0, 4)], [0x1a, 0x45, 0xdf, 0xa3], 'EBML (WebM) header');
       }
-      // Decode it in the page: the frame size is the one chosen, and the picture is not blank.
-      const decoded = await page.evaluate(async ({ b64, type }) => {
+      // Decode it in the page: the frame size is the one chosen, the header carries the duration
+      // (WebCodecs + gaitlab's muxer; a MediaRecorder file has none), and the pictures at the
+      // start, middle and end (reached by seeking, through the cues) are not blank.
+      // A fresh page decodes: the app's page, busy rendering in software, can be handed no frame.
+      const decoder = await page.context().newPage();
+      const decoded = await decoder.evaluate(async ({ b64, type }) => {
         const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
         const el = document.createElement('video');
         el.muted = true;
@@ -83,28 +87,46 @@ describe('recording panel and bench API (WebGL2)', () => {
           el.onloadeddata = ok;
           el.onerror = () => fail(new Error(`video error ${el.error?.code}`));
         });
-        await el.play().catch(() => {});
-        await new Promise((ok) => setTimeout(ok, 500));
-        el.pause();
+        const headerDuration = el.duration;
         const canvas = document.createElement('canvas');
         canvas.width = el.videoWidth;
         canvas.height = el.videoHeight;
         const ctx = canvas.getContext('2d', { willReadFrequently: true });
-        ctx.drawImage(el, 0, 0);
-        const { data } = ctx.getImageData(0, 0, canvas.width, canvas.height);
-        let sum = 0;
-        let sum2 = 0;
-        const n = data.length / 4;
-        for (let i = 0; i < data.length; i += 4) {
-          const l = 0.2126 * data[i] + 0.7152 * data[i + 1] + 0.0722 * data[i + 2];
-          sum += l;
-          sum2 += l * l;
+        const stddevs = [];
+        for (const t of [0, headerDuration / 2, headerDuration - 0.05]) {
+          el.currentTime = t;
+          await new Promise((ok) => { el.onseeked = ok; });
+          // Wait for the frame to reach the compositor (or 1 s, where there is no callback).
+          await new Promise((ok) => {
+            el.requestVideoFrameCallback?.(() => ok());
+            setTimeout(ok, 1000);
+          });
+          ctx.drawImage(el, 0, 0);
+          const { data } = ctx.getImageData(0, 0, canvas.width, canvas.height);
+          let sum = 0;
+          let sum2 = 0;
+          const n = data.length / 4;
+          for (let i = 0; i < data.length; i += 4) {
+            const l = 0.2126 * data[i] + 0.7152 * data[i + 1] + 0.0722 * data[i + 2];
+            sum += l;
+            sum2 += l * l;
+          }
+          const mean = sum / n;
+          stddevs.push(Math.sqrt(Math.max(0, sum2 / n - mean * mean)));
         }
-        const mean = sum / n;
-        return { width: el.videoWidth, height: el.videoHeight, stddev: Math.sqrt(Math.max(0, sum2 / n - mean * mean)) };
+        return { width: el.videoWidth, height: el.videoHeight, headerDuration, stddevs };
       }, { b64: video.bytes.toString('base64'), type: video.name.endsWith('.webm') ? 'video/webm' : 'video/mp4' });
+      await decoder.close();
+      const { encoder, seconds, frames, skipped } = (await state(page)).video;
+      console.log(`# video (${encoder}): ${frames} frames, ${skipped} skipped; ${decoded.headerDuration.toFixed(3)} s in the header, ` +
+        `${seconds.toFixed(3)} s recorded; luminance stddev ${decoded.stddevs.map((x) => x.toFixed(1)).join(', ')}`);
+      assert.equal(encoder, 'webcodecs-vp9');
+      assert.ok(Number.isFinite(decoded.headerDuration) && decoded.headerDuration >= seconds - 0.05,
+        `header duration ${decoded.headerDuration} s for ${seconds} s recorded`);
       assert.deepEqual([decoded.width, decoded.height], [640, 360], 'frame size as chosen');
-      assert.ok(decoded.stddev > 8, `decoded frame is not blank (luminance stddev ${decoded.stddev.toFixed(2)})`);
+      for (const [i, sd] of decoded.stddevs.entries()) {
+        assert.ok(sd > 8, `decoded frame ${i} (start, middle, end) is not blank (luminance stddev ${sd.toFixed(2)})`);
+      }
     });
   });
 

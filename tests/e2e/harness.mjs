@@ -108,10 +108,12 @@ const NOISE = [
 
 /**
  * Opens a page that records every console error/warning and page error.
- * `allow` adds regexps for messages a particular test expects.
+ * `allow` adds regexps for messages a particular test expects; `init` runs before the page's scripts.
  */
-export async function openPage(context, { allow = [], keepStorage = false } = {}) {
+export async function openPage(context, { allow = [], keepStorage = false, init = null } = {}) {
   const page = await context.newPage();
+  // A script run before the page's own (e.g. to take an API away and exercise a fallback).
+  if (init) await page.addInitScript(init);
   // Pages of one test browser share localStorage, where the app persists its settings: start
   // each page from the defaults so one test's mode/method changes don't leak into the next.
   if (!keepStorage) await page.addInitScript(() => { try { localStorage.clear(); } catch { /* opaque origin */ } });

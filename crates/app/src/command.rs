@@ -537,6 +537,9 @@ impl Lab {
             "video": {
                 "recording": self.video_recording,
                 "frames": self.video_frames,
+                "encoder": self.video_encoder,
+                "skipped": self.video_skipped,
+                "seconds": self.video_seconds,
                 "size": self.settings.video_size.name(),
             },
             "last_error": self.last_error,

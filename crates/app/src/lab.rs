@@ -98,6 +98,13 @@ pub struct Lab {
     pub(crate) video_recording: bool,
     /// Frames the video recorder has copied (reported by the web front end).
     pub(crate) video_frames: u64,
+    /// The encoder the video recorder uses (reported by the web front end;
+    /// empty before the first recording).
+    pub(crate) video_encoder: &'static str,
+    /// Frames the video encoder skipped because it had fallen behind.
+    pub(crate) video_skipped: u64,
+    /// Seconds of video recorded so far (from the first recorded frame).
+    pub(crate) video_seconds: f64,
     /// The 3-D view's rectangle on the canvas, physical pixels `[x, y, w, h]`.
     pub(crate) view_rect_px: [f32; 4],
     /// A file the front end should hand to the person (web: a download).
@@ -274,6 +281,9 @@ impl Lab {
             recording: false,
             video_recording: false,
             video_frames: 0,
+            video_encoder: "",
+            video_skipped: 0,
+            video_seconds: 0.0,
             view_rect_px: [0.0; 4],
             pending_download: None,
             gait_derived: Vec::new(),

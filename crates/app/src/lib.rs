@@ -30,11 +30,16 @@ mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;
 #[cfg(target_arch = "wasm32")]
+mod web_codecs;
+#[cfg(target_arch = "wasm32")]
 mod web_download;
 #[cfg(target_arch = "wasm32")]
 mod web_file;
 #[cfg(target_arch = "wasm32")]
+mod web_media_recorder;
+#[cfg(target_arch = "wasm32")]
 mod web_video;
+pub mod webm;
 
 pub use lab::Lab;
 pub use settings::Settings;

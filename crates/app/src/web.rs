@@ -17,7 +17,7 @@ use crate::link;
 use crate::settings::Settings;
 use crate::web_download::offer_text;
 use crate::web_file::{self, Inbox};
-use crate::web_video::VideoRecorder;
+use crate::web_video::{ErrorSlot, VideoRecorder};
 
 /// Depth buffer bits requested from eframe (the 3-D view's pass matches it).
 const DEPTH_BITS: u8 = 24;
@@ -72,6 +72,8 @@ struct WebApp {
     canvas: web_sys::HtmlCanvasElement,
     /// The video recording in progress, if any.
     video: Option<VideoRecorder>,
+    /// Errors the video recorder met after its calls returned.
+    video_errors: ErrorSlot,
     /// Preset files read and waiting to load.
     files: Inbox,
     /// The hidden file input "Load file…" clicks.
@@ -124,6 +126,7 @@ impl WebApp {
             url_changed,
             canvas,
             video: None,
+            video_errors: ErrorSlot::default(),
             files,
             file_input,
         };
@@ -206,10 +209,21 @@ impl WebApp {
 
     /// Starts, follows or stops the video recorder as the lab asks.
     fn sync_video(&mut self, ctx: &egui::Context) {
+        let failed = self.video_errors.borrow_mut().take();
+        if let Some(error) = failed {
+            self.lab.report_error(error);
+            if let Some(video) = self.video.take() {
+                video.stop();
+            }
+            self.lab.set_video_recording(false);
+        }
         match (self.lab.video_recording(), self.video.take()) {
             (true, Some(video)) => {
                 video.set_rect(self.lab.view_rect_px());
                 self.lab.video_frames = video.frames();
+                self.lab.video_encoder = video.encoder();
+                self.lab.video_skipped = video.skipped();
+                self.lab.video_seconds = video.seconds();
                 self.video = Some(video);
                 // Every frame must be painted for the recording to be smooth.
                 ctx.request_repaint();
@@ -226,9 +240,13 @@ impl WebApp {
                     self.lab.view_rect_px(),
                     self.lab.settings.video_size.pixels(),
                     name,
+                    Rc::clone(&self.video_errors),
                 ) {
                     Ok(video) => {
                         self.lab.video_frames = 0;
+                        self.lab.video_skipped = 0;
+                        self.lab.video_seconds = 0.0;
+                        self.lab.video_encoder = video.encoder();
                         self.video = Some(video);
                         ctx.request_repaint();
                     }

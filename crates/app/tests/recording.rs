@@ -217,6 +217,11 @@ fn video_commands_set_the_request_and_size() {
     let s = state(&lab);
     assert_eq!(s["video"]["recording"], true);
     assert_eq!(s["video"]["size"], "p720");
+    // The web front end fills these in once a recorder runs.
+    assert_eq!(s["video"]["encoder"], "");
+    assert_eq!(s["video"]["frames"], 0);
+    assert_eq!(s["video"]["skipped"], 0);
+    assert_eq!(s["video"]["seconds"], 0.0);
     let error = lab
         .command(r#"{"video_size": "8k"}"#)
         .expect_err("unknown size");
