@@ -201,6 +201,49 @@ describe('page shell (index.html)', () => {
     assert.match(text, /CompileError|WebAssembly/, `the message includes the cause: ${text}`);
   });
 
+  it('the loader counts the download, then says the graphics are starting, and never animates', T, async () => {
+    // Every text the loader shows, with the page's running animations at that moment. A spinning
+    // loader made a software compositor busy enough to slow WebGL2 start-up 2.6-fold.
+    const watch = () => {
+      window.__loaderNews = [];
+      addEventListener('DOMContentLoaded', () => {
+        const line = document.getElementById('loading-text');
+        const note = () => window.__loaderNews.push({
+          text: line.textContent, animations: document.getAnimations().length,
+          bar: document.getElementById('loading-bar').style.width,
+        });
+        note();
+        new MutationObserver(note).observe(line, { childList: true, characterData: true, subtree: true });
+      });
+    };
+    const p = await loadApp(browser, server.url, { init: watch });
+    try {
+      const news = await p.page.evaluate(() => window.__loaderNews);
+      const wasmBytes = Number((await p.page.request.head(`${server.url}pkg/gaitlab_app_bg.wasm`))
+        .headers()['content-length']);
+      const total = (wasmBytes / 1048576).toFixed(1);
+      const texts = news.map((n) => n.text);
+      assert.equal(texts[0], 'Loading gaitlab…', texts.join(' | '));
+      const downloads = news.filter((n) => n.text.startsWith('Downloading gaitlab… '));
+      assert.ok(downloads.length >= 1, `download progress shown: ${texts.join(' | ')}`);
+      for (const d of downloads) {
+        const m = d.text.match(/^Downloading gaitlab… (\d+\.\d) of (\d+\.\d) MB$/);
+        assert.ok(m, d.text);
+        assert.equal(m[2], total, 'the total is the module size');
+        assert.ok(Number(m[1]) <= Number(m[2]), d.text);
+        // The bar counts bytes, the text tenths of a MB: they agree within a rounding or two.
+        assert.ok(Math.abs(parseFloat(d.bar) - 100 * Number(m[1]) / Number(m[2])) <= 1.5, `${d.text}: bar ${d.bar}`);
+      }
+      assert.equal(texts.at(-1), 'Starting graphics…');
+      assert.equal(news.at(-1).bar, '100%');
+      assert.deepEqual(news.map((n) => n.animations), news.map(() => 0), 'no animation runs while loading');
+      assert.equal(await p.page.evaluate(() => document.getElementById('loading')), null, 'loader gone');
+      p.assertClean();
+    } finally {
+      await p.page.close().catch(() => {});
+    }
+  });
+
   it('says so when the browser has no WebAssembly', T, async () => {
     const text = await failedStart((page) => page.addInitScript(() => { delete globalThis.WebAssembly; }));
     assert.match(text, /does not support WebAssembly/);
