@@ -261,28 +261,42 @@ impl WebApp {
         }
     }
 
-    /// Tells the page the first frame is on screen.
+    /// Tells the page the first frame is on screen: once this `ui` pass has been painted, that is
+    /// when eframe's frame callback returns (a zero-delay timeout runs after it), the loader goes
+    /// and `window.__gaitlabFirstFrameMs` is set.
     fn signal_first_frame(&mut self) {
         if self.first_frame_done {
             return;
         }
         self.first_frame_done = true;
-        mark("gaitlab-first-frame");
         let Some(window) = window() else { return };
-        if let Some(document) = window.document() {
-            if let Some(loading) = document.get_element_by_id("loading") {
-                loading.remove();
-            }
-            if let Some(body) = document.body() {
-                let _ = body.dataset().set("ready", "1");
-            }
+        let announce = Closure::once_into_js(first_frame_painted);
+        if window
+            .set_timeout_with_callback(announce.unchecked_ref())
+            .is_err()
+        {
+            first_frame_painted();
         }
-        let _ = js_sys::Reflect::set(
-            &window,
-            &JsValue::from_str("__gaitlabFirstFrameMs"),
-            &JsValue::from_f64(now_ms()),
-        );
     }
+}
+
+/// The page side of [`WebApp::signal_first_frame`].
+fn first_frame_painted() {
+    mark("gaitlab-first-frame");
+    let Some(window) = window() else { return };
+    if let Some(document) = window.document() {
+        if let Some(loading) = document.get_element_by_id("loading") {
+            loading.remove();
+        }
+        if let Some(body) = document.body() {
+            let _ = body.dataset().set("ready", "1");
+        }
+    }
+    let _ = js_sys::Reflect::set(
+        &window,
+        &JsValue::from_str("__gaitlabFirstFrameMs"),
+        &JsValue::from_f64(now_ms()),
+    );
 }
 
 impl eframe::App for WebApp {
