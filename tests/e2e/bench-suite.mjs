@@ -5,12 +5,7 @@
 // Usage: node bench-suite.mjs --native native.json [--path webgl2|webgpu] [--json out.json]
 
 import { readFileSync, writeFileSync } from 'node:fs';
-import { launch, loadApp, serveDist } from './harness.mjs';
-
-function option(name) {
-  const i = process.argv.indexOf(`--${name}`);
-  return i >= 0 ? process.argv[i + 1] : undefined;
-}
+import { cliOption as option, launch, loadApp, serveDist } from './harness.mjs';
 
 const nativePath = option('native');
 if (!nativePath) {

@@ -214,6 +214,12 @@ export function canvasContextKind(page) {
   });
 }
 
+/** The value after `--name` on the command line of a script (bench.mjs, bench-suite.mjs), or undefined. */
+export function cliOption(name) {
+  const i = process.argv.indexOf(`--${name}`);
+  return i >= 0 ? process.argv[i + 1] : undefined;
+}
+
 export const sleep = (ms) => new Promise((ok) => setTimeout(ok, ms));
 
 /**
