@@ -21,6 +21,7 @@ use js_sys::{Object, Reflect};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_futures::JsFuture;
 
+use crate::web_video::{BITS_PER_SECOND, describe};
 use crate::webm::{VideoCodec, WebmMuxer};
 
 #[wasm_bindgen]
@@ -67,25 +68,11 @@ extern "C" {
 const CODECS: [(&str, VideoCodec); 2] =
     [("vp09.00.41.08", VideoCodec::Vp9), ("vp8", VideoCodec::Vp8)];
 
-/// Encoder bit rate, bits per second.
-const BITS_PER_SECOND: u32 = 8_000_000;
-
 /// A keyframe at least this often, µs (each starts a cluster and a cue).
 const KEYFRAME_INTERVAL_US: f64 = 1_000_000.0;
 
 /// Frames waiting in the encoder beyond which new frames are skipped.
 const MAX_QUEUED_FRAMES: u32 = 4;
-
-fn describe(error: &JsValue) -> String {
-    error
-        .as_string()
-        .or_else(|| {
-            Reflect::get(error, &"message".into())
-                .ok()
-                .and_then(|m| m.as_string())
-        })
-        .unwrap_or_else(|| format!("{error:?}"))
-}
 
 fn set(object: &Object, key: &str, value: impl Into<JsValue>) {
     // Setting a property on a plain object cannot fail.
@@ -265,10 +252,15 @@ impl CodecEncoder {
             return Err(error);
         }
         flushed.map_err(|e| describe(&e))?;
-        let muxer = std::mem::replace(
-            &mut *self.muxer.borrow_mut(),
-            WebmMuxer::new(self.codec, 2, 2),
-        );
+        // The closed encoder calls nothing more: with its output callback gone,
+        // this is the muxer's last owner.
+        let Self {
+            muxer, _on_output, ..
+        } = self;
+        drop(_on_output);
+        let muxer = Rc::try_unwrap(muxer)
+            .map_err(|_| "the video muxer is still in use".to_owned())?
+            .into_inner();
         Ok(muxer.finish(concat!("gaitlab ", env!("CARGO_PKG_VERSION"))))
     }
 }

@@ -13,6 +13,7 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::web_download::offer_blob;
+use crate::web_video::{BITS_PER_SECOND, describe};
 
 /// Container and codec choices, best first.
 const MIME_TYPES: [&str; 4] = [
@@ -22,15 +23,8 @@ const MIME_TYPES: [&str; 4] = [
     "video/mp4",
 ];
 
-/// Encoder bit rate, bits per second.
-const BITS_PER_SECOND: u32 = 8_000_000;
-
 /// Time given to the encoder after the hold frame before the recorder stops, ms.
 const DRAIN_MS: i32 = 500;
-
-fn describe(e: &JsValue) -> String {
-    e.as_string().unwrap_or_else(|| format!("{e:?}"))
-}
 
 /// A `MediaRecorder` on the copy canvas.
 pub struct MediaSink {

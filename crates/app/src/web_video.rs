@@ -26,6 +26,22 @@ use crate::web_media_recorder::MediaSink;
 /// Background of the letterbox around a view whose aspect differs from the frame's.
 const LETTERBOX: &str = "#15171c";
 
+/// Bit rate asked of either encoder, bits per second.
+pub(crate) const BITS_PER_SECOND: u32 = 8_000_000;
+
+/// A thrown JS value as text: itself if a string, else its `message` (an
+/// `Error`, a `DOMException`), else its debug form.
+pub(crate) fn describe(error: &JsValue) -> String {
+    error
+        .as_string()
+        .or_else(|| {
+            js_sys::Reflect::get(error, &"message".into())
+                .ok()
+                .and_then(|m| m.as_string())
+        })
+        .unwrap_or_else(|| format!("{error:?}"))
+}
+
 type FrameLoop = Rc<RefCell<Option<Closure<dyn FnMut()>>>>;
 
 /// Where the recorder reports errors that happen after its call returned
@@ -150,19 +166,18 @@ impl VideoRecorder {
         file_name: String,
         errors: ErrorSlot,
     ) -> Result<Self, String> {
-        let describe = |e: JsValue| e.as_string().unwrap_or_else(|| format!("{e:?}"));
         let document = web_sys::window()
             .and_then(|w| w.document())
             .ok_or("no document")?;
         let (width, height) = size.unwrap_or((even(rect[2]), even(rect[3])));
         let target = document
             .create_element("canvas")
-            .map_err(describe)?
+            .map_err(|e| describe(&e))?
             .dyn_into::<web_sys::HtmlCanvasElement>()
             .map_err(|_| "could not create a canvas".to_owned())?;
         target.set_width(width);
         target.set_height(height);
-        let context = context_2d(&target).map_err(describe)?;
+        let context = context_2d(&target).map_err(|e| describe(&e))?;
 
         let running = Rc::new(Cell::new(true));
         let sink = if web_codecs::available() {

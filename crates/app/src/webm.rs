@@ -209,12 +209,6 @@ impl WebmMuxer {
         self.frames
     }
 
-    /// Time of the last frame after the first, ms (0 before two frames).
-    #[must_use]
-    pub fn last_frame_ms(&self) -> u64 {
-        self.last_ms
-    }
-
     /// Adds one encoded frame shown from `timestamp_us` (any origin: the
     /// first frame of the take is time 0).
     ///
