@@ -5,25 +5,7 @@
 //!
 //! Storage is column-major `n × n` in a flat slice, matching nalgebra's layout.
 
-/// √(a² + b²) without overflow or underflow in the squares: the smaller
-/// magnitude is scaled by the larger. Only basic IEEE 754 operations and the
-/// correctly rounded square root, so every platform gets the same bits, and
-/// the browser gets wasm's `f64.sqrt` instruction (the `libm` crate's hypot
-/// and square root are software there on stable Rust, and this runs for
-/// every rotation of the QL sweep).
-#[inline]
-fn hypot(a: f64, b: f64) -> f64 {
-    let (a, b) = (a.abs(), b.abs());
-    if a.is_infinite() || b.is_infinite() {
-        return f64::INFINITY;
-    }
-    let (big, small) = if a >= b { (a, b) } else { (b, a) };
-    if big == 0.0 {
-        return 0.0;
-    }
-    let ratio = small / big;
-    big * (1.0 + ratio * ratio).sqrt()
-}
+use crate::portable::hypot;
 
 /// Reusable workspace for decompositions of size up to `capacity`.
 #[derive(Clone, Debug, Default)]
@@ -282,28 +264,6 @@ impl SymmetricEigen {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn hypot_agrees_with_libm_within_an_ulp_and_never_overflows() {
-        let mut worst = 0.0_f64;
-        let mut x = 1.234_567e-300_f64;
-        while x < 1e300 {
-            for y in [0.0, 1.0, -3.5, x * 0.7, -x * 1e-9, x * 1e6] {
-                let ours = hypot(x, y);
-                let reference = libm::hypot(x, y);
-                assert!(ours.is_finite(), "hypot({x}, {y}) = {ours}");
-                worst = worst.max((ours - reference).abs() / reference);
-            }
-            x *= 37.3;
-        }
-        // The scaled form rounds twice more than libm's; ≤ 2 ulp (2.2e-16 each).
-        assert!(worst <= 4.5e-16, "worst relative difference {worst:e}");
-        assert_eq!(hypot(1e300, 1e300), 1e300 * 2.0_f64.sqrt());
-        assert_eq!(hypot(3e-300, 4e-300), 5e-300);
-        assert_eq!(hypot(0.0, -0.0), 0.0);
-        assert_eq!(hypot(f64::INFINITY, f64::NAN), f64::INFINITY);
-        assert!(hypot(f64::NAN, 1.0).is_nan());
-    }
 
     fn check(a: &nalgebra::DMatrix<f64>) {
         let n = a.nrows();
