@@ -171,6 +171,25 @@ async function videoDuration(page, bytes, type) {
   }, { b64: bytes.toString('base64'), type });
 }
 
+/**
+ * Records the 3-D view at 640 × 360 until the app has recorded `seconds` (its clock starts at the
+ * first recorded frame), stops, and resolves to the app's recorded time, the seconds from the stop
+ * command to the download, the download and its bytes.
+ */
+async function recordTake(page, seconds) {
+  assert.equal(await command(page, { plots: false }), 'ok');
+  assert.equal(await command(page, { video_size: 'p360', record_video: true }), 'ok');
+  await page.waitForFunction((s) => JSON.parse(window.gaitlab.state()).video.seconds >= s, seconds,
+    { timeout: 120_000, polling: 20 });
+  const recordedS = (await state(page)).video.seconds;
+  const stopping = Date.now();
+  const pending = page.waitForEvent('download', { timeout: 60_000 });
+  assert.equal(await command(page, { record_video: false }), 'ok');
+  const download = await pending;
+  const stopWallS = (Date.now() - stopping) / 1e3;
+  return { recordedS, stopWallS, download, bytes: readFileSync(await download.path()) };
+}
+
 describe('export: WebM video in headless Chromium (WebGL2, 640 × 400 window)', () => {
   let browser;
   // A small window keeps software rendering fast enough for a steady stream of frames: the
@@ -180,18 +199,7 @@ describe('export: WebM video in headless Chromium (WebGL2, 640 × 400 window)', 
 
   it('records 5 s of the 3-D view: bytes > 0 and a duration of about 5 s', T, async () => {
     await withApp(browser, async ({ page }) => {
-      assert.equal(await command(page, { plots: false }), 'ok');
-      assert.equal(await command(page, { video_size: 'p360', record_video: true }), 'ok');
-      // Stop once the app has recorded 5 s (its clock starts at the first recorded frame).
-      await page.waitForFunction(() => JSON.parse(window.gaitlab.state()).video.seconds >= 5, null,
-        { timeout: 120_000, polling: 20 });
-      const recordedS = (await state(page)).video.seconds;
-      const stopping = Date.now();
-      const pending = page.waitForEvent('download', { timeout: 60_000 });
-      assert.equal(await command(page, { record_video: false }), 'ok');
-      const download = await pending;
-      const stopWallS = (Date.now() - stopping) / 1e3;
-      const bytes = readFileSync(await download.path());
+      const { recordedS, stopWallS, download, bytes } = await recordTake(page, 5);
       saveArtifact(`five-seconds.${download.suggestedFilename().split('.').pop()}`, bytes);
       assert.ok(bytes.length > 0, 'the video has bytes');
       const webm = download.suggestedFilename().endsWith('.webm');
@@ -216,17 +224,7 @@ describe('export: WebM video in headless Chromium (WebGL2, 640 × 400 window)', 
     const p = await loadApp(browser, server.url, { init: () => { delete window.VideoEncoder; } });
     try {
       const { page } = p;
-      assert.equal(await command(page, { plots: false }), 'ok');
-      assert.equal(await command(page, { video_size: 'p360', record_video: true }), 'ok');
-      await page.waitForFunction(() => JSON.parse(window.gaitlab.state()).video.seconds >= 3, null,
-        { timeout: 120_000, polling: 20 });
-      const recordedS = (await state(page)).video.seconds;
-      const stopping = Date.now();
-      const pending = page.waitForEvent('download', { timeout: 60_000 });
-      assert.equal(await command(page, { record_video: false }), 'ok');
-      const download = await pending;
-      const stopWallS = (Date.now() - stopping) / 1e3;
-      const bytes = readFileSync(await download.path());
+      const { recordedS, stopWallS, download, bytes } = await recordTake(page, 3);
       assert.match(download.suggestedFilename(), /\.webm$/);
       assert.deepEqual([...bytes.subarray(0, 4)], [0x1a, 0x45, 0xdf, 0xa3], 'EBML (WebM) header');
       const duration = await videoDuration(page, bytes, 'video/webm');
