@@ -25,28 +25,10 @@ use gaitlab_core::ik::{IkOptions, IkSolver, IkStatus, JointWeight, Method, Targe
 use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::check_ik_options;
 use gaitlab_core::{Effector, Joint, Kinematics, Pose, RootTransform, Skeleton};
+use gaitlab_testkit::prop_config as config;
 use glam::{DMat3, DVec3};
 use proptest::prelude::*;
 use proptest::sample::Index;
-use proptest::test_runner::{Config, RngSeed};
-
-/// The seed CI runs with (any fixed value; chosen once).
-const SEED: u64 = 0x6a17_1ab5_0000_0007;
-
-/// A proptest configuration running `cases` cases (times `GAITLAB_PROP_SCALE`)
-/// from the fixed [`SEED`] unless `PROPTEST_RNG_SEED` is set.
-fn config(cases: u32) -> Config {
-    let scale = std::env::var("GAITLAB_PROP_SCALE")
-        .ok()
-        .and_then(|s| s.parse::<u32>().ok())
-        .unwrap_or(1)
-        .max(1);
-    let mut config = Config::with_cases(cases.saturating_mul(scale));
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = RngSeed::Fixed(SEED);
-    }
-    config
-}
 
 /// The limits of a generated joint.
 #[derive(Clone, Debug)]

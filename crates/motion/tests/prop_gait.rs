@@ -28,28 +28,10 @@ use gaitlab_core::preset::thesis::{CycleShape, ThesisMode, ThesisParams, Wounded
 use gaitlab_core::preset::{Creature, PathKindSpec, PathSpec, PodaParams, load_bundled};
 use gaitlab_motion::poda::gait_names;
 use gaitlab_motion::{PodaDriver, ThesisDriver, validate_params};
+use gaitlab_testkit::prop_config as config;
 use glam::DVec3;
 use proptest::prelude::*;
 use proptest::sample::Index;
-use proptest::test_runner::{Config, RngSeed};
-
-/// The seed CI runs with.
-const SEED: u64 = 0x6a17_1ab5_0000_0007;
-
-/// `cases` cases (times `GAITLAB_PROP_SCALE`) from the fixed [`SEED`] unless
-/// `PROPTEST_RNG_SEED` is set.
-fn config(cases: u32) -> Config {
-    let scale = std::env::var("GAITLAB_PROP_SCALE")
-        .ok()
-        .and_then(|s| s.parse::<u32>().ok())
-        .unwrap_or(1)
-        .max(1);
-    let mut config = Config::with_cases(cases.saturating_mul(scale));
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = RngSeed::Fixed(SEED);
-    }
-    config
-}
 
 const PODA_PRESETS: [&str; 4] = ["poda-quadruped", "poda-biped", "hexapod", "insect-14"];
 const THESIS_PRESETS: [&str; 2] = ["human", "ik-quadruped"];

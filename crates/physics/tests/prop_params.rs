@@ -21,26 +21,8 @@ use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::{Creature as PresetCreature, ObstacleSpec, PhysicsParams, load_bundled};
 use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::gait_controller::gait_names;
+use gaitlab_testkit::prop_config as config;
 use proptest::prelude::*;
-use proptest::test_runner::{Config, RngSeed};
-
-/// The seed CI runs with.
-const SEED: u64 = 0x6a17_1ab5_0000_0007;
-
-/// `cases` cases (times `GAITLAB_PROP_SCALE`) from the fixed [`SEED`] unless
-/// `PROPTEST_RNG_SEED` is set.
-fn config(cases: u32) -> Config {
-    let scale = std::env::var("GAITLAB_PROP_SCALE")
-        .ok()
-        .and_then(|s| s.parse::<u32>().ok())
-        .unwrap_or(1)
-        .max(1);
-    let mut config = Config::with_cases(cases.saturating_mul(scale));
-    if std::env::var_os("PROPTEST_RNG_SEED").is_none() {
-        config.rng_seed = RngSeed::Fixed(SEED);
-    }
-    config
-}
 
 const PRESETS: [&str; 3] = ["raibert-biped", "raibert-quadruped", "raibert-kangaroo"];
 
