@@ -16,7 +16,8 @@
 /// magnitude is scaled by the larger. Only basic IEEE 754 operations and the
 /// correctly rounded square root, so every platform gets the same bits, and
 /// the browser gets wasm's `f64.sqrt` instruction (the `libm` crate's hypot
-/// and square root are software there on stable Rust, and the QL eigen-solver of the IK runs it for every rotation).
+/// and square root are software there on stable Rust, and the IK's QL
+/// eigen-solver calls this for every rotation).
 #[inline]
 #[must_use]
 pub fn hypot(a: f64, b: f64) -> f64 {
