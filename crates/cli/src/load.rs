@@ -3,7 +3,7 @@
 
 use std::io::Read;
 
-use gaitlab_core::preset::{MAX_PRESET_BYTES, bundled, load_bundled};
+use gaitlab_core::preset::{MAX_PRESET_BYTES, Purpose, bundled, bundled_json, load_bundled};
 use gaitlab_core::{Creature, PresetError};
 
 use crate::fail::Failure;
@@ -25,9 +25,18 @@ pub fn read_limited(path: &str, limit: usize, what: &str) -> Result<String, Fail
     String::from_utf8(bytes).map_err(|e| Failure::input(format!("{path}: not UTF-8 text ({e})")))
 }
 
-/// A preset by bundled name, or else by file path. Errors are `<json path>: <reason>`.
+/// A preset by bundled name, or else by file path, to run its scenario. Errors
+/// are `<json path>: <reason>`.
 pub fn creature(name_or_path: &str) -> Result<Creature, Failure> {
-    if let Some(loaded) = load_bundled(name_or_path) {
+    creature_for(name_or_path, Purpose::Scenario)
+}
+
+/// A preset by bundled name, or else by file path, checked for `purpose`
+/// (`track` loads for [`Purpose::Tracking`]: the thesis roles are not checked).
+pub fn creature_for(name_or_path: &str, purpose: Purpose) -> Result<Creature, Failure> {
+    if let Some(loaded) =
+        bundled_json(name_or_path).map(|json| Creature::from_json_for(json, purpose))
+    {
         return loaded.map_err(|e| Failure::input(format!("bundled preset {name_or_path}: {e}")));
     }
     let looks_like_file = name_or_path.contains('/')
@@ -41,7 +50,7 @@ pub fn creature(name_or_path: &str) -> Result<Creature, Failure> {
         )));
     }
     let text = read_limited(name_or_path, MAX_PRESET_BYTES, "preset")?;
-    Creature::from_json(&text).map_err(|e: PresetError| Failure::input(e))
+    Creature::from_json_for(&text, purpose).map_err(|e: PresetError| Failure::input(e))
 }
 
 /// `gaitlab presets`.

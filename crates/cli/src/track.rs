@@ -5,6 +5,7 @@
 use clap::Args;
 use gaitlab_core::RootTransform;
 use gaitlab_core::export::{MAX_TARGET_CSV_BYTES, parse_target_csv};
+use gaitlab_core::preset::Purpose;
 use gaitlab_motion::{TargetSource, TrackDriver, TrackOptions};
 
 use crate::fail::Failure;
@@ -34,9 +35,11 @@ pub struct TrackArgs {
     pub outputs: Outputs,
 }
 
-/// `gaitlab track`.
+/// `gaitlab track`. The preset is loaded for tracking: only its skeleton, IK
+/// options, method, fps and iterations per frame are used, so its thesis roles
+/// (which only the target script reads) are not checked.
 pub fn track(args: &TrackArgs) -> Result<(), Failure> {
-    let creature = load::creature(&args.preset)?;
+    let creature = load::creature_for(&args.preset, Purpose::Tracking)?;
     let scenario = &creature.scenario;
     let text = load::read_limited(&args.targets, MAX_TARGET_CSV_BYTES, "target file")?;
     let track = parse_target_csv(&text, creature.skeleton.effector_count())

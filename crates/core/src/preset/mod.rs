@@ -36,6 +36,6 @@ pub use schema::{
 };
 pub use validate::{
     MAX_FREQUENCY_HZ, MAX_ITERATIONS_PER_FRAME, MAX_SLOWDOWN, MAX_SPEED_MPS, MAX_START_RAMP_S,
-    MAX_WOUNDED_ADD, MAX_WOUNDED_MULTIPLY, MIN_SLOWDOWN, THESIS_ROLE_COUNT, check_ik_options,
-    check_thesis_values,
+    MAX_WOUNDED_ADD, MAX_WOUNDED_MULTIPLY, MIN_SLOWDOWN, Purpose, THESIS_ROLE_COUNT,
+    check_ik_options, check_thesis_values,
 };
