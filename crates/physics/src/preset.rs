@@ -280,6 +280,7 @@ pub fn to_preset(creature: &Creature, meta: &PresetMeta) -> Preset {
         waypoints: Vec::new(),
     };
     Preset {
+        schema: None,
         format: Format::V1,
         name: meta.name.clone(),
         description: meta.description.clone(),

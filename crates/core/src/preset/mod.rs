@@ -14,6 +14,8 @@
 mod build;
 mod bundled;
 mod error;
+#[cfg(feature = "schema")]
+mod json_schema;
 pub mod physics;
 pub mod poda;
 mod scenario;
@@ -24,6 +26,8 @@ mod validate;
 pub use build::Creature;
 pub use bundled::{DEFAULT_PRESET, bundled, bundled_json, bundled_names, load_bundled};
 pub use error::{PresetError, ROOT_PATH};
+#[cfg(feature = "schema")]
+pub use json_schema::{SCHEMA_ID, SCHEMA_TITLE, preset_schema, preset_schema_text};
 pub use physics::{
     MassSpec, ObstacleSpec, PhysicsBase, PhysicsBodySpec, PhysicsLegSpec, PhysicsModel,
     PhysicsParams,

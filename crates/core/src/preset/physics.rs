@@ -27,6 +27,7 @@ pub const MAX_WAYPOINTS: usize = 64;
 
 /// Which of the paper's controller families drives the creature.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum PhysicsModel {
     /// Two telescoping legs on ball hips: run, both gallops.
@@ -52,6 +53,7 @@ impl PhysicsModel {
 
 /// How the trunk moves in the world.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum PhysicsBase {
     /// Six degrees of freedom: the skeleton's root is the trunk.
@@ -68,6 +70,7 @@ pub enum PhysicsBase {
 /// {"mass_kg": 1.4, "com_m": [0, -0.095, 0], "inertia_kgm2": [0.017, 0.0014, 0.018]}
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct MassSpec {
     /// Mass (kg), ≥ 0.
@@ -83,6 +86,7 @@ pub struct MassSpec {
 
 /// The body a joint moves, with its mass properties.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct PhysicsBodySpec {
     /// The skeleton joint that moves this body.
@@ -95,6 +99,7 @@ pub struct PhysicsBodySpec {
 /// One leg: its hip joints (proximal first), its springy joint, optional knee,
 /// and the foot's contact point.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct PhysicsLegSpec {
     /// Name for metrics and the UI.
@@ -115,6 +120,7 @@ pub struct PhysicsLegSpec {
 
 /// A box on the ground ahead of the creature.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct ObstacleSpec {
     /// Distance of its near face along the direction of travel (m).
@@ -127,6 +133,7 @@ pub struct ObstacleSpec {
 
 /// `scenario.physics`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct PhysicsParams {
     /// The controller family.
