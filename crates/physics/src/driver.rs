@@ -434,10 +434,8 @@ impl PhysicsDriver {
         params.gait = Some(gait.to_owned());
         let next = make_controller(&self.sim.creature, gait, &params)?;
         match (&mut self.controller, next) {
-            // The quadruped changes gait at its next lift-off, keeping its state.
-            (GaitController::Quadruped(running), GaitController::Quadruped(fresh)) => {
-                running.set_gait(fresh.gait())
-            }
+            // The trot asked for again runs on, keeping its state.
+            (GaitController::Quadruped(_), GaitController::Quadruped(_)) => {}
             // Bound and gallop are one controller in two styles.
             (GaitController::QuadrupedBound(running), GaitController::QuadrupedBound(fresh)) => {
                 running.set_style(fresh.style())

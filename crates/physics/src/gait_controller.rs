@@ -10,9 +10,7 @@ use crate::control::kangaroo_hop::{KangarooHop, KangarooHopParams, kangaroo_star
 use crate::control::quadruped_bound::{
     BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
 };
-use crate::control::quadruped_run::{
-    QuadrupedGait, QuadrupedRun, QuadrupedRunParams, quadruped_start,
-};
+use crate::control::quadruped_run::{QuadrupedRun, QuadrupedRunParams, quadruped_start};
 use crate::creature::{Creature, Species};
 use crate::sim::{Controller, Sim};
 
@@ -104,7 +102,7 @@ impl Controller for GaitController {
 /// the rest); other creatures keep the preset's rest pose.
 pub fn start_state(sim: &mut Sim, controller: &GaitController, speed_mps: f64) {
     match controller {
-        GaitController::Quadruped(c) => quadruped_start(sim, c.gait(), speed_mps),
+        GaitController::Quadruped(_) => quadruped_start(sim, speed_mps),
         GaitController::QuadrupedBound(_) => bound_start(sim, speed_mps),
         GaitController::Kangaroo(_) => {
             kangaroo_start(sim, speed_mps.clamp(0.0, KANGAROO_START_MPS))
@@ -188,11 +186,7 @@ pub fn make_controller(
                     speed_mps: params.speed_mps,
                     ..QuadrupedRunParams::default()
                 };
-                return Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(
-                    p,
-                    QuadrupedGait::Trot,
-                    l,
-                ))));
+                return Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(p, l))));
             }
             let style = if gait == "bound" {
                 BoundStyle::Bound
