@@ -11,7 +11,7 @@ use crate::control::quadruped_bound::{
     BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
 };
 use crate::control::quadruped_run::{QuadrupedRun, QuadrupedRunParams, quadruped_start};
-use crate::creature::{Creature, Species};
+use crate::creature::{PhysicalCreature, Species};
 use crate::sim::{Controller, Sim};
 
 /// The gaits of each model, the default first.
@@ -118,7 +118,7 @@ pub fn start_state(sim: &mut Sim, controller: &GaitController, speed_mps: f64) {
 /// `scenario.physics.gait` for a gait the model lacks; `scenario.physics.legs`
 /// when the legs do not fit the gait's controller.
 pub fn make_controller(
-    creature: &Creature,
+    creature: &PhysicalCreature,
     gait: &str,
     params: &PhysicsParams,
 ) -> Result<GaitController, PresetError> {

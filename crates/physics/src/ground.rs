@@ -11,7 +11,7 @@
 use gaitlab_core::portable::Portable;
 use glam::DVec3;
 
-use crate::creature::Creature;
+use crate::creature::PhysicalCreature;
 use crate::data::Data;
 
 /// The non-linear paw pad of eq. 6.
@@ -144,7 +144,7 @@ fn wrap_angle(a: f64) -> f64 {
 /// The contact stage: reads kinematics, updates `contacts` (one per leg) and
 /// adds the ground forces to `data.external`.
 pub fn contact_forces(
-    creature: &Creature,
+    creature: &PhysicalCreature,
     data: &mut Data,
     params: &GroundParams,
     terrain: &Terrain,

@@ -47,7 +47,7 @@ pub mod step_bench;
 pub mod table2;
 
 pub use aba::{DynamicsError, forward_dynamics};
-pub use creature::{Creature, Leg, Species};
+pub use creature::{Leg, PhysicalCreature, Species};
 pub use data::Data;
 pub use driver::PhysicsDriver;
 pub use model::{Body, GRAVITY_MPS2, Joint, Model, ModelError};

@@ -14,7 +14,7 @@ use std::fmt::Write as _;
 
 use glam::{DMat3, DQuat, DVec3};
 
-use crate::creature::Creature;
+use crate::creature::PhysicalCreature;
 use crate::ground::GroundParams;
 use crate::model::{Body, Joint};
 
@@ -79,7 +79,7 @@ fn merges_into_child(bodies: &[Body], i: usize) -> Option<usize> {
 
 /// The MJCF text of `creature`.
 #[must_use]
-pub fn to_mjcf(creature: &Creature, options: &MjcfOptions) -> String {
+pub fn to_mjcf(creature: &PhysicalCreature, options: &MjcfOptions) -> String {
     let model = &creature.model;
     let bodies = model.bodies();
     let mut x = String::new();

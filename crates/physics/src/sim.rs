@@ -9,7 +9,7 @@
 //! non-finite or ran away, so the caller can reset and say why.
 
 use crate::actuator::{SpringDamper, Stops};
-use crate::creature::Creature;
+use crate::creature::PhysicalCreature;
 use crate::data::Data;
 use crate::ground::{FootContact, GroundParams, Terrain, contact_forces};
 use crate::spatial::Force;
@@ -71,7 +71,7 @@ impl Drive {
 /// What the controller sees each control interval.
 pub struct ControlInput<'a> {
     /// The creature.
-    pub creature: &'a Creature,
+    pub creature: &'a PhysicalCreature,
     /// The state, kinematics up to date.
     pub data: &'a Data,
     /// Each leg's contact.
@@ -163,7 +163,7 @@ impl std::error::Error for BlowUp {}
 #[derive(Clone, Debug)]
 pub struct Sim {
     /// The creature simulated.
-    pub creature: Creature,
+    pub creature: PhysicalCreature,
     /// Its state.
     pub data: Data,
     /// One actuator per joint coordinate.
@@ -186,7 +186,7 @@ pub struct Sim {
 impl Sim {
     /// A simulation of `creature` at rest at the zero state.
     #[must_use]
-    pub fn new(creature: Creature, ground: GroundParams, options: SimOptions) -> Self {
+    pub fn new(creature: PhysicalCreature, ground: GroundParams, options: SimOptions) -> Self {
         let data = Data::new(&creature.model);
         let drives = vec![Drive::default(); creature.model.joint_count()];
         let contacts = vec![FootContact::default(); creature.legs.len()];

@@ -38,7 +38,7 @@ use glam::{DVec2, DVec3};
 use super::attitude::com_velocity;
 use super::phase::Phase;
 use crate::actuator::Stops;
-use crate::creature::Creature;
+use crate::creature::PhysicalCreature;
 use crate::data::Data;
 use crate::ground::{GroundParams, PawPad};
 use crate::model::GRAVITY_MPS2;
@@ -210,7 +210,7 @@ struct LegGeometry {
     foot: f64,
 }
 
-fn leg_geometry(creature: &Creature) -> Option<LegGeometry> {
+fn leg_geometry(creature: &PhysicalCreature) -> Option<LegGeometry> {
     let leg = creature.legs.first()?;
     let bodies = creature.model.bodies();
     let shin_body = bodies.get(leg.foot_body)?.parent?;
