@@ -6,7 +6,7 @@
 
 use gaitlab_core::preset::Creature;
 use gaitlab_physics::PhysicsDriver;
-use gaitlab_physics::gait_controller::gait_names;
+use gaitlab_physics::control::gait_controller::gait_names;
 use serde_json::{Value, json};
 
 use crate::fail::Failure;

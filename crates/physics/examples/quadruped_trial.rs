@@ -6,7 +6,7 @@ use gaitlab_physics::control::quadruped_run::{
     QuadrupedRun, QuadrupedRunParams, quadruped_ground, quadruped_start,
 };
 use gaitlab_physics::creatures::quadruped;
-use gaitlab_physics::metrics::GaitRecorder;
+use gaitlab_physics::engine::metrics::GaitRecorder;
 use gaitlab_physics::{Sim, SimOptions};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

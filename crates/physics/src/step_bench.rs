@@ -6,7 +6,7 @@
 
 use gaitlab_core::preset::{Creature as PresetCreature, PresetError};
 
-use crate::driver::PhysicsDriver;
+use crate::engine::driver::PhysicsDriver;
 
 /// What to time.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -60,7 +60,7 @@ fn steps_in(seconds: f64, dt: f64) -> u32 {
     (seconds / dt).round().max(1.0) as u32
 }
 
-fn blew_up(e: crate::sim::BlowUp) -> PresetError {
+fn blew_up(e: crate::world::sim::BlowUp) -> PresetError {
     PresetError::new("scenario.physics", e.to_string())
 }
 

@@ -6,7 +6,7 @@
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::{Creature as PresetCreature, load_bundled};
 use gaitlab_physics::PhysicsDriver;
-use gaitlab_physics::gait_controller::gait_names;
+use gaitlab_physics::control::gait_controller::gait_names;
 
 fn bundled(name: &str) -> PresetCreature {
     load_bundled(name).expect("bundled").expect("valid")

@@ -4,7 +4,7 @@
 use gaitlab_core::preset::{Creature as PresetCreature, load_bundled};
 use gaitlab_physics::PhysicalCreature;
 use gaitlab_physics::creatures::{biped, kangaroo, quadruped};
-use gaitlab_physics::preset::creature_from_preset;
+use gaitlab_physics::engine::preset::creature_from_preset;
 
 fn assert_same(name: &str, got: &PhysicalCreature, want: &PhysicalCreature) {
     assert_eq!(got.species, want.species, "{name}");

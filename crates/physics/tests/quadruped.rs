@@ -10,7 +10,7 @@ use gaitlab_physics::control::quadruped_run::{
     QuadrupedRun, QuadrupedRunParams, quadruped_ground, quadruped_start,
 };
 use gaitlab_physics::creatures::quadruped;
-use gaitlab_physics::metrics::{GaitRecorder, GaitSummary};
+use gaitlab_physics::engine::metrics::{GaitRecorder, GaitSummary};
 use gaitlab_physics::{Sim, SimOptions};
 
 /// Trot at `speed` for `seconds`.

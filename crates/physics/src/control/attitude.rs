@@ -5,8 +5,8 @@
 use gaitlab_core::portable::Portable;
 use glam::{DQuat, DVec3};
 
-use crate::creature::PhysicalCreature;
-use crate::data::Data;
+use crate::creatures::PhysicalCreature;
+use crate::dynamics::data::Data;
 
 /// The unit forward vector on the ground for a heading (rad about +y; 0 = +z).
 #[must_use]

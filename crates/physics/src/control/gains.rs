@@ -2,7 +2,7 @@
 //! the `gain` command): each names a field of the controller's parameters, at
 //! scale 1 in the paper's units. Nothing limits a gain beyond being finite and
 //! non-negative — absurd gains are allowed, and the simulation's blow-up
-//! guard ([`crate::sim`]) catches what they do.
+//! guard ([`crate::world::sim`]) catches what they do.
 
 /// One tunable gain.
 #[derive(Clone, Copy, Debug, PartialEq)]

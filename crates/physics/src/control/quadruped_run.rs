@@ -23,10 +23,10 @@ use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate}
 use super::hip_servo::HipServo;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
-use crate::actuator::Stops;
 use crate::creatures::QUADRUPED_LEG_M;
-use crate::ground::GroundParams;
-use crate::sim::{ControlInput, Controller, Drive, Sim};
+use crate::world::actuator::Stops;
+use crate::world::ground::GroundParams;
+use crate::world::sim::{ControlInput, Controller, Drive, Sim};
 
 /// The trot's two virtual legs, diagonal pairs of leg indices (front-left
 /// 0, front-right 1, rear-left 2, rear-right 3): front-left + rear-right,
@@ -433,7 +433,7 @@ impl Controller for QuadrupedRun {
             })
             .sum::<f64>()
             < 0.0;
-        let com = crate::energy::center_of_mass(&creature.model, data);
+        let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
         let fwd = heading_forward(self.params.heading);
         self.advance_phase(input, drives, descending, com.dot(fwd));
         let pair = TROT_PAIRS[self.active];
@@ -542,7 +542,7 @@ impl Controller for QuadrupedRun {
                         - (reach * reach - displacement.length_squared())
                             .max(0.0)
                             .sqrt();
-                    let g = crate::GRAVITY_MPS2;
+                    let g = crate::dynamics::model::GRAVITY_MPS2;
                     let t_rem = if drop > 0.0 {
                         (hip_v.y + (hip_v.y * hip_v.y + 2.0 * g * drop).sqrt()) / g
                     } else {

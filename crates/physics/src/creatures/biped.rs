@@ -6,8 +6,8 @@
 use glam::DVec3;
 
 use super::build::{Builder, paper, paper_inertia};
-use crate::creature::{Leg, PhysicalCreature, Species};
-use crate::model::{Joint, Model, ModelError};
+use super::physical_creature::{Leg, PhysicalCreature, Species};
+use crate::dynamics::model::{Joint, Model, ModelError};
 
 /// Table 3, biped: trunk mass (kg) and inertia `[x y z]` (kg·m²).
 const TRUNK_MASS_KG: f64 = 23.1;

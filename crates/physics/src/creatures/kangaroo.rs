@@ -12,8 +12,8 @@
 use glam::{DMat3, DVec3};
 
 use super::build::{Builder, paper};
-use crate::creature::{Leg, PhysicalCreature, Species};
-use crate::model::{Joint, Model, ModelError};
+use super::physical_creature::{Leg, PhysicalCreature, Species};
+use crate::dynamics::model::{Joint, Model, ModelError};
 
 /// One link of Table 3: length, mass centre from the proximal joint (m),
 /// mass (kg), moment of inertia about the lateral axis (kg·m²).

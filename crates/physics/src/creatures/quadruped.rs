@@ -9,8 +9,8 @@
 use glam::DVec3;
 
 use super::build::{Builder, paper, paper_inertia};
-use crate::creature::{Leg, PhysicalCreature, Species};
-use crate::model::{Joint, Model, ModelError};
+use super::physical_creature::{Leg, PhysicalCreature, Species};
+use crate::dynamics::model::{Joint, Model, ModelError};
 
 const TRUNK_MASS_KG: f64 = 10.0;
 const TRUNK_INERTIA: [f64; 3] = [0.54, 2.35, 2.39];

@@ -8,11 +8,11 @@
 //! → dynamics → integrate → guard`. The guard stops a run whose state turned
 //! non-finite or ran away, so the caller can reset and say why.
 
-use crate::actuator::{SpringDamper, Stops};
-use crate::creature::PhysicalCreature;
-use crate::data::Data;
-use crate::ground::{FootContact, GroundParams, Terrain, contact_forces};
-use crate::spatial::Force;
+use crate::creatures::PhysicalCreature;
+use crate::dynamics::data::Data;
+use crate::dynamics::spatial::Force;
+use crate::world::actuator::{SpringDamper, Stops};
+use crate::world::ground::{FootContact, GroundParams, Terrain, contact_forces};
 
 /// One joint's actuator: a spring-damper / servo (eq. 1, eq. 5) plus a
 /// feed-forward torque from the controller (eq. 4's posture torque) and the
@@ -212,7 +212,7 @@ impl Sim {
     pub fn step(&mut self, controller: &mut dyn Controller) -> Result<(), BlowUp> {
         let model = &self.creature.model;
         let dt = self.options.dt;
-        crate::kinematics::kinematics(model, &mut self.data);
+        crate::dynamics::kinematics::kinematics(model, &mut self.data);
         self.data.external.fill(Force::ZERO);
         contact_forces(
             &self.creature,
@@ -235,11 +235,11 @@ impl Sim {
         for (k, drive) in self.drives.iter().enumerate() {
             self.data.tau[k] = drive.force(self.data.q[k], self.data.qd[k]);
         }
-        crate::aba::accelerations(model, &mut self.data).map_err(|e| BlowUp {
+        crate::dynamics::aba::accelerations(model, &mut self.data).map_err(|e| BlowUp {
             time: self.time,
             reason: e.to_string(),
         })?;
-        crate::integrate::integrate(model, &mut self.data, dt);
+        crate::dynamics::integrate::integrate(model, &mut self.data, dt);
         self.time += dt;
         self.steps += 1;
         self.accumulator = (self.accumulator - dt).max(0.0);

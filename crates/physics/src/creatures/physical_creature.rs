@@ -4,7 +4,7 @@
 
 use glam::DVec3;
 
-use crate::model::Model;
+use crate::dynamics::model::Model;
 
 /// One leg's joints (coordinate indices into `Data::q`) and its foot.
 #[derive(Clone, Debug, PartialEq)]
@@ -40,7 +40,7 @@ pub enum Species {
 
 /// A creature ready to simulate: the physical counterpart of the preset it
 /// was built from (`gaitlab_core::Creature`, the parsed preset; see
-/// [`creature_from_preset`](crate::preset::creature_from_preset)).
+/// [`creature_from_preset`](crate::engine::preset::creature_from_preset)).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PhysicalCreature {
     /// Which model.

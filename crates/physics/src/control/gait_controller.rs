@@ -11,8 +11,8 @@ use crate::control::quadruped_bound::{
     BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
 };
 use crate::control::quadruped_run::{QuadrupedRun, QuadrupedRunParams, quadruped_start};
-use crate::creature::{PhysicalCreature, Species};
-use crate::sim::{Controller, Sim};
+use crate::creatures::{PhysicalCreature, Species};
+use crate::world::sim::{Controller, Sim};
 
 /// The gaits of each model, the default first.
 #[must_use]
@@ -67,7 +67,11 @@ impl GaitController {
 }
 
 impl Controller for GaitController {
-    fn control(&mut self, input: &crate::sim::ControlInput<'_>, drives: &mut [crate::sim::Drive]) {
+    fn control(
+        &mut self,
+        input: &crate::world::sim::ControlInput<'_>,
+        drives: &mut [crate::world::sim::Drive],
+    ) {
         self.inner_mut().control(input, drives);
     }
 

@@ -11,8 +11,8 @@
 use gaitlab_core::portable::Portable;
 use glam::DVec3;
 
-use crate::creature::PhysicalCreature;
-use crate::data::Data;
+use crate::creatures::PhysicalCreature;
+use crate::dynamics::data::Data;
 
 /// The non-linear paw pad of eq. 6.
 #[derive(Clone, Copy, Debug, PartialEq)]

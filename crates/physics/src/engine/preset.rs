@@ -13,9 +13,9 @@ use gaitlab_core::preset::{
 };
 use glam::{DMat3, DVec3};
 
-use crate::creature::{Leg, PhysicalCreature, Species};
-use crate::model::{Body, Joint, Model};
-use crate::spatial::ParentLink;
+use crate::creatures::{Leg, PhysicalCreature, Species};
+use crate::dynamics::model::{Body, Joint, Model};
+use crate::dynamics::spatial::ParentLink;
 
 fn species(model: PhysicsModel) -> Species {
     match model {

@@ -1,7 +1,7 @@
 //! The physics engine as a gaitlab driver (DESIGN.md "Data flow"): a preset's
 //! creature simulated under its gait's controller on the fixed-step loop of
-//! [`crate::sim`], read out as a [`Pose`] every frame, with the Table-2
-//! figures of [`crate::metrics`] and a guard that resets the creature and
+//! [`crate::world::sim`], read out as a [`Pose`] every frame, with the Table-2
+//! figures of [`crate::engine::metrics`] and a guard that resets the creature and
 //! says why when the simulation blows up (Raibert & Hodgins 1991, Figure 2).
 
 use gaitlab_core::driver::Driver;
@@ -10,14 +10,14 @@ use gaitlab_core::preset::{Creature as PresetCreature, PhysicsParams, PresetErro
 use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
 
+use crate::control::gait_controller::{GaitController, gait_names, make_controller, start_state};
 use crate::control::kangaroo_hop::kangaroo_ground;
-use crate::creature::Species;
-use crate::gait_controller::{GaitController, gait_names, make_controller, start_state};
-use crate::ground::{GroundParams, Obstacle};
-use crate::metrics::{GaitRecorder, GaitSummary};
-use crate::model::Joint as BodyJoint;
-use crate::preset::creature_from_preset;
-use crate::sim::{Controller, Sim, SimOptions};
+use crate::creatures::Species;
+use crate::dynamics::model::Joint as BodyJoint;
+use crate::engine::metrics::{GaitRecorder, GaitSummary};
+use crate::engine::preset::creature_from_preset;
+use crate::world::ground::{GroundParams, Obstacle};
+use crate::world::sim::{Controller, Sim, SimOptions};
 
 /// What the live plots show each frame.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -165,7 +165,7 @@ impl PhysicsDriver {
         }
         sim.data.q.copy_from_slice(&start_q);
         start_state(&mut sim, &controller, params.speed_mps);
-        crate::kinematics::kinematics(&sim.creature.model, &mut sim.data);
+        crate::dynamics::kinematics::kinematics(&sim.creature.model, &mut sim.data);
         let legs = sim.creature.legs.len();
         let mut driver = Self {
             pose: Pose {
@@ -290,7 +290,7 @@ impl PhysicsDriver {
             let hip = trunk.rot * leg.hip_in_trunk + trunk.pos;
             (d.point_world(leg.foot_body, leg.foot_point) - hip).length()
         });
-        let weight = c.model.total_mass() * crate::GRAVITY_MPS2;
+        let weight = c.model.total_mass() * crate::dynamics::model::GRAVITY_MPS2;
         let force: f64 = self.sim.contacts.iter().map(|k| k.force.y).sum();
         let name = self.controller.phase_name();
         PhysicsProbe {
@@ -356,7 +356,7 @@ impl PhysicsDriver {
         self.controller.set_hop_height(height_m);
     }
 
-    /// The creature as a MuJoCo model (see [`crate::mjcf`]): its springs and
+    /// The creature as a MuJoCo model (see [`crate::engine::mjcf`]): its springs and
     /// hip torque limits as the controller sets them at the start.
     #[must_use]
     pub fn mjcf(&self, name: &str) -> String {
@@ -381,7 +381,7 @@ impl PhysicsDriver {
             .map(|&k| probe.drives[k].spring.max_force)
             .filter(|m| m.is_finite())
             .fold(0.0, f64::max);
-        let options = crate::mjcf::MjcfOptions {
+        let options = crate::engine::mjcf::MjcfOptions {
             name: name.to_owned(),
             timestep_s: self.sim.options.dt,
             root_position: if creature.model.free_base() {
@@ -397,7 +397,7 @@ impl PhysicsDriver {
             },
             ground: self.sim.ground,
         };
-        crate::mjcf::to_mjcf(creature, &options)
+        crate::engine::mjcf::to_mjcf(creature, &options)
     }
 
     /// The running controller's tunable gains.
@@ -475,7 +475,8 @@ impl PhysicsDriver {
     fn steer(&mut self, dt: f64) {
         let l = self.params.scale;
         if let Some(&[x, z]) = self.params.waypoints.get(self.waypoint) {
-            let com = crate::energy::center_of_mass(&self.sim.creature.model, &self.sim.data);
+            let com =
+                crate::dynamics::energy::center_of_mass(&self.sim.creature.model, &self.sim.data);
             let to = DVec3::new(x * l - com.x, 0.0, z * l - com.z);
             if to.length() < WAYPOINT_RADIUS_M * l {
                 self.waypoint += 1;
@@ -515,7 +516,7 @@ impl PhysicsDriver {
     ///
     /// # Errors
     /// The blow-up, if one happens; the state is then not to be trusted.
-    pub fn run_steps(&mut self, steps: u32) -> Result<(), crate::sim::BlowUp> {
+    pub fn run_steps(&mut self, steps: u32) -> Result<(), crate::world::sim::BlowUp> {
         for _ in 0..steps {
             self.sim.step(&mut self.controller)?;
             self.take_over();

@@ -14,9 +14,9 @@ use std::fmt::Write as _;
 
 use glam::{DMat3, DQuat, DVec3};
 
-use crate::creature::PhysicalCreature;
-use crate::ground::GroundParams;
-use crate::model::{Body, Joint};
+use crate::creatures::PhysicalCreature;
+use crate::dynamics::model::{Body, Joint};
+use crate::world::ground::GroundParams;
 
 /// What to write besides the creature.
 #[derive(Clone, Debug, PartialEq)]
@@ -235,7 +235,7 @@ pub fn to_mjcf(creature: &PhysicalCreature, options: &MjcfOptions) -> String {
         root: DVec3,
         scale: f64,
         solref: String,
-        model: &'a crate::model::Model,
+        model: &'a crate::dynamics::model::Model,
     }
     impl Ctx<'_> {
         fn dof_of(&self, body: usize) -> Option<usize> {
