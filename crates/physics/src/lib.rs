@@ -3,8 +3,7 @@
 //! whose every motion comes from integrating equations of motion while
 //! controllers apply actuator forces.
 //!
-//! The folders follow the pipeline, each using only those above it (but for
-//! the [`Controller`] interface, which the loop calls and control implements):
+//! The folders follow the pipeline, each using only those above it:
 //!
 //! - [`dynamics`]: spatial algebra, after MuJoCo's immutable-model /
 //!   mutable-data split a [`Model`] (bodies, joints, inertias) and its

@@ -91,7 +91,7 @@ impl Controller for GaitController {
         self.inner_mut().set_hop_height(height_m);
     }
 
-    fn gains(&self) -> Vec<crate::control::gains::Gain> {
+    fn gains(&self) -> Vec<crate::world::sim::Gain> {
         self.inner().gains()
     }
 

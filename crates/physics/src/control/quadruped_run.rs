@@ -363,8 +363,8 @@ impl QuadrupedRun {
 }
 
 impl Controller for QuadrupedRun {
-    fn gains(&self) -> Vec<crate::control::gains::Gain> {
-        use crate::control::gains::Gain;
+    fn gains(&self) -> Vec<crate::world::sim::Gain> {
+        use crate::world::sim::Gain;
         let t = &self.params.trot;
         let d = QuadrupedRunParams::default().trot;
         vec![

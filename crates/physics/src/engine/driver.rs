@@ -402,7 +402,7 @@ impl PhysicsDriver {
 
     /// The running controller's tunable gains.
     #[must_use]
-    pub fn gains(&self) -> Vec<crate::control::gains::Gain> {
+    pub fn gains(&self) -> Vec<crate::world::sim::Gain> {
         self.controller.gains()
     }
 

@@ -102,7 +102,7 @@ pub trait Controller {
     fn set_hop_height(&mut self, _height_m: f64) {}
 
     /// The gains a person may tune while it runs.
-    fn gains(&self) -> Vec<crate::control::gains::Gain> {
+    fn gains(&self) -> Vec<Gain> {
         Vec::new()
     }
 
@@ -110,6 +110,33 @@ pub trait Controller {
     /// negative or not finite.
     fn set_gain(&mut self, _name: &str, _value: f64) -> bool {
         false
+    }
+}
+
+/// One gain a person may tune while a controller runs (the app's sliders,
+/// the `gain` command), at scale 1 in the paper's units.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Gain {
+    /// Parameter name (`posture_kp`, `leg_stiffness`, …).
+    pub name: &'static str,
+    /// Unit, for labels.
+    pub unit: &'static str,
+    /// Current value.
+    pub value: f64,
+    /// The controller's default value.
+    pub default: f64,
+}
+
+impl Gain {
+    /// A gain from its parts.
+    #[must_use]
+    pub const fn new(name: &'static str, unit: &'static str, value: f64, default: f64) -> Self {
+        Self {
+            name,
+            unit,
+            value,
+            default,
+        }
     }
 }
 
