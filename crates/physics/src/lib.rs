@@ -43,7 +43,6 @@ pub mod driver;
 pub mod metrics;
 pub mod mjcf;
 pub mod preset;
-pub mod step_bench;
 pub mod table2;
 
 pub use aba::{DynamicsError, forward_dynamics};
