@@ -313,7 +313,7 @@ impl Lab {
             }
         }
         if let Some(v) = get("last_s") {
-            self.settings.export_last_s = number("last_s", v, 0.0, crate::recording::MAX_TAKE_S)?;
+            self.settings.export_last_s = number("last_s", v, 0.0, gaitlab_engine::MAX_TAKE_S)?;
         }
         if let Some(v) = get("save") {
             self.apply_save(v)?;
@@ -393,7 +393,7 @@ impl Lab {
         )?;
         let last_s = match object.get("last_s") {
             None | Some(Value::Null) => None,
-            Some(v) => Some(number("save.last_s", v, 0.0, crate::recording::MAX_TAKE_S)?)
+            Some(v) => Some(number("save.last_s", v, 0.0, gaitlab_engine::MAX_TAKE_S)?)
                 .filter(|&s| s > 0.0),
         };
         self.save_take(format, last_s)
@@ -523,8 +523,8 @@ impl Lab {
                 .collect::<Vec<_>>(),
             "recording": {
                 "active": self.recording,
-                "frames": self.take.as_ref().map_or(0, crate::recording::Take::frames),
-                "seconds": self.take.as_ref().map_or(0.0, crate::recording::Take::seconds),
+                "frames": self.take.as_ref().map_or(0, gaitlab_engine::Take::frames),
+                "seconds": self.take.as_ref().map_or(0.0, gaitlab_engine::Take::seconds),
                 "last_s": self.settings.export_last_s,
             },
             "theme": self.settings.theme.name(),

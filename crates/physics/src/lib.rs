@@ -32,7 +32,6 @@ pub mod control;
 pub mod creatures;
 pub mod dynamics;
 pub mod engine;
-pub mod step_bench;
 pub mod world;
 
 pub use creatures::{Leg, PhysicalCreature, Species};

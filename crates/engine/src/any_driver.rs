@@ -1,42 +1,49 @@
-//! The driver a lab runs, by the preset's engine: She 2006's thesis motions
+//! Any engine's driver, by the preset's engine: She 2006's thesis motions
 //! ([`ThesisDriver`]), Girard & Maciejewski 1985's PODA gaits
-//! ([`PodaDriver`]) or Raibert & Hodgins 1991's simulated runners
-//! ([`PhysicsDriver`]). Everything generic goes through [`Driver`]; the panels
-//! ask for the concrete driver they edit.
+//! ([`PodaDriver`]), Raibert & Hodgins 1991's simulated runners
+//! ([`PhysicsDriver`]), or recorded targets followed by the thesis IK
+//! ([`TrackDriver`], `gaitlab track`). Everything generic goes through
+//! [`Driver`]; front ends ask for the concrete driver they edit. Built by
+//! [`crate::driver_for`] only.
 
 use gaitlab_core::Skeleton;
 use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
+use gaitlab_core::export::TargetTrack;
 use gaitlab_core::ik::Targets;
 use gaitlab_core::pose::Pose;
-use gaitlab_motion::{PodaDriver, ThesisDriver};
+use gaitlab_motion::{PodaDriver, ThesisDriver, TrackDriver};
 use gaitlab_physics::PhysicsDriver;
 use glam::DVec3;
 
-/// The lab's driver.
+/// The driver of one figure, whatever its engine.
 #[derive(Clone, Debug)]
-pub enum LabDriver {
+pub enum AnyDriver {
     /// Sinusoidal targets tracked by Jacobian IK (engine `ik`).
     Thesis(Box<ThesisDriver>),
     /// PODA gait synthesis (engine `poda`).
     Poda(Box<PodaDriver>),
     /// Physical simulation under control (engine `physics`).
     Physics(Box<PhysicsDriver>),
+    /// Recorded effector targets followed by IK (`gaitlab track`).
+    Track(Box<TrackDriver<TargetTrack>>),
 }
 
-impl LabDriver {
+impl AnyDriver {
     fn inner(&self) -> &dyn Driver {
         match self {
-            LabDriver::Thesis(driver) => driver.as_ref(),
-            LabDriver::Poda(driver) => driver.as_ref(),
-            LabDriver::Physics(driver) => driver.as_ref(),
+            AnyDriver::Thesis(driver) => driver.as_ref(),
+            AnyDriver::Poda(driver) => driver.as_ref(),
+            AnyDriver::Physics(driver) => driver.as_ref(),
+            AnyDriver::Track(driver) => driver.as_ref(),
         }
     }
 
     fn inner_mut(&mut self) -> &mut dyn Driver {
         match self {
-            LabDriver::Thesis(driver) => driver.as_mut(),
-            LabDriver::Poda(driver) => driver.as_mut(),
-            LabDriver::Physics(driver) => driver.as_mut(),
+            AnyDriver::Thesis(driver) => driver.as_mut(),
+            AnyDriver::Poda(driver) => driver.as_mut(),
+            AnyDriver::Physics(driver) => driver.as_mut(),
+            AnyDriver::Track(driver) => driver.as_mut(),
         }
     }
 
@@ -44,7 +51,7 @@ impl LabDriver {
     #[must_use]
     pub fn thesis(&self) -> Option<&ThesisDriver> {
         match self {
-            LabDriver::Thesis(driver) => Some(driver),
+            AnyDriver::Thesis(driver) => Some(driver),
             _ => None,
         }
     }
@@ -52,7 +59,7 @@ impl LabDriver {
     /// The thesis driver, mutably.
     pub fn thesis_mut(&mut self) -> Option<&mut ThesisDriver> {
         match self {
-            LabDriver::Thesis(driver) => Some(driver),
+            AnyDriver::Thesis(driver) => Some(driver),
             _ => None,
         }
     }
@@ -61,7 +68,7 @@ impl LabDriver {
     #[must_use]
     pub fn poda(&self) -> Option<&PodaDriver> {
         match self {
-            LabDriver::Poda(driver) => Some(driver),
+            AnyDriver::Poda(driver) => Some(driver),
             _ => None,
         }
     }
@@ -69,18 +76,16 @@ impl LabDriver {
     /// The PODA driver, mutably.
     pub fn poda_mut(&mut self) -> Option<&mut PodaDriver> {
         match self {
-            LabDriver::Poda(driver) => Some(driver),
+            AnyDriver::Poda(driver) => Some(driver),
             _ => None,
         }
     }
-}
 
-impl LabDriver {
     /// The physics driver, when the engine is `physics`.
     #[must_use]
     pub fn physics(&self) -> Option<&PhysicsDriver> {
         match self {
-            LabDriver::Physics(driver) => Some(driver),
+            AnyDriver::Physics(driver) => Some(driver),
             _ => None,
         }
     }
@@ -88,13 +93,13 @@ impl LabDriver {
     /// The physics driver, mutably.
     pub fn physics_mut(&mut self) -> Option<&mut PhysicsDriver> {
         match self {
-            LabDriver::Physics(driver) => Some(driver),
+            AnyDriver::Physics(driver) => Some(driver),
             _ => None,
         }
     }
 }
 
-impl Driver for LabDriver {
+impl Driver for AnyDriver {
     fn step(&mut self, dt: f64) {
         self.inner_mut().step(dt);
     }

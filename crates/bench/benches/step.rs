@@ -7,8 +7,8 @@
 use std::hint::black_box;
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use gaitlab_bench::step::{self as step_bench, StepBenchOptions};
 use gaitlab_core::preset::load_bundled;
-use gaitlab_physics::step_bench::{self, StepBenchOptions};
 
 /// The physics presets timed.
 const PRESETS: [&str; 3] = ["raibert-biped", "raibert-quadruped", "raibert-kangaroo"];

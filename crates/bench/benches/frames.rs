@@ -7,8 +7,9 @@
 //! and `window.gaitlab.bench()` time.
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
+use gaitlab_bench::frame::{self as frame_bench, FrameBenchOptions};
+use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::load_bundled;
-use gaitlab_motion::frame_bench::{self, FrameBenchOptions};
 
 fn frame(c: &mut Criterion, group_name: &str, presets: &[&str]) {
     let options = FrameBenchOptions::default();

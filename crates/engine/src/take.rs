@@ -1,13 +1,16 @@
-//! The recording panel's motion take (She 2006 §6.2 "Recording panel", which
-//! records every animation frame): each simulated frame's pose, effector
-//! positions and targets, kept in flat buffers and written out on demand as
-//! BVH or as the pose CSV of the core's exporters — the whole take or only its
-//! last N seconds (issue 6 "download the last N seconds", the same frames
-//! `gaitlab run --last N` writes). A take is capped at [`MAX_TAKE_S`] of
-//! animation so memory stays bounded; buffers are reserved up front, so
-//! recording does not allocate every frame.
+//! A motion take (She 2006 §6.2 "Recording panel", which records every
+//! animation frame) and the one way frames are written out: each frame's pose,
+//! effector positions and targets as BVH or as the pose CSV of the core's
+//! exporters, the whole take or only its last N seconds (the page's "Save the
+//! last N s" and `gaitlab run --last N` count frames by one rule,
+//! [`frames_in`]). The page records into a [`Take`] and writes it on demand;
+//! the CLI streams each frame through the same [`FrameWriter`] as it runs. A
+//! take is capped at [`MAX_TAKE_S`] of animation so memory stays bounded;
+//! buffers are reserved up front, so recording does not allocate every frame.
 
-use gaitlab_core::export::{BvhWriter, PoseCsvColumns, PoseCsvWriter};
+use std::fmt;
+
+use gaitlab_core::export::{BvhWriter, PoseCsvColumns, PoseCsvWriter, WriteError};
 use gaitlab_core::{Pose, RootTransform, Skeleton};
 use glam::DVec3;
 
@@ -37,19 +40,98 @@ fn frames_for(seconds: f64, fps: f64) -> usize {
     (seconds * fps).ceil().max(1.0) as usize
 }
 
-/// Frames in the last `seconds` of animation at `fps`, rounded to the nearest
-/// frame and at least one (the rule `gaitlab run --last` uses too).
+/// Frames in the last `seconds` of animation at `fps`: rounded to the nearest
+/// frame and at least one. The one rule for the page's take and `gaitlab run
+/// --last`; callers check `seconds` against their own limit first.
+#[must_use]
+pub fn frames_in(seconds: f64, fps: f64) -> usize {
+    // Callers bound seconds (≤ 3600) and fps (≤ 1000): a small whole number.
+    (seconds * fps).round().max(1.0) as usize
+}
+
+/// Frames in the last `seconds` of a take at `fps` (see [`frames_in`]).
 ///
 /// # Errors
-/// `last_s: reason` when `seconds` is not finite and positive.
+/// `last_s: reason` when `seconds` is not finite, positive and at most [`MAX_TAKE_S`].
 pub fn last_frames(seconds: f64, fps: f64) -> Result<usize, String> {
     if !(seconds.is_finite() && seconds > 0.0 && seconds <= MAX_TAKE_S) {
         return Err(format!(
             "last_s: must be more than 0 and at most {MAX_TAKE_S} s, not {seconds}"
         ));
     }
-    // At most MAX_TAKE_S · 1000 fps: a small whole number.
-    Ok((seconds * fps).round().max(1.0) as usize)
+    Ok(frames_in(seconds, fps))
+}
+
+/// Writes frames as BVH or pose CSV (with effector positions, and targets
+/// when the driver has them) to any text sink: the one writer behind a
+/// take's files and the CLI's streamed `--bvh` / `--csv`.
+pub enum FrameWriter<'a> {
+    /// BVH: degrees, `Zrotation Xrotation Yrotation`.
+    Bvh(BvhWriter<'a>),
+    /// The core's pose CSV.
+    Csv(PoseCsvWriter<'a>),
+}
+
+impl<'a> FrameWriter<'a> {
+    /// A BVH writer for `skeleton` at `fps` frames per second.
+    ///
+    /// # Errors
+    /// The skeleton cannot be written as BVH or `fps` is not positive.
+    pub fn bvh(skeleton: &'a Skeleton, fps: f64) -> Result<Self, WriteError> {
+        BvhWriter::new(skeleton, fps).map(Self::Bvh)
+    }
+
+    /// A CSV writer for `skeleton`; `has_targets` adds the target columns.
+    #[must_use]
+    pub fn csv(skeleton: &'a Skeleton, has_targets: bool) -> Self {
+        Self::Csv(PoseCsvWriter::new(
+            skeleton,
+            PoseCsvColumns {
+                effector_positions: true,
+                effector_targets: has_targets,
+            },
+        ))
+    }
+
+    /// Writes the header for `frames` frames.
+    ///
+    /// # Errors
+    /// The sink's error.
+    pub fn begin(&mut self, out: &mut impl fmt::Write, frames: usize) -> Result<(), WriteError> {
+        match self {
+            Self::Bvh(writer) => writer.write_header(out, frames),
+            Self::Csv(writer) => writer.write_header(out),
+        }
+    }
+
+    /// Writes one frame at `time_s`.
+    ///
+    /// # Errors
+    /// A non-finite pose, or the sink's error.
+    pub fn frame(
+        &mut self,
+        out: &mut impl fmt::Write,
+        time_s: f64,
+        pose: &Pose,
+        positions: &[DVec3],
+        targets: &[DVec3],
+    ) -> Result<(), WriteError> {
+        match self {
+            Self::Bvh(writer) => writer.write_frame(out, pose),
+            Self::Csv(writer) => writer.write_row(out, time_s, pose, positions, targets),
+        }
+    }
+
+    /// Checks the frame count the header promised.
+    ///
+    /// # Errors
+    /// Fewer or more frames were written than the header said.
+    pub fn finish(self) -> Result<(), WriteError> {
+        match self {
+            Self::Bvh(writer) => writer.finish(),
+            Self::Csv(_) => Ok(()),
+        }
+    }
 }
 
 impl Take {
@@ -144,20 +226,9 @@ impl Take {
     /// The writer's reason (an empty take, a non-finite pose, a bad `last_s`).
     pub fn to_bvh(&self, skeleton: &Skeleton, last_s: Option<f64>) -> Result<String, String> {
         let frames = self.frame_range(last_s)?;
-        let fail = |e: gaitlab_core::export::WriteError| format!("recording: BVH: {e}");
-        let mut writer = BvhWriter::new(skeleton, self.fps).map_err(fail)?;
-        let mut out = String::new();
-        writer.write_header(&mut out, frames.len()).map_err(fail)?;
-        let mut pose = Pose {
-            root: RootTransform::default(),
-            joints: Vec::with_capacity(self.joints),
-        };
-        for frame in frames {
-            self.pose_into(frame, &mut pose);
-            writer.write_frame(&mut out, &pose).map_err(fail)?;
-        }
-        writer.finish().map_err(fail)?;
-        Ok(out)
+        let fail = |e: WriteError| format!("recording: BVH: {e}");
+        let writer = FrameWriter::bvh(skeleton, self.fps).map_err(fail)?;
+        self.write(writer, frames).map_err(fail)
     }
 
     /// The take, or its last `last_s` seconds, as a pose CSV with effector
@@ -167,16 +238,17 @@ impl Take {
     /// The writer's reason, an empty take or a bad `last_s`.
     pub fn to_csv(&self, skeleton: &Skeleton, last_s: Option<f64>) -> Result<String, String> {
         let frames = self.frame_range(last_s)?;
-        let fail = |e: gaitlab_core::export::WriteError| format!("recording: CSV: {e}");
-        let writer = PoseCsvWriter::new(
-            skeleton,
-            PoseCsvColumns {
-                effector_positions: true,
-                effector_targets: self.has_targets,
-            },
-        );
+        self.write(FrameWriter::csv(skeleton, self.has_targets), frames)
+            .map_err(|e| format!("recording: CSV: {e}"))
+    }
+
+    fn write(
+        &self,
+        mut writer: FrameWriter<'_>,
+        frames: std::ops::Range<usize>,
+    ) -> Result<String, WriteError> {
         let mut out = String::new();
-        writer.write_header(&mut out).map_err(fail)?;
+        writer.begin(&mut out, frames.len())?;
         let mut pose = Pose {
             root: RootTransform::default(),
             joints: Vec::with_capacity(self.joints),
@@ -185,16 +257,15 @@ impl Take {
         for frame in frames {
             self.pose_into(frame, &mut pose);
             let span = frame * k..(frame + 1) * k;
-            writer
-                .write_row(
-                    &mut out,
-                    self.times[frame],
-                    &pose,
-                    &self.positions[span.clone()],
-                    &self.targets[span],
-                )
-                .map_err(fail)?;
+            writer.frame(
+                &mut out,
+                self.times[frame],
+                &pose,
+                &self.positions[span.clone()],
+                &self.targets[span],
+            )?;
         }
+        writer.finish()?;
         Ok(out)
     }
 }

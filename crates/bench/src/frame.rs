@@ -9,9 +9,8 @@
 use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::Method;
 use gaitlab_core::preset::thesis::ThesisMode;
-use gaitlab_core::preset::{Creature, Engine};
-
-use crate::{DriverError, PodaDriver, ThesisDriver};
+use gaitlab_core::preset::{Creature, Engine, PresetError};
+use gaitlab_engine::{AnyDriver, Overrides, driver_for};
 
 /// Longest run one benchmark may ask for, frames per repeat.
 pub const MAX_BENCH_FRAMES: usize = 100_000;
@@ -63,24 +62,24 @@ pub struct FrameTiming {
 ///
 /// # Errors
 /// The offending field as `field: reason`.
-pub fn check_options(options: &FrameBenchOptions) -> Result<(), DriverError> {
+pub fn check_options(options: &FrameBenchOptions) -> Result<(), PresetError> {
     if !(options.frame_s.is_finite() && options.frame_s > 0.0 && options.frame_s <= 1.0) {
-        return Err(DriverError::new("frame_s", "must be in (0, 1] seconds"));
+        return Err(PresetError::new("frame_s", "must be in (0, 1] seconds"));
     }
     if options.frames == 0 || options.frames > MAX_BENCH_FRAMES {
-        return Err(DriverError::new(
+        return Err(PresetError::new(
             "frames",
             format!("must be between 1 and {MAX_BENCH_FRAMES}"),
         ));
     }
     if options.repeats == 0 || options.repeats > MAX_BENCH_REPEATS {
-        return Err(DriverError::new(
+        return Err(PresetError::new(
             "repeats",
             format!("must be between 1 and {MAX_BENCH_REPEATS}"),
         ));
     }
     if options.warmup_frames > MAX_BENCH_FRAMES {
-        return Err(DriverError::new(
+        return Err(PresetError::new(
             "warmup_frames",
             format!("must be at most {MAX_BENCH_FRAMES}"),
         ));
@@ -109,29 +108,24 @@ pub fn median_and_best(samples: &mut [f64]) -> (f64, f64) {
 pub fn frame_driver(
     creature: &Creature,
     options: &FrameBenchOptions,
-) -> Result<(Box<dyn Driver>, usize), DriverError> {
+) -> Result<(AnyDriver, usize), PresetError> {
     let scenario = &creature.scenario;
-    match scenario.engine {
-        Engine::Ik => {
-            let mut ik = scenario.ik_options();
-            ik.method = options.method;
-            let driver = ThesisDriver::new(
-                creature.skeleton.clone(),
-                scenario.thesis.clone(),
-                options.mode,
-                ik,
-            )?;
-            Ok((Box::new(driver), scenario.thesis.iterations_per_frame))
+    let iterations_per_frame = match scenario.engine {
+        Engine::Ik => scenario.thesis.iterations_per_frame,
+        Engine::Poda => scenario.poda_params().iterations_per_frame,
+        Engine::Physics => {
+            return Err(PresetError::new(
+                "scenario.engine",
+                "physics creatures are timed in steps per second by the step benchmark",
+            ));
         }
-        Engine::Poda => Ok((
-            Box::new(PodaDriver::new(creature)?),
-            scenario.poda_params().iterations_per_frame,
-        )),
-        Engine::Physics => Err(DriverError::new(
-            "scenario.engine",
-            "physics creatures are timed in steps per second by gaitlab-physics's bench",
-        )),
-    }
+    };
+    let overrides = Overrides {
+        mode: Some(options.mode),
+        method: Some(options.method),
+        ..Overrides::default()
+    };
+    Ok((driver_for(creature, &overrides)?, iterations_per_frame))
 }
 
 /// Times the driver of `creature`'s engine per `options` (`mode` and
@@ -145,7 +139,7 @@ pub fn time_frames(
     creature: &Creature,
     options: &FrameBenchOptions,
     clock_ms: &mut dyn FnMut() -> f64,
-) -> Result<FrameTiming, DriverError> {
+) -> Result<FrameTiming, PresetError> {
     check_options(options)?;
     let (mut driver, iterations_per_frame) = frame_driver(creature, options)?;
     for _ in 0..options.warmup_frames {

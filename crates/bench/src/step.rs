@@ -5,8 +5,8 @@
 //! slower than real time on a SUN Sparc2").
 
 use gaitlab_core::preset::{Creature as PresetCreature, PresetError};
-
-use crate::engine::driver::PhysicsDriver;
+use gaitlab_engine::{AnyDriver, Overrides, driver_for};
+use gaitlab_physics::PhysicsDriver;
 
 /// What to time.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -49,7 +49,15 @@ pub struct StepTiming {
 /// The preset does not make a physics driver, or the warm-up blew up
 /// (reported at `scenario.physics`).
 pub fn warmed_driver(preset: &PresetCreature, warmup_s: f64) -> Result<PhysicsDriver, PresetError> {
-    let mut driver = PhysicsDriver::new(preset)?;
+    let mut driver = match driver_for(preset, &Overrides::default())? {
+        AnyDriver::Physics(driver) => *driver,
+        _ => {
+            return Err(PresetError::new(
+                "scenario.engine",
+                "the step benchmark times physics creatures",
+            ));
+        }
+    };
     let dt = driver.sim().options.dt;
     driver.run_steps(steps_in(warmup_s, dt)).map_err(blew_up)?;
     Ok(driver)
@@ -60,7 +68,7 @@ fn steps_in(seconds: f64, dt: f64) -> u32 {
     (seconds / dt).round().max(1.0) as u32
 }
 
-fn blew_up(e: crate::world::sim::BlowUp) -> PresetError {
+fn blew_up(e: gaitlab_physics::BlowUp) -> PresetError {
     PresetError::new("scenario.physics", e.to_string())
 }
 
