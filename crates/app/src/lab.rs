@@ -507,21 +507,8 @@ impl Lab {
     pub fn edit_gait(&mut self, key: &str, value: f64) -> Result<(), String> {
         if let Some(driver) = self.driver.physics_mut() {
             return match key {
-                "speed_mps" => {
-                    let max = gaitlab_core::preset::physics::MAX_PHYSICS_SPEED_MPS;
-                    if !(value.is_finite() && value.abs() <= max) {
-                        return Err(format!("speed_mps: must be within ±{max} m/s"));
-                    }
-                    driver.set_speed(value);
-                    Ok(())
-                }
-                "hop_height_m" => {
-                    if !(value.is_finite() && (0.0..=0.5).contains(&value)) {
-                        return Err("hop_height_m: must be a height in [0, 0.5] m".to_owned());
-                    }
-                    driver.set_hop_height(value);
-                    Ok(())
-                }
+                "speed_mps" => driver.set_speed(value).map_err(|e| e.to_string()),
+                "hop_height_m" => driver.set_hop_height(value).map_err(|e| e.to_string()),
                 _ => Err(format!(
                     "{key}: engine physics has no such gait value (speed_mps, hop_height_m)"
                 )),
@@ -533,16 +520,19 @@ impl Lab {
                 self.creature.scenario.engine.name()
             ));
         };
-        let mass_kg = driver.params().body_mass_kg;
+        if key == "leg_force_n" {
+            let derived = driver
+                .set_leg_force_n(value)
+                .map_err(|e| GaitError::new(key, e.reason).to_string())?;
+            self.gait_derived = derived.derived.to_vec();
+            return Ok(());
+        }
         let gait = driver.gait_mut();
         let derived = match key {
             "period_s" => gait.set_period(value),
             "duty_factor" => gait.set_duty_factor(value),
             "speed_mps" => gait.set_speed(value),
             "stroke_m" => gait.set_stroke(value),
-            "leg_force_n" => gait
-                .set_leg_force(value, mass_kg, gaitlab_motion::poda::driver::GRAVITY_MPS2)
-                .map_err(|e| GaitError::new(key, e.reason)),
             _ => return Err(format!("{key}: not a gait value")),
         }
         .map_err(|e| e.to_string())?;

@@ -56,12 +56,7 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
     }
     let (fps, frames) = timing(args.fps, creature.scenario.fps, args.seconds)?;
     let measured = drive(&mut driver, frames, fps, &args.outputs)?;
-    let mut metrics = RunMetrics::of(&creature.name, &driver, &measured);
-    match &mut metrics {
-        RunMetrics::Ik(ik) => ik.fps = Some(fps),
-        RunMetrics::Gait(gait) => gait.fps = Some(fps),
-        RunMetrics::Physics(_) => {}
-    }
+    let metrics = RunMetrics::of(&creature.name, &driver, &measured).with_fps(fps);
     print(&metrics, args.outputs.json);
     Ok(())
 }
@@ -123,15 +118,7 @@ fn overrides(creature: &Creature, args: &RunArgs) -> Result<Overrides, Failure> 
                     "--mode, --method and --path belong to other engines; engine physics takes --gait and --speed",
                 ));
             }
-            if let Some(speed) = args.speed {
-                let max = gaitlab_core::preset::physics::MAX_PHYSICS_SPEED_MPS;
-                if !(speed.is_finite() && speed.abs() <= max) {
-                    return Err(Failure::input(format!(
-                        "--speed: must be within ±{max} m/s"
-                    )));
-                }
-                overrides.speed_mps = Some(speed);
-            }
+            overrides.speed_mps = args.speed;
         }
     }
     Ok(overrides)
@@ -139,13 +126,10 @@ fn overrides(creature: &Creature, args: &RunArgs) -> Result<Overrides, Failure> 
 
 /// An engine error about a value an option set is reported at the option.
 fn flag_error(error: PresetError, args: &RunArgs) -> Failure {
-    let gait_path = matches!(
-        error.path.as_str(),
-        "scenario.poda.gait" | "scenario.physics.gait"
-    );
-    if gait_path && args.gait.is_some() {
-        Failure::input(format!("--gait: {}", error.reason))
-    } else {
-        Failure::input(error)
-    }
+    let flag = match error.path.as_str() {
+        "scenario.poda.gait" | "scenario.physics.gait" if args.gait.is_some() => "--gait",
+        "scenario.physics.speed_mps" if args.speed.is_some() => "--speed",
+        _ => return Failure::input(error),
+    };
+    Failure::input(format!("{flag}: {}", error.reason))
 }

@@ -6,6 +6,7 @@
 
 use gaitlab_core::driver::Driver;
 use gaitlab_core::portable::Portable;
+use gaitlab_core::preset::physics::{check_hop_height_m, check_speed_mps};
 use gaitlab_core::preset::{Creature as PresetCreature, PhysicsParams, PresetError};
 use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
@@ -344,16 +345,28 @@ impl PhysicsDriver {
     }
 
     /// Change the desired speed (m/s at scale 1) while running.
-    pub fn set_speed(&mut self, speed_mps: f64) {
+    ///
+    /// # Errors
+    /// `speed_mps: reason` outside the preset's range
+    /// ([`gaitlab_core::preset::physics::check_speed_mps`]); nothing changes.
+    pub fn set_speed(&mut self, speed_mps: f64) -> Result<(), PresetError> {
+        check_speed_mps("speed_mps", speed_mps)?;
         self.params.speed_mps = speed_mps;
         self.controller.set_speed(speed_mps);
         self.recorder.speed_desired_mps = speed_mps * self.params.scale.sqrt();
+        Ok(())
     }
 
     /// Change the desired hop height (m at scale 1) while running.
-    pub fn set_hop_height(&mut self, height_m: f64) {
+    ///
+    /// # Errors
+    /// `hop_height_m: reason` outside the preset's range
+    /// ([`gaitlab_core::preset::physics::HOP_HEIGHT_RANGE_M`]); nothing changes.
+    pub fn set_hop_height(&mut self, height_m: f64) -> Result<(), PresetError> {
+        check_hop_height_m("hop_height_m", height_m)?;
         self.params.hop_height_m = Some(height_m);
         self.controller.set_hop_height(height_m);
+        Ok(())
     }
 
     /// The creature as a MuJoCo model (see [`crate::engine::mjcf`]): its springs and
