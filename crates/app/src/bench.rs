@@ -1,17 +1,17 @@
 //! `window.gaitlab.bench(json)`: the benchmarks run inside the page, so the
 //! browser's figures can be compared with `gaitlab bench`'s native ones for
 //! the same work. One case (`{}`, `{"preset": …, "method": …}`): the per-frame
-//! benchmark of [`gaitlab_motion::frame_bench`] (or physics steps per second;
+//! benchmark of [`gaitlab_bench::frame`] (or physics steps per second;
 //! issue 3's wasm/native ratio). The whole suite (`{"suite": true}`): the
 //! report of [`gaitlab_bench::run_suite`], the very routine behind
 //! `gaitlab bench --json`, with the same rows, fields and `cases` map (issue 7's
 //! native vs wasm table). Options are plain JSON data, checked field by field.
 
+use gaitlab_bench::frame::{self as frame_bench, FrameBenchOptions, MAX_BENCH_REPEATS};
 use gaitlab_bench::{DEFAULT_PRESETS, SuiteOptions, run_suite};
 use gaitlab_core::ik::Method;
 use gaitlab_core::preset::load_bundled;
 use gaitlab_core::preset::thesis::ThesisMode;
-use gaitlab_motion::frame_bench::{self, FrameBenchOptions, MAX_BENCH_REPEATS};
 use serde_json::{Map, Value, json};
 
 /// Longest options text accepted, bytes.
@@ -158,11 +158,11 @@ pub fn run(json: &str, clock_ms: &mut dyn FnMut() -> f64) -> Result<String, Stri
     };
     if creature.scenario.engine == gaitlab_core::preset::Engine::Physics {
         // Physics: integration steps per second, as `gaitlab bench` reports.
-        let step_options = gaitlab_physics::step_bench::StepBenchOptions {
+        let step_options = gaitlab_bench::step::StepBenchOptions {
             repeats: options.repeats,
             ..Default::default()
         };
-        let timing = gaitlab_physics::step_bench::time_steps(&creature, &step_options, clock_ms)
+        let timing = gaitlab_bench::step::time_steps(&creature, &step_options, clock_ms)
             .map_err(|e| format!("bench.{e}"))?;
         return Ok(json!({
             "preset": creature.name,

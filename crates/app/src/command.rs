@@ -313,7 +313,7 @@ impl Lab {
             }
         }
         if let Some(v) = get("last_s") {
-            self.settings.export_last_s = number("last_s", v, 0.0, crate::recording::MAX_TAKE_S)?;
+            self.settings.export_last_s = number("last_s", v, 0.0, gaitlab_engine::MAX_TAKE_S)?;
         }
         if let Some(v) = get("save") {
             self.apply_save(v)?;
@@ -393,7 +393,7 @@ impl Lab {
         )?;
         let last_s = match object.get("last_s") {
             None | Some(Value::Null) => None,
-            Some(v) => Some(number("save.last_s", v, 0.0, crate::recording::MAX_TAKE_S)?)
+            Some(v) => Some(number("save.last_s", v, 0.0, gaitlab_engine::MAX_TAKE_S)?)
                 .filter(|&s| s > 0.0),
         };
         self.save_take(format, last_s)
@@ -466,10 +466,7 @@ impl Lab {
                     "duty_factor": gait.duty_factor(),
                     "speed_mps": gait.speed_mps(),
                     "stroke_m": gait.stroke_m(),
-                    "leg_force_n": gait.leg_force_for_balance_n(
-                        driver.params().body_mass_kg,
-                        gaitlab_motion::poda::driver::GRAVITY_MPS2,
-                    ),
+                    "leg_force_n": driver.leg_force_n(),
                     "support_s": gait.support_s(),
                     "transfer_s": gait.transfer_s(),
                     "phases": gait.phases(),
@@ -488,6 +485,7 @@ impl Lab {
                 |c| c.config.views.iter().map(|m| m.name()).collect(),
             ),
             "compare": self.compare_state(),
+            "metrics": self.run_metrics(),
             "paused": self.paused,
             "frame": self.frame,
             "time_s": self.driver.time(),
@@ -523,8 +521,8 @@ impl Lab {
                 .collect::<Vec<_>>(),
             "recording": {
                 "active": self.recording,
-                "frames": self.take.as_ref().map_or(0, crate::recording::Take::frames),
-                "seconds": self.take.as_ref().map_or(0.0, crate::recording::Take::seconds),
+                "frames": self.take.as_ref().map_or(0, gaitlab_engine::Take::frames),
+                "seconds": self.take.as_ref().map_or(0.0, gaitlab_engine::Take::seconds),
                 "last_s": self.settings.export_last_s,
             },
             "theme": self.settings.theme.name(),
@@ -545,5 +543,23 @@ impl Lab {
             "last_error": self.last_error,
         })
         .to_string()
+    }
+
+    /// The figures `gaitlab run --json` prints, for the run since the last
+    /// reset: the engine layer's one metrics type. Wall-time fields come from
+    /// the page's smoothed time per frame; `within_limits` is the current pose's.
+    fn run_metrics(&self) -> gaitlab_engine::RunMetrics {
+        let frames = usize::try_from(self.frame).unwrap_or(usize::MAX);
+        let step_ms = self.sim_us_per_frame * self.frame as f64 / 1e3;
+        let within_limits =
+            gaitlab_engine::metrics::pose_within_limits(self.driver.skeleton(), self.driver.pose());
+        let timing = gaitlab_engine::Timing {
+            frames,
+            step_ms,
+            wall_ms: step_ms,
+            within_limits,
+        };
+        gaitlab_engine::RunMetrics::of(&self.creature.name, &self.driver, &timing)
+            .with_fps(1.0 / self.frame_seconds())
     }
 }

@@ -9,14 +9,11 @@ use gaitlab_core::preset::Engine;
 use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_core::preset::{Creature, load_bundled};
 use gaitlab_core::{Kinematics, RootTransform};
+use gaitlab_engine::{AnyDriver, Overrides, Take};
 use gaitlab_motion::poda::GaitError;
-use gaitlab_motion::{PodaDriver, ThesisDriver};
-use gaitlab_physics::PhysicsDriver;
 use glam::DMat3;
 
 use crate::history::History;
-use crate::lab_driver::LabDriver;
-use crate::recording::Take;
 use crate::render::{Camera, Scene};
 use crate::settings::Settings;
 
@@ -63,7 +60,7 @@ pub struct Lab {
     /// What a person chose (persisted).
     pub settings: Settings,
     pub(crate) creature: Creature,
-    pub(crate) driver: LabDriver,
+    pub(crate) driver: AnyDriver,
     pub(crate) camera: Camera,
     pub(crate) scene: Scene,
     pub(crate) kinematics: Kinematics,
@@ -195,37 +192,23 @@ fn default_creature() -> Creature {
     }
 }
 
-fn driver_for(creature: &Creature, settings: &Settings) -> Result<LabDriver, String> {
-    if creature.scenario.engine == Engine::Physics {
-        return PhysicsDriver::new(creature)
-            .map(|driver| LabDriver::Physics(Box::new(driver)))
-            .map_err(|e| format!("preset {}: {e}", creature.name));
-    }
-    if creature.scenario.engine == Engine::Poda {
-        return PodaDriver::new(creature)
-            .map(|driver| LabDriver::Poda(Box::new(driver)))
-            .map_err(|e| format!("preset {}: {e}", creature.name));
-    }
-    gaitlab_core::preset::check_ik_options("settings.ik", &settings.ik)
-        .map_err(|e| e.to_string())?;
-    if !settings.heading_deg.is_finite() {
-        return Err("settings.heading_deg: must be finite".to_owned());
-    }
-    let mut options = settings.ik.clone();
-    options.method = settings.method;
-    let mut driver = ThesisDriver::new(
-        creature.skeleton.clone(),
-        creature.scenario.thesis.clone(),
-        settings.mode,
-        options,
-    )
-    .map_err(|e| format!("preset {}: scenario.thesis.{e}", creature.name))?;
-    driver.set_origin(RootTransform {
-        rotation: DMat3::from_rotation_y(settings.heading_deg.to_radians()),
-        ..RootTransform::default()
-    });
-    driver.reset();
-    Ok(LabDriver::Thesis(Box::new(driver)))
+/// The lab's driver for `creature` with the person's settings, through the
+/// engine layer's one `driver_for`.
+fn driver_for(creature: &Creature, settings: &Settings) -> Result<AnyDriver, String> {
+    let overrides = Overrides {
+        mode: Some(settings.mode),
+        method: Some(settings.method),
+        ik: Some(settings.ik.clone()),
+        heading_deg: Some(settings.heading_deg),
+        ..Overrides::default()
+    };
+    gaitlab_engine::driver_for(creature, &overrides).map_err(|e| {
+        if e.path.starts_with("ik") || e.path == "heading_deg" {
+            format!("settings.{e}")
+        } else {
+            format!("preset {}: {e}", creature.name)
+        }
+    })
 }
 
 impl Lab {
@@ -317,7 +300,7 @@ impl Lab {
 
     /// The driver animating it.
     #[must_use]
-    pub fn driver(&self) -> &LabDriver {
+    pub fn driver(&self) -> &AnyDriver {
         &self.driver
     }
 
@@ -524,21 +507,8 @@ impl Lab {
     pub fn edit_gait(&mut self, key: &str, value: f64) -> Result<(), String> {
         if let Some(driver) = self.driver.physics_mut() {
             return match key {
-                "speed_mps" => {
-                    let max = gaitlab_core::preset::physics::MAX_PHYSICS_SPEED_MPS;
-                    if !(value.is_finite() && value.abs() <= max) {
-                        return Err(format!("speed_mps: must be within ±{max} m/s"));
-                    }
-                    driver.set_speed(value);
-                    Ok(())
-                }
-                "hop_height_m" => {
-                    if !(value.is_finite() && (0.0..=0.5).contains(&value)) {
-                        return Err("hop_height_m: must be a height in [0, 0.5] m".to_owned());
-                    }
-                    driver.set_hop_height(value);
-                    Ok(())
-                }
+                "speed_mps" => driver.set_speed(value).map_err(|e| e.to_string()),
+                "hop_height_m" => driver.set_hop_height(value).map_err(|e| e.to_string()),
                 _ => Err(format!(
                     "{key}: engine physics has no such gait value (speed_mps, hop_height_m)"
                 )),
@@ -550,16 +520,19 @@ impl Lab {
                 self.creature.scenario.engine.name()
             ));
         };
-        let mass_kg = driver.params().body_mass_kg;
+        if key == "leg_force_n" {
+            let derived = driver
+                .set_leg_force_n(value)
+                .map_err(|e| GaitError::new(key, e.reason).to_string())?;
+            self.gait_derived = derived.derived.to_vec();
+            return Ok(());
+        }
         let gait = driver.gait_mut();
         let derived = match key {
             "period_s" => gait.set_period(value),
             "duty_factor" => gait.set_duty_factor(value),
             "speed_mps" => gait.set_speed(value),
             "stroke_m" => gait.set_stroke(value),
-            "leg_force_n" => gait
-                .set_leg_force(value, mass_kg, gaitlab_motion::poda::driver::GRAVITY_MPS2)
-                .map_err(|e| GaitError::new(key, e.reason)),
             _ => return Err(format!("{key}: not a gait value")),
         }
         .map_err(|e| e.to_string())?;
@@ -796,7 +769,7 @@ impl Lab {
             if take.is_full() {
                 self.last_error = Some(format!(
                     "recording: stopped at the {:.0} s limit",
-                    crate::recording::MAX_TAKE_S
+                    gaitlab_engine::MAX_TAKE_S
                 ));
             }
         }

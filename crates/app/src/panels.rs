@@ -352,7 +352,7 @@ pub fn recording(ui: &mut egui::Ui, lab: &mut Lab) {
             ui.label("Save the last");
             ui.add(
                 egui::DragValue::new(&mut lab.settings.export_last_s)
-                    .range(0.0..=crate::recording::MAX_TAKE_S)
+                    .range(0.0..=gaitlab_engine::MAX_TAKE_S)
                     .speed(0.1)
                     .max_decimals(2)
                     .suffix(" s"),

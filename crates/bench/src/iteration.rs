@@ -7,10 +7,12 @@ use std::hint::black_box;
 
 use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::{IkSolver, Method, Targets};
+use gaitlab_core::preset::PresetError;
 use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_core::{Creature, RootTransform};
-use gaitlab_motion::frame_bench::median_and_best;
-use gaitlab_motion::{DriverError, ThesisDriver};
+use gaitlab_engine::{Overrides, driver_for};
+
+use crate::frame::median_and_best;
 
 /// One frame of recorded targets.
 #[derive(Clone, Debug, PartialEq)]
@@ -49,15 +51,12 @@ pub fn record_walk(
     creature: &Creature,
     frames: usize,
     frame_s: f64,
-) -> Result<Vec<RecordedFrame>, DriverError> {
-    let scenario = &creature.scenario;
-    let mut driver = ThesisDriver::new(
-        creature.skeleton.clone(),
-        scenario.thesis.clone(),
-        ThesisMode::Walk,
-        scenario.ik_options(),
-    )
-    .map_err(|e| DriverError::new(format!("scenario.thesis.{}", e.path), e.reason))?;
+) -> Result<Vec<RecordedFrame>, PresetError> {
+    let overrides = Overrides {
+        mode: Some(ThesisMode::Walk),
+        ..Overrides::default()
+    };
+    let mut driver = driver_for(creature, &overrides)?;
     let mut recorded = Vec::with_capacity(frames);
     for _ in 0..frames {
         driver.step(frame_s);

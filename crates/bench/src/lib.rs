@@ -10,7 +10,9 @@
 //! `performance.now()` in the browser).
 
 pub mod compare;
+pub mod frame;
 pub mod iteration;
+pub mod step;
 pub mod suite;
 
 pub use compare::{CaseComparison, Comparison, Verdict, cases_of, compare};

@@ -11,11 +11,11 @@
 
 use std::fmt;
 
+use crate::frame::{self as frame_bench, FrameBenchOptions};
+use crate::step::{StepBenchOptions, time_steps};
 use gaitlab_core::Creature;
 use gaitlab_core::ik::Method;
 use gaitlab_core::preset::Engine;
-use gaitlab_motion::frame_bench::{self, FrameBenchOptions};
-use gaitlab_physics::step_bench::{StepBenchOptions, time_steps};
 use serde_json::{Map, Value, json};
 
 use crate::iteration::{Timing, record_walk, time_iterations};

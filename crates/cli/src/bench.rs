@@ -73,7 +73,7 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
     } else {
         args.methods
             .iter()
-            .map(|m| crate::run::method(Some(m), Method::Sdls))
+            .map(|m| crate::options::method(Some(m), Method::Sdls))
             .collect::<Result<Vec<_>, _>>()?
     };
     let options = SuiteOptions {

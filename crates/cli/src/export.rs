@@ -4,7 +4,7 @@
 
 use clap::Args;
 use gaitlab_core::preset::Engine;
-use gaitlab_physics::PhysicsDriver;
+use gaitlab_engine::{Overrides, driver_for};
 
 use crate::fail::Failure;
 use crate::load;
@@ -38,8 +38,14 @@ pub fn export(args: &ExportArgs) -> Result<(), Failure> {
             creature.scenario.engine.name()
         )));
     }
-    let driver = PhysicsDriver::new(&creature).map_err(Failure::input)?;
-    let xml = driver.mjcf(&creature.name);
+    let driver = driver_for(&creature, &Overrides::default()).map_err(Failure::input)?;
+    let Some(physics) = driver.physics() else {
+        return Err(Failure::input(format!(
+            "{}: MJCF export is for physics creatures",
+            creature.name
+        )));
+    };
+    let xml = physics.mjcf(&creature.name);
     match &args.out {
         Some(path) => {
             std::fs::write(path, xml).map_err(|e| Failure::input(format!("--out {path}: {e}")))?

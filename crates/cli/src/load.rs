@@ -5,6 +5,7 @@ use std::io::Read;
 
 use gaitlab_core::preset::{MAX_PRESET_BYTES, Purpose, bundled, bundled_json, load_bundled};
 use gaitlab_core::{Creature, PresetError};
+use gaitlab_engine::AnyDriver;
 
 use crate::fail::Failure;
 
@@ -87,12 +88,12 @@ pub fn legs(creature: &Creature) -> usize {
         .count()
 }
 
-/// `gaitlab validate FILE`.
+/// `gaitlab validate FILE`: the preset's own checks, then the engine layer's
+/// (a preset that validates is one `gaitlab run` takes).
 pub fn validate(file: &str) -> Result<(), Failure> {
     let creature = creature(file)?;
-    if creature.scenario.engine == gaitlab_core::preset::Engine::Poda {
-        // The gait name and the relations between gait values need the gait model.
-        let driver = gaitlab_motion::PodaDriver::new(&creature).map_err(Failure::input)?;
+    let driver = gaitlab_engine::check(&creature).map_err(Failure::input)?;
+    if let Some(driver) = driver.as_ref().and_then(AnyDriver::poda) {
         println!(
             "ok: {} — engine poda, {} joints, {} legs, gait {}, period {} s, duty factor {}, speed {} m/s",
             creature.name,

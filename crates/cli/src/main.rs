@@ -3,13 +3,13 @@
 //! output, follow recorded targets, and report the performance figures.
 
 mod bench;
+mod drive;
 mod export;
 mod fail;
 mod load;
-mod report;
+mod options;
+mod print;
 mod run;
-mod run_physics;
-mod run_poda;
 mod sink;
 mod track;
 

@@ -1,19 +1,18 @@
-//! `gaitlab run PRESET_OR_FILE [--mode M] [--method K] [--seconds S] [--fps N]
-//! [--bvh FILE] [--csv FILE] [--json]`: the She 2006 motions, headless; PODA
-//! presets go to [`crate::run_poda`] (`--gait G`, `--path FILE`).
+//! `gaitlab run PRESET_OR_FILE [--mode M] [--method K] [--gait G] [--path FILE]
+//! [--speed V] [--seconds S] [--fps N] [--bvh FILE] [--csv FILE] [--last S]
+//! [--json]`: any preset headless. The options each engine takes are checked
+//! here; the driver comes from the engine layer's `driver_for`.
 
 use clap::Args;
-use gaitlab_core::ik::Method;
 use gaitlab_core::preset::thesis::ThesisMode;
-use gaitlab_core::preset::{Engine, MAX_FPS};
-use gaitlab_motion::ThesisDriver;
+use gaitlab_core::preset::{Creature, Engine, MAX_PRESET_BYTES, PathSpec, PresetError};
+use gaitlab_engine::{Overrides, RunMetrics, driver_for};
 
+use crate::drive::{Outputs, drive};
 use crate::fail::Failure;
 use crate::load;
-use crate::report::{self, Outputs};
-
-/// Longest run the CLI accepts, simulated seconds.
-pub const MAX_SECONDS: f64 = 3600.0;
+use crate::options::{method, timing};
+use crate::print::print;
 
 /// Arguments of `gaitlab run`.
 #[derive(Args, Debug)]
@@ -46,95 +45,91 @@ pub struct RunArgs {
     pub outputs: Outputs,
 }
 
-/// Parses `--method`.
-pub fn method(name: Option<&str>, default: Method) -> Result<Method, Failure> {
-    match name {
-        None => Ok(default),
-        Some(name) => Method::parse(name).ok_or_else(|| {
-            Failure::input(format!(
-                "--method: unknown method {name:?} (use transpose, pinv, dls, sdls or ccd)"
-            ))
-        }),
-    }
-}
-
-/// Checks `--fps` (or the preset's) and `--seconds`, returning (fps, frames).
-pub fn timing(fps: Option<u32>, preset_fps: u32, seconds: f64) -> Result<(f64, usize), Failure> {
-    let fps = fps.unwrap_or(preset_fps);
-    if fps == 0 || fps > MAX_FPS {
-        return Err(Failure::input(format!(
-            "--fps: must be between 1 and {MAX_FPS}"
-        )));
-    }
-    if !seconds.is_finite() || seconds <= 0.0 || seconds > MAX_SECONDS {
-        return Err(Failure::input(format!(
-            "--seconds: must be more than 0 and at most {MAX_SECONDS}"
-        )));
-    }
-    Ok((
-        f64::from(fps),
-        (seconds * f64::from(fps)).round().max(1.0) as usize,
-    ))
-}
-
 /// `gaitlab run`.
 pub fn run(args: &RunArgs) -> Result<(), Failure> {
     let creature = load::creature(&args.preset)?;
-    let scenario = &creature.scenario;
-    match scenario.engine {
-        Engine::Ik => {}
-        Engine::Poda => return crate::run_poda::run(&creature, args),
-        Engine::Physics => return crate::run_physics::run(&creature, args),
+    let overrides = overrides(&creature, args)?;
+    let mut driver = driver_for(&creature, &overrides).map_err(|e| flag_error(e, args))?;
+    if let Some(physics) = driver.physics_mut() {
+        // A headless run reports a fall; it does not start over.
+        physics.reset_after_fall = false;
     }
-    if args.path.is_some() {
-        return Err(Failure::input(format!(
-            "--path: engine {} follows its own script; --path is for engine poda",
-            scenario.engine.name()
-        )));
-    }
-    if args.speed.is_some() {
-        return Err(Failure::input(format!(
-            "--speed: engine {} follows its own script; --speed is for engine physics",
-            scenario.engine.name()
-        )));
-    }
-    if let Some(gait) = &args.gait {
-        return Err(Failure::input(format!(
-            "--gait: engine {} has no gaits (asked for {gait:?}); use --mode",
-            scenario.engine.name()
-        )));
-    }
-    let mode = match &args.mode {
-        None => scenario.mode,
-        Some(name) => ThesisMode::parse(name).ok_or_else(|| {
-            Failure::input(format!(
-                "--mode: unknown mode {name:?} (use walk, run, wounded-walk or wounded-run)"
-            ))
-        })?,
-    };
-    let method = method(args.method.as_deref(), scenario.method)?;
-    let (fps, frames) = timing(args.fps, scenario.fps, args.seconds)?;
-    let mut options = scenario.ik_options();
-    options.method = method;
-    let mut driver = ThesisDriver::new(
-        creature.skeleton.clone(),
-        scenario.thesis.clone(),
-        mode,
-        options,
-    )
-    .map_err(|e| Failure::input(format!("scenario.thesis.{e}")))?;
-    let measured = report::drive(&mut driver, frames, fps, &args.outputs)?;
-    let mut metrics = report::ik_json(
-        &creature.name,
-        scenario.engine.name(),
-        method.name(),
-        &driver,
-        &measured,
-    );
-    metrics["mode"] = mode.name().into();
-    metrics["fps"] = fps.into();
-    metrics["speed_mps"] = driver.script().speed_mps().into();
-    metrics["distance_m"] = driver.distance_m().into();
-    report::print(&metrics, args.outputs.json);
+    let (fps, frames) = timing(args.fps, creature.scenario.fps, args.seconds)?;
+    let measured = drive(&mut driver, frames, fps, &args.outputs)?;
+    let metrics = RunMetrics::of(&creature.name, &driver, &measured).with_fps(fps);
+    print(&metrics, args.outputs.json);
     Ok(())
+}
+
+/// The options `args` gives for `creature`'s engine; an option another engine
+/// takes is an error that names it.
+fn overrides(creature: &Creature, args: &RunArgs) -> Result<Overrides, Failure> {
+    let scenario = &creature.scenario;
+    let mut overrides = Overrides {
+        gait: args.gait.clone(),
+        ..Overrides::default()
+    };
+    match scenario.engine {
+        Engine::Ik => {
+            if args.path.is_some() {
+                return Err(Failure::input(format!(
+                    "--path: engine {} follows its own script; --path is for engine poda",
+                    scenario.engine.name()
+                )));
+            }
+            if args.speed.is_some() {
+                return Err(Failure::input(format!(
+                    "--speed: engine {} follows its own script; --speed is for engine physics",
+                    scenario.engine.name()
+                )));
+            }
+            if let Some(gait) = &args.gait {
+                return Err(Failure::input(format!(
+                    "--gait: engine {} has no gaits (asked for {gait:?}); use --mode",
+                    scenario.engine.name()
+                )));
+            }
+            overrides.mode = match &args.mode {
+                None => None,
+                Some(name) => Some(ThesisMode::parse(name).ok_or_else(|| {
+                    Failure::input(format!(
+                        "--mode: unknown mode {name:?} (use walk, run, wounded-walk or wounded-run)"
+                    ))
+                })?),
+            };
+            overrides.method = Some(method(args.method.as_deref(), scenario.method)?);
+        }
+        Engine::Poda => {
+            if args.mode.is_some() || args.method.is_some() {
+                return Err(Failure::input(
+                    "--mode and --method belong to engine ik; engine poda takes --gait and --path",
+                ));
+            }
+            if let Some(file) = &args.path {
+                let text = load::read_limited(file, MAX_PRESET_BYTES, "path")?;
+                let spec: PathSpec = serde_json::from_str(&text)
+                    .map_err(|e| Failure::input(format!("--path {file}: {e}")))?;
+                overrides.path = Some(spec);
+            }
+        }
+        Engine::Physics => {
+            if args.mode.is_some() || args.method.is_some() || args.path.is_some() {
+                return Err(Failure::input(
+                    "--mode, --method and --path belong to other engines; engine physics takes --gait and --speed",
+                ));
+            }
+            overrides.speed_mps = args.speed;
+        }
+    }
+    Ok(overrides)
+}
+
+/// An engine error about a value an option set is reported at the option.
+fn flag_error(error: PresetError, args: &RunArgs) -> Failure {
+    let flag = match error.path.as_str() {
+        "scenario.poda.gait" | "scenario.physics.gait" if args.gait.is_some() => "--gait",
+        "scenario.physics.speed_mps" if args.speed.is_some() => "--speed",
+        _ => return Failure::input(error),
+    };
+    Failure::input(format!("{flag}: {}", error.reason))
 }

@@ -3,15 +3,16 @@
 //! report the same IK metrics as `run`.
 
 use clap::Args;
-use gaitlab_core::RootTransform;
 use gaitlab_core::export::{MAX_TARGET_CSV_BYTES, parse_target_csv};
 use gaitlab_core::preset::Purpose;
-use gaitlab_motion::{TargetSource, TrackDriver, TrackOptions};
+use gaitlab_engine::{Overrides, RunMetrics, Tracking, driver_for};
+use gaitlab_motion::TargetSource;
 
+use crate::drive::{Outputs, drive};
 use crate::fail::Failure;
 use crate::load;
-use crate::report::{self, Outputs};
-use crate::run;
+use crate::options::{method, timing};
+use crate::print::print;
 
 /// Arguments of `gaitlab track`.
 #[derive(Args, Debug)]
@@ -44,28 +45,25 @@ pub fn track(args: &TrackArgs) -> Result<(), Failure> {
     let text = load::read_limited(&args.targets, MAX_TARGET_CSV_BYTES, "target file")?;
     let track = parse_target_csv(&text, creature.skeleton.effector_count())
         .map_err(|e| Failure::input(format!("{}: {e}", args.targets)))?;
-    let method = run::method(args.method.as_deref(), scenario.method)?;
+    let method = method(args.method.as_deref(), scenario.method)?;
     let duration = track.duration_s();
     let fps = f64::from(args.fps.unwrap_or(scenario.fps));
-    let (fps, frames) = run::timing(Some(fps as u32), scenario.fps, duration.max(1.0 / fps))?;
-    let mut ik = scenario.ik_options();
-    ik.method = method;
-    let options = TrackOptions {
-        ik,
-        iterations_per_frame: args
-            .iterations
-            .unwrap_or(scenario.thesis.iterations_per_frame),
-        root: RootTransform {
-            position: creature.root_position,
-            ..RootTransform::default()
-        },
+    let (fps, frames) = timing(Some(fps as u32), scenario.fps, duration.max(1.0 / fps))?;
+    let overrides = Overrides {
+        method: Some(method),
+        tracking: Some(Tracking {
+            targets: track,
+            iterations_per_frame: args.iterations,
+        }),
+        ..Overrides::default()
     };
-    let mut driver = TrackDriver::new(creature.skeleton.clone(), track, options)
-        .map_err(|e| Failure::input(format!("--{e}")))?;
-    let measured = report::drive(&mut driver, frames, fps, &args.outputs)?;
-    let mut metrics = report::ik_json(&creature.name, "track", method.name(), &driver, &measured);
-    metrics["targets_file"] = args.targets.clone().into();
-    metrics["fps"] = fps.into();
-    report::print(&metrics, args.outputs.json);
+    let mut driver =
+        driver_for(&creature, &overrides).map_err(|e| Failure::input(format!("--{e}")))?;
+    let measured = drive(&mut driver, frames, fps, &args.outputs)?;
+    let mut metrics = RunMetrics::of(&creature.name, &driver, &measured).with_fps(fps);
+    if let RunMetrics::Ik(ik) = &mut metrics {
+        ik.targets_file = Some(args.targets.clone());
+    }
+    print(&metrics, args.outputs.json);
     Ok(())
 }

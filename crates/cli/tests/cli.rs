@@ -416,3 +416,40 @@ fn ten_thousand_joints_and_other_nonsense_exit_2_without_panicking() {
         String::from_utf8_lossy(&output.stderr)
     );
 }
+
+/// A preset that validates is one that runs: `validate` asks the engine layer,
+/// so the quadruped cut to three legs fails there with `run`'s own message.
+#[test]
+fn validate_refuses_what_run_refuses() {
+    let text = std::fs::read_to_string(
+        [
+            env!("CARGO_MANIFEST_DIR"),
+            "..",
+            "..",
+            "presets",
+            "raibert-quadruped.json",
+        ]
+        .iter()
+        .collect::<PathBuf>(),
+    )
+    .expect("bundled preset");
+    let mut preset: Value = serde_json::from_str(&text).expect("JSON");
+    let legs = preset["scenario"]["physics"]["legs"]
+        .as_array_mut()
+        .expect("physics legs");
+    legs.pop();
+    let path = scratch("three-legs.json");
+    std::fs::write(&path, preset.to_string()).expect("write");
+    let file = path.to_str().expect("utf-8");
+    let run = gaitlab(&["run", file, "--seconds", "0.1"]);
+    let validate = gaitlab(&["validate", file]);
+    let run_err = String::from_utf8_lossy(&run.stderr);
+    let validate_err = String::from_utf8_lossy(&validate.stderr);
+    assert_eq!(run.status.code(), Some(2), "run: {run_err}");
+    assert_eq!(validate.status.code(), Some(2), "validate: {validate_err}");
+    assert!(
+        validate_err.contains("error: scenario.physics.legs: "),
+        "{validate_err}"
+    );
+    assert_eq!(run_err, validate_err);
+}

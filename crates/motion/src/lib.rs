@@ -6,7 +6,6 @@
 //! read the [`Pose`](gaitlab_core::Pose), the targets and the IK metrics.
 
 mod error;
-pub mod frame_bench;
 mod ik_stage;
 pub mod poda;
 mod script;

@@ -1,0 +1,96 @@
+//! Printing a run's [`RunMetrics`]: one JSON line (`--json`), or a short
+//! human-readable summary per engine.
+
+use gaitlab_engine::RunMetrics;
+use gaitlab_engine::metrics::{GaitRunMetrics, IkRunMetrics, PhysicsRunMetrics};
+
+/// Prints `metrics` as one JSON line, or as a short table.
+pub fn print(metrics: &RunMetrics, as_json: bool) {
+    if as_json {
+        match serde_json::to_string(metrics) {
+            Ok(line) => println!("{line}"),
+            // Plain structs of numbers and strings always serialize.
+            Err(error) => eprintln!("error: metrics: {error}"),
+        }
+        return;
+    }
+    match metrics {
+        RunMetrics::Ik(ik) => print_ik(ik),
+        RunMetrics::Gait(gait) => print_gait(gait),
+        RunMetrics::Physics(physics) => print_physics(physics),
+    }
+}
+
+fn mm(metres: Option<f64>) -> String {
+    metres.map_or("-".to_owned(), |m| format!("{:.2}", m * 1e3))
+}
+
+fn print_ik(m: &IkRunMetrics) {
+    println!(
+        "{} · engine {} · method {} · {} frames ({:.2} s simulated) in {:.1} ms · {:.2} µs per IK iteration",
+        m.preset, m.engine, m.method, m.frames, m.sim_seconds, m.wall_ms, m.us_per_iteration,
+    );
+    println!(
+        "  {:<14} {:>12} {:>12}",
+        "effector", "mean err mm", "max err mm"
+    );
+    for effector in &m.effectors {
+        println!(
+            "  {:<20} {:>12} {:>12}",
+            effector.name,
+            mm(effector.mean_error_m),
+            mm(effector.max_error_m)
+        );
+    }
+}
+
+fn print_gait(m: &GaitRunMetrics) {
+    let or_nan = |v: Option<f64>| v.unwrap_or(f64::NAN);
+    println!(
+        "{} · engine poda · gait {} · {} frames ({:.2} s simulated) in {:.1} ms · {:.1} µs per frame",
+        m.preset, m.gait, m.frames, m.sim_seconds, m.wall_ms, m.us_per_frame,
+    );
+    println!(
+        "  foot slip max {:.3} mm · period {:.3} s · stride {:.3} m · body speed {:.3} m/s",
+        m.foot_slip_max_m * 1e3,
+        or_nan(m.period_s),
+        or_nan(m.stride_length_m),
+        m.body_speed_mps,
+    );
+    println!(
+        "  {:<14} {:>10} {:>10} {:>10} {:>10}",
+        "leg", "duty", "(set)", "phase", "(set)"
+    );
+    let value = |v: Option<f64>| v.map_or("-".to_owned(), |v| format!("{v:.3}"));
+    for leg in &m.legs {
+        println!(
+            "  {:<14} {:>10} {:>10} {:>10} {:>10}",
+            leg.name,
+            value(leg.duty_factor),
+            value(Some(leg.duty_factor_set)),
+            value(leg.relative_phase),
+            value(Some(leg.relative_phase_set)),
+        );
+    }
+}
+
+fn print_physics(m: &PhysicsRunMetrics) {
+    println!(
+        "{} · engine physics · gait {} · {:.1} s simulated · fell {} · speed {:.2} of {:.2} m/s · stride {:.2} m in {:.2} s · flight {:.3} s · stance {:.3} s · pitch {:.1}° · roll {:.1}° · friction needed {:.2} · {:.0} steps/s ({:.0}× real time)",
+        m.preset,
+        m.gait,
+        m.sim_seconds,
+        m.fell,
+        m.speed_mean_mps,
+        m.speed_desired_mps,
+        m.stride_length_m,
+        m.stride_duration_s,
+        m.flight_duration_s,
+        m.stance_duration_s,
+        m.pitch_magnitude_deg,
+        m.roll_magnitude_deg,
+        m.friction_needed_max,
+        m.steps_per_second,
+        m.realtime_factor,
+    );
+}

@@ -1,0 +1,97 @@
+//! `gaitlab run PRESET --seconds 10 --json` for every bundled preset against
+//! the figures recorded before the engine layer (issue 17) was built: with the
+//! timing fields (`wall_ms`, `us_per_frame`, `us_per_iteration`,
+//! `steps_per_second`, `realtime_factor`) removed, the output must be the same
+//! to the last bit. A deliberate change of an engine's motion re-records them:
+//! `GAITLAB_UPDATE_GOLDEN=1 cargo test -p gaitlab-cli --test run_golden`, and
+//! the commit says why the figures moved.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+use serde_json::Value;
+
+const TIMING_KEYS: [&str; 5] = [
+    "wall_ms",
+    "us_per_frame",
+    "us_per_iteration",
+    "steps_per_second",
+    "realtime_factor",
+];
+
+/// `value` without the timing keys, at any depth.
+fn without_timing(value: Value) -> Value {
+    match value {
+        Value::Object(map) => Value::Object(
+            map.into_iter()
+                .filter(|(key, _)| !TIMING_KEYS.contains(&key.as_str()))
+                .map(|(key, v)| (key, without_timing(v)))
+                .collect(),
+        ),
+        Value::Array(items) => Value::Array(items.into_iter().map(without_timing).collect()),
+        other => other,
+    }
+}
+
+fn golden_dir() -> PathBuf {
+    [env!("CARGO_MANIFEST_DIR"), "tests", "golden", "run-10s"]
+        .iter()
+        .collect()
+}
+
+fn bundled_names() -> Vec<String> {
+    let dir: PathBuf = [env!("CARGO_MANIFEST_DIR"), "..", "..", "presets"]
+        .iter()
+        .collect();
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .expect("presets/ is readable")
+        .filter_map(|entry| {
+            let path = entry.ok()?.path();
+            (path.extension()? == "json").then(|| path.file_stem()?.to_str().map(str::to_owned))?
+        })
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn every_bundled_preset_runs_as_recorded() {
+    let update = std::env::var_os("GAITLAB_UPDATE_GOLDEN").is_some();
+    let names = bundled_names();
+    assert!(names.len() >= 9, "bundled presets: {names:?}");
+    let mut differ = Vec::new();
+    for name in &names {
+        let output = Command::new(env!("CARGO_BIN_EXE_gaitlab"))
+            .args(["run", name, "--seconds", "10", "--json"])
+            .output()
+            .expect("the gaitlab binary runs");
+        assert!(
+            output.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        let got: Value = serde_json::from_slice(&output.stdout).expect("one JSON object");
+        let got = without_timing(got);
+        let path = golden_dir().join(format!("{name}.json"));
+        if update {
+            let text = serde_json::to_string_pretty(&got).expect("serializes") + "\n";
+            std::fs::write(&path, text).expect("golden file is writable");
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap_or_else(|e| {
+            panic!(
+                "{}: {e} (record it with GAITLAB_UPDATE_GOLDEN=1)",
+                path.display()
+            )
+        });
+        let want: Value = serde_json::from_str(&text).expect("golden file is JSON");
+        if got != want {
+            differ.push(format!("{name}:\n  recorded {want}\n  now      {got}"));
+        }
+    }
+    assert!(
+        differ.is_empty(),
+        "the run figures moved (re-record with GAITLAB_UPDATE_GOLDEN=1 only for a deliberate change):\n{}",
+        differ.join("\n")
+    );
+}

@@ -1,0 +1,138 @@
+//! Any engine's driver, by the preset's engine: She 2006's thesis motions
+//! ([`ThesisDriver`]), Girard & Maciejewski 1985's PODA gaits
+//! ([`PodaDriver`]), Raibert & Hodgins 1991's simulated runners
+//! ([`PhysicsDriver`]), or recorded targets followed by the thesis IK
+//! ([`TrackDriver`], `gaitlab track`). Everything generic goes through
+//! [`Driver`]; front ends ask for the concrete driver they edit. Built by
+//! [`crate::driver_for`] only.
+
+use gaitlab_core::Skeleton;
+use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
+use gaitlab_core::export::TargetTrack;
+use gaitlab_core::ik::Targets;
+use gaitlab_core::pose::Pose;
+use gaitlab_motion::{PodaDriver, ThesisDriver, TrackDriver};
+use gaitlab_physics::PhysicsDriver;
+use glam::DVec3;
+
+/// The driver of one figure, whatever its engine.
+#[derive(Clone, Debug)]
+pub enum AnyDriver {
+    /// Sinusoidal targets tracked by Jacobian IK (engine `ik`).
+    Thesis(Box<ThesisDriver>),
+    /// PODA gait synthesis (engine `poda`).
+    Poda(Box<PodaDriver>),
+    /// Physical simulation under control (engine `physics`).
+    Physics(Box<PhysicsDriver>),
+    /// Recorded effector targets followed by IK (`gaitlab track`).
+    Track(Box<TrackDriver<TargetTrack>>),
+}
+
+impl AnyDriver {
+    fn inner(&self) -> &dyn Driver {
+        match self {
+            AnyDriver::Thesis(driver) => driver.as_ref(),
+            AnyDriver::Poda(driver) => driver.as_ref(),
+            AnyDriver::Physics(driver) => driver.as_ref(),
+            AnyDriver::Track(driver) => driver.as_ref(),
+        }
+    }
+
+    fn inner_mut(&mut self) -> &mut dyn Driver {
+        match self {
+            AnyDriver::Thesis(driver) => driver.as_mut(),
+            AnyDriver::Poda(driver) => driver.as_mut(),
+            AnyDriver::Physics(driver) => driver.as_mut(),
+            AnyDriver::Track(driver) => driver.as_mut(),
+        }
+    }
+
+    /// The thesis driver, when the engine is `ik`.
+    #[must_use]
+    pub fn thesis(&self) -> Option<&ThesisDriver> {
+        match self {
+            AnyDriver::Thesis(driver) => Some(driver),
+            _ => None,
+        }
+    }
+
+    /// The thesis driver, mutably.
+    pub fn thesis_mut(&mut self) -> Option<&mut ThesisDriver> {
+        match self {
+            AnyDriver::Thesis(driver) => Some(driver),
+            _ => None,
+        }
+    }
+
+    /// The PODA driver, when the engine is `poda`.
+    #[must_use]
+    pub fn poda(&self) -> Option<&PodaDriver> {
+        match self {
+            AnyDriver::Poda(driver) => Some(driver),
+            _ => None,
+        }
+    }
+
+    /// The PODA driver, mutably.
+    pub fn poda_mut(&mut self) -> Option<&mut PodaDriver> {
+        match self {
+            AnyDriver::Poda(driver) => Some(driver),
+            _ => None,
+        }
+    }
+
+    /// The physics driver, when the engine is `physics`.
+    #[must_use]
+    pub fn physics(&self) -> Option<&PhysicsDriver> {
+        match self {
+            AnyDriver::Physics(driver) => Some(driver),
+            _ => None,
+        }
+    }
+
+    /// The physics driver, mutably.
+    pub fn physics_mut(&mut self) -> Option<&mut PhysicsDriver> {
+        match self {
+            AnyDriver::Physics(driver) => Some(driver),
+            _ => None,
+        }
+    }
+}
+
+impl Driver for AnyDriver {
+    fn step(&mut self, dt: f64) {
+        self.inner_mut().step(dt);
+    }
+
+    fn time(&self) -> f64 {
+        self.inner().time()
+    }
+
+    fn reset(&mut self) {
+        self.inner_mut().reset();
+    }
+
+    fn skeleton(&self) -> &Skeleton {
+        self.inner().skeleton()
+    }
+
+    fn pose(&self) -> &Pose {
+        self.inner().pose()
+    }
+
+    fn effector_positions(&self) -> &[DVec3] {
+        self.inner().effector_positions()
+    }
+
+    fn targets(&self) -> Option<&Targets> {
+        self.inner().targets()
+    }
+
+    fn ik_report(&self) -> Option<&IkFrameReport> {
+        self.inner().ik_report()
+    }
+
+    fn ik_metrics(&self) -> Option<&IkMetrics> {
+        self.inner().ik_metrics()
+    }
+}

@@ -1,0 +1,19 @@
+//! gaitlab-engine: the engine layer, the one place where gaitlab's engines plug
+//! in — She 2006's thesis motions and recorded-target tracking, Girard &
+//! Maciejewski 1985's PODA gaits, Raibert & Hodgins 1991's simulation. Front
+//! ends (the page, the CLI, the benchmark suite) build every driver with
+//! [`driver_for`], hold it as an [`AnyDriver`], report its figures as
+//! [`RunMetrics`] and write its frames with a [`take::FrameWriter`] (a page's
+//! recording is a [`Take`]).
+//!
+//! Pure like the crates below it: no I/O and no clocks (callers measure time).
+
+pub mod any_driver;
+pub mod driver_for;
+pub mod metrics;
+pub mod take;
+
+pub use any_driver::AnyDriver;
+pub use driver_for::{Overrides, Tracking, check, driver_for};
+pub use metrics::{RunMetrics, Timing};
+pub use take::{FrameWriter, MAX_TAKE_S, Take};

@@ -1,0 +1,431 @@
+//! The figures a run reports — DESIGN.md's metric keys, one serializable type
+//! for every front end: `gaitlab run --json` and `gaitlab track --json` print
+//! it, the page's `state()` carries it as `metrics`. IK tracking (She 2006
+//! §5.3's effector distance `d`), PODA gaits as measured from the motion
+//! (Girard & Maciejewski 1985: duty factor, relative phase, stride, slip), and
+//! Raibert & Hodgins 1991's Table-2 quantities.
+//!
+//! The engine layer reads no clocks: wall-time figures come in a [`Timing`]
+//! measured by the caller around [`gaitlab_core::driver::Driver::step`].
+
+use gaitlab_core::driver::Driver;
+use gaitlab_core::{Pose, Skeleton};
+use gaitlab_motion::PodaDriver;
+use gaitlab_physics::PhysicsDriver;
+use serde::Serialize;
+
+use crate::AnyDriver;
+
+/// What the caller measured while driving.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Timing {
+    /// Frames stepped.
+    pub frames: usize,
+    /// Wall time spent inside `Driver::step`, milliseconds.
+    pub step_ms: f64,
+    /// The whole loop including output, milliseconds.
+    pub wall_ms: f64,
+    /// Whether every joint value stayed finite and within its limits.
+    pub within_limits: bool,
+}
+
+impl Timing {
+    /// Microseconds per stepped frame (0 before any frame).
+    #[must_use]
+    pub fn us_per_frame(&self) -> f64 {
+        if self.frames > 0 {
+            self.step_ms * 1e3 / self.frames as f64
+        } else {
+            0.0
+        }
+    }
+}
+
+/// Whether every joint value of `pose` is finite and within its limits
+/// (1e-9 slack): [`Timing::within_limits`] holds this for every frame.
+#[must_use]
+pub fn pose_within_limits(skeleton: &Skeleton, pose: &Pose) -> bool {
+    pose.joints
+        .iter()
+        .zip(skeleton.joints())
+        .all(|(value, joint)| {
+            value.is_finite()
+                && joint
+                    .limits
+                    .is_none_or(|(lo, hi)| *value >= lo - 1e-9 && *value <= hi + 1e-9)
+        })
+}
+
+/// A run's figures, by engine (serialized without a tag: the `engine` key says which).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum RunMetrics {
+    /// Thesis motions and recorded-target tracking.
+    Ik(IkRunMetrics),
+    /// PODA gaits.
+    Gait(GaitRunMetrics),
+    /// Physical simulation.
+    Physics(PhysicsRunMetrics),
+}
+
+impl RunMetrics {
+    /// The figures of `driver` after a run of preset `preset` that `timing` measured.
+    #[must_use]
+    pub fn of(preset: &str, driver: &AnyDriver, timing: &Timing) -> Self {
+        match driver {
+            AnyDriver::Poda(poda) => Self::Gait(GaitRunMetrics::of(preset, poda, timing)),
+            AnyDriver::Physics(physics) => {
+                Self::Physics(PhysicsRunMetrics::of(preset, physics, timing))
+            }
+            AnyDriver::Thesis(thesis) => {
+                let mut metrics = IkRunMetrics::of(preset, "ik", driver, timing);
+                metrics.mode = Some(thesis.mode().name());
+                metrics.speed_mps = Some(thesis.script().speed_mps());
+                metrics.distance_m = Some(thesis.distance_m());
+                Self::Ik(metrics)
+            }
+            AnyDriver::Track(_) => Self::Ik(IkRunMetrics::of(preset, "track", driver, timing)),
+        }
+    }
+
+    /// The same figures with the run's frame rate (`fps`) added; the physics
+    /// figures have none (the simulation steps at its own `dt`).
+    #[must_use]
+    pub fn with_fps(mut self, fps: f64) -> Self {
+        match &mut self {
+            Self::Ik(ik) => ik.fps = Some(fps),
+            Self::Gait(gait) => gait.fps = Some(fps),
+            Self::Physics(_) => {}
+        }
+        self
+    }
+}
+
+/// One effector's tracking error over a run (She 2006 §5.3's `d`), metres.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct EffectorMetrics {
+    /// Effector name.
+    pub name: String,
+    /// Mean distance to its target over the finite frames.
+    pub mean_error_m: Option<f64>,
+    /// Largest distance to its target (infinite if a frame went non-finite).
+    pub max_error_m: Option<f64>,
+}
+
+/// DESIGN.md's `always` and `IK` keys.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct IkRunMetrics {
+    /// Preset name.
+    pub preset: String,
+    /// `ik`, or `track` for recorded targets.
+    pub engine: &'static str,
+    /// IK method.
+    pub method: &'static str,
+    /// Frames stepped.
+    pub frames: usize,
+    /// Simulated seconds.
+    pub sim_seconds: f64,
+    /// Wall time of the run, milliseconds.
+    pub wall_ms: f64,
+    /// IK iterations run.
+    pub iterations: u64,
+    /// Wall time per IK iteration, µs.
+    pub us_per_iteration: f64,
+    /// Wall time per frame, µs.
+    pub us_per_frame: f64,
+    /// Each effector's tracking error.
+    pub effectors: Vec<EffectorMetrics>,
+    /// Whether every joint value stayed finite and within its limits.
+    pub within_limits: bool,
+    /// Frames whose solve went non-finite and was undone.
+    pub restored_frames: u64,
+    /// Thesis motion (engine `ik`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mode: Option<&'static str>,
+    /// The motion's speed, m/s (engine `ik`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub speed_mps: Option<f64>,
+    /// Distance walked, metres (engine `ik`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub distance_m: Option<f64>,
+    /// Frames per second of the run (set by the front end).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fps: Option<f64>,
+    /// The recorded targets' file (`gaitlab track`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub targets_file: Option<String>,
+}
+
+impl IkRunMetrics {
+    fn of(preset: &str, engine: &'static str, driver: &AnyDriver, timing: &Timing) -> Self {
+        let skeleton = driver.skeleton();
+        let (iterations, effectors, sim_seconds, restored_frames) = match driver.ik_metrics() {
+            Some(metrics) => (
+                metrics.iterations,
+                skeleton
+                    .effectors()
+                    .iter()
+                    .enumerate()
+                    .map(|(e, effector)| EffectorMetrics {
+                        name: effector.name.clone(),
+                        mean_error_m: metrics.mean_error_m(e),
+                        max_error_m: metrics.max_error_m(e),
+                    })
+                    .collect(),
+                metrics.sim_seconds,
+                metrics.restored_frames,
+            ),
+            None => (0, Vec::new(), driver.time(), 0),
+        };
+        let us_per_iteration = if iterations > 0 {
+            timing.step_ms * 1e3 / iterations as f64
+        } else {
+            0.0
+        };
+        let method = match driver {
+            AnyDriver::Thesis(thesis) => thesis.options().method.name(),
+            AnyDriver::Track(track) => track.options().method.name(),
+            _ => "",
+        };
+        Self {
+            preset: preset.to_owned(),
+            engine,
+            method,
+            frames: timing.frames,
+            sim_seconds,
+            wall_ms: timing.wall_ms,
+            iterations,
+            us_per_iteration,
+            us_per_frame: timing.us_per_frame(),
+            effectors,
+            within_limits: timing.within_limits,
+            restored_frames,
+            mode: None,
+            speed_mps: None,
+            distance_m: None,
+            fps: None,
+            targets_file: None,
+        }
+    }
+}
+
+/// One PODA leg's measured duty factor and relative phase beside the gait's.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct GaitLegMetrics {
+    /// Leg name.
+    pub name: String,
+    /// Measured duty factor (eq. 7).
+    pub duty_factor: Option<f64>,
+    /// Measured relative phase (eq. 9), a fraction of the period.
+    pub relative_phase: Option<f64>,
+    /// The gait's duty factor.
+    pub duty_factor_set: f64,
+    /// The gait's relative phase.
+    pub relative_phase_set: f64,
+    /// Largest horizontal drift of this planted foot, metres.
+    pub slip_max_m: f64,
+}
+
+/// DESIGN.md's `always` and `gait` keys, plus the gait's parameters beside
+/// what was measured.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct GaitRunMetrics {
+    /// Preset name.
+    pub preset: String,
+    /// `poda`.
+    pub engine: &'static str,
+    /// Frames recorded.
+    pub frames: u64,
+    /// Simulated seconds.
+    pub sim_seconds: f64,
+    /// Wall time of the run, milliseconds.
+    pub wall_ms: f64,
+    /// Wall time per frame, µs.
+    pub us_per_frame: f64,
+    /// Gait name.
+    pub gait: String,
+    /// The gaits this creature's leg count has.
+    pub gaits_available: Vec<&'static str>,
+    /// Largest horizontal drift of any planted foot during support, metres.
+    pub foot_slip_max_m: f64,
+    /// Each leg's figures.
+    pub legs: Vec<GaitLegMetrics>,
+    /// Measured period, seconds.
+    pub period_s: Option<f64>,
+    /// The gait's period, seconds.
+    pub period_s_set: f64,
+    /// Measured stride, metres.
+    pub stride_length_m: Option<f64>,
+    /// Measured body speed, m/s.
+    pub body_speed_mps: f64,
+    /// The gait's speed, m/s.
+    pub speed_mps_set: f64,
+    /// The gait's stroke, metres.
+    pub stroke_m: f64,
+    /// Lowest and highest body height, metres.
+    pub body_height_range_m: [f64; 2],
+    /// Longest time with no foot planted, seconds.
+    pub flight_duration_max_s: f64,
+    /// Whether every joint value stayed finite and within its limits.
+    pub within_limits: bool,
+    /// Frames per second of the run (set by the front end).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fps: Option<f64>,
+}
+
+impl GaitRunMetrics {
+    fn of(preset: &str, driver: &PodaDriver, timing: &Timing) -> Self {
+        let metrics = driver.metrics();
+        let gait = driver.gait();
+        let period = metrics.period_s();
+        let legs = metrics
+            .legs
+            .iter()
+            .zip(gait.phases())
+            .map(|(leg, &phase)| GaitLegMetrics {
+                name: leg.name.clone(),
+                duty_factor: leg.duty_factor(),
+                relative_phase: period.and_then(|p| leg.relative_phase(p)),
+                duty_factor_set: gait.duty_factor(),
+                relative_phase_set: phase,
+                slip_max_m: leg.slip_max_m,
+            })
+            .collect();
+        let speed = metrics.body_speed_mps();
+        let (low, high) = metrics.body_height_range_m;
+        Self {
+            preset: preset.to_owned(),
+            engine: "poda",
+            frames: metrics.frames,
+            sim_seconds: metrics.sim_seconds,
+            wall_ms: timing.wall_ms,
+            us_per_frame: timing.us_per_frame(),
+            gait: driver.gait_name().to_owned(),
+            gaits_available: gaitlab_motion::poda::gait_names(gait.leg_count()).collect(),
+            foot_slip_max_m: metrics.foot_slip_max_m(),
+            legs,
+            period_s: period,
+            period_s_set: gait.period_s(),
+            stride_length_m: period.map(|p| p * speed),
+            body_speed_mps: speed,
+            speed_mps_set: gait.speed_mps(),
+            stroke_m: gait.stroke_m(),
+            body_height_range_m: [low, high],
+            flight_duration_max_s: metrics.flight_max_s,
+            within_limits: timing.within_limits,
+            fps: None,
+        }
+    }
+}
+
+/// One physics leg's mean stance time.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PhysicsLegMetrics {
+    /// Leg name.
+    pub name: String,
+    /// Mean stance duration, seconds.
+    pub stance_duration_s: f64,
+}
+
+/// DESIGN.md's `always` and `physics` keys plus Table 2's extras.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PhysicsRunMetrics {
+    /// Preset name.
+    pub preset: String,
+    /// `physics`.
+    pub engine: &'static str,
+    /// Frames stepped.
+    pub frames: usize,
+    /// Simulated seconds.
+    pub sim_seconds: f64,
+    /// Wall time of the run, milliseconds.
+    pub wall_ms: f64,
+    /// Gait name.
+    pub gait: String,
+    /// The gaits this creature has.
+    pub gaits_available: &'static [&'static str],
+    /// Dynamic scale (Table 1's L).
+    pub scale: f64,
+    /// Whether the creature fell (or was reset after a fall).
+    pub fell: bool,
+    /// The blow-up guard's message, if the simulation blew up.
+    pub blow_up: Option<String>,
+    /// Desired speed, m/s.
+    pub speed_desired_mps: f64,
+    /// Mean speed, m/s.
+    pub speed_mean_mps: f64,
+    /// Mean stride, metres.
+    pub stride_length_m: f64,
+    /// Mean stride, seconds.
+    pub stride_duration_s: f64,
+    /// Mean flight, seconds.
+    pub flight_duration_s: f64,
+    /// Mean stance, seconds.
+    pub stance_duration_s: f64,
+    /// Each leg's stance.
+    pub legs: Vec<PhysicsLegMetrics>,
+    /// Leg shortening in stance, metres.
+    pub leg_length_change_m: f64,
+    /// Pitch magnitude, degrees.
+    pub pitch_magnitude_deg: f64,
+    /// Roll magnitude, degrees.
+    pub roll_magnitude_deg: f64,
+    /// Peak vertical acceleration, g.
+    pub peak_vertical_accel_g: f64,
+    /// Largest horizontal-to-vertical ground force ratio needed.
+    pub friction_needed_max: f64,
+    /// Integration steps.
+    pub steps: u64,
+    /// Integration steps per wall second.
+    pub steps_per_second: f64,
+    /// Simulated seconds per wall second.
+    pub realtime_factor: f64,
+}
+
+impl PhysicsRunMetrics {
+    fn of(preset: &str, driver: &PhysicsDriver, timing: &Timing) -> Self {
+        let s = driver.summary();
+        let sim = driver.sim();
+        let step_s = timing.step_ms / 1e3;
+        let steps = sim.steps as f64;
+        let legs = sim
+            .creature
+            .legs
+            .iter()
+            .zip(&s.leg_stance_s)
+            .map(|(leg, &t)| PhysicsLegMetrics {
+                name: leg.name.clone(),
+                stance_duration_s: t,
+            })
+            .collect();
+        Self {
+            preset: preset.to_owned(),
+            engine: "physics",
+            frames: timing.frames,
+            sim_seconds: sim.time,
+            wall_ms: timing.wall_ms,
+            gait: driver.gait().to_owned(),
+            gaits_available: gaitlab_physics::control::gait_controller::gait_names(
+                sim.creature.species,
+            ),
+            scale: driver.params().scale,
+            fell: s.fell || driver.resets() > 0,
+            blow_up: driver.message().map(str::to_owned),
+            speed_desired_mps: s.speed_desired_mps,
+            speed_mean_mps: s.speed_mean_mps,
+            stride_length_m: s.stride_length_m,
+            stride_duration_s: s.stride_duration_s,
+            flight_duration_s: s.flight_duration_s,
+            stance_duration_s: s.stance_duration_s,
+            legs,
+            leg_length_change_m: s.leg_length_change_m,
+            pitch_magnitude_deg: s.pitch_magnitude_deg,
+            roll_magnitude_deg: s.roll_magnitude_deg,
+            peak_vertical_accel_g: s.peak_vertical_accel_g,
+            friction_needed_max: s.friction_needed_max,
+            steps: sim.steps,
+            steps_per_second: if step_s > 0.0 { steps / step_s } else { 0.0 },
+            realtime_factor: if step_s > 0.0 { sim.time / step_s } else { 0.0 },
+        }
+    }
+}

@@ -1,0 +1,236 @@
+//! The gait controllers a physics driver runs: which of Raibert & Hodgins
+//! 1991's state machines drives each gait of each model ("Gaits"), how each
+//! is built from a preset's physics section, and the state it starts from.
+
+use gaitlab_core::preset::{PhysicsParams, PresetError};
+
+use crate::control::biped_gallop::{BipedGallop, BipedGallopParams, GallopStyle};
+use crate::control::biped_run::{BipedRun, BipedRunParams};
+use crate::control::kangaroo_hop::{KangarooHop, KangarooHopParams, kangaroo_start};
+use crate::control::quadruped_bound::{
+    BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
+};
+use crate::control::quadruped_run::{QuadrupedRun, QuadrupedRunParams, quadruped_start};
+use crate::creatures::{PhysicalCreature, Species};
+use crate::world::sim::{Controller, Sim};
+
+/// The gaits of each model, the default first.
+#[must_use]
+pub fn gait_names(species: Species) -> &'static [&'static str] {
+    match species {
+        Species::Biped => &["run", "gallop", "gallop_alternate"],
+        Species::Quadruped => &["trot", "bound", "gallop"],
+        Species::Kangaroo => &["hop"],
+    }
+}
+
+/// The kangaroo starts no faster than this (m/s at scale 1) and its
+/// controller ramps to the desired speed: started at 5 m/s it tumbles.
+pub const KANGAROO_START_MPS: f64 = 2.0;
+
+/// The controller of the gait running: one of the paper's state machines.
+/// (One lives per driver, so the variants' differing sizes do not matter.)
+#[derive(Clone, Debug)]
+pub enum GaitController {
+    /// Biped running (Figure 4).
+    BipedRun(Box<BipedRun>),
+    /// Biped galloping, either style.
+    BipedGallop(Box<BipedGallop>),
+    /// Quadruped trot on virtual legs.
+    Quadruped(Box<QuadrupedRun>),
+    /// Quadruped bound or gallop: front and rear pairs as a planar biped.
+    QuadrupedBound(Box<QuadrupedBound>),
+    /// The kangaroo's hop.
+    Kangaroo(Box<KangarooHop>),
+}
+
+impl GaitController {
+    fn inner(&self) -> &dyn Controller {
+        match self {
+            GaitController::BipedRun(c) => c.as_ref(),
+            GaitController::BipedGallop(c) => c.as_ref(),
+            GaitController::Quadruped(c) => c.as_ref(),
+            GaitController::QuadrupedBound(c) => c.as_ref(),
+            GaitController::Kangaroo(c) => c.as_ref(),
+        }
+    }
+
+    fn inner_mut(&mut self) -> &mut dyn Controller {
+        match self {
+            GaitController::BipedRun(c) => c.as_mut(),
+            GaitController::BipedGallop(c) => c.as_mut(),
+            GaitController::Quadruped(c) => c.as_mut(),
+            GaitController::QuadrupedBound(c) => c.as_mut(),
+            GaitController::Kangaroo(c) => c.as_mut(),
+        }
+    }
+}
+
+impl Controller for GaitController {
+    fn control(
+        &mut self,
+        input: &crate::world::sim::ControlInput<'_>,
+        drives: &mut [crate::world::sim::Drive],
+    ) {
+        self.inner_mut().control(input, drives);
+    }
+
+    fn phase_name(&self) -> &'static str {
+        self.inner().phase_name()
+    }
+
+    fn set_speed(&mut self, speed_mps: f64) {
+        self.inner_mut().set_speed(speed_mps);
+    }
+
+    fn set_heading(&mut self, heading: f64) {
+        self.inner_mut().set_heading(heading);
+    }
+
+    fn set_hop_height(&mut self, height_m: f64) {
+        self.inner_mut().set_hop_height(height_m);
+    }
+
+    fn gains(&self) -> Vec<crate::world::sim::Gain> {
+        self.inner().gains()
+    }
+
+    fn set_gain(&mut self, name: &str, value: f64) -> bool {
+        self.inner_mut().set_gain(name, value)
+    }
+}
+
+/// Put `sim` in the starting state of `controller` where it has its own:
+/// the quadruped just above standing height, the kangaroo just before a
+/// landing at no more than [`KANGAROO_START_MPS`] (its controller ramps to
+/// the rest); other creatures keep the preset's rest pose.
+pub fn start_state(sim: &mut Sim, controller: &GaitController, speed_mps: f64) {
+    match controller {
+        GaitController::Quadruped(_) => quadruped_start(sim, speed_mps),
+        GaitController::QuadrupedBound(_) => bound_start(sim, speed_mps),
+        GaitController::Kangaroo(_) => {
+            kangaroo_start(sim, speed_mps.clamp(0.0, KANGAROO_START_MPS))
+        }
+        GaitController::BipedRun(_) | GaitController::BipedGallop(_) => {}
+    }
+}
+
+/// The controller of `gait` for `creature`, with `params`' speed, hop height
+/// and obstacles.
+///
+/// # Errors
+/// `scenario.physics.gait` for a gait the model lacks; `scenario.physics.legs`
+/// when the legs do not fit the gait's controller.
+pub fn make_controller(
+    creature: &PhysicalCreature,
+    gait: &str,
+    params: &PhysicsParams,
+) -> Result<GaitController, PresetError> {
+    let l = creature.scale;
+    let bad = || {
+        let names = gait_names(creature.species);
+        PresetError::new(
+            "scenario.physics.gait",
+            format!(
+                "unknown gait \"{gait}\" (this model has: {})",
+                names.join(", ")
+            ),
+        )
+    };
+    let two_ball_legs =
+        creature.legs.len() == 2 && creature.legs.iter().all(|leg| leg.hip.len() == 3);
+    let biped_needs = || {
+        PresetError::new(
+            "scenario.physics.legs",
+            "the biped gaits need two legs with three hip joints each",
+        )
+    };
+    match (creature.species, gait) {
+        (Species::Biped, "run") => {
+            if !two_ball_legs {
+                return Err(biped_needs());
+            }
+            let d = BipedRunParams::default();
+            let p = BipedRunParams {
+                speed_mps: params.speed_mps,
+                hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
+                ..d
+            };
+            Ok(GaitController::BipedRun(Box::new(BipedRun::new(p, l))))
+        }
+        (Species::Biped, "gallop" | "gallop_alternate") => {
+            if !two_ball_legs {
+                return Err(biped_needs());
+            }
+            let d = BipedGallopParams::default();
+            let style = if gait == "gallop" {
+                GallopStyle::TogetherSwing
+            } else {
+                GallopStyle::AlternateSwing
+            };
+            let p = BipedGallopParams {
+                speed_mps: params.speed_mps,
+                hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
+                style,
+                ..d
+            };
+            Ok(GaitController::BipedGallop(Box::new(BipedGallop::new(
+                p, l,
+            ))))
+        }
+        (Species::Quadruped, "trot" | "bound" | "gallop") => {
+            if creature.legs.len() != 4 || creature.legs.iter().any(|leg| leg.hip.len() != 2) {
+                return Err(PresetError::new(
+                    "scenario.physics.legs",
+                    "the quadruped gaits need four legs with two hip joints each",
+                ));
+            }
+            if gait == "trot" {
+                let p = QuadrupedRunParams {
+                    speed_mps: params.speed_mps,
+                    ..QuadrupedRunParams::default()
+                };
+                return Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(p, l))));
+            }
+            let style = if gait == "bound" {
+                BoundStyle::Bound
+            } else {
+                BoundStyle::Gallop
+            };
+            let p = QuadrupedBoundParams {
+                speed_mps: params.speed_mps,
+                style,
+                ..QuadrupedBoundParams::default()
+            };
+            Ok(GaitController::QuadrupedBound(Box::new(
+                QuadrupedBound::new(p, l),
+            )))
+        }
+        (Species::Kangaroo, "hop") => {
+            let ok = creature.legs.len() == 1
+                && creature.legs[0].knee.is_some()
+                && creature.legs[0].hip.len() == 1
+                && creature.tail.len() == 3
+                && creature.neck.is_some()
+                && creature.model.joint_count() >= 10;
+            if !ok {
+                return Err(PresetError::new(
+                    "scenario.physics.legs",
+                    "the kangaroo hop needs a planar base, one leg with hip, knee and ankle, a three-joint tail and a neck",
+                ));
+            }
+            let d = KangarooHopParams::default();
+            let obstacle = params.obstacles.first();
+            let p = KangarooHopParams {
+                speed_mps: params.speed_mps,
+                hop_rise_m: params.hop_height_m.unwrap_or(d.hop_rise_m),
+                jump_at_m: obstacle.map(|o| o.at_m),
+                obstacle_height_m: obstacle.map_or(d.obstacle_height_m, |o| o.height_m),
+                obstacle_depth_m: obstacle.map_or(d.obstacle_depth_m, |o| o.depth_m),
+                ..d
+            };
+            Ok(GaitController::Kangaroo(Box::new(KangarooHop::new(p))))
+        }
+        _ => Err(bad()),
+    }
+}

@@ -1,0 +1,627 @@
+//! The physics engine as a gaitlab driver (DESIGN.md "Data flow"): a preset's
+//! creature simulated under its gait's controller on the fixed-step loop of
+//! [`crate::world::sim`], read out as a [`Pose`] every frame, with the Table-2
+//! figures of [`crate::engine::metrics`] and a guard that resets the creature and
+//! says why when the simulation blows up (Raibert & Hodgins 1991, Figure 2).
+
+use gaitlab_core::driver::Driver;
+use gaitlab_core::portable::Portable;
+use gaitlab_core::preset::physics::{check_hop_height_m, check_speed_mps};
+use gaitlab_core::preset::{Creature as PresetCreature, PhysicsParams, PresetError};
+use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
+use glam::{DMat3, DVec3};
+
+use crate::control::gait_controller::{GaitController, gait_names, make_controller, start_state};
+use crate::control::kangaroo_hop::kangaroo_ground;
+use crate::creatures::Species;
+use crate::dynamics::model::Joint as BodyJoint;
+use crate::engine::metrics::{GaitRecorder, GaitSummary};
+use crate::engine::preset::creature_from_preset;
+use crate::world::ground::{GroundParams, Obstacle};
+use crate::world::sim::{Controller, Sim, SimOptions};
+
+/// What the live plots show each frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PhysicsProbe {
+    /// Trunk height above the ground (m).
+    pub height_m: f64,
+    /// Trunk pitch (deg, positive nose down).
+    pub pitch_deg: f64,
+    /// Trunk roll (deg).
+    pub roll_deg: f64,
+    /// First leg's hip-to-foot length (m).
+    pub leg_length_m: f64,
+    /// Total vertical ground force over body weight.
+    pub ground_force_bw: f64,
+    /// The state machine's state as its Figure-4 index (0 flight … 4 unloading).
+    pub phase_index: usize,
+    /// Forward speed of the centre of mass (m/s).
+    pub speed_mps: f64,
+}
+
+/// How fast the desired heading turns (rad/s at scale 1, ×1/√L).
+pub const TURN_RATE_RAD_S: f64 = 0.5;
+
+/// A waypoint counts as reached within this distance (m at scale 1).
+pub const WAYPOINT_RADIUS_M: f64 = 0.75;
+
+/// Seconds after a fall before the creature is put back at the start.
+pub const FALL_RESET_S: f64 = 1.5;
+
+/// A physics creature running under control, seen as a [`Driver`].
+#[derive(Clone, Debug)]
+pub struct PhysicsDriver {
+    skeleton: Skeleton,
+    start_root: DVec3,
+    params: PhysicsParams,
+    gait: String,
+    sim: Sim,
+    start: Sim,
+    controller: GaitController,
+    recorder: GaitRecorder,
+    pose: Pose,
+    effectors: Vec<DVec3>,
+    fell_at: Option<f64>,
+    /// The desired heading as it turns toward its goal (rad about +y).
+    heading: f64,
+    /// Where the heading is turning to (rad).
+    heading_goal: f64,
+    /// The next waypoint of `params.waypoints`.
+    waypoint: usize,
+    /// A controller waiting for the next flight to take over (a gait change).
+    pending: Option<GaitController>,
+    /// Whether a fall puts the creature back at the start after
+    /// [`FALL_RESET_S`] (the app's choice; a measuring run turns it off).
+    pub reset_after_fall: bool,
+    message: Option<String>,
+    resets: u32,
+}
+
+fn scaled_skeleton(skeleton: &Skeleton, l: f64) -> Result<Skeleton, PresetError> {
+    let joints: Vec<Joint> = skeleton
+        .joints()
+        .iter()
+        .map(|j| {
+            let mut j = j.clone();
+            j.offset *= l;
+            j.size *= l;
+            if j.kind == JointKind::Prismatic {
+                j.limits = j.limits.map(|(a, b)| (a * l, b * l));
+                j.rest *= l;
+                j.center *= l;
+            }
+            j
+        })
+        .collect();
+    let effectors: Vec<Effector> = skeleton
+        .effectors()
+        .iter()
+        .map(|e| Effector {
+            offset: e.offset * l,
+            ..e.clone()
+        })
+        .collect();
+    Skeleton::new(joints, effectors).map_err(|e| PresetError::new("skeleton", e.to_string()))
+}
+
+impl PhysicsDriver {
+    /// The driver of a preset whose engine is `physics`, with the preset's gait.
+    ///
+    /// # Errors
+    /// A [`PresetError`] when the physics section is missing or wrong, or the
+    /// gait is not one of the model's.
+    pub fn new(preset: &PresetCreature) -> Result<Self, PresetError> {
+        let params = preset.scenario.physics.clone().ok_or_else(|| {
+            PresetError::new(
+                "scenario.physics",
+                "engine \"physics\" needs the creature's physical model",
+            )
+        })?;
+        Self::with_params(preset, params)
+    }
+
+    /// The driver with `params` in place of the preset's physics section.
+    ///
+    /// # Errors
+    /// As [`PhysicsDriver::new`].
+    pub fn with_params(
+        preset: &PresetCreature,
+        params: PhysicsParams,
+    ) -> Result<Self, PresetError> {
+        let mut with = preset.clone();
+        with.scenario.physics = Some(params.clone());
+        let creature = creature_from_preset(&with)?;
+        let l = params.scale;
+        let names = gait_names(creature.species);
+        let gait = params
+            .gait
+            .clone()
+            .or_else(|| names.first().map(|s| (*s).to_owned()))
+            .unwrap_or_default();
+        let controller = make_controller(&creature, &gait, &params)?;
+        let skeleton = scaled_skeleton(&preset.skeleton, l)?;
+        let start_q: Vec<f64> = skeleton.rest_values();
+        let start_root = preset.root_position * l;
+        let options = SimOptions {
+            dt: params.dt_s * l.sqrt(),
+            ..SimOptions::default()
+        };
+        let ground = match creature.species {
+            Species::Kangaroo => kangaroo_ground().scaled(l),
+            _ => GroundParams::default().scaled(l),
+        };
+        let mut sim = Sim::new(creature, ground, options);
+        for o in &params.obstacles {
+            sim.terrain.obstacles.push(Obstacle {
+                min_xz: [-10.0 * l, o.at_m * l],
+                max_xz: [10.0 * l, (o.at_m + o.depth_m) * l],
+                height_m: o.height_m * l,
+            });
+        }
+        if sim.creature.model.free_base() {
+            sim.data.base_position = start_root;
+            sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, params.speed_mps * l.sqrt());
+        } else if let Some(v) = sim.data.qd.first_mut() {
+            *v = params.speed_mps * l.sqrt();
+        }
+        sim.data.q.copy_from_slice(&start_q);
+        start_state(&mut sim, &controller, params.speed_mps);
+        crate::dynamics::kinematics::kinematics(&sim.creature.model, &mut sim.data);
+        let legs = sim.creature.legs.len();
+        let mut driver = Self {
+            pose: Pose {
+                root: RootTransform {
+                    position: start_root,
+                    rotation: DMat3::IDENTITY,
+                },
+                joints: start_q.clone(),
+            },
+            effectors: vec![DVec3::ZERO; skeleton.effector_count()],
+            skeleton,
+            start_root,
+
+            recorder: GaitRecorder::new(legs, params.speed_mps * l.sqrt(), 0.0, 3.0 * l.sqrt()),
+            params,
+            gait,
+            start: sim.clone(),
+            sim,
+            controller,
+            fell_at: None,
+            heading: 0.0,
+            heading_goal: 0.0,
+            waypoint: 0,
+            pending: None,
+            reset_after_fall: true,
+            message: None,
+            resets: 0,
+        };
+        driver.update_pose();
+        Ok(driver)
+    }
+
+    fn update_pose(&mut self) {
+        let data = &self.sim.data;
+        let model = &self.sim.creature.model;
+        self.pose.joints.copy_from_slice(&data.q);
+        if model.free_base() {
+            self.pose.root.position = data.base_position;
+            self.pose.root.rotation = DMat3::from_quat(data.base_orientation.normalize());
+        } else {
+            // A planar base's leading slides move the whole creature: shown as
+            // root motion (the same world positions, and BVH root channels).
+            self.pose.root.position = self.start_root;
+            self.pose.root.rotation = DMat3::IDENTITY;
+            for (i, body) in model.bodies().iter().enumerate() {
+                let (BodyJoint::Prismatic(axis), Some(k)) = (body.joint, model.dof_of(i)) else {
+                    break;
+                };
+                let chained = body.parent.is_none_or(|p| p + 1 == i);
+                if !chained || body.mass > 0.0 || body.placement.rot != DMat3::IDENTITY {
+                    break;
+                }
+                self.pose.root.position += axis * data.q[k];
+                self.pose.joints[k] = 0.0;
+            }
+        }
+        let offset = usize::from(model.free_base());
+        for (e, out) in self.skeleton.effectors().iter().zip(&mut self.effectors) {
+            *out = data.point_world(e.joint + offset, e.offset);
+        }
+    }
+
+    /// The simulation (state, creature, contacts).
+    #[must_use]
+    pub fn sim(&self) -> &Sim {
+        &self.sim
+    }
+
+    /// The gait running.
+    #[must_use]
+    pub fn gait(&self) -> &str {
+        &self.gait
+    }
+
+    /// The physics parameters in use.
+    #[must_use]
+    pub fn params(&self) -> &PhysicsParams {
+        &self.params
+    }
+
+    /// The state machine's state.
+    #[must_use]
+    pub fn phase_name(&self) -> &'static str {
+        self.controller.phase_name()
+    }
+
+    /// The trunk of a free-floating creature as a capsule `(a, b, radius)` in
+    /// the world: along the long axis of the uniform box with the trunk's mass
+    /// and principal moments. `None` for a planar model (its trunk is a link).
+    #[must_use]
+    pub fn trunk_capsule(&self) -> Option<(DVec3, DVec3, f64)> {
+        let model = &self.sim.creature.model;
+        let body = model
+            .bodies()
+            .first()
+            .filter(|b| model.free_base() && b.mass > 0.0)?;
+        let i = body.inertia_com;
+        let (ix, iy, iz) = (i.x_axis.x, i.y_axis.y, i.z_axis.z);
+        let half = |a: f64, b: f64, c: f64| (6.0 * (b + c - a) / body.mass).max(0.0).sqrt() / 2.0;
+        let h = DVec3::new(half(ix, iy, iz), half(iy, ix, iz), half(iz, ix, iy));
+        let (axis, long, radius) = if h.x >= h.y && h.x >= h.z {
+            (DVec3::X, h.x, (h.y + h.z) / 2.0)
+        } else if h.y >= h.z {
+            (DVec3::Y, h.y, (h.x + h.z) / 2.0)
+        } else {
+            (DVec3::Z, h.z, (h.x + h.y) / 2.0)
+        };
+        let w = self.sim.data.world[0];
+        let centre = w.rot * body.com + w.pos;
+        let reach = w.rot * axis * (long - radius).max(0.0);
+        Some((centre - reach, centre + reach, radius))
+    }
+
+    /// A snapshot of the trunk, first leg, ground force and state for plots.
+    #[must_use]
+    pub fn probe(&self) -> PhysicsProbe {
+        let c = &self.sim.creature;
+        let d = &self.sim.data;
+        let err = crate::control::attitude::attitude_error(c, d, 0.0, 0.0);
+        let trunk = d.world[c.trunk];
+        let leg_length_m = c.legs.first().map_or(0.0, |leg| {
+            let hip = trunk.rot * leg.hip_in_trunk + trunk.pos;
+            (d.point_world(leg.foot_body, leg.foot_point) - hip).length()
+        });
+        let weight = c.model.total_mass() * crate::dynamics::model::GRAVITY_MPS2;
+        let force: f64 = self.sim.contacts.iter().map(|k| k.force.y).sum();
+        let name = self.controller.phase_name();
+        PhysicsProbe {
+            height_m: trunk.pos.y,
+            pitch_deg: err.x.to_degrees(),
+            roll_deg: err.z.to_degrees(),
+            leg_length_m,
+            ground_force_bw: force / weight,
+            phase_index: crate::control::Phase::ALL
+                .iter()
+                .position(|p| p.name() == name)
+                .unwrap_or(0),
+            speed_mps: crate::control::attitude::com_velocity(c, d).z,
+        }
+    }
+
+    /// The Table-2 figures since the last reset.
+    #[must_use]
+    pub fn summary(&self) -> GaitSummary {
+        self.recorder.summary()
+    }
+
+    /// Start the Table-2 figures afresh from now (no settling time): for
+    /// measuring after a speed change has settled.
+    pub fn clear_metrics(&mut self) {
+        let legs = self.sim.creature.legs.len();
+        self.recorder = GaitRecorder::new(
+            legs,
+            self.params.speed_mps * self.params.scale.sqrt(),
+            0.0,
+            self.sim.time,
+        );
+    }
+
+    /// Why the creature was last put back at the start (a blow-up or a fall),
+    /// until the next [`PhysicsDriver::take_message`].
+    #[must_use]
+    pub fn message(&self) -> Option<&str> {
+        self.message.as_deref()
+    }
+
+    /// Read and clear the message.
+    pub fn take_message(&mut self) -> Option<String> {
+        self.message.take()
+    }
+
+    /// How many times the creature was put back after a blow-up or a fall.
+    #[must_use]
+    pub fn resets(&self) -> u32 {
+        self.resets
+    }
+
+    /// Change the desired speed (m/s at scale 1) while running.
+    ///
+    /// # Errors
+    /// `speed_mps: reason` outside the preset's range
+    /// ([`gaitlab_core::preset::physics::check_speed_mps`]); nothing changes.
+    pub fn set_speed(&mut self, speed_mps: f64) -> Result<(), PresetError> {
+        check_speed_mps("speed_mps", speed_mps)?;
+        self.params.speed_mps = speed_mps;
+        self.controller.set_speed(speed_mps);
+        self.recorder.speed_desired_mps = speed_mps * self.params.scale.sqrt();
+        Ok(())
+    }
+
+    /// Change the desired hop height (m at scale 1) while running.
+    ///
+    /// # Errors
+    /// `hop_height_m: reason` outside the preset's range
+    /// ([`gaitlab_core::preset::physics::HOP_HEIGHT_RANGE_M`]); nothing changes.
+    pub fn set_hop_height(&mut self, height_m: f64) -> Result<(), PresetError> {
+        check_hop_height_m("hop_height_m", height_m)?;
+        self.params.hop_height_m = Some(height_m);
+        self.controller.set_hop_height(height_m);
+        Ok(())
+    }
+
+    /// The creature as a MuJoCo model (see [`crate::engine::mjcf`]): its springs and
+    /// hip torque limits as the controller sets them at the start.
+    #[must_use]
+    pub fn mjcf(&self, name: &str) -> String {
+        let mut probe = self.start.clone();
+        let mut controller = self.controller.clone();
+        // One step lets the controller set its springs and servos.
+        let _ = probe.step(&mut controller);
+        let creature = &probe.creature;
+        let mut spring_joints: Vec<usize> = creature.legs.iter().map(|l| l.spring).collect();
+        spring_joints.extend(&creature.tail);
+        let springs = spring_joints
+            .iter()
+            .map(|&k| {
+                let s = probe.drives[k].spring;
+                (k, s.stiffness, s.damping, s.rest)
+            })
+            .collect();
+        let hip_torque_limit = creature
+            .legs
+            .iter()
+            .flat_map(|l| l.hip.iter())
+            .map(|&k| probe.drives[k].spring.max_force)
+            .filter(|m| m.is_finite())
+            .fold(0.0, f64::max);
+        let options = crate::engine::mjcf::MjcfOptions {
+            name: name.to_owned(),
+            timestep_s: self.sim.options.dt,
+            root_position: if creature.model.free_base() {
+                self.start.data.base_position
+            } else {
+                DVec3::ZERO
+            },
+            springs,
+            hip_torque_limit: if hip_torque_limit > 0.0 {
+                hip_torque_limit
+            } else {
+                400.0 * self.params.scale.powi(4)
+            },
+            ground: self.sim.ground,
+        };
+        crate::engine::mjcf::to_mjcf(creature, &options)
+    }
+
+    /// The running controller's tunable gains.
+    #[must_use]
+    pub fn gains(&self) -> Vec<crate::world::sim::Gain> {
+        self.controller.gains()
+    }
+
+    /// Set one of [`PhysicsDriver::gains`] by name (finite, ≥ 0; no upper
+    /// limit: an absurd gain blows up and the guard resets the creature).
+    ///
+    /// # Errors
+    /// `gain.NAME: reason` for an unknown gain or a negative or non-finite value.
+    pub fn set_gain(&mut self, name: &str, value: f64) -> Result<(), String> {
+        if self.controller.set_gain(name, value) {
+            Ok(())
+        } else if self.controller.gains().iter().any(|g| g.name == name) {
+            Err(format!("gain.{name}: must be a finite number ≥ 0"))
+        } else {
+            let names: Vec<&str> = self.controller.gains().iter().map(|g| g.name).collect();
+            Err(format!(
+                "gain.{name}: no such gain (this controller has: {})",
+                names.join(", ")
+            ))
+        }
+    }
+
+    /// Change gait while running (the controller takes over from the current state).
+    ///
+    /// # Errors
+    /// The gait is not one of this model's.
+    pub fn set_gait(&mut self, gait: &str) -> Result<(), PresetError> {
+        let mut params = self.params.clone();
+        params.gait = Some(gait.to_owned());
+        let next = make_controller(&self.sim.creature, gait, &params)?;
+        match (&mut self.controller, next) {
+            // The trot asked for again runs on, keeping its state.
+            (GaitController::Quadruped(_), GaitController::Quadruped(_)) => {}
+            // Bound and gallop are one controller in two styles.
+            (GaitController::QuadrupedBound(running), GaitController::QuadrupedBound(fresh)) => {
+                running.set_style(fresh.style())
+            }
+            // Another state machine takes over at the next flight, when no
+            // foot is loaded and the body is falling toward a landing — the
+            // state every controller starts from.
+            (_, next) => self.pending = Some(next),
+        }
+        self.params = params;
+        self.gait = gait.to_owned();
+        Ok(())
+    }
+
+    /// Turn the desired heading toward `heading` (rad about +y; 0 = +z) at
+    /// [`TURN_RATE_RAD_S`]. Waypoints, if any, take over again at the next frame.
+    pub fn set_heading(&mut self, heading: f64) {
+        if heading.is_finite() {
+            self.heading_goal = heading;
+            self.params.waypoints.clear();
+        }
+    }
+
+    /// The desired heading now (rad).
+    #[must_use]
+    pub fn heading(&self) -> f64 {
+        self.heading
+    }
+
+    /// The next waypoint's index (equal to the count once all are reached).
+    #[must_use]
+    pub fn waypoint(&self) -> usize {
+        self.waypoint
+    }
+
+    /// Steer: aim at the next waypoint, and turn the heading toward its goal.
+    fn steer(&mut self, dt: f64) {
+        let l = self.params.scale;
+        if let Some(&[x, z]) = self.params.waypoints.get(self.waypoint) {
+            let com =
+                crate::dynamics::energy::center_of_mass(&self.sim.creature.model, &self.sim.data);
+            let to = DVec3::new(x * l - com.x, 0.0, z * l - com.z);
+            if to.length() < WAYPOINT_RADIUS_M * l {
+                self.waypoint += 1;
+            } else {
+                self.heading_goal = to.x.patan2(to.z);
+            }
+        }
+        let error = (self.heading_goal - self.heading + std::f64::consts::PI)
+            .rem_euclid(std::f64::consts::TAU)
+            - std::f64::consts::PI;
+        let step = TURN_RATE_RAD_S / l.sqrt() * dt;
+        if error.abs() > 1e-12 {
+            self.heading += error.clamp(-step, step);
+            self.controller.set_heading(self.heading);
+            if let Some(next) = self.pending.as_mut() {
+                next.set_heading(self.heading);
+            }
+        }
+    }
+
+    /// Hand over to a pending controller once the creature is in flight and falling.
+    fn take_over(&mut self) {
+        if self.pending.is_none() || self.sim.contacts.iter().any(|c| c.touching) {
+            return;
+        }
+        let trunk = self.sim.creature.trunk;
+        let vy = self.sim.data.point_velocity_world(trunk, DVec3::ZERO).y;
+        if vy < 0.0
+            && let Some(next) = self.pending.take()
+        {
+            self.controller = next;
+        }
+    }
+
+    /// Take `steps` integration steps with nothing recorded — the work a
+    /// benchmark times (contacts, control, actuators, dynamics, integration).
+    ///
+    /// # Errors
+    /// The blow-up, if one happens; the state is then not to be trusted.
+    pub fn run_steps(&mut self, steps: u32) -> Result<(), crate::world::sim::BlowUp> {
+        for _ in 0..steps {
+            self.sim.step(&mut self.controller)?;
+            self.take_over();
+        }
+        Ok(())
+    }
+
+    fn restart(&mut self, why: String) {
+        self.sim = self.start.clone();
+        let legs = self.sim.creature.legs.len();
+        self.recorder = GaitRecorder::new(
+            legs,
+            self.params.speed_mps * self.params.scale.sqrt(),
+            0.0,
+            3.0 * self.params.scale.sqrt(),
+        );
+        if let Ok(c) = make_controller(&self.sim.creature, &self.gait, &self.params) {
+            self.controller = c;
+        }
+        self.pending = None;
+        self.heading = 0.0;
+        self.heading_goal = 0.0;
+        self.waypoint = 0;
+        self.fell_at = None;
+        self.message = Some(why);
+        self.resets += 1;
+        self.update_pose();
+    }
+}
+
+impl Driver for PhysicsDriver {
+    fn step(&mut self, dt: f64) {
+        if !(dt.is_finite() && dt > 0.0) {
+            return;
+        }
+        self.steer(dt);
+        let mut stepped = 0;
+        let budget =
+            ((dt / self.sim.options.dt).ceil() as u32).min(self.sim.options.max_steps_per_advance);
+        let mut result = Ok(());
+        // The fixed-step loop, recording every step for the Table-2 figures.
+        self.sim.accumulate(dt);
+        while stepped < budget && self.sim.due() {
+            result = self.sim.step(&mut self.controller);
+            if result.is_err() {
+                break;
+            }
+            self.recorder.record(&self.sim);
+            self.take_over();
+            stepped += 1;
+        }
+        self.sim.settle_accumulator();
+        if let Err(blow_up) = result {
+            self.restart(format!("{blow_up}; the creature was put back at the start"));
+            return;
+        }
+        let summary_fell = self.recorder.fell();
+        match (summary_fell, self.fell_at) {
+            (true, None) => self.fell_at = Some(self.sim.time),
+            (true, Some(t))
+                if self.reset_after_fall
+                    && self.sim.time - t > FALL_RESET_S * self.params.scale.sqrt() =>
+            {
+                self.restart(format!(
+                    "the creature fell at t = {t:.2} s and was put back at the start"
+                ));
+                return;
+            }
+            _ => {}
+        }
+        self.update_pose();
+    }
+
+    fn time(&self) -> f64 {
+        self.sim.time
+    }
+
+    fn reset(&mut self) {
+        self.restart(String::new());
+        self.message = None;
+        self.resets = 0;
+    }
+
+    fn skeleton(&self) -> &Skeleton {
+        &self.skeleton
+    }
+
+    fn pose(&self) -> &Pose {
+        &self.pose
+    }
+
+    fn effector_positions(&self) -> &[DVec3] {
+        &self.effectors
+    }
+}

@@ -1,0 +1,283 @@
+//! The running figures of Raibert & Hodgins 1991, Table 2, measured from a
+//! simulation as it runs: stride length and duration, flight and stance
+//! durations, pitch and roll magnitudes, change of leg length during support,
+//! speed and its error, peak vertical acceleration, the friction the motion
+//! needed ("Modeling": max |f_t|/f_n over stance), and whether it fell.
+//!
+//! Feed it every step with [`GaitRecorder::record`]; read
+//! [`GaitRecorder::summary`]. Everything before `settle_s` is ignored.
+
+use glam::DVec3;
+
+use crate::control::attitude::{attitude_error, heading_forward};
+use crate::world::sim::Sim;
+
+/// One support period of one leg.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stance {
+    /// Touchdown time (s).
+    pub start_s: f64,
+    /// Lift-off time (s).
+    pub end_s: f64,
+    /// Hip-to-foot length at touchdown minus its minimum in stance (m).
+    pub leg_shortening_m: f64,
+}
+
+/// One period with every foot off the ground.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FlightPeriod {
+    /// Start (s).
+    pub start_s: f64,
+    /// End (s).
+    pub end_s: f64,
+    /// The leg whose lift-off began it.
+    pub last_leg: usize,
+}
+
+/// The Table-2 quantities of a run (means over the run after settling).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GaitSummary {
+    /// Whether the creature fell (trunk tilted past 60° or dropped below
+    /// 40 % of its leg length).
+    pub fell: bool,
+    /// Desired speed (m/s).
+    pub speed_desired_mps: f64,
+    /// Mean forward speed of the centre of mass along the heading (m/s).
+    pub speed_mean_mps: f64,
+    /// Mean time between successive touchdowns of the first leg (s).
+    pub stride_duration_s: f64,
+    /// Distance travelled in one stride (m).
+    pub stride_length_m: f64,
+    /// Mean duration of periods with no foot on the ground (s).
+    pub flight_duration_s: f64,
+    /// Mean stance duration over all legs (s).
+    pub stance_duration_s: f64,
+    /// Mean stance duration of each leg (s).
+    pub leg_stance_s: Vec<f64>,
+    /// Mean leg shortening during support over all legs (m).
+    pub leg_length_change_m: f64,
+    /// Mean per-stride peak-to-peak trunk pitch (deg).
+    pub pitch_magnitude_deg: f64,
+    /// Mean per-stride peak-to-peak trunk roll (deg).
+    pub roll_magnitude_deg: f64,
+    /// Largest total vertical ground force over body weight (g).
+    pub peak_vertical_accel_g: f64,
+    /// Largest |f_t| / f_n at any foot carrying ≥ 10 % of body weight.
+    pub friction_needed_max: f64,
+    /// Mean per-stride peak-to-peak angle of the tail's base joint relative
+    /// to the trunk (deg), for creatures with a tail.
+    pub tail_wag_deg: Option<f64>,
+    /// Every flight period after settling.
+    pub flights: Vec<FlightPeriod>,
+    /// Every stance after settling, per leg.
+    pub stances: Vec<Vec<Stance>>,
+}
+
+/// Accumulates a run's events.
+#[derive(Clone, Debug)]
+pub struct GaitRecorder {
+    /// Seconds ignored at the start.
+    pub settle_s: f64,
+    /// Desired speed (m/s) and heading (rad) the run is judged against.
+    pub speed_desired_mps: f64,
+    /// Desired heading (rad).
+    pub heading: f64,
+    touching: Vec<bool>,
+    open_stance: Vec<Option<(f64, f64, f64)>>,
+    stances: Vec<Vec<Stance>>,
+    flights: Vec<FlightPeriod>,
+    flight_start: Option<(f64, usize)>,
+    touchdowns: Vec<(f64, DVec3)>,
+    pitch_range: (f64, f64),
+    roll_range: (f64, f64),
+    pitch_spans: Vec<f64>,
+    roll_spans: Vec<f64>,
+    tail_range: (f64, f64),
+    tail_spans: Vec<f64>,
+    start: Option<(f64, DVec3)>,
+    last: (f64, DVec3),
+    fell: bool,
+    peak_accel: f64,
+    friction: f64,
+}
+
+impl GaitRecorder {
+    /// A recorder for `legs` legs judged against a desired speed and heading.
+    #[must_use]
+    pub fn new(legs: usize, speed_desired_mps: f64, heading: f64, settle_s: f64) -> Self {
+        Self {
+            settle_s,
+            speed_desired_mps,
+            heading,
+            touching: vec![false; legs],
+            open_stance: vec![None; legs],
+            stances: vec![Vec::new(); legs],
+            flights: Vec::new(),
+            flight_start: None,
+            touchdowns: Vec::new(),
+            pitch_range: (f64::INFINITY, f64::NEG_INFINITY),
+            roll_range: (f64::INFINITY, f64::NEG_INFINITY),
+            pitch_spans: Vec::new(),
+            roll_spans: Vec::new(),
+            tail_range: (f64::INFINITY, f64::NEG_INFINITY),
+            tail_spans: Vec::new(),
+            start: None,
+            last: (0.0, DVec3::ZERO),
+            fell: false,
+            peak_accel: 0.0,
+            friction: 0.0,
+        }
+    }
+
+    /// Record the state after a step.
+    pub fn record(&mut self, sim: &Sim) {
+        let t = sim.time;
+        let c = &sim.creature;
+        let d = &sim.data;
+        let com = crate::dynamics::energy::center_of_mass(&c.model, d);
+        let err = attitude_error(c, d, self.heading, 0.0);
+        let fwd = heading_forward(self.heading);
+        let lateral = DVec3::Y.cross(fwd);
+        let pitch = err.dot(lateral).to_degrees();
+        let roll = err.dot(fwd).to_degrees();
+        let reach = c
+            .legs
+            .first()
+            .map_or(1.0, |l| l.foot_point.length() + l.hip_in_trunk.length());
+        let trunk_y = d.world[c.trunk].pos.y;
+        if pitch.abs() > 60.0 || roll.abs() > 60.0 || trunk_y < 0.4 * reach.min(1.0 * c.scale) {
+            self.fell = true;
+        }
+        let settled = t >= self.settle_s;
+        if settled && self.start.is_none() {
+            self.start = Some((t, com));
+        }
+        self.last = (t, com);
+        let weight = c.model.total_mass() * crate::dynamics::model::GRAVITY_MPS2;
+        let mut vertical = 0.0;
+        for (i, (leg, contact)) in c.legs.iter().zip(&sim.contacts).enumerate() {
+            vertical += contact.force.y;
+            let hip = d.world[c.trunk].rot * leg.hip_in_trunk + d.world[c.trunk].pos;
+            let length = (contact.position - hip).length();
+            if contact.touching && contact.force.y > 0.1 * weight && settled {
+                let ft = DVec3::new(contact.force.x, 0.0, contact.force.z).length();
+                self.friction = self.friction.max(ft / contact.force.y);
+            }
+            match (self.touching[i], contact.touching) {
+                (false, true) => {
+                    self.open_stance[i] = Some((t, length, length));
+                    if i == 0 {
+                        self.close_stride(t, com, settled);
+                    }
+                }
+                (true, true) => {
+                    if let Some(s) = &mut self.open_stance[i] {
+                        s.2 = s.2.min(length);
+                    }
+                }
+                (true, false) => {
+                    if let Some((start, at_td, min)) = self.open_stance[i].take()
+                        && settled
+                        && start >= self.settle_s
+                    {
+                        self.stances[i].push(Stance {
+                            start_s: start,
+                            end_s: t,
+                            leg_shortening_m: at_td - min,
+                        });
+                    }
+                    if sim.contacts.iter().all(|c| !c.touching) {
+                        self.flight_start = Some((t, i));
+                    }
+                }
+                (false, false) => {}
+            }
+            self.touching[i] = contact.touching;
+        }
+        if sim.contacts.iter().any(|c| c.touching)
+            && let Some((start, leg)) = self.flight_start.take()
+            && start >= self.settle_s
+        {
+            self.flights.push(FlightPeriod {
+                start_s: start,
+                end_s: t,
+                last_leg: leg,
+            });
+        }
+        if settled {
+            self.peak_accel = self.peak_accel.max(vertical / weight);
+            self.pitch_range = (self.pitch_range.0.min(pitch), self.pitch_range.1.max(pitch));
+            self.roll_range = (self.roll_range.0.min(roll), self.roll_range.1.max(roll));
+            if let Some(&k) = c.tail.first() {
+                let tail = d.q[k].to_degrees();
+                self.tail_range = (self.tail_range.0.min(tail), self.tail_range.1.max(tail));
+            }
+        }
+    }
+
+    fn close_stride(&mut self, t: f64, com: DVec3, settled: bool) {
+        if settled {
+            self.touchdowns.push((t, com));
+            if self.pitch_range.0.is_finite() && self.touchdowns.len() > 1 {
+                self.pitch_spans
+                    .push(self.pitch_range.1 - self.pitch_range.0);
+                self.roll_spans.push(self.roll_range.1 - self.roll_range.0);
+                if self.tail_range.0.is_finite() {
+                    self.tail_spans.push(self.tail_range.1 - self.tail_range.0);
+                }
+            }
+        }
+        self.tail_range = (f64::INFINITY, f64::NEG_INFINITY);
+        self.pitch_range = (f64::INFINITY, f64::NEG_INFINITY);
+        self.roll_range = (f64::INFINITY, f64::NEG_INFINITY);
+    }
+
+    /// Whether the creature has fallen since the recorder started.
+    #[must_use]
+    pub fn fell(&self) -> bool {
+        self.fell
+    }
+
+    /// The run's figures so far.
+    #[must_use]
+    pub fn summary(&self) -> GaitSummary {
+        let mean = |xs: &mut dyn Iterator<Item = f64>| {
+            let (s, n) = xs.fold((0.0, 0usize), |(s, n), x| (s + x, n + 1));
+            if n == 0 { 0.0 } else { s / n as f64 }
+        };
+        let fwd = heading_forward(self.heading);
+        let speed = match self.start {
+            Some((t0, c0)) if self.last.0 > t0 => (self.last.1 - c0).dot(fwd) / (self.last.0 - t0),
+            _ => 0.0,
+        };
+        let strides: Vec<(f64, f64)> = self
+            .touchdowns
+            .windows(2)
+            .map(|w| (w[1].0 - w[0].0, (w[1].1 - w[0].1).dot(fwd)))
+            .collect();
+        let all_stances = || self.stances.iter().flatten();
+        GaitSummary {
+            fell: self.fell,
+            speed_desired_mps: self.speed_desired_mps,
+            speed_mean_mps: speed,
+            stride_duration_s: mean(&mut strides.iter().map(|s| s.0)),
+            stride_length_m: mean(&mut strides.iter().map(|s| s.1)),
+            flight_duration_s: mean(&mut self.flights.iter().map(|f| f.end_s - f.start_s)),
+            stance_duration_s: mean(&mut all_stances().map(|s| s.end_s - s.start_s)),
+            leg_stance_s: self
+                .stances
+                .iter()
+                .map(|v| mean(&mut v.iter().map(|s| s.end_s - s.start_s)))
+                .collect(),
+            leg_length_change_m: mean(&mut all_stances().map(|s| s.leg_shortening_m)),
+            pitch_magnitude_deg: mean(&mut self.pitch_spans.iter().copied()),
+            roll_magnitude_deg: mean(&mut self.roll_spans.iter().copied()),
+            peak_vertical_accel_g: self.peak_accel,
+            friction_needed_max: self.friction,
+            tail_wag_deg: (!self.tail_spans.is_empty())
+                .then(|| mean(&mut self.tail_spans.iter().copied())),
+            flights: self.flights.clone(),
+            stances: self.stances.clone(),
+        }
+    }
+}
