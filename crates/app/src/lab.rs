@@ -448,9 +448,8 @@ impl Lab {
         self.creature.scenario.engine
     }
 
-    /// Switches engine by loading the matching bundled creature: the thesis
-    /// human and the PODA biped share a skeleton, as do the IK and PODA
-    /// quadrupeds; other creatures go to the human or the PODA quadruped.
+    /// Switches engine by loading the matching bundled creature (the engine
+    /// layer's [`gaitlab_engine::bundled_for_engine`]).
     ///
     /// # Errors
     /// If the matching preset cannot be loaded; nothing changes.
@@ -458,16 +457,7 @@ impl Lab {
         if engine == self.engine() {
             return Ok(());
         }
-        let name = match (engine, self.creature.name.as_str()) {
-            (Engine::Poda, "human" | "raibert-biped" | "raibert-kangaroo") => "poda-biped",
-            (Engine::Poda, _) => "poda-quadruped",
-            (Engine::Ik, "poda-quadruped" | "raibert-quadruped") => "ik-quadruped",
-            (Engine::Ik, _) => "human",
-            (Engine::Physics, "poda-quadruped" | "ik-quadruped" | "hexapod" | "insect-14") => {
-                "raibert-quadruped"
-            }
-            (Engine::Physics, _) => "raibert-biped",
-        };
+        let name = gaitlab_engine::bundled_for_engine(engine, &self.creature.name);
         self.set_preset(name)
     }
 
