@@ -20,6 +20,7 @@ mod bvh;
 mod bvh_fk;
 mod bvh_reader;
 mod bvh_writer;
+mod csv_error;
 mod pose_csv;
 mod rotation;
 mod target_csv;
@@ -31,11 +32,9 @@ pub use bvh::{Bvh, BvhChannel, BvhJoint, MAX_BVH_CHANNELS_PER_JOINT, MAX_BVH_JOI
 pub use bvh_fk::BvhKinematics;
 pub use bvh_reader::{BvhError, parse_bvh};
 pub use bvh_writer::{BVH_ROOT_NAME, BvhOptions, BvhWriter, bvh_string, write_bvh};
+pub use csv_error::CsvError;
 pub use pose_csv::{PoseCsvColumns, PoseCsvWriter};
 pub use rotation::{euler_zxy, from_euler_zxy, from_rotation_vector, rotation_vector};
-pub use target_csv::{
-    CsvError, MAX_TARGET_CSV_BYTES, MAX_TARGET_ROWS, TargetCsvWriter, parse_target_csv,
-    write_target_csv,
-};
-pub use target_track::TargetTrack;
+pub use target_csv::{MAX_TARGET_CSV_BYTES, TargetCsvWriter, parse_target_csv, write_target_csv};
+pub use target_track::{MAX_TARGET_ROWS, TargetTrack};
 pub use write_error::WriteError;

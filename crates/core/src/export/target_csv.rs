@@ -4,70 +4,17 @@
 //!
 //! The format is described on [`parse_target_csv`].
 
-use std::fmt::{self, Write};
+use std::fmt::Write;
 
 use glam::DVec3;
 
-use super::TargetTrack;
 use super::WriteError;
+use super::csv_error::CsvError;
+use super::target_track::{MAX_TARGET_ROWS, TargetTrack};
 use super::text::{CsvFields, write_round_trip, write_suffixed_field};
 
 /// Largest target CSV text accepted, bytes (64 MiB).
 pub const MAX_TARGET_CSV_BYTES: usize = 64 * 1024 * 1024;
-/// Most data rows (not counting the header) a target track may have.
-pub const MAX_TARGET_ROWS: usize = 1_000_000;
-
-/// Why a target CSV (or a [`TargetTrack`]) was refused. Shown as
-/// `line 7, column 4: reason`, `line 7: reason` or just `reason`.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct CsvError {
-    /// 1-based line of the problem, if it is on one line.
-    pub line: Option<usize>,
-    /// 1-based column (field) of the problem, if it is in one field.
-    pub column: Option<usize>,
-    /// What is wrong.
-    pub reason: String,
-}
-
-impl CsvError {
-    fn at(line: usize, column: usize, reason: impl Into<String>) -> Self {
-        Self {
-            line: Some(line),
-            column: Some(column),
-            reason: reason.into(),
-        }
-    }
-
-    fn on_line(line: usize, reason: impl Into<String>) -> Self {
-        Self {
-            line: Some(line),
-            column: None,
-            reason: reason.into(),
-        }
-    }
-
-    pub(crate) fn detached(reason: impl Into<String>) -> Self {
-        Self {
-            line: None,
-            column: None,
-            reason: reason.into(),
-        }
-    }
-}
-
-impl fmt::Display for CsvError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match (self.line, self.column) {
-            (Some(line), Some(column)) => {
-                write!(f, "line {line}, column {column}: {}", self.reason)
-            }
-            (Some(line), None) => write!(f, "line {line}: {}", self.reason),
-            _ => f.write_str(&self.reason),
-        }
-    }
-}
-
-impl std::error::Error for CsvError {}
 
 /// Reads a target CSV for a skeleton with `effector_count` effectors.
 ///

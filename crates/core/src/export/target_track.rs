@@ -4,8 +4,10 @@
 
 use glam::DVec3;
 
-use super::CsvError;
-use super::target_csv::MAX_TARGET_ROWS;
+use super::csv_error::CsvError;
+
+/// Most data rows (not counting the header) a target track may have.
+pub const MAX_TARGET_ROWS: usize = 1_000_000;
 
 /// Effector targets over time. Invariants (checked by [`TargetTrack::new`]):
 /// at least one row, times finite and strictly increasing, every position
