@@ -11,10 +11,14 @@ mod options;
 mod pinv;
 mod sdls;
 mod solver;
+mod status;
 mod svd;
+mod targets;
 mod transpose;
 
 pub use eigen::{NoConvergence, SymmetricEigen};
 pub use options::{IkOptions, JointWeight, Method};
-pub use solver::{IkSolver, IkStatus, Targets};
+pub use solver::IkSolver;
+pub use status::IkStatus;
 pub use svd::ThinSvd;
+pub use targets::Targets;

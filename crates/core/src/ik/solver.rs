@@ -12,7 +12,7 @@
 //! Weights: a multiply weight wⱼ scales column j (Δθ = W Δφ with Δφ solved for
 //! J W), so every method sees it; an add weight is added to the joint's step.
 
-use glam::{DMat3, DQuat, DVec3};
+use glam::{DQuat, DVec3};
 use nalgebra::DMatrix;
 
 use super::ccd::CcdWorkspace;
@@ -22,51 +22,10 @@ use super::pinv::{filtered_step, pinv_step};
 use super::sdls::{SdlsWorkspace, clamp_max_abs};
 use super::svd::ThinSvd;
 use super::transpose::transpose_step;
-use super::{IkOptions, JointWeight, Method};
+use super::{IkOptions, IkStatus, JointWeight, Method, Targets};
 use crate::jacobian::fill_jacobian;
 use crate::skeleton::TaskBlock;
 use crate::{Kinematics, RootTransform, Skeleton};
-
-/// Targets for every effector: a position, and an orientation used only by
-/// effectors with orientation rows.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Targets {
-    /// Target position per effector, world metres.
-    pub position: Vec<DVec3>,
-    /// Target orientation per effector; effectors without an entry here (or
-    /// without orientation rows) get no orientation error.
-    pub rotation: Vec<DMat3>,
-}
-
-impl Targets {
-    /// Targets at the effectors' current positions and orientations.
-    #[must_use]
-    pub fn at(kinematics: &Kinematics) -> Self {
-        Self {
-            position: kinematics.effector_position.clone(),
-            rotation: kinematics.effector_rotation.clone(),
-        }
-    }
-}
-
-/// What one iteration saw and did.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct IkStatus {
-    /// Largest effector position error before the step, metres.
-    pub max_error_m: f64,
-    /// Root-mean-square effector position error before the step, metres.
-    pub rms_error_m: f64,
-    /// Largest absolute joint change applied, radians (or metres).
-    pub max_step: f64,
-    /// Joints held at a limit in this iteration.
-    pub clamped_joints: usize,
-    /// Numerical rank of the (weighted) Jacobian; 0 for the transpose method.
-    pub rank: usize,
-    /// Linear solves this iteration: 1, plus one per clamp-and-re-solve pass.
-    pub solves: usize,
-    /// Whether the linear algebra failed (non-finite input); no step was taken.
-    pub failed: bool,
-}
 
 /// A Jacobian IK solver that keeps its workspace between calls: after the
 /// first iteration, iterating allocates nothing.
