@@ -8,9 +8,10 @@ use std::collections::HashMap;
 
 use glam::{DMat3, DQuat, DVec3};
 
+use super::limits::MAX_PRESET_BYTES;
 use super::poda::PodaLegSpec;
 use super::scenario::{Engine, Scenario};
-use super::schema::{MAX_PRESET_BYTES, Preset};
+use super::schema::Preset;
 use super::validate::{self, Purpose, Unit};
 use super::{PresetError, ROOT_PATH};
 use crate::skeleton::{DhJoint, DhLimb};

@@ -16,6 +16,7 @@ mod bundled;
 mod error;
 #[cfg(feature = "schema")]
 mod json_schema;
+mod limits;
 pub mod physics;
 pub mod poda;
 mod scenario;
@@ -28,6 +29,7 @@ pub use bundled::{DEFAULT_PRESET, bundled, bundled_json, bundled_names, load_bun
 pub use error::{PresetError, ROOT_PATH};
 #[cfg(feature = "schema")]
 pub use json_schema::{SCHEMA_ID, SCHEMA_TITLE, preset_schema, preset_schema_text};
+pub use limits::{MAX_EFFECTORS, MAX_JOINTS, MAX_LIMBS, MAX_NAME_CHARS, MAX_PRESET_BYTES};
 pub use physics::{
     MassSpec, ObstacleSpec, PhysicsBase, PhysicsBodySpec, PhysicsLegSpec, PhysicsModel,
     PhysicsParams,
@@ -35,8 +37,8 @@ pub use physics::{
 pub use poda::{PathKindSpec, PathSpec, PodaLegSpec, PodaParams, check_transfer_keys};
 pub use scenario::{DEFAULT_FPS, Engine, MAX_FPS, Scenario};
 pub use schema::{
-    DhJointSpec, EffectorSpec, FORMAT, Format, JointSpec, JointType, LimbSpec, MAX_EFFECTORS,
-    MAX_JOINTS, MAX_LIMBS, MAX_NAME_CHARS, MAX_PRESET_BYTES, Preset, RootSpec, SkeletonSpec,
+    DhJointSpec, EffectorSpec, FORMAT, Format, JointSpec, JointType, LimbSpec, Preset, RootSpec,
+    SkeletonSpec,
 };
 pub use validate::{
     MAX_FREQUENCY_HZ, MAX_ITERATIONS_PER_FRAME, MAX_SLOWDOWN, MAX_SPEED_MPS, MAX_START_RAMP_S,

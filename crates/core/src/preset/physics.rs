@@ -13,6 +13,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::PresetError;
+use super::limits::MAX_LIMBS;
 
 /// Smallest and largest dynamic scale factor L.
 pub const SCALE_RANGE: (f64, f64) = (0.05, 20.0);
@@ -302,10 +303,10 @@ impl PhysicsParams {
             }
             body.mass.check(&p)?;
         }
-        if self.legs.is_empty() || self.legs.len() > super::MAX_LIMBS {
+        if self.legs.is_empty() || self.legs.len() > MAX_LIMBS {
             return Err(PresetError::new(
                 at("legs"),
-                format!("must list 1 to {} legs", super::MAX_LIMBS),
+                format!("must list 1 to {} legs", MAX_LIMBS),
             ));
         }
         for (i, leg) in self.legs.iter().enumerate() {

@@ -21,21 +21,6 @@ use crate::JointKind;
 /// The `format` tag this version of gaitlab reads and writes.
 pub const FORMAT: &str = "gaitlab-preset/1";
 
-/// Largest accepted preset, bytes (DESIGN.md input limits: 256 KiB).
-pub const MAX_PRESET_BYTES: usize = 256 * 1024;
-
-/// Most joints in a preset, counting limb joints (DESIGN.md input limits).
-pub const MAX_JOINTS: usize = 512;
-
-/// Most end effectors in a preset, counting limb effectors (DESIGN.md input limits).
-pub const MAX_EFFECTORS: usize = 32;
-
-/// Most DH limbs in a preset (DESIGN.md: ≤ 32 legs).
-pub const MAX_LIMBS: usize = 32;
-
-/// Longest joint, effector, limb or preset name, characters.
-pub const MAX_NAME_CHARS: usize = 64;
-
 /// The format tag: only `"gaitlab-preset/1"` exists.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]

@@ -14,12 +14,10 @@ use std::f64::consts::{PI, TAU};
 use glam::DVec3;
 
 use super::PresetError;
+use super::limits::{MAX_EFFECTORS, MAX_JOINTS, MAX_LIMBS, MAX_NAME_CHARS};
 use super::poda::PodaParams;
 use super::scenario::{Engine, MAX_FPS};
-use super::schema::{
-    DhJointSpec, JointType, MAX_EFFECTORS, MAX_JOINTS, MAX_LIMBS, MAX_NAME_CHARS, Preset,
-    SkeletonSpec,
-};
+use super::schema::{DhJointSpec, JointType, Preset, SkeletonSpec};
 use super::thesis::{CycleShape, ThesisParams};
 use crate::ik::IkOptions;
 
