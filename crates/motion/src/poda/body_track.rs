@@ -22,8 +22,8 @@ use std::collections::VecDeque;
 
 use glam::DVec2;
 
-use super::driver::GroundPose;
 use super::gait::GaitParams;
+use super::ground_pose::GroundPose;
 use super::path::BodyPath;
 
 /// Options of the horizontal and yaw dynamics.

@@ -23,12 +23,13 @@ use gaitlab_core::driver::{Driver, IkFrameReport};
 use gaitlab_core::ik::Targets;
 use gaitlab_core::preset::{Creature, PathSpec, PodaParams, check_transfer_keys};
 use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
-use glam::{DMat3, DVec2, DVec3};
+use glam::{DVec2, DVec3};
 
 use super::body_track::{BodyDynamics, BodyTrack};
 use super::gait::{Derived, GaitError, GaitParams, LegPhase};
 use super::gait_metrics::GaitMetrics;
 use super::gaits::{gait_names, named_gait};
+use super::ground_pose::GroundPose;
 use super::leg_ik::{LegIk, LegIkOptions};
 use super::path::BodyPath;
 use super::spline::eval_open;
@@ -42,39 +43,6 @@ const DEFAULT_PATH_M: f64 = 1000.0;
 const CENTRE_SAMPLES: u32 = 240;
 /// IK iterations per leg when a reset settles the pose.
 const RESET_ITERATIONS: usize = 60;
-
-/// The body's pose on the ground plane: position `(x, z)` and yaw (0 faces +z).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct GroundPose {
-    /// Position `(x, z)`, metres.
-    pub position: DVec2,
-    /// Heading, radians (0 faces +z, positive turns toward +x).
-    pub yaw_rad: f64,
-}
-
-impl GroundPose {
-    /// Rotation from the body frame to the world.
-    #[must_use]
-    pub fn rotation(self) -> DMat3 {
-        DMat3::from_rotation_y(self.yaw_rad)
-    }
-
-    fn origin(self) -> DVec3 {
-        DVec3::new(self.position.x, 0.0, self.position.y)
-    }
-
-    /// A body-frame point in the world.
-    #[must_use]
-    pub fn to_world(self, p: DVec3) -> DVec3 {
-        self.origin() + self.rotation() * p
-    }
-
-    /// A world point in the body frame.
-    #[must_use]
-    pub fn to_body(self, p: DVec3) -> DVec3 {
-        self.rotation().transpose() * (p - self.origin())
-    }
-}
 
 /// A leg of the creature.
 #[derive(Clone, Debug)]

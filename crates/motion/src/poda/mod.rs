@@ -8,14 +8,16 @@ pub mod driver;
 pub mod gait;
 pub mod gait_metrics;
 pub mod gaits;
+pub mod ground_pose;
 pub mod leg_ik;
 pub mod path;
 pub mod spline;
 
 pub use body_track::{BodyDynamics, BodyState, BodyTrack};
-pub use driver::{GroundPose, PodaDriver};
+pub use driver::PodaDriver;
 pub use gait::{Derived, GaitError, GaitParams, LegPhase};
 pub use gait_metrics::{GaitMetrics, LegMetrics};
 pub use gaits::{gait_names, named_gait};
+pub use ground_pose::GroundPose;
 pub use leg_ik::{LegIk, LegIkOptions};
 pub use path::{BodyPath, PathError, PathKind, PathSample};
