@@ -32,6 +32,8 @@ mod web_codecs;
 #[cfg(target_arch = "wasm32")]
 mod web_download;
 #[cfg(target_arch = "wasm32")]
+mod web_encoder;
+#[cfg(target_arch = "wasm32")]
 mod web_file;
 #[cfg(target_arch = "wasm32")]
 mod web_media_recorder;

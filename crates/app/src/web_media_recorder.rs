@@ -13,7 +13,7 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
 use crate::web_download::offer_blob;
-use crate::web_video::{BITS_PER_SECOND, describe};
+use crate::web_encoder::{BITS_PER_SECOND, describe};
 
 /// Container and codec choices, best first.
 const MIME_TYPES: [&str; 4] = [

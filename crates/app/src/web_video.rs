@@ -21,26 +21,11 @@ use wasm_bindgen::prelude::*;
 
 use crate::web_codecs::{self, CodecEncoder};
 use crate::web_download::offer_blob;
+use crate::web_encoder::describe;
 use crate::web_media_recorder::MediaSink;
 
 /// Background of the letterbox around a view whose aspect differs from the frame's.
 const LETTERBOX: &str = "#15171c";
-
-/// Bit rate asked of either encoder, bits per second.
-pub(crate) const BITS_PER_SECOND: u32 = 8_000_000;
-
-/// A thrown JS value as text: itself if a string, else its `message` (an
-/// `Error`, a `DOMException`), else its debug form.
-pub(crate) fn describe(error: &JsValue) -> String {
-    error
-        .as_string()
-        .or_else(|| {
-            js_sys::Reflect::get(error, &"message".into())
-                .ok()
-                .and_then(|m| m.as_string())
-        })
-        .unwrap_or_else(|| format!("{error:?}"))
-}
 
 type FrameLoop = Rc<RefCell<Option<Closure<dyn FnMut()>>>>;
 
