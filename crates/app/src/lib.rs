@@ -13,6 +13,7 @@ pub mod editor;
 pub mod history;
 pub mod lab;
 mod lab_compare;
+mod lab_editor;
 pub mod link;
 pub mod link_state;
 pub mod memory;
