@@ -76,6 +76,18 @@ pub fn share(ui: &mut egui::Ui, lab: &mut Lab) {
     }
 }
 
+impl Lab {
+    /// Shows the full-state link under the Share row, as "Copy link" does but
+    /// without touching the clipboard (the `show_link` command), or hides it.
+    ///
+    /// # Errors
+    /// Why the link could not be made.
+    pub fn show_link(&mut self, show: bool) -> Result<(), String> {
+        self.shown_link = if show { Some(self.share_link()?) } else { None };
+        Ok(())
+    }
+}
+
 /// The preset editor window, when open.
 pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
     if !lab.editor.open {

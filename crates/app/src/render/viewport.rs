@@ -233,6 +233,36 @@ impl Projector {
     }
 }
 
+/// The figure's box on screen, `[x, y, width, height]` in the units of
+/// `rect` (a view rectangle `[x, y, width, height]`, e.g. physical pixels):
+/// the smallest rectangle holding every bone and sphere of `scene` (each with
+/// its radius) seen through `camera`. `None` without a figure, or when part of
+/// it is behind the near plane (then it is not wholly in view).
+#[must_use]
+pub fn figure_box(scene: &Scene, camera: &Camera, rect: [f32; 4]) -> Option<[f32; 4]> {
+    let [x, y, width, height] = rect;
+    if width.is_nan() || height.is_nan() || width < 1.0 || height < 1.0 {
+        return None;
+    }
+    let projector = Projector::new(
+        Rect::from_min_size(Pos2::new(x, y), egui::vec2(width, height)),
+        camera,
+    );
+    let balls = scene
+        .capsules()
+        .iter()
+        .flat_map(|c| [(c.a, c.radius), (c.b, c.radius)])
+        .chain(scene.spheres().iter().map(|s| (s.centre, s.radius)));
+    let mut out: Option<Rect> = None;
+    for (centre, radius) in balls {
+        let (at, w) = projector.point(Vec3::from_array(centre))?;
+        let r = projector.radius(radius, w);
+        let ball = Rect::from_center_size(at, egui::vec2(2.0 * r, 2.0 * r));
+        out = Some(out.map_or(ball, |b| b.union(ball)));
+    }
+    out.map(|b| [b.min.x, b.min.y, b.width(), b.height()])
+}
+
 /// The scene as egui shapes: background, ground grid, bones and spheres sorted
 /// far to near, then segments. Used when wgpu is not available; allocates
 /// (this is not the hot path).
