@@ -472,10 +472,7 @@ impl Lab {
                     "duty_factor": gait.duty_factor(),
                     "speed_mps": gait.speed_mps(),
                     "stroke_m": gait.stroke_m(),
-                    "leg_force_n": gait.leg_force_for_balance_n(
-                        driver.params().body_mass_kg,
-                        gaitlab_motion::poda::driver::GRAVITY_MPS2,
-                    ),
+                    "leg_force_n": driver.leg_force_n(),
                     "support_s": gait.support_s(),
                     "transfer_s": gait.transfer_s(),
                     "phases": gait.phases(),
@@ -494,6 +491,7 @@ impl Lab {
                 |c| c.config.views.iter().map(|m| m.name()).collect(),
             ),
             "compare": self.compare_state(),
+            "metrics": self.run_metrics(),
             "paused": self.paused,
             "frame": self.frame,
             "time_s": self.driver.time(),
@@ -556,5 +554,23 @@ impl Lab {
             "last_error": self.last_error,
         })
         .to_string()
+    }
+
+    /// The figures `gaitlab run --json` prints, for the run since the last
+    /// reset: the engine layer's one metrics type. Wall-time fields come from
+    /// the page's smoothed time per frame; `within_limits` is the current pose's.
+    fn run_metrics(&self) -> gaitlab_engine::RunMetrics {
+        let frames = usize::try_from(self.frame).unwrap_or(usize::MAX);
+        let step_ms = self.sim_us_per_frame * self.frame as f64 / 1e3;
+        let within_limits =
+            gaitlab_engine::metrics::pose_within_limits(self.driver.skeleton(), self.driver.pose());
+        let timing = gaitlab_engine::Timing {
+            frames,
+            step_ms,
+            wall_ms: step_ms,
+            within_limits,
+        };
+        gaitlab_engine::RunMetrics::of(&self.creature.name, &self.driver, &timing)
+            .with_fps(1.0 / self.frame_seconds())
     }
 }

@@ -448,9 +448,8 @@ impl Lab {
         self.creature.scenario.engine
     }
 
-    /// Switches engine by loading the matching bundled creature: the thesis
-    /// human and the PODA biped share a skeleton, as do the IK and PODA
-    /// quadrupeds; other creatures go to the human or the PODA quadruped.
+    /// Switches engine by loading the matching bundled creature (the engine
+    /// layer's [`gaitlab_engine::bundled_for_engine`]).
     ///
     /// # Errors
     /// If the matching preset cannot be loaded; nothing changes.
@@ -458,16 +457,7 @@ impl Lab {
         if engine == self.engine() {
             return Ok(());
         }
-        let name = match (engine, self.creature.name.as_str()) {
-            (Engine::Poda, "human" | "raibert-biped" | "raibert-kangaroo") => "poda-biped",
-            (Engine::Poda, _) => "poda-quadruped",
-            (Engine::Ik, "poda-quadruped" | "raibert-quadruped") => "ik-quadruped",
-            (Engine::Ik, _) => "human",
-            (Engine::Physics, "poda-quadruped" | "ik-quadruped" | "hexapod" | "insect-14") => {
-                "raibert-quadruped"
-            }
-            (Engine::Physics, _) => "raibert-biped",
-        };
+        let name = gaitlab_engine::bundled_for_engine(engine, &self.creature.name);
         self.set_preset(name)
     }
 
@@ -507,21 +497,8 @@ impl Lab {
     pub fn edit_gait(&mut self, key: &str, value: f64) -> Result<(), String> {
         if let Some(driver) = self.driver.physics_mut() {
             return match key {
-                "speed_mps" => {
-                    let max = gaitlab_core::preset::physics::MAX_PHYSICS_SPEED_MPS;
-                    if !(value.is_finite() && value.abs() <= max) {
-                        return Err(format!("speed_mps: must be within ±{max} m/s"));
-                    }
-                    driver.set_speed(value);
-                    Ok(())
-                }
-                "hop_height_m" => {
-                    if !(value.is_finite() && (0.0..=0.5).contains(&value)) {
-                        return Err("hop_height_m: must be a height in [0, 0.5] m".to_owned());
-                    }
-                    driver.set_hop_height(value);
-                    Ok(())
-                }
+                "speed_mps" => driver.set_speed(value).map_err(|e| e.to_string()),
+                "hop_height_m" => driver.set_hop_height(value).map_err(|e| e.to_string()),
                 _ => Err(format!(
                     "{key}: engine physics has no such gait value (speed_mps, hop_height_m)"
                 )),
@@ -533,16 +510,19 @@ impl Lab {
                 self.creature.scenario.engine.name()
             ));
         };
-        let mass_kg = driver.params().body_mass_kg;
+        if key == "leg_force_n" {
+            let derived = driver
+                .set_leg_force_n(value)
+                .map_err(|e| GaitError::new(key, e.reason).to_string())?;
+            self.gait_derived = derived.derived.to_vec();
+            return Ok(());
+        }
         let gait = driver.gait_mut();
         let derived = match key {
             "period_s" => gait.set_period(value),
             "duty_factor" => gait.set_duty_factor(value),
             "speed_mps" => gait.set_speed(value),
             "stroke_m" => gait.set_stroke(value),
-            "leg_force_n" => gait
-                .set_leg_force(value, mass_kg, gaitlab_motion::poda::driver::GRAVITY_MPS2)
-                .map_err(|e| GaitError::new(key, e.reason)),
             _ => return Err(format!("{key}: not a gait value")),
         }
         .map_err(|e| e.to_string())?;

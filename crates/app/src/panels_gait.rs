@@ -5,7 +5,6 @@
 //! support bar over one cycle (eq. 9) with a live cursor.
 
 use gaitlab_core::driver::Driver as _;
-use gaitlab_motion::poda::driver::GRAVITY_MPS2;
 use gaitlab_motion::poda::gait_names;
 
 use crate::lab::{GaitShapeEdit, Lab};
@@ -21,7 +20,8 @@ pub fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
     let current = driver.gait_name().to_owned();
     let legs = driver.gait().leg_count();
     let gait = driver.gait().clone();
-    let driver_mass = driver.params().body_mass_kg;
+    let force_n = driver.leg_force_n();
+    let weight_share = driver.weight_share_n();
     let mut chosen = None;
     let mut edits: Vec<(&str, f64)> = Vec::new();
     egui::CollapsingHeader::new("Gait (PODA)")
@@ -80,8 +80,7 @@ pub fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
                     edits.push((key, value));
                 }
             }
-            let mut force = gait.leg_force_for_balance_n(driver_mass, GRAVITY_MPS2);
-            let weight_share = gait.gravity_share_mps2(GRAVITY_MPS2) * driver_mass;
+            let mut force = force_n;
             if ui
                 .add(
                     egui::Slider::new(&mut force, weight_share * 1.05..=weight_share * 12.0)

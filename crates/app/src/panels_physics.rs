@@ -4,8 +4,8 @@
 //! paper's animation column.
 
 use gaitlab_core::driver::Driver as _;
-use gaitlab_physics::gait_controller::gait_names;
-use gaitlab_physics::table2::{measured, paper_rows};
+use gaitlab_physics::control::gait_controller::gait_names;
+use gaitlab_physics::engine::table2::{measured, paper_rows};
 
 use crate::lab::Lab;
 

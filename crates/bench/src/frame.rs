@@ -9,7 +9,7 @@
 use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::Method;
 use gaitlab_core::preset::thesis::ThesisMode;
-use gaitlab_core::preset::{Creature, Engine, PresetError};
+use gaitlab_core::preset::{Creature, PresetError};
 use gaitlab_engine::{AnyDriver, Overrides, driver_for};
 
 /// Longest run one benchmark may ask for, frames per repeat.
@@ -109,23 +109,23 @@ pub fn frame_driver(
     creature: &Creature,
     options: &FrameBenchOptions,
 ) -> Result<(AnyDriver, usize), PresetError> {
-    let scenario = &creature.scenario;
-    let iterations_per_frame = match scenario.engine {
-        Engine::Ik => scenario.thesis.iterations_per_frame,
-        Engine::Poda => scenario.poda_params().iterations_per_frame,
-        Engine::Physics => {
-            return Err(PresetError::new(
-                "scenario.engine",
-                "physics creatures are timed in steps per second by the step benchmark",
-            ));
-        }
-    };
     let overrides = Overrides {
         mode: Some(options.mode),
         method: Some(options.method),
         ..Overrides::default()
     };
-    Ok((driver_for(creature, &overrides)?, iterations_per_frame))
+    let driver = driver_for(creature, &overrides)?;
+    let iterations_per_frame = match &driver {
+        AnyDriver::Poda(poda) => poda.params().iterations_per_frame,
+        AnyDriver::Physics(_) => {
+            return Err(PresetError::new(
+                "scenario.engine",
+                "physics creatures are timed in steps per second by the step benchmark",
+            ));
+        }
+        AnyDriver::Thesis(_) | AnyDriver::Track(_) => creature.scenario.thesis.iterations_per_frame,
+    };
+    Ok((driver, iterations_per_frame))
 }
 
 /// Times the driver of `creature`'s engine per `options` (`mode` and
@@ -166,10 +166,7 @@ mod tests {
     use super::*;
 
     fn human() -> Creature {
-        match gaitlab_core::preset::load_bundled("human") {
-            Some(Ok(creature)) => creature,
-            other => panic!("bundled human: {other:?}"),
-        }
+        crate::test_presets::bundled("human")
     }
 
     #[test]

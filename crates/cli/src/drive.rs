@@ -7,6 +7,7 @@ use std::time::Instant;
 use clap::Args;
 
 use gaitlab_core::driver::Driver;
+use gaitlab_engine::metrics::pose_within_limits;
 use gaitlab_engine::{AnyDriver, FrameWriter, Timing};
 
 use crate::fail::Failure;
@@ -79,12 +80,7 @@ pub fn drive(
         driver.step(dt);
         step_seconds += before.elapsed().as_secs_f64();
         let pose = driver.pose();
-        for (value, joint) in pose.joints.iter().zip(skeleton.joints()) {
-            let inside = joint
-                .limits
-                .is_none_or(|(lo, hi)| *value >= lo - 1e-9 && *value <= hi + 1e-9);
-            within_limits &= value.is_finite() && inside;
-        }
+        within_limits &= pose_within_limits(&skeleton, pose);
         if frame < first_written {
             continue;
         }

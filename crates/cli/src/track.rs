@@ -4,6 +4,7 @@
 
 use clap::Args;
 use gaitlab_core::export::{MAX_TARGET_CSV_BYTES, parse_target_csv};
+use gaitlab_core::preset::Purpose;
 use gaitlab_engine::{Overrides, RunMetrics, Tracking, driver_for};
 use gaitlab_motion::TargetSource;
 
@@ -35,9 +36,11 @@ pub struct TrackArgs {
     pub outputs: Outputs,
 }
 
-/// `gaitlab track`.
+/// `gaitlab track`. The preset is loaded for tracking: only its skeleton, IK
+/// options, method, fps and iterations per frame are used, so its thesis roles
+/// (which only the target script reads) are not checked.
 pub fn track(args: &TrackArgs) -> Result<(), Failure> {
-    let creature = load::creature(&args.preset)?;
+    let creature = load::creature_for(&args.preset, Purpose::Tracking)?;
     let scenario = &creature.scenario;
     let text = load::read_limited(&args.targets, MAX_TARGET_CSV_BYTES, "target file")?;
     let track = parse_target_csv(&text, creature.skeleton.effector_count())
@@ -57,10 +60,9 @@ pub fn track(args: &TrackArgs) -> Result<(), Failure> {
     let mut driver =
         driver_for(&creature, &overrides).map_err(|e| Failure::input(format!("--{e}")))?;
     let measured = drive(&mut driver, frames, fps, &args.outputs)?;
-    let mut metrics = RunMetrics::of(&creature.name, &driver, &measured);
+    let mut metrics = RunMetrics::of(&creature.name, &driver, &measured).with_fps(fps);
     if let RunMetrics::Ik(ik) = &mut metrics {
         ik.targets_file = Some(args.targets.clone());
-        ik.fps = Some(fps);
     }
     print(&metrics, args.outputs.json);
     Ok(())

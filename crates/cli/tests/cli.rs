@@ -229,13 +229,10 @@ fn bvh_of_a_5_second_walk_parses_back_with_every_joint_and_frame() {
     assert!(rows.lines().next().expect("header").starts_with("t,root_x"));
 }
 
-#[test]
-fn track_follows_recorded_targets() {
-    // Targets: the human's rest effector positions plus a 3 s sinusoidal sway of
-    // a few centimetres, in world coordinates, as a marker recording would give.
-    let creature = gaitlab_core::preset::load_bundled("human")
-        .expect("bundled")
-        .expect("valid");
+/// A target CSV for `creature`: its rest effector positions plus a 3 s
+/// sinusoidal sway of a few centimetres, in world coordinates, at 30 rows a
+/// second, as a marker recording would give.
+fn sway_targets(creature: &gaitlab_core::Creature) -> String {
     let rest = gaitlab_core::Kinematics::of(&creature.skeleton, &creature.rest_pose());
     let mut targets = String::from("t");
     for e in creature.skeleton.effectors() {
@@ -257,6 +254,15 @@ fn track_follows_recorded_targets() {
         }
         targets.push('\n');
     }
+    targets
+}
+
+#[test]
+fn track_follows_recorded_targets() {
+    let creature = gaitlab_core::preset::load_bundled("human")
+        .expect("bundled")
+        .expect("valid");
+    let targets = sway_targets(&creature);
     let target_file = scratch("targets.csv");
     std::fs::write(&target_file, targets).expect("write targets");
     let metrics = json_of(&gaitlab(&[
@@ -288,6 +294,63 @@ fn track_follows_recorded_targets() {
         "{}",
         String::from_utf8_lossy(&output.stderr)
     );
+}
+
+/// `track` follows targets with the skeleton only, so a four-effector `ik`
+/// preset whose thesis roles name no effector tracks; `run` and `validate`,
+/// which run (or vouch for) the thesis script, still refuse it at the role.
+#[test]
+fn track_ignores_thesis_roles_that_run_and_validate_refuse() {
+    let mut value: Value =
+        serde_json::from_str(gaitlab_core::preset::bundled_json("human").expect("bundled"))
+            .expect("JSON");
+    for effector in value["skeleton"]["effectors"]
+        .as_array_mut()
+        .expect("effectors")
+    {
+        let name = effector["name"].as_str().expect("name").to_owned();
+        effector["name"] = format!("marker_{name}").into();
+    }
+    let text = value.to_string();
+    let preset_file = scratch("renamed-markers.json");
+    std::fs::write(&preset_file, &text).expect("write preset");
+    let preset_path = preset_file.to_str().expect("utf-8");
+
+    let creature =
+        gaitlab_core::Creature::from_json_for(&text, gaitlab_core::preset::Purpose::Tracking)
+            .expect("loads for tracking");
+    assert_eq!(creature.skeleton.effector_count(), 4);
+    let target_file = scratch("renamed-markers.csv");
+    std::fs::write(&target_file, sway_targets(&creature)).expect("write targets");
+    let metrics = json_of(&gaitlab(&[
+        "track",
+        preset_path,
+        "--targets",
+        target_file.to_str().expect("utf-8"),
+        "--method",
+        "dls",
+        "--json",
+    ]));
+    assert_eq!(metrics["frames"], 180, "3 s at the preset's 60 fps");
+    for e in ["left_foot", "right_foot", "left_hand", "right_hand"] {
+        let mean = effector_mean(&metrics, &format!("marker_{e}"));
+        assert!(mean < 0.005, "{e}: mean error {mean} m");
+    }
+
+    for args in [
+        vec!["run", preset_path, "--seconds", "1"],
+        vec!["validate", preset_path],
+    ] {
+        let output = gaitlab(&args);
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.contains(
+                r#"error: scenario.thesis.roles.left_foot: no effector named "left_foot""#
+            ),
+            "{args:?}: {stderr}"
+        );
+    }
 }
 
 #[test]
@@ -389,4 +452,98 @@ fn validate_refuses_what_run_refuses() {
         "{validate_err}"
     );
     assert_eq!(run_err, validate_err);
+}
+
+/// `run --set`: a dotted preset path gives the same run as the preset file
+/// edited by hand (5 s: the Table-2 figures start after the settling time); a gain by name changes the motion; bad keys name themselves.
+#[test]
+fn set_changes_preset_values_and_gains() {
+    let without_timing = |mut v: Value| {
+        for key in ["wall_ms", "steps_per_second", "realtime_factor"] {
+            v.as_object_mut().map(|o| o.remove(key));
+        }
+        v
+    };
+    let text = std::fs::read_to_string(
+        [
+            env!("CARGO_MANIFEST_DIR"),
+            "..",
+            "..",
+            "presets",
+            "raibert-biped.json",
+        ]
+        .iter()
+        .collect::<PathBuf>(),
+    )
+    .expect("bundled preset");
+    let mut preset: Value = serde_json::from_str(&text).expect("JSON");
+    preset["scenario"]["physics"]["speed_mps"] = serde_json::json!(1.5);
+    let path = scratch("biped-1.5.json");
+    std::fs::write(&path, preset.to_string()).expect("write");
+    let file = path.to_str().expect("utf-8");
+    let by_file = json_of(&gaitlab(&["run", file, "--seconds", "5", "--json"]));
+    let by_set = json_of(&gaitlab(&[
+        "run",
+        file,
+        "--seconds",
+        "5",
+        "--json",
+        "--set",
+        "scenario.physics.speed_mps=1.5",
+    ]));
+    let bundled_set = json_of(&gaitlab(&[
+        "run",
+        "raibert-biped",
+        "--seconds",
+        "5",
+        "--json",
+        "--set",
+        "scenario.physics.speed_mps=1.5",
+    ]));
+    assert_eq!(by_file["speed_desired_mps"], serde_json::json!(1.5));
+    assert_eq!(without_timing(by_set), without_timing(by_file.clone()));
+    let mut bundled_set = without_timing(bundled_set);
+    bundled_set["preset"] = by_file["preset"].clone();
+    assert_eq!(bundled_set, without_timing(by_file.clone()));
+    let stiff = json_of(&gaitlab(&[
+        "run",
+        file,
+        "--seconds",
+        "5",
+        "--json",
+        "--set",
+        "leg_damping=0",
+    ]));
+    assert_ne!(
+        without_timing(stiff),
+        without_timing(by_file.clone()),
+        "a gain changes the motion"
+    );
+    for (set, expected) in [
+        (
+            "scenario.physics.speed_mps=99",
+            "error: scenario.physics.speed_mps: must be a speed within",
+        ),
+        (
+            "scenario.nope.x=1",
+            "error: --set scenario.nope.x: scenario.nope is not in the preset",
+        ),
+        (
+            "no_such_gain=1",
+            "error: --set gain.no_such_gain: no such gain",
+        ),
+        (
+            "leg_damping=soft",
+            "error: --set leg_damping: a gain is a number",
+        ),
+        (
+            "leg_damping",
+            "error: --set leg_damping: expected KEY=VALUE",
+        ),
+    ] {
+        let output = gaitlab(&["run", "raibert-biped", "--seconds", "0.1", "--set", set]);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(2), "{set}: {stderr}");
+        assert!(stderr.starts_with(expected), "{set}: {stderr}");
+    }
 }

@@ -605,6 +605,52 @@ fn roles_are_only_checked_when_the_skeleton_has_four_effectors() {
     assert_eq!(creature.skeleton.effector_count(), 2);
 }
 
+/// The thesis roles are checked where the thesis script uses them: engine `ik`,
+/// loaded to run its scenario. A PODA or physics preset with four or more
+/// effectors and roles that name none of them is valid; the same preset with
+/// engine `ik` is not, unless it is loaded only to track recorded targets.
+#[test]
+fn roles_are_checked_only_where_the_thesis_script_runs() {
+    let roles = json!({"left_foot": "nowhere", "right_foot": "nowhere_else",
+                       "left_hand": "no_hand", "right_hand": "no_other_hand"});
+    for (name, engine_section, effectors) in [
+        ("poda-quadruped", "poda", 5),
+        ("raibert-quadruped", "physics", 4),
+    ] {
+        let mut value: Value =
+            serde_json::from_str(preset::bundled_json(name).expect("bundled")).expect("JSON");
+        let scenario = at(&mut value, "/scenario").as_object_mut().expect("object");
+        scenario
+            .entry("thesis")
+            .or_insert_with(|| json!({}))
+            .as_object_mut()
+            .expect("thesis object")
+            .insert("roles".to_owned(), roles.clone());
+        let creature = preset::Creature::from_json(&value.to_string())
+            .unwrap_or_else(|e| panic!("{name} with unused roles: {e}"));
+        assert_eq!(creature.skeleton.effector_count(), effectors, "{name}");
+
+        let scenario = at(&mut value, "/scenario").as_object_mut().expect("object");
+        scenario.remove(engine_section);
+        scenario.insert("engine".to_owned(), json!("ik"));
+        let as_ik = value.to_string();
+        assert_rejected(
+            &as_ik,
+            "scenario.thesis.roles.left_foot",
+            r#"no effector named "nowhere""#,
+        );
+        // Tracking recorded targets never runs the script: the roles are not checked.
+        let tracked = preset::Creature::from_json_for(&as_ik, preset::Purpose::Tracking)
+            .unwrap_or_else(|e| panic!("{name} as ik, for tracking: {e}"));
+        assert_eq!(tracked.skeleton.effector_count(), effectors, "{name}");
+        let preset = Preset::from_json_for(&as_ik, preset::Purpose::Tracking).expect("parses");
+        assert_eq!(
+            preset.validate().map_err(|e| e.path),
+            Err("scenario.thesis.roles.left_foot".to_owned())
+        );
+    }
+}
+
 /// No prefix of a valid preset and no single-byte corruption of it panics, and every
 /// rejection names a path.
 #[test]

@@ -9,6 +9,7 @@ use gaitlab_core::RootTransform;
 use gaitlab_core::driver::Driver;
 use gaitlab_core::export::TargetTrack;
 use gaitlab_core::ik::{IkOptions, Method};
+use gaitlab_core::preset::physics::check_speed_mps;
 use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_core::preset::{
     Creature, Engine, PathSpec, PresetError, THESIS_ROLE_COUNT, check_ik_options,
@@ -90,6 +91,7 @@ pub fn driver_for(creature: &Creature, overrides: &Overrides) -> Result<AnyDrive
                 params.gait = Some(gait.clone());
             }
             if let Some(speed) = overrides.speed_mps {
+                check_speed_mps("scenario.physics.speed_mps", speed)?;
                 params.speed_mps = speed;
             }
             PhysicsDriver::with_params(creature, params)

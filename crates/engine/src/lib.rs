@@ -11,9 +11,11 @@
 pub mod any_driver;
 pub mod driver_for;
 pub mod metrics;
+pub mod switch;
 pub mod take;
 
 pub use any_driver::AnyDriver;
 pub use driver_for::{Overrides, Tracking, check, driver_for};
 pub use metrics::{RunMetrics, Timing};
+pub use switch::bundled_for_engine;
 pub use take::{FrameWriter, MAX_TAKE_S, Take};

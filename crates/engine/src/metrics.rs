@@ -9,6 +9,7 @@
 //! measured by the caller around [`gaitlab_core::driver::Driver::step`].
 
 use gaitlab_core::driver::Driver;
+use gaitlab_core::{Pose, Skeleton};
 use gaitlab_motion::PodaDriver;
 use gaitlab_physics::PhysicsDriver;
 use serde::Serialize;
@@ -38,6 +39,21 @@ impl Timing {
             0.0
         }
     }
+}
+
+/// Whether every joint value of `pose` is finite and within its limits
+/// (1e-9 slack): [`Timing::within_limits`] holds this for every frame.
+#[must_use]
+pub fn pose_within_limits(skeleton: &Skeleton, pose: &Pose) -> bool {
+    pose.joints
+        .iter()
+        .zip(skeleton.joints())
+        .all(|(value, joint)| {
+            value.is_finite()
+                && joint
+                    .limits
+                    .is_none_or(|(lo, hi)| *value >= lo - 1e-9 && *value <= hi + 1e-9)
+        })
 }
 
 /// A run's figures, by engine (serialized without a tag: the `engine` key says which).
@@ -70,6 +86,18 @@ impl RunMetrics {
             }
             AnyDriver::Track(_) => Self::Ik(IkRunMetrics::of(preset, "track", driver, timing)),
         }
+    }
+
+    /// The same figures with the run's frame rate (`fps`) added; the physics
+    /// figures have none (the simulation steps at its own `dt`).
+    #[must_use]
+    pub fn with_fps(mut self, fps: f64) -> Self {
+        match &mut self {
+            Self::Ik(ik) => ik.fps = Some(fps),
+            Self::Gait(gait) => gait.fps = Some(fps),
+            Self::Physics(_) => {}
+        }
+        self
     }
 }
 
@@ -377,7 +405,9 @@ impl PhysicsRunMetrics {
             sim_seconds: sim.time,
             wall_ms: timing.wall_ms,
             gait: driver.gait().to_owned(),
-            gaits_available: gaitlab_physics::gait_controller::gait_names(sim.creature.species),
+            gaits_available: gaitlab_physics::control::gait_controller::gait_names(
+                sim.creature.species,
+            ),
             scale: driver.params().scale,
             fell: s.fell || driver.resets() > 0,
             blow_up: driver.message().map(str::to_owned),

@@ -10,8 +10,8 @@ use gaitlab_physics::control::quadruped_bound::{
 };
 use gaitlab_physics::control::quadruped_run::quadruped_ground;
 use gaitlab_physics::creatures::quadruped;
-use gaitlab_physics::metrics::GaitRecorder;
-use gaitlab_physics::table2::{measured, paper_rows};
+use gaitlab_physics::engine::metrics::GaitRecorder;
+use gaitlab_physics::engine::table2::{measured, paper_rows};
 use gaitlab_physics::{Sim, SimOptions};
 
 const LEG_NAMES: [&str; 4] = ["front-left", "front-right", "rear-left", "rear-right"];
@@ -169,7 +169,7 @@ fn driver_change() -> Result<(), Box<dyn std::error::Error>> {
     use gaitlab_core::driver::Driver;
     let preset =
         gaitlab_core::preset::load_bundled("raibert-quadruped").ok_or("no bundled preset")??;
-    let mut d = gaitlab_physics::driver::PhysicsDriver::new(&preset)?;
+    let mut d = gaitlab_physics::engine::driver::PhysicsDriver::new(&preset)?;
     d.reset_after_fall = false;
     let mut t = 0.0;
     for (until, gait) in [(5.0, "bound"), (15.0, "gallop"), (25.0, "")] {

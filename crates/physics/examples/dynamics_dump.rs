@@ -2,7 +2,7 @@
 //! forward dynamics, as JSON, for comparison with an independent engine
 //! (the MJCF export loaded in MuJoCo). `-- PRESET SEED`
 use gaitlab_core::preset::load_bundled;
-use gaitlab_physics::preset::creature_from_preset;
+use gaitlab_physics::engine::preset::creature_from_preset;
 use gaitlab_physics::{Data, forward_dynamics};
 use glam::{DQuat, DVec3};
 
@@ -38,7 +38,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     forward_dynamics(model, &mut data)?;
     let q = data.base_orientation;
     let a = data.base_acceleration;
-    let ke = gaitlab_physics::energy::kinetic_energy(model, &data);
+    let ke = gaitlab_physics::dynamics::energy::kinetic_energy(model, &data);
     println!(
         "{}",
         serde_json::json!({

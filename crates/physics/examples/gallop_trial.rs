@@ -6,8 +6,8 @@
 use gaitlab_physics::control::attitude::{attitude_error, com_velocity, trunk_rate};
 use gaitlab_physics::control::biped_gallop::{BipedGallop, BipedGallopParams, GallopStyle};
 use gaitlab_physics::creatures::biped;
-use gaitlab_physics::ground::GroundParams;
-use gaitlab_physics::metrics::{GaitRecorder, GaitSummary};
+use gaitlab_physics::engine::metrics::{GaitRecorder, GaitSummary};
+use gaitlab_physics::world::ground::GroundParams;
 use gaitlab_physics::{Sim, SimOptions};
 
 /// Per trailing-leg stance: the leading leg's stance that overlaps it, the
@@ -94,7 +94,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let e = attitude_error(&sim.creature, &sim.data, 0.0, 0.0);
             let w = trunk_rate(&sim.creature, &sim.data);
             let v = com_velocity(&sim.creature, &sim.data);
-            let com = gaitlab_physics::energy::center_of_mass(&sim.creature.model, &sim.data);
+            let com =
+                gaitlab_physics::dynamics::energy::center_of_mass(&sim.creature.model, &sim.data);
             let f0 = sim.contacts[0].position - com;
             let f1 = sim.contacts[1].position - com;
             println!(

@@ -2,7 +2,7 @@
 //! Table 3 models in `gaitlab_physics::creatures`:
 //! `cargo run -p gaitlab-physics --example gen_presets -- presets`
 use gaitlab_physics::creatures::{biped, kangaroo, quadruped};
-use gaitlab_physics::preset::{PresetMeta, to_preset};
+use gaitlab_physics::engine::preset::{PresetMeta, to_preset};
 use glam::DVec3;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

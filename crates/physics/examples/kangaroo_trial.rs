@@ -9,8 +9,8 @@ use gaitlab_physics::control::kangaroo_hop::{
     KangarooHop, KangarooHopParams, kangaroo_ground, kangaroo_start,
 };
 use gaitlab_physics::creatures::kangaroo;
-use gaitlab_physics::ground::Obstacle;
-use gaitlab_physics::metrics::GaitRecorder;
+use gaitlab_physics::engine::metrics::GaitRecorder;
+use gaitlab_physics::world::ground::Obstacle;
 use gaitlab_physics::{Sim, SimOptions};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

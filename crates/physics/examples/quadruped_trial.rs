@@ -1,44 +1,35 @@
-//! Development aid: run the quadruped and print a trace and the Table-2 figures.
-//! `cargo run --release -p gaitlab-physics --example quadruped_trial -- GAIT SPEED SECONDS [trace]`
-//! GAIT is trot, bound or gallop.
+//! Development aid: run the trotting quadruped and print a trace and the Table-2 figures.
+//! `cargo run --release -p gaitlab-physics --example quadruped_trial -- SPEED SECONDS [trace]`
+//! (The bound and gallop have `bound_trial`.)
 use gaitlab_physics::control::attitude::{attitude_error, com_velocity};
 use gaitlab_physics::control::quadruped_run::{
-    QuadrupedGait, QuadrupedRun, QuadrupedRunParams, quadruped_ground, quadruped_start,
+    QuadrupedRun, QuadrupedRunParams, quadruped_ground, quadruped_start,
 };
 use gaitlab_physics::creatures::quadruped;
-use gaitlab_physics::metrics::GaitRecorder;
+use gaitlab_physics::engine::metrics::GaitRecorder;
 use gaitlab_physics::{Sim, SimOptions};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
-    let gait = match args.get(1).map(String::as_str) {
-        Some("bound") => QuadrupedGait::Bound,
-        Some("gallop") => QuadrupedGait::Gallop,
-        _ => QuadrupedGait::Trot,
-    };
-    let speed: f64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(2.3);
-    let secs: f64 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(10.0);
-    let trace = args.get(4).is_some();
+    let speed: f64 = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(2.3);
+    let secs: f64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(10.0);
+    let trace = args.get(3).is_some();
     let mut sim = Sim::new(
         quadruped(1.0)?,
         quadruped_ground(1.0),
         SimOptions::default(),
     );
-    quadruped_start(&mut sim, gait, speed);
+    quadruped_start(&mut sim, speed);
     let mut params = QuadrupedRunParams {
         speed_mps: speed,
         ..Default::default()
     };
-    // Tuning overrides for experiments: QT="key=value,key=value" (gait tuning fields).
+    // Tuning overrides for experiments: QT="key=value,key=value" (trot tuning fields).
     if let Ok(spec) = std::env::var("QT") {
         for kv in spec.split(',').filter(|s| !s.is_empty()) {
             let (k, v) = kv.split_once('=').ok_or("QT: key=value")?;
             let v: f64 = v.parse()?;
-            let t = match gait {
-                QuadrupedGait::Trot => &mut params.trot,
-                QuadrupedGait::Bound => &mut params.bound,
-                QuadrupedGait::Gallop => &mut params.gallop,
-            };
+            let t = &mut params.trot;
             match k {
                 "leg_stiffness" => t.leg_stiffness = v,
                 "leg_damping" => t.leg_damping = v,
@@ -57,15 +48,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 "pitch_swing" => t.pitch_swing = v,
                 "posture_force_ratio" => t.posture_force_ratio = v,
                 "flight_gain" => params.flight_gain = v,
-                "gallop_lag_s" => params.gallop_lag_s = v,
-                "gallop_spread_m" => params.gallop_spread_m = v,
                 "swing_kp" => params.swing_kp = v,
                 "swing_kv" => params.swing_kv = v,
                 _ => return Err(format!("QT: unknown key {k}").into()),
             }
         }
     }
-    let mut ctl = QuadrupedRun::new(params, gait, 1.0);
+    let mut ctl = QuadrupedRun::new(params, 1.0);
     let mut rec = GaitRecorder::new(4, speed, 0.0, 3.0);
     let mut last_print = -1.0;
     while sim.time < secs {
@@ -107,26 +96,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     let s = rec.summary();
-    // Bound flights: gathered after a front leg (0, 1) lifts off, extended after a rear one.
-    let split = |front: bool| {
-        let (sum, n) = s
-            .flights
-            .iter()
-            .filter(|f| (f.last_leg < 2) == front)
-            .fold((0.0, 0), |(a, n), f| (a + f.end_s - f.start_s, n + 1));
-        if n == 0 { 0.0 } else { sum / n as f64 }
-    };
     println!(
-        "{} fell {} speed {:.3}/{:.2} stride {:.3} m {:.3} s flight {:.3} (gathered {:.3} extended {:.3}) stance {:.3} [{:.3} {:.3} {:.3} {:.3}] legΔ {:.3} pitch {:.1} roll {:.1} accel {:.2} g friction {:.2}",
-        gait.name(),
+        "trot fell {} speed {:.3}/{:.2} stride {:.3} m {:.3} s flight {:.3} stance {:.3} [{:.3} {:.3} {:.3} {:.3}] legΔ {:.3} pitch {:.1} roll {:.1} accel {:.2} g friction {:.2}",
         s.fell,
         s.speed_mean_mps,
         s.speed_desired_mps,
         s.stride_length_m,
         s.stride_duration_s,
         s.flight_duration_s,
-        split(true),
-        split(false),
         s.stance_duration_s,
         s.leg_stance_s[0],
         s.leg_stance_s[1],

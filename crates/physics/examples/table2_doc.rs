@@ -5,8 +5,8 @@
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::load_bundled;
 use gaitlab_physics::PhysicsDriver;
-use gaitlab_physics::gait_controller::gait_names;
-use gaitlab_physics::table2::{measured, paper_rows, paper_speed_mps};
+use gaitlab_physics::control::gait_controller::gait_names;
+use gaitlab_physics::engine::table2::{measured, paper_rows, paper_speed_mps};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     for preset_name in ["raibert-biped", "raibert-quadruped", "raibert-kangaroo"] {

@@ -3,8 +3,8 @@
 use gaitlab_physics::control::attitude::{attitude_error, com_velocity};
 use gaitlab_physics::control::biped_run::{BipedRun, BipedRunParams};
 use gaitlab_physics::creatures::biped;
-use gaitlab_physics::ground::GroundParams;
-use gaitlab_physics::metrics::GaitRecorder;
+use gaitlab_physics::engine::metrics::GaitRecorder;
+use gaitlab_physics::world::ground::GroundParams;
 use gaitlab_physics::{Sim, SimOptions};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -62,7 +62,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let e = attitude_error(&sim.creature, &sim.data, 0.0, 0.0);
             let w = gaitlab_physics::control::attitude::trunk_rate(&sim.creature, &sim.data);
             let v = com_velocity(&sim.creature, &sim.data);
-            let com = gaitlab_physics::energy::center_of_mass(&sim.creature.model, &sim.data);
+            let com =
+                gaitlab_physics::dynamics::energy::center_of_mass(&sim.creature.model, &sim.data);
             let f = sim.contacts[ctl.active].position;
             println!(
                 "{:.3} {:11} act {} roll {:+5.1} rate {:+5.2} pitch {:+5.1} rate {:+5.2} vx {:+.2} vz {:+.2} foot-com x {:+.3} z {:+.3} y {:.3}",

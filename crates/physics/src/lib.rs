@@ -3,52 +3,41 @@
 //! whose every motion comes from integrating equations of motion while
 //! controllers apply actuator forces.
 //!
-//! Stages, after MuJoCo's immutable-model / mutable-data split: a [`Model`]
-//! (bodies, joints, inertias) and its [`Data`] (state and workspace);
-//! [`kinematics`](kinematics::kinematics) → [`forward_dynamics`](aba::forward_dynamics)
-//! (O(n), articulated-body algorithm) → [`integrate`](integrate::integrate)
-//! (semi-implicit Euler). [`crba`] and [`rnea`] are the independent O(n³) path.
-//! A [`Sim`] adds [`actuator`]s, [`ground`] contact and a [`Controller`]
-//! ([`control`]) on a fixed-step loop; a [`PhysicsDriver`] runs a preset's
-//! creature ([`preset`], [`creatures`]) for the app and the CLI, with the
-//! Table-2 figures of [`metrics`] and [`table2`].
+//! The folders follow the pipeline, each using only those above it:
+//!
+//! - [`dynamics`]: spatial algebra, after MuJoCo's immutable-model /
+//!   mutable-data split a [`Model`] (bodies, joints, inertias) and its
+//!   [`Data`] (state and workspace);
+//!   [`kinematics`](dynamics::kinematics::kinematics) →
+//!   [`forward_dynamics`] (O(n),
+//!   articulated-body algorithm) →
+//!   [`integrate`](dynamics::integrate::integrate) (semi-implicit Euler);
+//!   [`crba`](dynamics::crba) and [`rnea`](dynamics::rnea), the independent
+//!   O(n³) path; [`energy`](dynamics::energy).
+//! - [`creatures`]: the Table-3 models, each a [`PhysicalCreature`] (a model
+//!   plus where its legs, feet and tail are).
+//! - [`world`]: [`actuator`](world::actuator)s, [`ground`](world::ground)
+//!   contact and the fixed-step [`Sim`] loop with its blow-up guard.
+//! - [`control`]: the paper's control parts and, composed from them, a
+//!   [`Controller`] per gait ([`gait_controller`](control::gait_controller)).
+//! - [`engine`]: the [`PhysicsDriver`] that runs a preset's creature
+//!   ([`preset`](engine::preset)) for the app and the CLI, with the Table-2
+//!   figures of [`metrics`](engine::metrics) and [`table2`](engine::table2),
+//!   and the MuJoCo export ([`mjcf`](engine::mjcf)).
 //!
 //! Conventions: SI units, world y up; spatial vectors `[angular; linear]` in
-//! body coordinates (see [`spatial`]).
+//! body coordinates (see [`spatial`](dynamics::spatial)).
 
-// Rigid-body dynamics.
-pub mod aba;
-pub mod crba;
-pub mod data;
-pub mod energy;
-pub mod integrate;
-pub mod kinematics;
-pub mod model;
-pub mod rnea;
-pub mod spatial;
-
-// The world and the loop.
-pub mod actuator;
-pub mod ground;
-pub mod sim;
-
-// Creatures and their control.
 pub mod control;
-pub mod creature;
 pub mod creatures;
-pub mod gait_controller;
+pub mod dynamics;
+pub mod engine;
+pub mod world;
 
-// Front-end services: presets, the driver, figures, export, benchmarks.
-pub mod driver;
-pub mod metrics;
-pub mod mjcf;
-pub mod preset;
-pub mod table2;
-
-pub use aba::{DynamicsError, forward_dynamics};
-pub use creature::{Creature, Leg, Species};
-pub use data::Data;
-pub use driver::PhysicsDriver;
-pub use model::{Body, GRAVITY_MPS2, Joint, Model, ModelError};
-pub use sim::{BlowUp, ControlInput, Controller, Drive, Sim, SimOptions};
-pub use spatial::{Force, Inertia, Motion, ParentLink};
+pub use creatures::{Leg, PhysicalCreature, Species};
+pub use dynamics::aba::{DynamicsError, forward_dynamics};
+pub use dynamics::data::Data;
+pub use dynamics::model::{Body, GRAVITY_MPS2, Joint, Model, ModelError};
+pub use dynamics::spatial::{Force, Inertia, Motion, ParentLink};
+pub use engine::driver::PhysicsDriver;
+pub use world::sim::{BlowUp, ControlInput, Controller, Drive, Sim, SimOptions};

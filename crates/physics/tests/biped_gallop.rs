@@ -8,8 +8,8 @@ use gaitlab_physics::control::biped_gallop::{
     BipedGallop, BipedGallopParams, GallopPhase, GallopStyle,
 };
 use gaitlab_physics::creatures::biped;
-use gaitlab_physics::ground::GroundParams;
-use gaitlab_physics::metrics::{GaitRecorder, GaitSummary};
+use gaitlab_physics::engine::metrics::{GaitRecorder, GaitSummary};
+use gaitlab_physics::world::ground::GroundParams;
 use gaitlab_physics::{Sim, SimOptions};
 
 const SETTLE_S: f64 = 3.0;

@@ -6,7 +6,7 @@
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::load_bundled;
 use gaitlab_physics::PhysicsDriver;
-use gaitlab_physics::table2::{measured, paper_rows};
+use gaitlab_physics::engine::table2::{measured, paper_rows};
 
 fn run(speed: f64, seconds: f64) -> PhysicsDriver {
     let preset = load_bundled("raibert-biped")

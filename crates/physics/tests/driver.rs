@@ -6,7 +6,7 @@
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::{Creature as PresetCreature, load_bundled};
 use gaitlab_physics::PhysicsDriver;
-use gaitlab_physics::gait_controller::gait_names;
+use gaitlab_physics::control::gait_controller::gait_names;
 
 fn bundled(name: &str) -> PresetCreature {
     load_bundled(name).expect("bundled").expect("valid")
@@ -178,4 +178,44 @@ fn bad_physics_presets_name_the_field() {
         error.reason.contains("run, gallop, gallop_alternate"),
         "{error}"
     );
+}
+
+/// The live setters check the preset's own ranges (one source of range truth:
+/// `gaitlab_core::preset::physics`), and a refused value changes nothing.
+#[test]
+fn live_speed_and_hop_height_take_the_preset_ranges() {
+    let preset = match gaitlab_core::preset::load_bundled("raibert-kangaroo") {
+        Some(Ok(preset)) => preset,
+        other => panic!("bundled kangaroo: {other:?}"),
+    };
+    let mut driver = gaitlab_physics::PhysicsDriver::new(&preset).expect("drives");
+    let (lo, hi) = gaitlab_core::preset::physics::HOP_HEIGHT_RANGE_M;
+    assert_eq!((lo, hi), (0.0, 2.0));
+    driver
+        .set_hop_height(hi)
+        .expect("the top of the range is a height");
+    assert_eq!(driver.params().hop_height_m, Some(hi));
+    for bad in [-0.01, hi + 0.01, f64::NAN] {
+        let error = driver.set_hop_height(bad).expect_err("outside the range");
+        assert_eq!(
+            error.to_string(),
+            "hop_height_m: must be a height in [0, 2] m"
+        );
+        assert_eq!(driver.params().hop_height_m, Some(hi));
+    }
+    driver.set_speed(-15.0).expect("the top speed backwards");
+    let error = driver.set_speed(15.5).expect_err("too fast");
+    assert_eq!(
+        error.to_string(),
+        "speed_mps: must be a speed within ±15 m/s"
+    );
+    assert_eq!(driver.params().speed_mps, -15.0);
+    // A preset says the same at its own path.
+    let mut json: serde_json::Value =
+        serde_json::from_str(gaitlab_core::preset::bundled_json("raibert-kangaroo").expect("json"))
+            .expect("JSON");
+    json["scenario"]["physics"]["hop_height_m"] = serde_json::json!(2.5);
+    let error = gaitlab_core::Creature::from_json(&json.to_string()).expect_err("too high");
+    assert_eq!(error.path, "scenario.physics.hop_height_m");
+    assert_eq!(error.reason, "must be a height in [0, 2] m");
 }

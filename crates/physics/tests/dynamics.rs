@@ -3,11 +3,11 @@
 //! states of every model, a pendulum's period against its closed form, and a
 //! free body's momentum and energy in flight.
 
-use gaitlab_physics::crba::forward_dynamics_dense;
 use gaitlab_physics::creatures::{biped, kangaroo, quadruped};
-use gaitlab_physics::energy::{kinetic_energy, momentum, potential_energy};
-use gaitlab_physics::integrate::integrate;
-use gaitlab_physics::kinematics::kinematics;
+use gaitlab_physics::dynamics::crba::forward_dynamics_dense;
+use gaitlab_physics::dynamics::energy::{kinetic_energy, momentum, potential_energy};
+use gaitlab_physics::dynamics::integrate::integrate;
+use gaitlab_physics::dynamics::kinematics::kinematics;
 use gaitlab_physics::{Body, Data, Force, Joint, Model, ParentLink, forward_dynamics};
 use glam::{DMat3, DQuat, DVec3};
 
@@ -200,7 +200,7 @@ fn a_free_body_in_flight_keeps_its_momentum_and_energy() {
     let (p0, _) = momentum(model, &data);
     let com_momentum = |data: &Data| {
         let (p, l) = momentum(model, data);
-        let c = gaitlab_physics::energy::center_of_mass(model, data);
+        let c = gaitlab_physics::dynamics::energy::center_of_mass(model, data);
         l - c.cross(p)
     };
     let l0 = com_momentum(&data);

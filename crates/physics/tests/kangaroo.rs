@@ -11,7 +11,7 @@ use gaitlab_physics::control::kangaroo_hop::{
     KangarooHop, KangarooHopParams, kangaroo_ground, kangaroo_start,
 };
 use gaitlab_physics::creatures::kangaroo;
-use gaitlab_physics::metrics::{GaitRecorder, GaitSummary};
+use gaitlab_physics::engine::metrics::{GaitRecorder, GaitSummary};
 use gaitlab_physics::{Sim, SimOptions};
 
 struct Run {
@@ -203,7 +203,7 @@ fn dynamic_scaling_matches() {
 /// the trunk passes it, and hopping goes on without a fall.
 #[test]
 fn jumps_over_an_obstacle() {
-    use gaitlab_physics::ground::Obstacle;
+    use gaitlab_physics::world::ground::Obstacle;
     let params = KangarooHopParams {
         speed_mps: 2.0,
         jump_at_m: Some(5.0),

@@ -5,7 +5,7 @@
 
 use gaitlab_core::preset::load_bundled;
 use gaitlab_physics::PhysicsDriver;
-use gaitlab_physics::model::Joint;
+use gaitlab_physics::dynamics::model::Joint;
 
 fn numbers(s: &str) -> Vec<f64> {
     s.split_whitespace()

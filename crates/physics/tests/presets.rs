@@ -2,11 +2,11 @@
 //! `gaitlab_physics::creatures`, at scale 1 and scaled (Table 1).
 
 use gaitlab_core::preset::{Creature as PresetCreature, load_bundled};
-use gaitlab_physics::Creature;
+use gaitlab_physics::PhysicalCreature;
 use gaitlab_physics::creatures::{biped, kangaroo, quadruped};
-use gaitlab_physics::preset::creature_from_preset;
+use gaitlab_physics::engine::preset::creature_from_preset;
 
-fn assert_same(name: &str, got: &Creature, want: &Creature) {
+fn assert_same(name: &str, got: &PhysicalCreature, want: &PhysicalCreature) {
     assert_eq!(got.species, want.species, "{name}");
     assert_eq!(got.trunk, want.trunk, "{name} trunk");
     assert_eq!(got.legs, want.legs, "{name} legs");
@@ -39,7 +39,7 @@ fn assert_same(name: &str, got: &Creature, want: &Creature) {
     }
 }
 
-type Builder = fn(f64) -> Result<Creature, gaitlab_physics::ModelError>;
+type Builder = fn(f64) -> Result<PhysicalCreature, gaitlab_physics::ModelError>;
 
 fn bundled(name: &str) -> PresetCreature {
     load_bundled(name).expect("bundled").expect("valid")

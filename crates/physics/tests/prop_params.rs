@@ -20,7 +20,7 @@ use gaitlab_core::driver::Driver;
 use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::{Creature as PresetCreature, ObstacleSpec, PhysicsParams, load_bundled};
 use gaitlab_physics::PhysicsDriver;
-use gaitlab_physics::gait_controller::gait_names;
+use gaitlab_physics::control::gait_controller::gait_names;
 use gaitlab_testkit::prop_config as config;
 use proptest::prelude::*;
 
@@ -215,9 +215,13 @@ fn run(name: &str, draw: &Draw) -> Result<(), String> {
                     .set_gait(gaits[index % gaits.len()])
                     .map_err(|e| format!("set_gait: {e}"))?;
             }
-            driver.set_speed(live.speed_mps);
+            driver
+                .set_speed(live.speed_mps)
+                .map_err(|e| format!("set_speed: {e}"))?;
             if let Some(height) = live.hop_height_m {
-                driver.set_hop_height(height);
+                driver
+                    .set_hop_height(height)
+                    .map_err(|e| format!("set_hop_height: {e}"))?;
             }
             if let Some(heading) = live.heading_rad {
                 driver.set_heading(heading);

@@ -12,9 +12,9 @@ use gaitlab_physics::control::quadruped_bound::{
 };
 use gaitlab_physics::control::quadruped_run::quadruped_ground;
 use gaitlab_physics::creatures::quadruped;
-use gaitlab_physics::driver::PhysicsDriver;
-use gaitlab_physics::metrics::{GaitRecorder, GaitSummary};
-use gaitlab_physics::table2::{measured, paper_rows};
+use gaitlab_physics::engine::driver::PhysicsDriver;
+use gaitlab_physics::engine::metrics::{GaitRecorder, GaitSummary};
+use gaitlab_physics::engine::table2::{measured, paper_rows};
 use gaitlab_physics::{Sim, SimOptions};
 
 const LEG_NAMES: [&str; 4] = ["front-left", "front-right", "rear-left", "rear-right"];

@@ -5,6 +5,7 @@ use serde::{Deserialize, Serialize};
 
 /// The Jacobian IK methods of She 2006 §4.4.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "lowercase")]
 pub enum Method {
     /// Jacobian transpose, Δθ = α Jᵀe with Buss's α = ⟨e, JJᵀe⟩ / ‖JJᵀe‖² (§4.4.1).

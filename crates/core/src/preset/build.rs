@@ -11,7 +11,7 @@ use glam::{DMat3, DQuat, DVec3};
 use super::poda::PodaLegSpec;
 use super::scenario::{Engine, Scenario};
 use super::schema::{MAX_PRESET_BYTES, Preset};
-use super::validate::{self, Unit};
+use super::validate::{self, Purpose, Unit};
 use super::{PresetError, ROOT_PATH};
 use crate::skeleton::{DhJoint, DhLimb};
 use crate::{Effector, Joint, Pose, RootTransform, Skeleton, SkeletonError};
@@ -40,6 +40,16 @@ impl Creature {
         Preset::from_json(json)?.build()
     }
 
+    /// Parses, validates and builds a preset for `purpose`: [`Purpose::Scenario`]
+    /// is [`Creature::from_json`]; [`Purpose::Tracking`] skips the rules only the
+    /// scenario's own motion needs (the thesis roles).
+    ///
+    /// # Errors
+    /// The first [`PresetError`] found, with the JSON path of the offending value.
+    pub fn from_json_for(json: &str, purpose: Purpose) -> Result<Self, PresetError> {
+        Preset::from_json_for(json, purpose)?.build_for(purpose)
+    }
+
     /// The reset pose: the root at `root_position`, unrotated, every joint at its rest value.
     #[must_use]
     pub fn rest_pose(&self) -> Pose {
@@ -61,6 +71,14 @@ impl Preset {
     /// A [`PresetError`] naming the JSON path: too large, malformed, an unknown or
     /// missing field, a wrong type, or any rule of [`Preset::validate`].
     pub fn from_json(json: &str) -> Result<Self, PresetError> {
+        Self::from_json_for(json, Purpose::Scenario)
+    }
+
+    /// [`Preset::from_json`], validated for `purpose` (see [`Preset::validate_for`]).
+    ///
+    /// # Errors
+    /// As [`Preset::from_json`], less the rules `purpose` does not need.
+    pub fn from_json_for(json: &str, purpose: Purpose) -> Result<Self, PresetError> {
         if json.len() > MAX_PRESET_BYTES {
             return Err(PresetError::new(
                 ROOT_PATH,
@@ -84,7 +102,7 @@ impl Preset {
             .end()
             .map_err(|e| PresetError::new(ROOT_PATH, e.to_string()))?;
         preset.scenario.ik.method = preset.scenario.method;
-        preset.validate()?;
+        preset.validate_for(purpose)?;
         Ok(preset)
     }
 
@@ -96,7 +114,17 @@ impl Preset {
     /// # Errors
     /// The first [`PresetError`] found.
     pub fn validate(&self) -> Result<(), PresetError> {
-        validate::check(self).map(drop)
+        self.validate_for(Purpose::Scenario)
+    }
+
+    /// Checks the rules that apply when the preset is loaded for `purpose`:
+    /// [`Purpose::Scenario`] is [`Preset::validate`]; [`Purpose::Tracking`] leaves
+    /// out the thesis roles, which only the target script reads.
+    ///
+    /// # Errors
+    /// The first [`PresetError`] found.
+    pub fn validate_for(&self, purpose: Purpose) -> Result<(), PresetError> {
+        validate::check(self, purpose).map(drop)
     }
 
     /// Validates and builds the creature.
@@ -108,7 +136,15 @@ impl Preset {
     /// # Errors
     /// Any [`PresetError`] of [`Preset::validate`].
     pub fn build(&self) -> Result<Creature, PresetError> {
-        let plan = validate::check(self)?;
+        self.build_for(Purpose::Scenario)
+    }
+
+    /// Validates for `purpose` (see [`Preset::validate_for`]) and builds the creature.
+    ///
+    /// # Errors
+    /// Any [`PresetError`] of [`Preset::validate_for`].
+    pub fn build_for(&self, purpose: Purpose) -> Result<Creature, PresetError> {
+        let plan = validate::check(self, purpose)?;
         let spec = &self.skeleton;
         let joint_total =
             spec.joints.len() + spec.limbs.iter().map(|l| l.joints.len()).sum::<usize>();

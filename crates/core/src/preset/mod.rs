@@ -13,7 +13,10 @@
 
 mod build;
 mod bundled;
+mod edit;
 mod error;
+#[cfg(feature = "schema")]
+mod json_schema;
 pub mod physics;
 pub mod poda;
 mod scenario;
@@ -23,7 +26,10 @@ mod validate;
 
 pub use build::Creature;
 pub use bundled::{DEFAULT_PRESET, bundled, bundled_json, bundled_names, load_bundled};
+pub use edit::{MAX_EDIT_PATH_CHARS, set_preset_value};
 pub use error::{PresetError, ROOT_PATH};
+#[cfg(feature = "schema")]
+pub use json_schema::{SCHEMA_ID, SCHEMA_TITLE, preset_schema, preset_schema_text};
 pub use physics::{
     MassSpec, ObstacleSpec, PhysicsBase, PhysicsBodySpec, PhysicsLegSpec, PhysicsModel,
     PhysicsParams,
@@ -36,6 +42,6 @@ pub use schema::{
 };
 pub use validate::{
     MAX_FREQUENCY_HZ, MAX_ITERATIONS_PER_FRAME, MAX_SLOWDOWN, MAX_SPEED_MPS, MAX_START_RAMP_S,
-    MAX_WOUNDED_ADD, MAX_WOUNDED_MULTIPLY, MIN_SLOWDOWN, THESIS_ROLE_COUNT, check_ik_options,
-    check_thesis_values,
+    MAX_WOUNDED_ADD, MAX_WOUNDED_MULTIPLY, MIN_SLOWDOWN, Purpose, THESIS_ROLE_COUNT,
+    check_ik_options, check_thesis_values,
 };

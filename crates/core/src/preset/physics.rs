@@ -20,6 +20,42 @@ pub const SCALE_RANGE: (f64, f64) = (0.05, 20.0);
 pub const DT_RANGE_S: (f64, f64) = (1e-5, 2e-3);
 /// Largest desired speed magnitude, m/s (at scale 1).
 pub const MAX_PHYSICS_SPEED_MPS: f64 = 15.0;
+/// Lowest and highest desired hop height, metres (at scale 1). One range for
+/// presets, the page's slider and command, and the driver's setter: it
+/// guards validity (a finite, non-negative height the legs could reach), not
+/// stability — a high hop may still fall, and the blow-up guard says so.
+pub const HOP_HEIGHT_RANGE_M: (f64, f64) = (0.0, 2.0);
+
+/// Checks a desired speed (m/s at scale 1) against [`MAX_PHYSICS_SPEED_MPS`].
+///
+/// # Errors
+/// `path: must be a speed within ±15 m/s`.
+pub fn check_speed_mps(path: &str, speed_mps: f64) -> Result<(), PresetError> {
+    if speed_mps.is_finite() && speed_mps.abs() <= MAX_PHYSICS_SPEED_MPS {
+        Ok(())
+    } else {
+        Err(PresetError::new(
+            path,
+            format!("must be a speed within ±{MAX_PHYSICS_SPEED_MPS} m/s"),
+        ))
+    }
+}
+
+/// Checks a desired hop height (m at scale 1) against [`HOP_HEIGHT_RANGE_M`].
+///
+/// # Errors
+/// `path: must be a height in [0, 2] m`.
+pub fn check_hop_height_m(path: &str, height_m: f64) -> Result<(), PresetError> {
+    let (lo, hi) = HOP_HEIGHT_RANGE_M;
+    if height_m.is_finite() && (lo..=hi).contains(&height_m) {
+        Ok(())
+    } else {
+        Err(PresetError::new(
+            path,
+            format!("must be a height in [{lo}, {hi}] m"),
+        ))
+    }
+}
 /// Most obstacles on the ground.
 pub const MAX_OBSTACLES: usize = 32;
 /// Most waypoints of a path.
@@ -27,6 +63,7 @@ pub const MAX_WAYPOINTS: usize = 64;
 
 /// Which of the paper's controller families drives the creature.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum PhysicsModel {
     /// Two telescoping legs on ball hips: run, both gallops.
@@ -52,6 +89,7 @@ impl PhysicsModel {
 
 /// How the trunk moves in the world.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum PhysicsBase {
     /// Six degrees of freedom: the skeleton's root is the trunk.
@@ -68,6 +106,7 @@ pub enum PhysicsBase {
 /// {"mass_kg": 1.4, "com_m": [0, -0.095, 0], "inertia_kgm2": [0.017, 0.0014, 0.018]}
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct MassSpec {
     /// Mass (kg), ≥ 0.
@@ -83,6 +122,7 @@ pub struct MassSpec {
 
 /// The body a joint moves, with its mass properties.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct PhysicsBodySpec {
     /// The skeleton joint that moves this body.
@@ -95,6 +135,7 @@ pub struct PhysicsBodySpec {
 /// One leg: its hip joints (proximal first), its springy joint, optional knee,
 /// and the foot's contact point.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct PhysicsLegSpec {
     /// Name for metrics and the UI.
@@ -115,6 +156,7 @@ pub struct PhysicsLegSpec {
 
 /// A box on the ground ahead of the creature.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct ObstacleSpec {
     /// Distance of its near face along the direction of travel (m).
@@ -127,6 +169,7 @@ pub struct ObstacleSpec {
 
 /// `scenario.physics`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct PhysicsParams {
     /// The controller family.
@@ -289,19 +332,9 @@ impl PhysicsParams {
         if let Some(neck) = &self.neck {
             name(at("neck"), neck)?;
         }
-        if !(self.speed_mps.is_finite() && self.speed_mps.abs() <= MAX_PHYSICS_SPEED_MPS) {
-            return Err(PresetError::new(
-                at("speed_mps"),
-                format!("must be a speed within ±{MAX_PHYSICS_SPEED_MPS} m/s"),
-            ));
-        }
-        if let Some(h) = self.hop_height_m
-            && !(h.is_finite() && (0.0..=2.0).contains(&h))
-        {
-            return Err(PresetError::new(
-                at("hop_height_m"),
-                "must be a height in [0, 2] m",
-            ));
+        check_speed_mps(&at("speed_mps"), self.speed_mps)?;
+        if let Some(h) = self.hop_height_m {
+            check_hop_height_m(&at("hop_height_m"), h)?;
         }
         let (lo, hi) = SCALE_RANGE;
         if !(self.scale.is_finite() && (lo..=hi).contains(&self.scale)) {

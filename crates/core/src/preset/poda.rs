@@ -28,6 +28,7 @@ pub const MAX_PATH_POINTS: usize = 64;
 /// {"name": "left_front", "effector": "left_front_foot", "hip": "left_front_shoulder_x"}
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct PodaLegSpec {
     /// Leg name for metrics and the UI; default: the effector's name.
@@ -42,6 +43,7 @@ pub struct PodaLegSpec {
 /// Spline family of a body path (PODA "Horizontal Control": "a cubic spline
 /// (Catmull-Rom or B-spline)").
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum PathKindSpec {
     /// Interpolating: the path passes through every control point.
@@ -57,6 +59,7 @@ pub enum PathKindSpec {
 /// {"kind": "catmull_rom", "points": [[0, 0], [0, 3], [2, 5]], "closed": false}
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct PathSpec {
     /// Catmull-Rom (default) or B-spline.
@@ -76,6 +79,7 @@ pub struct PathSpec {
 ///  "legs": [{"effector": "left_front_foot", "hip": "left_front_shoulder_x"}]}
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(default, deny_unknown_fields)]
 pub struct PodaParams {
     /// The legs, in the named-gait leg order. Default: every limb that has an

@@ -22,6 +22,7 @@ pub const MAX_FPS: u32 = 1000;
 
 /// The engine a scenario drives (DESIGN.md "engine" column).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "lowercase")]
 pub enum Engine {
     /// She 2006: sinusoidal effector targets tracked by Jacobian IK.
@@ -64,6 +65,7 @@ impl Engine {
 ///  "thesis": {"iterations_per_frame": 4, "wounded": [{"joint": "left_knee", "multiply": 0.2}]}}
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct Scenario {
     /// The engine. Required.
@@ -79,6 +81,7 @@ pub struct Scenario {
     /// After parsing, `ik.method` equals `method`; use [`Scenario::ik_options`]
     /// after changing `method`.
     #[serde(default, with = "ik_section")]
+    #[cfg_attr(feature = "schema", schemars(with = "ik_section::IkSection"))]
     pub ik: IkOptions,
     /// Animation frames per second, 1..=1000. Default 60.
     #[serde(default = "default_fps")]
@@ -165,11 +168,14 @@ mod ik_section {
     }
 
     /// Mirror of [`IkOptions`] minus `method`. A unit test checks that every
-    /// `IkOptions` field is here.
+    /// `IkOptions` field is here. Its JSON Schema (feature `schema`) lists no
+    /// `method`, so a schema-aware editor flags one, as the parser does.
     #[derive(Serialize, Deserialize)]
+    #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
     #[serde(default, deny_unknown_fields)]
     pub(super) struct IkSection {
         #[serde(skip_serializing)]
+        #[cfg_attr(feature = "schema", schemars(skip))]
         method: NoMethod,
         lambda: f64,
         gamma_max: f64,

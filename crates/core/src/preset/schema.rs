@@ -38,6 +38,7 @@ pub const MAX_NAME_CHARS: usize = 64;
 
 /// The format tag: only `"gaitlab-preset/1"` exists.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub enum Format {
     /// `"gaitlab-preset/1"`.
     #[default]
@@ -53,8 +54,14 @@ pub enum Format {
 ///  "scenario": {"engine": "ik", "mode": "walk", "method": "sdls"}}
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct Preset {
+    /// The JSON Schema an editor checks the file against (`"$schema"`, e.g. the
+    /// URL or path of `docs/schema/preset.schema.json`); accepted and otherwise
+    /// ignored. Kept when the preset is written back. Default none.
+    #[serde(rename = "$schema", default, skip_serializing_if = "Option::is_none")]
+    pub schema: Option<String>,
     /// Always [`Format::V1`].
     pub format: Format,
     /// Short name (no whitespace, at most 64 characters), e.g. `human`; used in URLs and the CLI.
@@ -70,6 +77,7 @@ pub struct Preset {
 
 /// `skeleton`: the root, the joint tree and the effectors.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct SkeletonSpec {
     /// Where the root sits at reset.
@@ -87,14 +95,17 @@ pub struct SkeletonSpec {
 
 /// `skeleton.root`: She 2006 §3.1's root node near the hip, which moves the whole skeleton.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct RootSpec {
     /// World position of the root at reset, metres (`[x, y, z]`, y up).
+    #[cfg_attr(feature = "schema", schemars(with = "[f64; 3]"))]
     pub position: DVec3,
 }
 
 /// What a joint's variable moves, as written in JSON (`"revolute"` or `"prismatic"`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "lowercase")]
 pub enum JointType {
     /// Rotation about the axis; values in radians.
@@ -124,6 +135,7 @@ impl From<JointType> for JointKind {
 /// The joint's placement is `Trans(offset) · Rot(frame_rotation) · Motion(axis, value)`
 /// relative to its parent's moving frame (or the root frame).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct JointSpec {
     /// Unique name (no whitespace, at most 64 characters).
@@ -135,11 +147,14 @@ pub struct JointSpec {
     #[serde(default, rename = "type")]
     pub kind: JointType,
     /// Joint axis in the joint frame; any non-zero length (normalised when built).
+    #[cfg_attr(feature = "schema", schemars(with = "[f64; 3]"))]
     pub axis: DVec3,
     /// Joint origin in the parent's moving frame, metres.
+    #[cfg_attr(feature = "schema", schemars(with = "[f64; 3]"))]
     pub offset: DVec3,
     /// Fixed rotation of the joint frame as a rotation vector (axis × angle), radians. Default zero.
     #[serde(default, skip_serializing_if = "is_zero")]
+    #[cfg_attr(feature = "schema", schemars(with = "[f64; 3]"))]
     pub frame_rotation: DVec3,
     /// `[min, max]` of the joint value (radians or metres). Default unlimited.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -169,6 +184,7 @@ pub struct JointSpec {
 ///  "effector": "front_left_foot"}
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct LimbSpec {
     /// Unique limb name.
@@ -178,10 +194,12 @@ pub struct LimbSpec {
     pub parent: Option<String>,
     /// Origin of DH frame 0 in the parent's moving frame, metres. Default zero.
     #[serde(default)]
+    #[cfg_attr(feature = "schema", schemars(with = "[f64; 3]"))]
     pub base_offset: DVec3,
     /// Orientation of DH frame 0 (its z axis is the first joint axis) as a rotation vector, radians.
     /// Default zero.
     #[serde(default)]
+    #[cfg_attr(feature = "schema", schemars(with = "[f64; 3]"))]
     pub base_rotation: DVec3,
     /// DH rows, proximal first; at least one.
     pub joints: Vec<DhJointSpec>,
@@ -193,6 +211,7 @@ pub struct LimbSpec {
 /// One row of a DH table. The variable is `theta` (revolute) or `d` (prismatic);
 /// its value here is the rest value.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct DhJointSpec {
     /// Unique joint name (shares the namespace of `skeleton.joints`).
@@ -249,6 +268,7 @@ impl DhJointSpec {
 /// {"name": "left_foot", "joint": "left_ankle", "offset": [0, -0.06, 0.1], "orientation": false}
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct EffectorSpec {
     /// Unique effector name.
@@ -257,6 +277,7 @@ pub struct EffectorSpec {
     pub joint: String,
     /// Position in that joint's moving frame, metres. Default zero.
     #[serde(default)]
+    #[cfg_attr(feature = "schema", schemars(with = "[f64; 3]"))]
     pub offset: DVec3,
     /// Whether IK also tracks its orientation (3 more Jacobian rows). Default false.
     #[serde(default)]

@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 
 /// The four thesis motions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "kebab-case")]
 pub enum ThesisMode {
     /// Walking: double support, reachable foot targets.
@@ -68,13 +69,16 @@ impl ThesisMode {
 /// from the ground, z forward) and are given for the LEFT limbs; the right limbs
 /// mirror x and run half a cycle later.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(default, deny_unknown_fields)]
 pub struct CycleShape {
     /// Gait cycles per second (the thesis' `walk_speed` / `run_speed` as ω = 2πf).
     pub frequency_hz: f64,
     /// Foot target at the front extreme of the stroke, metres.
+    #[cfg_attr(feature = "schema", schemars(with = "[f64; 3]"))]
     pub front_foot: DVec3,
     /// Foot target at the back extreme of the stroke, metres.
+    #[cfg_attr(feature = "schema", schemars(with = "[f64; 3]"))]
     pub back_foot: DVec3,
     /// Extra foot height at mid-swing, metres: the foot rises by
     /// `step_height_m · max(0, cos φ)²` only while it swings forward (0 keeps
@@ -82,8 +86,10 @@ pub struct CycleShape {
     pub step_height_m: f64,
     /// Hand target at the front extreme of the swing, metres (heights at the
     /// mean root height; hands ride up and down with the root's bob).
+    #[cfg_attr(feature = "schema", schemars(with = "[f64; 3]"))]
     pub front_hand: DVec3,
     /// Hand target at the back extreme of the swing, metres.
+    #[cfg_attr(feature = "schema", schemars(with = "[f64; 3]"))]
     pub back_hand: DVec3,
     /// Mean root height above the ground, metres.
     pub root_height_m: f64,
@@ -140,6 +146,7 @@ impl Default for CycleShape {
 
 /// A wounded joint (She 2006 §5.1.1 "weighted parameters", §5.2.3).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(deny_unknown_fields)]
 pub struct WoundedJoint {
     /// Joint name.
@@ -158,6 +165,7 @@ fn one() -> f64 {
 
 /// Which effector plays which limb in the thesis script.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(default, deny_unknown_fields)]
 pub struct EffectorRoles {
     /// Effector that follows the left foot target.
@@ -183,6 +191,7 @@ impl Default for EffectorRoles {
 
 /// Everything the thesis' control module exposes (§5.1.1, §6.2 panels).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(default, deny_unknown_fields)]
 pub struct ThesisParams {
     /// Walking cycle.

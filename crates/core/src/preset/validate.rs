@@ -42,6 +42,24 @@ pub const MAX_START_RAMP_S: f64 = 10.0;
 /// Effectors a skeleton needs before the four thesis roles are checked.
 pub const THESIS_ROLE_COUNT: usize = 4;
 
+/// What a preset is loaded for. A rule is checked where the loaded preset uses
+/// what it checks: the thesis roles (`scenario.thesis.roles`) only where the
+/// She 2006 target script will drive them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Purpose {
+    /// Running the preset's scenario (the app, `gaitlab run`, `gaitlab validate`):
+    /// every rule. The roles are checked when the engine is `ik` and the skeleton
+    /// has at least [`THESIS_ROLE_COUNT`] effectors, since every thesis mode
+    /// (walk, run, wounded walk, wounded run) drives the four role effectors.
+    #[default]
+    Scenario,
+    /// Following recorded effector targets with the skeleton (`gaitlab track`):
+    /// the target script never runs, so the roles are not checked; every other
+    /// rule is (tracking reads the skeleton, `scenario.ik`, `method`, `fps` and
+    /// `thesis.iterations_per_frame`).
+    Tracking,
+}
+
 /// A joint or a limb: the units the topological sort orders.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Unit {
@@ -81,8 +99,8 @@ pub(crate) struct Plan {
     pub order: Vec<Unit>,
 }
 
-/// Checks every rule and returns the build order.
-pub(crate) fn check(preset: &Preset) -> Result<Plan, PresetError> {
+/// Checks every rule that applies to `purpose` and returns the build order.
+pub(crate) fn check(preset: &Preset, purpose: Purpose) -> Result<Plan, PresetError> {
     check_name("name", &preset.name)?;
     let skeleton = &preset.skeleton;
     check_counts(skeleton)?;
@@ -135,7 +153,7 @@ pub(crate) fn check(preset: &Preset) -> Result<Plan, PresetError> {
     let names = joint_names(skeleton)?;
     let order = topological_order(skeleton, &names)?;
     check_effectors(skeleton, &names)?;
-    check_scenario(preset, &names)?;
+    check_scenario(preset, &names, purpose)?;
     Ok(Plan { order })
 }
 
@@ -521,7 +539,11 @@ fn check_effectors(
     Ok(())
 }
 
-fn check_scenario(preset: &Preset, names: &HashMap<&str, NamePlace>) -> Result<(), PresetError> {
+fn check_scenario(
+    preset: &Preset,
+    names: &HashMap<&str, NamePlace>,
+    purpose: Purpose,
+) -> Result<(), PresetError> {
     let scenario = &preset.scenario;
     if !(1..=MAX_FPS).contains(&scenario.fps) {
         return Err(PresetError::new(
@@ -547,7 +569,13 @@ fn check_scenario(preset: &Preset, names: &HashMap<&str, NamePlace>) -> Result<(
                     "belongs to engine \"poda\"; this scenario's engine is \"ik\"",
                 ));
             }
-            check_thesis(&preset.skeleton, names, &scenario.thesis)
+            check_thesis(names, &scenario.thesis)?;
+            // The thesis script, the one reader of the roles, runs only for this
+            // engine and only when the scenario itself is run.
+            if purpose == Purpose::Scenario {
+                check_thesis_roles(&preset.skeleton, &scenario.thesis)?;
+            }
+            Ok(())
         }
         Engine::Poda => check_poda(&preset.skeleton, names, &scenario.poda_params()),
         Engine::Physics => {
@@ -746,12 +774,9 @@ fn check_cycle(prefix: &str, shape: &CycleShape) -> Result<(), PresetError> {
     Ok(())
 }
 
-/// Thesis parameters. Roles: the thesis script drives four effectors, so when the
-/// skeleton has at least [`THESIS_ROLE_COUNT`] effectors each role must name a
-/// distinct existing effector; a skeleton with fewer effectors cannot run the
-/// script (it can still track recorded targets) and its roles are not checked.
+/// Thesis parameters and wounded joints (engine `ik`); the roles are checked
+/// apart, by [`check_thesis_roles`], where the script will run.
 fn check_thesis(
-    skeleton: &SkeletonSpec,
     names: &HashMap<&str, NamePlace>,
     thesis: &ThesisParams,
 ) -> Result<(), PresetError> {
@@ -775,7 +800,7 @@ fn check_thesis(
             ));
         }
     }
-    check_thesis_roles(skeleton, thesis)
+    Ok(())
 }
 
 /// The ranges of every thesis parameter that does not depend on the skeleton
@@ -845,7 +870,11 @@ pub fn check_thesis_values(prefix: &str, thesis: &ThesisParams) -> Result<(), Pr
     Ok(())
 }
 
-/// The four thesis roles name distinct effectors (see [`check_thesis`]).
+/// Roles: the thesis script drives four effectors, so when the skeleton has at
+/// least [`THESIS_ROLE_COUNT`] effectors each role must name a distinct existing
+/// effector; a skeleton with fewer effectors cannot run the script (it can still
+/// track recorded targets) and its roles are not checked. Called for engine `ik`
+/// and [`Purpose::Scenario`] only.
 fn check_thesis_roles(skeleton: &SkeletonSpec, thesis: &ThesisParams) -> Result<(), PresetError> {
     let (_, effector_count) = totals(skeleton);
     if effector_count >= THESIS_ROLE_COUNT {

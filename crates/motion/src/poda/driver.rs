@@ -26,7 +26,7 @@ use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec2, DVec3};
 
 use super::body_track::{BodyDynamics, BodyTrack};
-use super::gait::{GaitError, GaitParams, LegPhase};
+use super::gait::{Derived, GaitError, GaitParams, LegPhase};
 use super::gait_metrics::GaitMetrics;
 use super::gaits::{gait_names, named_gait};
 use super::leg_ik::{LegIk, LegIkOptions};
@@ -282,6 +282,33 @@ impl PodaDriver {
     #[must_use]
     pub fn params(&self) -> &PodaParams {
         &self.params
+    }
+
+    /// Each supporting leg's upward force at this gait, newtons: the force
+    /// whose average over the cycle carries the body's weight (eq. 12–13 with
+    /// the body's mass and [`GRAVITY_MPS2`]).
+    #[must_use]
+    pub fn leg_force_n(&self) -> f64 {
+        self.gait
+            .leg_force_for_balance_n(self.params.body_mass_kg, GRAVITY_MPS2)
+    }
+
+    /// One leg's share of the body's weight, newtons (`m·g / legs`): a leg
+    /// force must exceed it (eq. 12's `a = F/m − g_n` > 0).
+    #[must_use]
+    pub fn weight_share_n(&self) -> f64 {
+        self.gait.gravity_share_mps2(GRAVITY_MPS2) * self.params.body_mass_kg
+    }
+
+    /// Sets the support-phase leg force, newtons (see
+    /// [`GaitParams::set_leg_force`]); the gait derives period and duty factor.
+    ///
+    /// # Errors
+    /// `force_n` not above [`PodaDriver::weight_share_n`], or a derived value
+    /// would leave its range; nothing changes.
+    pub fn set_leg_force_n(&mut self, force_n: f64) -> Result<Derived, GaitError> {
+        self.gait
+            .set_leg_force(force_n, self.params.body_mass_kg, GRAVITY_MPS2)
     }
 
     /// Sets the highest point of the transfer trajectory above the ground.

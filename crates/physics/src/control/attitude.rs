@@ -5,8 +5,8 @@
 use gaitlab_core::portable::Portable;
 use glam::{DQuat, DVec3};
 
-use crate::creature::Creature;
-use crate::data::Data;
+use crate::creatures::PhysicalCreature;
+use crate::dynamics::data::Data;
 
 /// The unit forward vector on the ground for a heading (rad about +y; 0 = +z).
 #[must_use]
@@ -18,7 +18,12 @@ pub fn heading_forward(heading: f64) -> DVec3 {
 /// pitch `pitch_d`, rad) as a world rotation vector (rad): its components on
 /// the lateral and forward axes are the pitch and roll errors, on y the yaw error.
 #[must_use]
-pub fn attitude_error(creature: &Creature, data: &Data, heading: f64, pitch_d: f64) -> DVec3 {
+pub fn attitude_error(
+    creature: &PhysicalCreature,
+    data: &Data,
+    heading: f64,
+    pitch_d: f64,
+) -> DVec3 {
     let actual = DQuat::from_mat3(&data.world[creature.trunk].rot);
     let desired = DQuat::from_rotation_y(heading) * DQuat::from_rotation_x(pitch_d);
     let mut err = actual * desired.inverse();
@@ -30,14 +35,14 @@ pub fn attitude_error(creature: &Creature, data: &Data, heading: f64, pitch_d: f
 
 /// The trunk's angular velocity in world coordinates (rad/s).
 #[must_use]
-pub fn trunk_rate(creature: &Creature, data: &Data) -> DVec3 {
+pub fn trunk_rate(creature: &PhysicalCreature, data: &Data) -> DVec3 {
     data.world[creature.trunk].rot * data.velocity[creature.trunk].angular
 }
 
 /// Position (m) and velocity (m/s) of the whole creature's centre of mass,
 /// world coordinates, in one pass over the bodies.
 #[must_use]
-pub fn com_state(creature: &Creature, data: &Data) -> (DVec3, DVec3) {
+pub fn com_state(creature: &PhysicalCreature, data: &Data) -> (DVec3, DVec3) {
     let model = &creature.model;
     let (mut p, mut v) = (DVec3::ZERO, DVec3::ZERO);
     for (i, b) in model.bodies().iter().enumerate() {
@@ -54,6 +59,6 @@ pub fn com_state(creature: &Creature, data: &Data) -> (DVec3, DVec3) {
 
 /// Velocity of the whole creature's centre of mass (world, m/s).
 #[must_use]
-pub fn com_velocity(creature: &Creature, data: &Data) -> DVec3 {
+pub fn com_velocity(creature: &PhysicalCreature, data: &Data) -> DVec3 {
     com_state(creature, data).1
 }

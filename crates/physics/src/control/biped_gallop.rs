@@ -27,9 +27,9 @@ use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate}
 use super::hip_servo::set_hip;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
-use crate::actuator::Stops;
 use crate::creatures::BIPED_LEG_M;
-use crate::sim::{ControlInput, Controller, Drive};
+use crate::world::actuator::Stops;
+use crate::world::sim::{ControlInput, Controller, Drive};
 
 /// How the legs swing forward (Raibert & Hodgins 1991, "Gaits").
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -425,7 +425,7 @@ impl BipedGallop {
             let error = (landing_height + p.hop_height_m * l) - self.apex_height;
             self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
         }
-        let com = crate::energy::center_of_mass(&input.creature.model, input.data);
+        let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
         let (prev, t_prev) = self.last_stride;
         if t_prev.is_finite() && input.time > t_prev {
             let along = heading_forward(p.heading).dot(com - prev) / (input.time - t_prev);
@@ -522,7 +522,7 @@ impl Controller for BipedGallop {
         let desired = forward * (p.speed_mps * l.sqrt() + self.speed_bias);
         let stops = self.leg_stops();
 
-        let com = crate::energy::center_of_mass(&creature.model, data);
+        let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
         let reach = (BIPED_LEG_M + p.landing_rest_m) * l;
         let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.ppowf(4.5));
         let (ykp, ykv) = (p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.ppowf(4.5));

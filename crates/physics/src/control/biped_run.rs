@@ -11,9 +11,9 @@ use super::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
 use super::hip_servo::set_hip;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
-use crate::actuator::Stops;
 use crate::creatures::BIPED_LEG_M;
-use crate::sim::{ControlInput, Controller, Drive};
+use crate::world::actuator::Stops;
+use crate::world::sim::{ControlInput, Controller, Drive};
 
 /// Parameters of biped running; lengths are leg-spring coordinates
 /// (metres of extension, 0 = the leg at full length).
@@ -193,7 +193,7 @@ impl BipedRun {
             }
             self.liftoff_height = trunk_y;
             // Speed over the last step against the desired speed.
-            let com = crate::energy::center_of_mass(&input.creature.model, input.data);
+            let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
             let (prev, t_prev) = self.last_liftoff;
             if t_prev.is_finite() && input.time > t_prev {
                 let along = heading_forward(p.heading).dot(com - prev) / (input.time - t_prev);

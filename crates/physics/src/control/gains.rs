@@ -2,33 +2,9 @@
 //! the `gain` command): each names a field of the controller's parameters, at
 //! scale 1 in the paper's units. Nothing limits a gain beyond being finite and
 //! non-negative — absurd gains are allowed, and the simulation's blow-up
-//! guard ([`crate::sim`]) catches what they do.
-
-/// One tunable gain.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Gain {
-    /// Parameter name (`posture_kp`, `leg_stiffness`, …).
-    pub name: &'static str,
-    /// Unit, for labels.
-    pub unit: &'static str,
-    /// Current value.
-    pub value: f64,
-    /// The controller's default value.
-    pub default: f64,
-}
-
-impl Gain {
-    /// A gain from its parts.
-    #[must_use]
-    pub const fn new(name: &'static str, unit: &'static str, value: f64, default: f64) -> Self {
-        Self {
-            name,
-            unit,
-            value,
-            default,
-        }
-    }
-}
+//! guard ([`crate::world::sim`]) catches what they do. Each is a
+//! [`Gain`](crate::world::sim::Gain), part of the controller interface the
+//! loop calls; the macro here declares a controller's.
 
 /// Declares `gains()` and `set_gain()` over named fields of `self.params`
 /// (given as `field => unit`), with `Default` supplying the defaults.
@@ -36,9 +12,9 @@ impl Gain {
 #[doc(hidden)]
 macro_rules! tunable_gains {
     ($params:ty; $($field:ident => $unit:literal),* $(,)?) => {
-        fn gains(&self) -> Vec<$crate::control::gains::Gain> {
+        fn gains(&self) -> Vec<$crate::world::sim::Gain> {
             let d = <$params>::default();
-            vec![$($crate::control::gains::Gain::new(stringify!($field), $unit, self.params.$field, d.$field)),*]
+            vec![$($crate::world::sim::Gain::new(stringify!($field), $unit, self.params.$field, d.$field)),*]
         }
 
         fn set_gain(&mut self, name: &str, value: f64) -> bool {

@@ -2,7 +2,7 @@
 //! leg's hip joints, used to position legs for landing and swing them
 //! (Raibert & Hodgins 1991, Figure 4's "position active leg for landing").
 
-use crate::sim::Drive;
+use crate::world::sim::Drive;
 
 /// Servo each hip joint to its target (eq. 5) with gains `kp`, `kv` and
 /// torque limit `max`.

@@ -37,12 +37,12 @@ use glam::{DVec2, DVec3};
 
 use super::attitude::com_velocity;
 use super::phase::Phase;
-use crate::actuator::Stops;
-use crate::creature::Creature;
-use crate::data::Data;
-use crate::ground::{GroundParams, PawPad};
-use crate::model::GRAVITY_MPS2;
-use crate::sim::{ControlInput, Controller, Drive, Sim};
+use crate::creatures::PhysicalCreature;
+use crate::dynamics::data::Data;
+use crate::dynamics::model::GRAVITY_MPS2;
+use crate::world::actuator::Stops;
+use crate::world::ground::{GroundParams, PawPad};
+use crate::world::sim::{ControlInput, Controller, Drive, Sim};
 
 /// Parameters of kangaroo hopping, at dynamic scale 1 (the controller scales
 /// them by the creature's L).
@@ -210,7 +210,7 @@ struct LegGeometry {
     foot: f64,
 }
 
-fn leg_geometry(creature: &Creature) -> Option<LegGeometry> {
+fn leg_geometry(creature: &PhysicalCreature) -> Option<LegGeometry> {
     let leg = creature.legs.first()?;
     let bodies = creature.model.bodies();
     let shin_body = bodies.get(leg.foot_body)?.parent?;
@@ -562,7 +562,7 @@ impl Controller for KangarooHop {
             return;
         };
         let ankle = leg.spring;
-        let com = crate::energy::center_of_mass(&creature.model, data);
+        let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
         let com_v = com_velocity(creature, data);
         self.start(l, com_v.z);
         self.ramp_speed(input.dt, l);
@@ -723,5 +723,5 @@ pub fn kangaroo_start(sim: &mut Sim, speed_mps: f64) {
     data.q[1] = -(leg.hip_in_trunk.y + toe.y) + 0.01 * l;
     data.qd[0] = speed_mps * l.sqrt();
     data.qd[1] = -0.5 * l.sqrt();
-    crate::kinematics::kinematics(&creature.model, data);
+    crate::dynamics::kinematics::kinematics(&creature.model, data);
 }

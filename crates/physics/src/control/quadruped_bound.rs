@@ -38,9 +38,9 @@ use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate}
 use super::hip_servo::HipServo;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
-use crate::actuator::Stops;
 use crate::creatures::QUADRUPED_LEG_M;
-use crate::sim::{ControlInput, Controller, Drive, Sim};
+use crate::world::actuator::Stops;
+use crate::world::sim::{ControlInput, Controller, Drive, Sim};
 
 /// The pairs: front then rear; within a pair the leg that lands first in
 /// the gallop comes first (front-right 1, front-left 0, rear-right 3, rear-left 2).
@@ -538,7 +538,7 @@ impl Controller for QuadrupedBound {
         let p = self.params;
         let fwd = heading_forward(p.heading);
         let lateral = DVec3::Y.cross(fwd);
-        let com = crate::energy::center_of_mass(&creature.model, data);
+        let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
         self.advance(input, com.dot(fwd));
 
         let trunk = creature.trunk;
@@ -648,7 +648,7 @@ impl Controller for QuadrupedBound {
                         - (reach * reach - displacement.length_squared())
                             .max(0.0)
                             .sqrt();
-                    let g = crate::GRAVITY_MPS2;
+                    let g = crate::dynamics::model::GRAVITY_MPS2;
                     let t_rem = if drop > 0.0 {
                         (hip_v.y + (hip_v.y * hip_v.y + 2.0 * g * drop).sqrt()) / g
                     } else {

@@ -1,24 +1,20 @@
-//! Quadruped trotting, bounding and galloping (Raibert & Hodgins 1991,
-//! "Control" — hopping, speed and posture — Figure 4, "Gaits", "Modeling",
-//! Tables 2 and 3).
+//! Quadruped trotting (Raibert & Hodgins 1991, "Control" — hopping, speed
+//! and posture — Figure 4, "Gaits", "Modeling", Tables 2 and 3).
 //!
-//! Trot and bound are *virtual biped* gaits: the legs work in pairs —
-//! diagonal pairs in the trot, front and rear pairs in the bound — and each
-//! pair acts as one virtual leg run by the state machine of Figure 4. The
-//! active pair's leg springs get a programmable rest length and a thrust in
-//! stance (eq. 1–2); the pair's feet are placed about the neutral point with
-//! the speed correction of eq. 3, each relative to its own hip; the hips
+//! The trot is a *virtual biped* gait: the legs work in diagonal pairs and
+//! each pair acts as one virtual leg run by the state machine of Figure 4.
+//! The active pair's leg springs get a programmable rest length and a thrust
+//! in stance (eq. 1–2); the pair's feet are placed about the neutral point
+//! with the speed correction of eq. 3, each relative to its own hip; the hips
 //! servo the trunk's pitch and roll in stance (eq. 4) and steer its yaw
 //! towards the commanded heading; the idle pair is kept short and swung
-//! forward. The gallop is the bound with the legs of each pair striking and
-//! leaving the ground separated in time and space: single support, double
-//! support, single support within each pair's stance.
+//! forward. (The bound and the gallop are [`super::quadruped_bound`].)
 //!
 //! The hop is regulated by the duration of the flight that follows each
 //! pair's lift-off (the Table-2 quantity), each pair's thrust adjusted after
 //! every flight. As in the paper, the standing length of the legs is reduced
-//! for the trot and bound. Every parameter is given for the creature at scale
-//! 1 and scaled by its dynamic scale L (Table 1).
+//! for the trot. Every parameter is given for the creature at scale 1 and
+//! scaled by its dynamic scale L (Table 1).
 
 use gaitlab_core::portable::Portable;
 use glam::{DQuat, DVec3};
@@ -27,50 +23,17 @@ use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate}
 use super::hip_servo::HipServo;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
-use crate::actuator::Stops;
 use crate::creatures::QUADRUPED_LEG_M;
-use crate::ground::GroundParams;
-use crate::sim::{ControlInput, Controller, Drive, Sim};
+use crate::world::actuator::Stops;
+use crate::world::ground::GroundParams;
+use crate::world::sim::{ControlInput, Controller, Drive, Sim};
 
-/// The quadruped's running gaits.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum QuadrupedGait {
-    /// Diagonal pairs (front-left + rear-right, front-right + rear-left).
-    #[default]
-    Trot,
-    /// Front pair, then rear pair, each pair's legs in unison.
-    Bound,
-    /// As the bound, the legs of each pair staggered in time and space.
-    Gallop,
-}
+/// The trot's two virtual legs, diagonal pairs of leg indices (front-left
+/// 0, front-right 1, rear-left 2, rear-right 3): front-left + rear-right,
+/// front-right + rear-left.
+pub const TROT_PAIRS: [[usize; 2]; 2] = [[0, 3], [1, 2]];
 
-impl QuadrupedGait {
-    /// Every gait.
-    pub const ALL: [QuadrupedGait; 3] = [Self::Trot, Self::Bound, Self::Gallop];
-
-    /// The gait's name.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Trot => "trot",
-            Self::Bound => "bound",
-            Self::Gallop => "gallop",
-        }
-    }
-
-    /// The two virtual legs: leg indices (front-left 0, front-right 1,
-    /// rear-left 2, rear-right 3), the first of each pair striking first in
-    /// the gallop.
-    #[must_use]
-    pub fn pairs(self) -> [[usize; 2]; 2] {
-        match self {
-            Self::Trot => [[0, 3], [1, 2]],
-            Self::Bound | Self::Gallop => [[1, 0], [3, 2]],
-        }
-    }
-}
-
-/// The per-gait tuning of [`QuadrupedRun`] (values at scale 1).
+/// The trot's tuning in [`QuadrupedRun`] (values at scale 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GaitTuning {
     /// Leg spring stiffness k of eq. 1 (N/m).
@@ -81,15 +44,14 @@ pub struct GaitTuning {
     /// length servo, damped so a lengthened leg does not ring before landing.
     pub leg_air_damping: f64,
     /// Spring rest for landing and standing (m of extension from full
-    /// length, ≤ 0): the paper shortened it for the trot and bound.
+    /// length, ≤ 0): the paper shortened it for the trot.
     pub landing_rest_m: f64,
     /// Rest of a shortened (idle) leg (m of extension, < `landing_rest_m`).
     pub idle_rest_m: f64,
     /// Initial thrust: extra rest length in the thrust state (m).
     pub thrust_m: f64,
     /// Desired flight duration after the lift-off of pair 0 and of pair 1
-    /// (s): the trot's flight; the bound's gathered (after the front pair)
-    /// and extended (after the rear pair) flights.
+    /// (s): the trot's flight.
     pub flight_s: [f64; 2],
     /// Initial guess of the stance duration T_s of eq. 3 (s).
     pub stance_s: f64,
@@ -110,8 +72,7 @@ pub struct GaitTuning {
     /// speed error (dimensionless).
     pub speed_gain: f64,
     /// Pitch swing (rad): the desired pitch in the stance of pair 0 is
-    /// `pitch_d + pitch_swing`, in that of pair 1 `pitch_d − pitch_swing`
-    /// (the bound's trunk noses down on its front legs and up on its rear).
+    /// `pitch_d + pitch_swing`, in that of pair 1 `pitch_d − pitch_swing`.
     pub pitch_swing: f64,
     /// Largest horizontal foot force the posture servo may ask for, as a
     /// fraction of the leg's spring force: the pitch torque of each stance
@@ -133,15 +94,6 @@ pub struct QuadrupedRunParams {
     pub heading: f64,
     /// Tuning of the trot.
     pub trot: GaitTuning,
-    /// Tuning of the bound.
-    pub bound: GaitTuning,
-    /// Tuning of the gallop.
-    pub gallop: GaitTuning,
-    /// Gallop: delay of the second leg of a pair after the first touches (s).
-    pub gallop_lag_s: f64,
-    /// Gallop: the second foot lands this far ahead of the first's
-    /// neutral-point placement (m).
-    pub gallop_spread_m: f64,
     /// Thrust change per second of flight-duration error (m/s), eq. 2's
     /// energy injection regulated hop by hop.
     pub flight_gain: f64,
@@ -181,39 +133,10 @@ impl Default for QuadrupedRunParams {
             posture_force_ratio: f64::INFINITY,
             wait_for_descent: true,
         };
-        let bound = GaitTuning {
-            leg_stiffness: 4_500.0,
-            leg_damping: 15.0,
-            leg_air_damping: 120.0,
-            landing_rest_m: -0.08,
-            idle_rest_m: -0.30,
-            thrust_m: 0.03,
-            flight_s: [0.22, 0.03],
-            stance_s: 0.09,
-            placement_gain_s: 0.15,
-            pitch_kp: 800.0,
-            pitch_kv: 60.0,
-            roll_kp: 400.0,
-            roll_kv: 70.0,
-            pitch_d: 0.0,
-            speed_gain: 0.0,
-            pitch_swing: 0.0,
-            posture_force_ratio: f64::INFINITY,
-            wait_for_descent: false,
-        };
-        let gallop = GaitTuning {
-            flight_s: [0.18, 0.03],
-            stance_s: 0.12,
-            ..bound
-        };
         Self {
             speed_mps: 2.3,
             heading: 0.0,
             trot,
-            bound,
-            gallop,
-            gallop_lag_s: 0.03,
-            gallop_spread_m: 0.05,
             flight_gain: 0.05,
             max_thrust_m: 0.10,
             yaw_kp: 300.0,
@@ -225,30 +148,18 @@ impl Default for QuadrupedRunParams {
     }
 }
 
-impl QuadrupedRunParams {
-    /// The tuning of `gait`.
-    #[must_use]
-    pub fn tuning(&self, gait: QuadrupedGait) -> &GaitTuning {
-        match gait {
-            QuadrupedGait::Trot => &self.trot,
-            QuadrupedGait::Bound => &self.bound,
-            QuadrupedGait::Gallop => &self.gallop,
-        }
-    }
-}
-
 /// The ground the quadruped runs on at scale `l`: the default springs scaled.
 #[must_use]
 pub fn quadruped_ground(l: f64) -> GroundParams {
     GroundParams::default().scaled(l)
 }
 
-/// Put the quadruped of `sim` in the initial state for `gait` at `speed_mps`
-/// (scale-1 speed, scaled by √L): trunk level just above standing height,
-/// moving forward along +z, legs hanging, the first pair about to land.
-pub fn quadruped_start(sim: &mut Sim, gait: QuadrupedGait, speed_mps: f64) {
+/// Put the quadruped of `sim` in the initial state for the trot at
+/// `speed_mps` (scale-1 speed, scaled by √L): trunk level just above standing
+/// height, moving forward along +z, legs hanging, the first pair about to land.
+pub fn quadruped_start(sim: &mut Sim, speed_mps: f64) {
     let l = sim.creature.scale;
-    let tuning = *QuadrupedRunParams::default().tuning(gait);
+    let tuning = QuadrupedRunParams::default().trot;
     sim.data.q.fill(0.0);
     sim.data.qd.fill(0.0);
     for leg in &sim.creature.legs {
@@ -267,14 +178,13 @@ pub fn quadruped_start(sim: &mut Sim, gait: QuadrupedGait, speed_mps: f64) {
     }
 }
 
-/// The quadruped running controller: a virtual biped on pairs of legs.
+/// The quadruped running controller, the trot: a virtual biped on diagonal
+/// pairs of legs.
 #[derive(Clone, Debug)]
 pub struct QuadrupedRun {
     /// Parameters (editable while running).
     pub params: QuadrupedRunParams,
-    gait: QuadrupedGait,
-    requested: QuadrupedGait,
-    /// The active (supporting or landing) pair, 0 or 1 of [`QuadrupedGait::pairs`].
+    /// The active (supporting or landing) pair, 0 or 1 of [`TROT_PAIRS`].
     pub active: usize,
     /// Each leg's state; the idle pair's legs stay in [`Phase::Flight`].
     pub leg_phase: [Phase; 4],
@@ -303,14 +213,12 @@ pub struct QuadrupedRun {
 }
 
 impl QuadrupedRun {
-    /// A controller for `gait`, starting in flight with pair 0 about to land.
+    /// A trot controller, starting in flight with pair 0 about to land.
     #[must_use]
-    pub fn new(params: QuadrupedRunParams, gait: QuadrupedGait, scale: f64) -> Self {
-        let t = *params.tuning(gait);
+    pub fn new(params: QuadrupedRunParams, scale: f64) -> Self {
+        let t = params.trot;
         Self {
             params,
-            gait,
-            requested: gait,
             active: 0,
             leg_phase: [Phase::Flight; 4],
             stance_s: [t.stance_s * scale.sqrt(); 2],
@@ -320,7 +228,7 @@ impl QuadrupedRun {
             done: [false; 4],
             touchdown_time: 0.0,
             leg_touchdown: [0.0; 4],
-            stance_rest: [params.tuning(gait).landing_rest_m * scale; 4],
+            stance_rest: [params.trot.landing_rest_m * scale; 4],
             hip_target: [[0.0; 2]; 4],
             liftoff_time: 0.0,
             liftoff_pair: None,
@@ -330,17 +238,6 @@ impl QuadrupedRun {
         }
     }
 
-    /// The gait being run.
-    #[must_use]
-    pub fn gait(&self) -> QuadrupedGait {
-        self.gait
-    }
-
-    /// Command a gait; the change happens at the next lift-off.
-    pub fn set_gait(&mut self, gait: QuadrupedGait) {
-        self.requested = gait;
-    }
-
     /// The state of the active virtual leg (Figure 4): flight until a leg
     /// of the active pair lands, then the state of its first leg in stance.
     #[must_use]
@@ -348,7 +245,7 @@ impl QuadrupedRun {
         if !self.in_stance {
             return Phase::Flight;
         }
-        let pair = self.gait.pairs()[self.active];
+        let pair = TROT_PAIRS[self.active];
         pair.iter()
             .map(|&i| self.leg_phase[i])
             .find(|&p| p != Phase::Flight)
@@ -356,7 +253,7 @@ impl QuadrupedRun {
     }
 
     fn tuning(&self) -> GaitTuning {
-        *self.params.tuning(self.gait)
+        self.params.trot
     }
 
     fn leg_stops(&self) -> Stops {
@@ -369,14 +266,6 @@ impl QuadrupedRun {
         }
     }
 
-    /// Whether the second leg of a gallop pair is still held back.
-    fn held_back(&self, slot: usize, time: f64) -> bool {
-        self.gait == QuadrupedGait::Gallop
-            && slot == 1
-            && (!self.in_stance
-                || time - self.touchdown_time < self.params.gallop_lag_s * self.scale.sqrt())
-    }
-
     fn advance_phase(
         &mut self,
         input: &ControlInput<'_>,
@@ -386,7 +275,7 @@ impl QuadrupedRun {
     ) {
         let t = self.tuning();
         let l = self.scale;
-        let pair = self.gait.pairs()[self.active];
+        let pair = TROT_PAIRS[self.active];
         let landing = t.landing_rest_m * l;
         // Flight time of the pair that lifted off last ends at the first touch
         // of any foot.
@@ -400,7 +289,7 @@ impl QuadrupedRun {
                 .clamp(0.0, self.params.max_thrust_m * l);
             self.liftoff_pair = None;
         }
-        for (slot, &i) in pair.iter().enumerate() {
+        for &i in &pair {
             if self.done[i] {
                 continue;
             }
@@ -411,11 +300,7 @@ impl QuadrupedRun {
             let phase = &mut self.leg_phase[i];
             match *phase {
                 Phase::Flight => {
-                    let armed = if slot == 1 && self.gait == QuadrupedGait::Gallop {
-                        self.in_stance
-                    } else {
-                        descending || self.in_stance || !t.wait_for_descent
-                    };
+                    let armed = descending || self.in_stance || !t.wait_for_descent;
                     if touching && armed {
                         *phase = Phase::Loading;
                         self.leg_touchdown[i] = input.time;
@@ -473,35 +358,15 @@ impl QuadrupedRun {
             self.done = [false; 4];
             self.leg_phase = [Phase::Flight; 4];
             self.active = 1 - self.active;
-            if self.requested != self.gait {
-                self.switch_gait(pair);
-            }
         }
-    }
-
-    fn switch_gait(&mut self, lifted: [usize; 2]) {
-        let l = self.scale;
-        self.gait = self.requested;
-        let t = self.tuning();
-        let pairs = self.gait.pairs();
-        // The next active pair is the one that did not just lift off the most.
-        let overlap = |p: [usize; 2]| p.iter().filter(|i| lifted.contains(i)).count();
-        self.active = if overlap(pairs[0]) <= overlap(pairs[1]) {
-            0
-        } else {
-            1
-        };
-        self.stance_s = [t.stance_s * l.sqrt(); 2];
-        self.thrust = [t.thrust_m * l; 2];
-        self.liftoff_pair = None;
     }
 }
 
 impl Controller for QuadrupedRun {
-    fn gains(&self) -> Vec<crate::control::gains::Gain> {
-        use crate::control::gains::Gain;
-        let t = self.params.tuning(self.gait);
-        let d = *QuadrupedRunParams::default().tuning(self.gait);
+    fn gains(&self) -> Vec<crate::world::sim::Gain> {
+        use crate::world::sim::Gain;
+        let t = &self.params.trot;
+        let d = QuadrupedRunParams::default().trot;
         vec![
             Gain::new("leg_stiffness", "N/m", t.leg_stiffness, d.leg_stiffness),
             Gain::new("leg_damping", "N·s/m", t.leg_damping, d.leg_damping),
@@ -522,11 +387,7 @@ impl Controller for QuadrupedRun {
         if !(value.is_finite() && value >= 0.0) {
             return false;
         }
-        let t = match self.gait {
-            QuadrupedGait::Trot => &mut self.params.trot,
-            QuadrupedGait::Bound => &mut self.params.bound,
-            QuadrupedGait::Gallop => &mut self.params.gallop,
-        };
+        let t = &mut self.params.trot;
         let slot = match name {
             "leg_stiffness" => &mut t.leg_stiffness,
             "leg_damping" => &mut t.leg_damping,
@@ -563,7 +424,7 @@ impl Controller for QuadrupedRun {
         let trunk = creature.trunk;
         let trunk_rot = data.world[trunk].rot;
         let trunk_pos = data.world[trunk].pos;
-        let pair = self.gait.pairs()[self.active];
+        let pair = TROT_PAIRS[self.active];
         let descending = pair
             .iter()
             .map(|&i| {
@@ -572,11 +433,11 @@ impl Controller for QuadrupedRun {
             })
             .sum::<f64>()
             < 0.0;
-        let com = crate::energy::center_of_mass(&creature.model, data);
+        let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
         let fwd = heading_forward(self.params.heading);
         self.advance_phase(input, drives, descending, com.dot(fwd));
-        let pair = self.gait.pairs()[self.active];
-        let idle = self.gait.pairs()[1 - self.active];
+        let pair = TROT_PAIRS[self.active];
+        let idle = TROT_PAIRS[1 - self.active];
         let p = self.params;
         let t = self.tuning();
         let stops = self.leg_stops();
@@ -588,13 +449,7 @@ impl Controller for QuadrupedRun {
         // reach the ground together although the trunk pitches and rolls.
         let hip_y = |i: usize| (trunk_rot * creature.legs[i].hip_in_trunk).y;
         let mean_hip_y = (hip_y(pair[0]) + hip_y(pair[1])) / 2.0;
-        let level = |i: usize| {
-            if self.gait == QuadrupedGait::Gallop {
-                0.0
-            } else {
-                (hip_y(i) - mean_hip_y).clamp(-0.08 * l, 0.08 * l)
-            }
-        };
+        let level = |i: usize| (hip_y(i) - mean_hip_y).clamp(-0.08 * l, 0.08 * l);
         // Leg springs: eq. 1 with a programmable rest.
         for (i, leg) in creature.legs.iter().enumerate() {
             let d = &mut drives[leg.spring];
@@ -607,18 +462,16 @@ impl Controller for QuadrupedRun {
             } * l.ppowf(2.5);
             d.spring.max_force = f64::INFINITY;
             d.feedforward = 0.0;
-            let slot = pair.iter().position(|&j| j == i);
-            d.spring.rest = match slot {
-                None => short,
-                Some(_) if self.done[i] => short,
-                Some(s) => match self.leg_phase[i] {
+            d.spring.rest = if !pair.contains(&i) || self.done[i] {
+                short
+            } else {
+                match self.leg_phase[i] {
                     Phase::Thrust => self.stance_rest[i] + thrust,
                     Phase::Unloading => short,
-                    Phase::Flight if self.held_back(s, input.time) => short,
                     Phase::Flight if !descending && !self.in_stance && t.wait_for_descent => short,
                     Phase::Flight => (landing + level(i)).min(0.0),
                     _ => self.stance_rest[i],
-                },
+                }
             };
         }
         // Foot placement (eq. 3) for the active pair's legs in the air.
@@ -670,7 +523,7 @@ impl Controller for QuadrupedRun {
             .sum();
         let c = if lever > 1e-6 { yaw_t / lever } else { 0.0 };
         let mut active_pitch = 0.0;
-        for (slot, &i) in pair.iter().enumerate() {
+        for &i in &pair {
             let leg = &creature.legs[i];
             let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
             active_pitch += data.q[leg.hip[1]] / 2.0;
@@ -681,11 +534,6 @@ impl Controller for QuadrupedRun {
             }
             match phase {
                 Phase::Flight => {
-                    let spread = if slot == 1 && self.gait == QuadrupedGait::Gallop {
-                        fwd * (p.gallop_spread_m * l)
-                    } else {
-                        DVec3::ZERO
-                    };
                     // Aim at where the hip will be at touchdown, so the
                     // target stays put on the ground and the leg sweeps
                     // back as the body travels (ground speed matching).
@@ -694,7 +542,7 @@ impl Controller for QuadrupedRun {
                         - (reach * reach - displacement.length_squared())
                             .max(0.0)
                             .sqrt();
-                    let g = crate::GRAVITY_MPS2;
+                    let g = crate::dynamics::model::GRAVITY_MPS2;
                     let t_rem = if drop > 0.0 {
                         (hip_v.y + (hip_v.y * hip_v.y + 2.0 * g * drop).sqrt()) / g
                     } else {
@@ -702,8 +550,7 @@ impl Controller for QuadrupedRun {
                     }
                     .min(0.5 * l.sqrt());
                     let ahead = DVec3::new(hip_v.x, 0.0, hip_v.z) * t_rem;
-                    let foot =
-                        DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead + displacement + spread;
+                    let foot = DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead + displacement;
                     let dir = leg_direction(trunk_rot, foot - hip_world, reach);
                     let (roll, pitch) = gimbal_angles(dir);
                     servo.set(drives, &leg.hip, [roll, pitch], &mut self.hip_target[i]);
@@ -743,21 +590,15 @@ impl Controller for QuadrupedRun {
                 }
             }
         }
-        // The idle pair swings forward: in the trot it mirrors the active
-        // pair's sweep; in the bound and gallop, whose trunk pitches, it is
-        // brought to its landing direction in the world, ready for a short flight.
+        // The idle pair swings forward, mirroring the active pair's sweep.
         for &i in &idle {
             let leg = &creature.legs[i];
-            let target = if self.gait == QuadrupedGait::Trot {
-                [0.0, -active_pitch]
-            } else {
-                let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
-                let foot = DVec3::new(hip_world.x, 0.0, hip_world.z) + displacement;
-                let (roll, pitch) =
-                    gimbal_angles(leg_direction(trunk_rot, foot - hip_world, reach));
-                [roll, pitch]
-            };
-            servo.set(drives, &leg.hip, target, &mut self.hip_target[i]);
+            servo.set(
+                drives,
+                &leg.hip,
+                [0.0, -active_pitch],
+                &mut self.hip_target[i],
+            );
         }
     }
 }

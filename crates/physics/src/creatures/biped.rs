@@ -6,8 +6,8 @@
 use glam::DVec3;
 
 use super::build::{Builder, paper, paper_inertia};
-use crate::creature::{Creature, Leg, Species};
-use crate::model::{Joint, Model, ModelError};
+use super::physical_creature::{Leg, PhysicalCreature, Species};
+use crate::dynamics::model::{Joint, Model, ModelError};
 
 /// Table 3, biped: trunk mass (kg) and inertia `[x y z]` (kg·m²).
 const TRUNK_MASS_KG: f64 = 23.1;
@@ -33,7 +33,7 @@ pub const LEG_LENGTH_M: f64 = UPPER_LENGTH_M + LOWER_LENGTH_M;
 ///
 /// # Errors
 /// Never for a positive finite `l`; the model check's error otherwise.
-pub fn biped(l: f64) -> Result<Creature, ModelError> {
+pub fn biped(l: f64) -> Result<PhysicalCreature, ModelError> {
     let mut b = Builder::new(l);
     let [ix, iy, iz] = TRUNK_INERTIA;
     let trunk = b.body(
@@ -92,7 +92,7 @@ pub fn biped(l: f64) -> Result<Creature, ModelError> {
         });
         dof += 4;
     }
-    Ok(Creature {
+    Ok(PhysicalCreature {
         species: Species::Biped,
         scale: l,
         model: Model::new(b.bodies)?,

@@ -4,8 +4,8 @@
 
 use glam::{DMat3, DVec3};
 
-use crate::model::{Body, Joint};
-use crate::spatial::ParentLink;
+use crate::dynamics::model::{Body, Joint};
+use crate::dynamics::spatial::ParentLink;
 
 /// A paper-frame vector `(forward, left, up)` in gaitlab axes.
 #[must_use]

@@ -12,8 +12,8 @@
 use glam::{DMat3, DVec3};
 
 use super::build::{Builder, paper};
-use crate::creature::{Creature, Leg, Species};
-use crate::model::{Joint, Model, ModelError};
+use super::physical_creature::{Leg, PhysicalCreature, Species};
+use crate::dynamics::model::{Joint, Model, ModelError};
 
 /// One link of Table 3: length, mass centre from the proximal joint (m),
 /// mass (kg), moment of inertia about the lateral axis (kg·m²).
@@ -82,7 +82,7 @@ fn planar_inertia(i: f64) -> DMat3 {
 ///
 /// # Errors
 /// The model check's error for a non-positive or non-finite `l`.
-pub fn kangaroo(l: f64) -> Result<Creature, ModelError> {
+pub fn kangaroo(l: f64) -> Result<PhysicalCreature, ModelError> {
     let mut b = Builder::new(l);
     let forward = b.link(
         "base-forward",
@@ -169,7 +169,7 @@ pub fn kangaroo(l: f64) -> Result<Creature, ModelError> {
         foot_point: down(FOOT.length) * l,
         hip_in_trunk: hip_at * l,
     }];
-    Ok(Creature {
+    Ok(PhysicalCreature {
         species: Species::Kangaroo,
         scale: l,
         model: Model::new(b.bodies)?,

@@ -9,8 +9,8 @@
 use glam::DVec3;
 
 use super::build::{Builder, paper, paper_inertia};
-use crate::creature::{Creature, Leg, Species};
-use crate::model::{Joint, Model, ModelError};
+use super::physical_creature::{Leg, PhysicalCreature, Species};
+use crate::dynamics::model::{Joint, Model, ModelError};
 
 const TRUNK_MASS_KG: f64 = 10.0;
 const TRUNK_INERTIA: [f64; 3] = [0.54, 2.35, 2.39];
@@ -37,7 +37,7 @@ pub const LEG_NAMES: [&str; 4] = ["front-left", "front-right", "rear-left", "rea
 ///
 /// # Errors
 /// The model check's error for a non-positive or non-finite `l`.
-pub fn quadruped(l: f64) -> Result<Creature, ModelError> {
+pub fn quadruped(l: f64) -> Result<PhysicalCreature, ModelError> {
     let mut b = Builder::new(l);
     let [ix, iy, iz] = TRUNK_INERTIA;
     let trunk = b.body(
@@ -100,7 +100,7 @@ pub fn quadruped(l: f64) -> Result<Creature, ModelError> {
         });
         dof += 3;
     }
-    Ok(Creature {
+    Ok(PhysicalCreature {
         species: Species::Quadruped,
         scale: l,
         model: Model::new(b.bodies)?,

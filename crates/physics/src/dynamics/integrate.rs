@@ -8,8 +8,8 @@
 
 use glam::DQuat;
 
-use crate::data::Data;
-use crate::model::Model;
+use crate::dynamics::data::Data;
+use crate::dynamics::model::Model;
 
 /// Advance the state by `dt` seconds.
 pub fn integrate(model: &Model, data: &mut Data, dt: f64) {

@@ -10,11 +10,9 @@ use crate::control::kangaroo_hop::{KangarooHop, KangarooHopParams, kangaroo_star
 use crate::control::quadruped_bound::{
     BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
 };
-use crate::control::quadruped_run::{
-    QuadrupedGait, QuadrupedRun, QuadrupedRunParams, quadruped_start,
-};
-use crate::creature::{Creature, Species};
-use crate::sim::{Controller, Sim};
+use crate::control::quadruped_run::{QuadrupedRun, QuadrupedRunParams, quadruped_start};
+use crate::creatures::{PhysicalCreature, Species};
+use crate::world::sim::{Controller, Sim};
 
 /// The gaits of each model, the default first.
 #[must_use]
@@ -69,7 +67,11 @@ impl GaitController {
 }
 
 impl Controller for GaitController {
-    fn control(&mut self, input: &crate::sim::ControlInput<'_>, drives: &mut [crate::sim::Drive]) {
+    fn control(
+        &mut self,
+        input: &crate::world::sim::ControlInput<'_>,
+        drives: &mut [crate::world::sim::Drive],
+    ) {
         self.inner_mut().control(input, drives);
     }
 
@@ -89,7 +91,7 @@ impl Controller for GaitController {
         self.inner_mut().set_hop_height(height_m);
     }
 
-    fn gains(&self) -> Vec<crate::control::gains::Gain> {
+    fn gains(&self) -> Vec<crate::world::sim::Gain> {
         self.inner().gains()
     }
 
@@ -104,7 +106,7 @@ impl Controller for GaitController {
 /// the rest); other creatures keep the preset's rest pose.
 pub fn start_state(sim: &mut Sim, controller: &GaitController, speed_mps: f64) {
     match controller {
-        GaitController::Quadruped(c) => quadruped_start(sim, c.gait(), speed_mps),
+        GaitController::Quadruped(_) => quadruped_start(sim, speed_mps),
         GaitController::QuadrupedBound(_) => bound_start(sim, speed_mps),
         GaitController::Kangaroo(_) => {
             kangaroo_start(sim, speed_mps.clamp(0.0, KANGAROO_START_MPS))
@@ -120,7 +122,7 @@ pub fn start_state(sim: &mut Sim, controller: &GaitController, speed_mps: f64) {
 /// `scenario.physics.gait` for a gait the model lacks; `scenario.physics.legs`
 /// when the legs do not fit the gait's controller.
 pub fn make_controller(
-    creature: &Creature,
+    creature: &PhysicalCreature,
     gait: &str,
     params: &PhysicsParams,
 ) -> Result<GaitController, PresetError> {
@@ -188,11 +190,7 @@ pub fn make_controller(
                     speed_mps: params.speed_mps,
                     ..QuadrupedRunParams::default()
                 };
-                return Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(
-                    p,
-                    QuadrupedGait::Trot,
-                    l,
-                ))));
+                return Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(p, l))));
             }
             let style = if gait == "bound" {
                 BoundStyle::Bound

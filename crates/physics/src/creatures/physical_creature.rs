@@ -4,7 +4,7 @@
 
 use glam::DVec3;
 
-use crate::model::Model;
+use crate::dynamics::model::Model;
 
 /// One leg's joints (coordinate indices into `Data::q`) and its foot.
 #[derive(Clone, Debug, PartialEq)]
@@ -38,9 +38,11 @@ pub enum Species {
     Kangaroo,
 }
 
-/// A creature ready to simulate.
+/// A creature ready to simulate: the physical counterpart of the preset it
+/// was built from (`gaitlab_core::Creature`, the parsed preset; see
+/// [`creature_from_preset`](crate::engine::preset::creature_from_preset)).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Creature {
+pub struct PhysicalCreature {
     /// Which model.
     pub species: Species,
     /// The dynamic scale factor L it was built at (Table 1); 1 is the paper's size.

@@ -4,12 +4,12 @@
 //! (Raibert & Hodgins 1991, "Modeling"); this computes the same accelerations.
 //!
 //! Reads `q`, `qd`, `tau`, `external` and the base state; runs
-//! [`kinematics`](crate::kinematics::kinematics); writes `qdd`,
+//! [`kinematics`](crate::dynamics::kinematics::kinematics); writes `qdd`,
 //! `base_acceleration` and every body's `acceleration`.
 
-use crate::data::Data;
-use crate::model::Model;
-use crate::spatial::{Force, Motion};
+use crate::dynamics::data::Data;
+use crate::dynamics::model::Model;
+use crate::dynamics::spatial::{Force, Motion};
 
 /// Why the dynamics could not be solved.
 #[derive(Clone, Debug, PartialEq)]
@@ -39,7 +39,7 @@ pub(crate) fn gravity_force(model: &Model, data: &Data, i: usize) -> Force {
 /// [`DynamicsError`] when a joint drives no inertia (a massless chain end) or
 /// the base's articulated inertia is singular; `data` keeps its last state.
 pub fn forward_dynamics(model: &Model, data: &mut Data) -> Result<(), DynamicsError> {
-    crate::kinematics::kinematics(model, data);
+    crate::dynamics::kinematics::kinematics(model, data);
     accelerations(model, data)
 }
 
@@ -71,9 +71,9 @@ pub fn accelerations(model: &Model, data: &mut Data) -> Result<(), DynamicsError
         let s = bodies[i].joint.subspace();
         let ia = data.art_inertia[i];
         let u_force = match bodies[i].joint {
-            crate::model::Joint::Revolute(axis) => ia.mul_angular(axis),
-            crate::model::Joint::Prismatic(axis) => ia.mul_linear(axis),
-            crate::model::Joint::Free => ia.mul(s),
+            crate::dynamics::model::Joint::Revolute(axis) => ia.mul_angular(axis),
+            crate::dynamics::model::Joint::Prismatic(axis) => ia.mul_linear(axis),
+            crate::dynamics::model::Joint::Free => ia.mul(s),
         };
         let d = s.dot(u_force);
         if !(d > 1e-14 && d.is_finite()) {

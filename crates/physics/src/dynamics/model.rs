@@ -10,7 +10,7 @@
 
 use glam::{DMat3, DVec3};
 
-use crate::spatial::{Inertia, Motion, ParentLink};
+use crate::dynamics::spatial::{Inertia, Motion, ParentLink};
 
 /// How a body moves relative to its parent.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,14 +1,14 @@
 //! The joint-space mass matrix by the composite-rigid-body algorithm
 //! (Featherstone 2008 §6.2), and the O(n³) forward dynamics
-//! `H q̈ = τ − C` it gives with [`crate::rnea`] — the independent path the
+//! `H q̈ = τ − C` it gives with [`crate::dynamics::rnea`] — the independent path the
 //! O(n) articulated-body algorithm is tested against.
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::data::Data;
-use crate::model::Model;
-use crate::rnea::inverse_dynamics;
-use crate::spatial::{Force, Motion};
+use crate::dynamics::data::Data;
+use crate::dynamics::model::Model;
+use crate::dynamics::rnea::inverse_dynamics;
+use crate::dynamics::spatial::{Force, Motion};
 
 /// The motion-subspace columns of body `i` (six unit motions for the free base).
 fn columns(model: &Model, i: usize) -> Vec<(usize, Motion)> {
@@ -38,11 +38,11 @@ fn columns(model: &Model, i: usize) -> Vec<(usize, Motion)> {
     reason = "body indices address several parallel arrays, as in Featherstone's pseudocode"
 )]
 pub fn mass_matrix(model: &Model, data: &mut Data) -> DMatrix<f64> {
-    crate::kinematics::kinematics(model, data);
+    crate::dynamics::kinematics::kinematics(model, data);
     let bodies = model.bodies();
     let mut composite: Vec<_> = bodies
         .iter()
-        .map(crate::model::Body::spatial_inertia)
+        .map(crate::dynamics::model::Body::spatial_inertia)
         .collect();
     for i in (0..bodies.len()).rev() {
         if let Some(p) = bodies[i].parent {
@@ -74,7 +74,7 @@ pub fn mass_matrix(model: &Model, data: &mut Data) -> DMatrix<f64> {
 }
 
 /// Forward dynamics by `q̈ = H⁻¹ (τ − C)`: the generalized accelerations
-/// (`[base…, joints…]`, see [`crate::rnea`]), or `None` when `H` is singular.
+/// (`[base…, joints…]`, see [`crate::dynamics::rnea`]), or `None` when `H` is singular.
 #[must_use]
 pub fn forward_dynamics_dense(model: &Model, data: &mut Data) -> Option<Vec<f64>> {
     let nv = model.nv();

@@ -11,8 +11,8 @@
 use gaitlab_core::portable::Portable;
 use glam::DVec3;
 
-use crate::creature::Creature;
-use crate::data::Data;
+use crate::creatures::PhysicalCreature;
+use crate::dynamics::data::Data;
 
 /// The non-linear paw pad of eq. 6.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -144,7 +144,7 @@ fn wrap_angle(a: f64) -> f64 {
 /// The contact stage: reads kinematics, updates `contacts` (one per leg) and
 /// adds the ground forces to `data.external`.
 pub fn contact_forces(
-    creature: &Creature,
+    creature: &PhysicalCreature,
     data: &mut Data,
     params: &GroundParams,
     terrain: &Terrain,

@@ -6,9 +6,9 @@
 
 use glam::DMat3;
 
-use crate::data::Data;
-use crate::model::{Joint, Model};
-use crate::spatial::{Motion, ParentLink};
+use crate::dynamics::data::Data;
+use crate::dynamics::model::{Joint, Model};
+use crate::dynamics::spatial::{Motion, ParentLink};
 
 /// The joint's frame in its parent for coordinate `q`.
 #[must_use]

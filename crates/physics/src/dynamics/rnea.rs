@@ -1,22 +1,22 @@
 //! Inverse dynamics: the recursive Newton–Euler algorithm (Featherstone 2008
 //! §5.3). With zero accelerations it gives the bias forces `C(q, q̇)` that,
-//! with [`crate::crba`]'s mass matrix, make the O(n³) forward-dynamics path the
+//! with [`crate::dynamics::crba`]'s mass matrix, make the O(n³) forward-dynamics path the
 //! articulated-body algorithm is checked against.
 //!
 //! Generalized vectors are ordered `[base ω (3), base v (3), joints…]` for a
 //! free base (body coordinates), `[joints…]` otherwise.
 
-use crate::aba::gravity_force;
-use crate::data::Data;
-use crate::model::Model;
-use crate::spatial::{Force, Motion};
+use crate::dynamics::aba::gravity_force;
+use crate::dynamics::data::Data;
+use crate::dynamics::model::Model;
+use crate::dynamics::spatial::{Force, Motion};
 
 /// The generalized forces that produce the generalized accelerations `accel`
 /// (length `model.nv()`) at the current state, with `data.external` and
 /// gravity acting. Runs kinematics; overwrites `data.acceleration`.
 #[must_use]
 pub fn inverse_dynamics(model: &Model, data: &mut Data, accel: &[f64]) -> Vec<f64> {
-    crate::kinematics::kinematics(model, data);
+    crate::dynamics::kinematics::kinematics(model, data);
     let bodies = model.bodies();
     let base = if model.free_base() { 6 } else { 0 };
     let mut forces = vec![Force::ZERO; bodies.len()];

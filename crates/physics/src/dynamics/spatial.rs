@@ -1,6 +1,6 @@
 //! Spatial (6-D) vector algebra for rigid-body dynamics, after Featherstone's
 //! *Rigid Body Dynamics Algorithms* (2008) ch. 2 — the notation the
-//! articulated-body algorithm of [`crate::aba`] is written in.
+//! articulated-body algorithm of [`crate::dynamics::aba`] is written in.
 //!
 //! Conventions: a spatial vector is `[angular; linear]`. A [`Motion`] is a
 //! velocity or acceleration (`ω` in rad/s, `v` the velocity of the point at the

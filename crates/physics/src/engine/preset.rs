@@ -2,7 +2,7 @@
 //! bodies' geometry (each joint moves one body; the root is the trunk of a
 //! free base, or the fixed world of a planar one) and `scenario.physics` their
 //! mass properties (Raibert & Hodgins 1991, Table 3), legs, tail and neck.
-//! [`to_preset`] writes a [`Creature`] as such a preset (the bundled ones are
+//! [`to_preset`] writes a [`PhysicalCreature`] as such a preset (the bundled ones are
 //! made this way from [`crate::creatures`]).
 
 use gaitlab_core::JointKind;
@@ -13,9 +13,9 @@ use gaitlab_core::preset::{
 };
 use glam::{DMat3, DVec3};
 
-use crate::creature::{Creature, Leg, Species};
-use crate::model::{Body, Joint, Model};
-use crate::spatial::ParentLink;
+use crate::creatures::{Leg, PhysicalCreature, Species};
+use crate::dynamics::model::{Body, Joint, Model};
+use crate::dynamics::spatial::ParentLink;
 
 fn species(model: PhysicsModel) -> Species {
     match model {
@@ -40,7 +40,7 @@ fn inertia(spec: &MassSpec, l: f64) -> (f64, DVec3, DMat3) {
 /// # Errors
 /// A [`PresetError`] naming `scenario.physics` (or a field of it) when the
 /// section is missing or the structure does not make a model.
-pub fn creature_from_preset(preset: &PresetCreature) -> Result<Creature, PresetError> {
+pub fn creature_from_preset(preset: &PresetCreature) -> Result<PhysicalCreature, PresetError> {
     let err =
         |path: &str, reason: String| PresetError::new(format!("scenario.physics{path}"), reason);
     let params = preset.scenario.physics.as_ref().ok_or_else(|| {
@@ -157,7 +157,7 @@ pub fn creature_from_preset(preset: &PresetCreature) -> Result<Creature, PresetE
         .as_deref()
         .map(|n| joint("scenario.physics.neck".into(), n))
         .transpose()?;
-    Ok(Creature {
+    Ok(PhysicalCreature {
         species: species(params.model),
         scale: l,
         model,
@@ -196,7 +196,7 @@ fn mass_spec(b: &Body) -> MassSpec {
 
 /// Write a creature built at scale 1 as a preset.
 #[must_use]
-pub fn to_preset(creature: &Creature, meta: &PresetMeta) -> Preset {
+pub fn to_preset(creature: &PhysicalCreature, meta: &PresetMeta) -> Preset {
     let bodies = creature.model.bodies();
     let free = creature.model.free_base();
     let offset = usize::from(free);
@@ -280,6 +280,7 @@ pub fn to_preset(creature: &Creature, meta: &PresetMeta) -> Preset {
         waypoints: Vec::new(),
     };
     Preset {
+        schema: None,
         format: Format::V1,
         name: meta.name.clone(),
         description: meta.description.clone(),

@@ -10,7 +10,7 @@
 use glam::DVec3;
 
 use crate::control::attitude::{attitude_error, heading_forward};
-use crate::sim::Sim;
+use crate::world::sim::Sim;
 
 /// One support period of one leg.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -134,7 +134,7 @@ impl GaitRecorder {
         let t = sim.time;
         let c = &sim.creature;
         let d = &sim.data;
-        let com = crate::energy::center_of_mass(&c.model, d);
+        let com = crate::dynamics::energy::center_of_mass(&c.model, d);
         let err = attitude_error(c, d, self.heading, 0.0);
         let fwd = heading_forward(self.heading);
         let lateral = DVec3::Y.cross(fwd);
@@ -153,7 +153,7 @@ impl GaitRecorder {
             self.start = Some((t, com));
         }
         self.last = (t, com);
-        let weight = c.model.total_mass() * crate::GRAVITY_MPS2;
+        let weight = c.model.total_mass() * crate::dynamics::model::GRAVITY_MPS2;
         let mut vertical = 0.0;
         for (i, (leg, contact)) in c.legs.iter().zip(&sim.contacts).enumerate() {
             vertical += contact.force.y;

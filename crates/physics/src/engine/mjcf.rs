@@ -14,9 +14,9 @@ use std::fmt::Write as _;
 
 use glam::{DMat3, DQuat, DVec3};
 
-use crate::creature::Creature;
-use crate::ground::GroundParams;
-use crate::model::{Body, Joint};
+use crate::creatures::PhysicalCreature;
+use crate::dynamics::model::{Body, Joint};
+use crate::world::ground::GroundParams;
 
 /// What to write besides the creature.
 #[derive(Clone, Debug, PartialEq)]
@@ -79,7 +79,7 @@ fn merges_into_child(bodies: &[Body], i: usize) -> Option<usize> {
 
 /// The MJCF text of `creature`.
 #[must_use]
-pub fn to_mjcf(creature: &Creature, options: &MjcfOptions) -> String {
+pub fn to_mjcf(creature: &PhysicalCreature, options: &MjcfOptions) -> String {
     let model = &creature.model;
     let bodies = model.bodies();
     let mut x = String::new();
@@ -235,7 +235,7 @@ pub fn to_mjcf(creature: &Creature, options: &MjcfOptions) -> String {
         root: DVec3,
         scale: f64,
         solref: String,
-        model: &'a crate::model::Model,
+        model: &'a crate::dynamics::model::Model,
     }
     impl Ctx<'_> {
         fn dof_of(&self, body: usize) -> Option<usize> {

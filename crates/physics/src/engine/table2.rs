@@ -1,9 +1,9 @@
 //! Raibert & Hodgins 1991, Table 2: the paper's figures for each gait (the
 //! physical robot or animal, and the paper's animation), keyed to the
-//! quantities [`crate::metrics::GaitSummary`] measures, so the app, the CLI
+//! quantities [`crate::engine::metrics::GaitSummary`] measures, so the app, the CLI
 //! and the docs can put ours beside theirs.
 
-use crate::metrics::GaitSummary;
+use crate::engine::metrics::GaitSummary;
 
 /// Which measured quantity a row compares.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -8,11 +8,11 @@
 //! → dynamics → integrate → guard`. The guard stops a run whose state turned
 //! non-finite or ran away, so the caller can reset and say why.
 
-use crate::actuator::{SpringDamper, Stops};
-use crate::creature::Creature;
-use crate::data::Data;
-use crate::ground::{FootContact, GroundParams, Terrain, contact_forces};
-use crate::spatial::Force;
+use crate::creatures::PhysicalCreature;
+use crate::dynamics::data::Data;
+use crate::dynamics::spatial::Force;
+use crate::world::actuator::{SpringDamper, Stops};
+use crate::world::ground::{FootContact, GroundParams, Terrain, contact_forces};
 
 /// One joint's actuator: a spring-damper / servo (eq. 1, eq. 5) plus a
 /// feed-forward torque from the controller (eq. 4's posture torque) and the
@@ -71,7 +71,7 @@ impl Drive {
 /// What the controller sees each control interval.
 pub struct ControlInput<'a> {
     /// The creature.
-    pub creature: &'a Creature,
+    pub creature: &'a PhysicalCreature,
     /// The state, kinematics up to date.
     pub data: &'a Data,
     /// Each leg's contact.
@@ -102,7 +102,7 @@ pub trait Controller {
     fn set_hop_height(&mut self, _height_m: f64) {}
 
     /// The gains a person may tune while it runs.
-    fn gains(&self) -> Vec<crate::control::gains::Gain> {
+    fn gains(&self) -> Vec<Gain> {
         Vec::new()
     }
 
@@ -110,6 +110,33 @@ pub trait Controller {
     /// negative or not finite.
     fn set_gain(&mut self, _name: &str, _value: f64) -> bool {
         false
+    }
+}
+
+/// One gain a person may tune while a controller runs (the app's sliders,
+/// the `gain` command), at scale 1 in the paper's units.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Gain {
+    /// Parameter name (`posture_kp`, `leg_stiffness`, …).
+    pub name: &'static str,
+    /// Unit, for labels.
+    pub unit: &'static str,
+    /// Current value.
+    pub value: f64,
+    /// The controller's default value.
+    pub default: f64,
+}
+
+impl Gain {
+    /// A gain from its parts.
+    #[must_use]
+    pub const fn new(name: &'static str, unit: &'static str, value: f64, default: f64) -> Self {
+        Self {
+            name,
+            unit,
+            value,
+            default,
+        }
     }
 }
 
@@ -163,7 +190,7 @@ impl std::error::Error for BlowUp {}
 #[derive(Clone, Debug)]
 pub struct Sim {
     /// The creature simulated.
-    pub creature: Creature,
+    pub creature: PhysicalCreature,
     /// Its state.
     pub data: Data,
     /// One actuator per joint coordinate.
@@ -186,7 +213,7 @@ pub struct Sim {
 impl Sim {
     /// A simulation of `creature` at rest at the zero state.
     #[must_use]
-    pub fn new(creature: Creature, ground: GroundParams, options: SimOptions) -> Self {
+    pub fn new(creature: PhysicalCreature, ground: GroundParams, options: SimOptions) -> Self {
         let data = Data::new(&creature.model);
         let drives = vec![Drive::default(); creature.model.joint_count()];
         let contacts = vec![FootContact::default(); creature.legs.len()];
@@ -212,7 +239,7 @@ impl Sim {
     pub fn step(&mut self, controller: &mut dyn Controller) -> Result<(), BlowUp> {
         let model = &self.creature.model;
         let dt = self.options.dt;
-        crate::kinematics::kinematics(model, &mut self.data);
+        crate::dynamics::kinematics::kinematics(model, &mut self.data);
         self.data.external.fill(Force::ZERO);
         contact_forces(
             &self.creature,
@@ -235,11 +262,11 @@ impl Sim {
         for (k, drive) in self.drives.iter().enumerate() {
             self.data.tau[k] = drive.force(self.data.q[k], self.data.qd[k]);
         }
-        crate::aba::accelerations(model, &mut self.data).map_err(|e| BlowUp {
+        crate::dynamics::aba::accelerations(model, &mut self.data).map_err(|e| BlowUp {
             time: self.time,
             reason: e.to_string(),
         })?;
-        crate::integrate::integrate(model, &mut self.data, dt);
+        crate::dynamics::integrate::integrate(model, &mut self.data, dt);
         self.time += dt;
         self.steps += 1;
         self.accumulator = (self.accumulator - dt).max(0.0);

@@ -4,8 +4,8 @@
 
 use glam::{DQuat, DVec3};
 
-use crate::model::Model;
-use crate::spatial::{Force, Inertia, Motion, ParentLink};
+use crate::dynamics::model::Model;
+use crate::dynamics::spatial::{Force, Inertia, Motion, ParentLink};
 
 /// State and workspace for one model.
 #[derive(Clone, Debug)]

@@ -2,12 +2,12 @@
 //! the blow-up guard watches for runaway energy.
 //!
 //! All functions read the kinematics (`world`, `velocity`); run
-//! [`kinematics`](crate::kinematics::kinematics) first.
+//! [`kinematics`](crate::dynamics::kinematics::kinematics) first.
 
 use glam::DVec3;
 
-use crate::data::Data;
-use crate::model::Model;
+use crate::dynamics::data::Data;
+use crate::dynamics::model::Model;
 
 /// Kinetic energy Σ ½ vᵀ I v (J).
 #[must_use]

@@ -1,0 +1,15 @@
+//! The engine as the rest of gaitlab sees it: a preset in, a pose
+//! and the paper's figures out (Raibert & Hodgins 1991, Tables 2 and 3).
+//!
+//! The [`driver`] runs a [`preset`]'s creature under its gait controller for
+//! the app and the CLI, steering it ([`steering`]) and showing it ([`probe`]);
+//! [`metrics`] measures the Table-2 figures and
+//! [`table2`] holds the paper's; [`mjcf`] exports the creature to MuJoCo.
+
+pub mod driver;
+pub mod metrics;
+pub mod mjcf;
+pub mod preset;
+pub mod probe;
+pub mod steering;
+pub mod table2;

@@ -1,0 +1,12 @@
+//! The world a creature runs in: its actuators, the ground, and the
+//! fixed-step loop that joins them to the dynamics (Raibert & Hodgins 1991,
+//! "Modeling" and Figure 2).
+//!
+//! [`actuator`]s (the spring-damper of eq. 1, the servo of eq. 5, joint
+//! stops); [`ground`] contact (springs, the kangaroo's paw pad, terrain); the
+//! [`sim`] loop `kinematics → contacts → control → actuators → dynamics →
+//! integrate`, ending each step in the blow-up guard.
+
+pub mod actuator;
+pub mod ground;
+pub mod sim;
