@@ -79,7 +79,9 @@ impl Lab {
     /// (an object of view flags), `camera` (see [`crate::camera_state`]),
     /// `editor_open`, `editor_text`, `editor_revert`, `editor_apply` (the
     /// preset editor; a bad preset is an error and the creature stays),
-    /// `download_preset`; `gains` (an object `{name: value}`) goes with `gain`.
+    /// `download_preset`, `show_link` (the Share row's link field as "Copy
+    /// link" shows it, without the clipboard); `gains` (an object
+    /// `{name: value}`) goes with `gain`.
     /// Keys apply in that order; the first bad key stops the command with an
     /// error naming it, and what came before it stays applied.
     ///
@@ -143,6 +145,7 @@ impl Lab {
             "last_s",
             "theme",
             "narrow",
+            "show_link",
         ];
         if let Some(unknown) = object.keys().find(|k| !KNOWN.contains(&k.as_str())) {
             return Err(format!("{unknown}: unknown command"));
@@ -367,6 +370,9 @@ impl Lab {
         {
             self.download_preset();
         }
+        if let Some(v) = get("show_link") {
+            self.show_link(flag("show_link", v)?)?;
+        }
         Ok(())
     }
 
@@ -496,7 +502,12 @@ impl Lab {
             "wasm_heap_peak_bytes": crate::memory::wasm_heap_bytes().map(|(_, peak)| peak),
             "view_rect_px": self.view_rect_px,
             "joints": skeleton.joint_count(),
-            "views": [{ "method": self.settings.method.name(), "effectors": effectors }],
+            "views": [{
+                "method": self.settings.method.name(),
+                "effectors": effectors,
+                "creature_box_px": crate::render::viewport::figure_box(
+                    &self.scene, &self.camera, self.view_rect_px),
+            }],
             "view_options": self.settings.view,
             "ik": {
                 "lambda": self.settings.ik.lambda,

@@ -57,22 +57,43 @@ pub fn share(ui: &mut egui::Ui, lab: &mut Lab) {
     });
     let mut close = false;
     if let Some(link) = &lab.shown_link {
+        // The row must end at the panel's edge: the side panel grows to fit
+        // what it holds, and a row wider than the room left would widen it a
+        // little every frame (a field sized from `available_width` minus a
+        // guess at the button's width did, 4.6 px a second). Laid out right to
+        // left, the button comes first and the field takes exactly what is
+        // left; a single-line field clips its text, so the link's length
+        // never counts.
         ui.horizontal(|ui| {
-            let mut shown = link.as_str();
-            ui.add(
-                egui::TextEdit::singleline(&mut shown)
-                    .desired_width(ui.available_width() - 30.0)
-                    .font(egui::TextStyle::Monospace),
-            )
-            .on_hover_text("The link, copied to the clipboard; select it to copy it by hand");
-            close = ui
-                .small_button("×")
-                .on_hover_text("Hide the link")
-                .clicked();
+            ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
+                close = ui
+                    .small_button("×")
+                    .on_hover_text("Hide the link")
+                    .clicked();
+                let mut shown = link.as_str();
+                ui.add(
+                    egui::TextEdit::singleline(&mut shown)
+                        .desired_width(ui.available_width())
+                        .font(egui::TextStyle::Monospace),
+                )
+                .on_hover_text("The link, copied to the clipboard; select it to copy it by hand");
+            });
         });
     }
     if close {
         lab.shown_link = None;
+    }
+}
+
+impl Lab {
+    /// Shows the full-state link under the Share row, as "Copy link" does but
+    /// without touching the clipboard (the `show_link` command), or hides it.
+    ///
+    /// # Errors
+    /// Why the link could not be made.
+    pub fn show_link(&mut self, show: bool) -> Result<(), String> {
+        self.shown_link = if show { Some(self.share_link()?) } else { None };
+        Ok(())
     }
 }
 

@@ -113,10 +113,7 @@ mod tests {
     use super::*;
 
     fn human() -> Creature {
-        match gaitlab_core::preset::load_bundled("human") {
-            Some(Ok(creature)) => creature,
-            other => panic!("bundled human: {other:?}"),
-        }
+        crate::test_presets::bundled("human")
     }
 
     #[test]

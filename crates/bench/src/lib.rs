@@ -14,6 +14,8 @@ pub mod frame;
 pub mod iteration;
 pub mod step;
 pub mod suite;
+#[cfg(test)]
+mod test_presets;
 
 pub use compare::{CaseComparison, Comparison, Verdict, cases_of, compare};
 pub use iteration::{RecordedFrame, Timing, record_walk, time_iterations};

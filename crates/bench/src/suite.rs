@@ -238,12 +238,7 @@ fn time_frames(
 mod tests {
     use super::*;
 
-    fn bundled(name: &str) -> Creature {
-        match gaitlab_core::preset::load_bundled(name) {
-            Some(Ok(creature)) => creature,
-            other => panic!("bundled {name}: {other:?}"),
-        }
-    }
+    use crate::test_presets::bundled;
 
     /// A clock that advances 1 ms per read: every timed repeat spans exactly 1 ms.
     fn ticking_clock() -> impl FnMut() -> f64 {

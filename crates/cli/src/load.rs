@@ -3,7 +3,9 @@
 
 use std::io::Read;
 
-use gaitlab_core::preset::{MAX_PRESET_BYTES, Purpose, bundled, bundled_json, load_bundled};
+use gaitlab_core::preset::{
+    MAX_PRESET_BYTES, Purpose, bundled, bundled_json, load_bundled, set_preset_value,
+};
 use gaitlab_core::{Creature, PresetError};
 use gaitlab_engine::AnyDriver;
 
@@ -35,11 +37,44 @@ pub fn creature(name_or_path: &str) -> Result<Creature, Failure> {
 /// A preset by bundled name, or else by file path, checked for `purpose`
 /// (`track` loads for [`Purpose::Tracking`]: the thesis roles are not checked).
 pub fn creature_for(name_or_path: &str, purpose: Purpose) -> Result<Creature, Failure> {
-    if let Some(loaded) =
-        bundled_json(name_or_path).map(|json| Creature::from_json_for(json, purpose))
-    {
-        return loaded.map_err(|e| Failure::input(format!("bundled preset {name_or_path}: {e}")));
-    }
+    creature_with(name_or_path, purpose, &[])
+}
+
+/// As [`creature_for`], with `edits` (`(dotted path, value)`, `gaitlab run
+/// --set`) applied to the preset's JSON before it is parsed and checked, so
+/// an edited value meets every rule a file's does.
+pub fn creature_with(
+    name_or_path: &str,
+    purpose: Purpose,
+    edits: &[(String, serde_json::Value)],
+) -> Result<Creature, Failure> {
+    let (text, bundled_name) = match bundled_json(name_or_path) {
+        Some(json) => (json.to_owned(), true),
+        None => (preset_file(name_or_path)?, false),
+    };
+    let text = if edits.is_empty() {
+        text
+    } else {
+        let mut preset: serde_json::Value = serde_json::from_str(&text)
+            .map_err(|e| Failure::input(format!("{name_or_path}: not JSON ({e})")))?;
+        for (path, value) in edits {
+            set_preset_value(&mut preset, path, value.clone())
+                .map_err(|e| Failure::input(format!("--set {e}")))?;
+        }
+        preset.to_string()
+    };
+    Creature::from_json_for(&text, purpose).map_err(|e: PresetError| {
+        if bundled_name && edits.is_empty() {
+            Failure::input(format!("bundled preset {name_or_path}: {e}"))
+        } else {
+            Failure::input(e)
+        }
+    })
+}
+
+/// The text of preset file `name_or_path`; a name that is no file is an
+/// error that lists the bundled presets.
+fn preset_file(name_or_path: &str) -> Result<String, Failure> {
     let looks_like_file = name_or_path.contains('/')
         || name_or_path.contains('.')
         || std::path::Path::new(name_or_path).exists();
@@ -50,8 +85,7 @@ pub fn creature_for(name_or_path: &str, purpose: Purpose) -> Result<Creature, Fa
             names.join(", ")
         )));
     }
-    let text = read_limited(name_or_path, MAX_PRESET_BYTES, "preset")?;
-    Creature::from_json_for(&text, purpose).map_err(|e: PresetError| Failure::input(e))
+    read_limited(name_or_path, MAX_PRESET_BYTES, "preset")
 }
 
 /// `gaitlab presets`.

@@ -1,12 +1,13 @@
 //! `gaitlab run PRESET_OR_FILE [--mode M] [--method K] [--gait G] [--path FILE]
-//! [--speed V] [--seconds S] [--fps N] [--bvh FILE] [--csv FILE] [--last S]
-//! [--json]`: any preset headless. The options each engine takes are checked
+//! [--speed V] [--seconds S] [--fps N] [--set KEY=VALUE] [--bvh FILE] [--csv FILE]
+//! [--last S] [--json]`: any preset headless. The options each engine takes are checked
 //! here; the driver comes from the engine layer's `driver_for`.
 
 use clap::Args;
 use gaitlab_core::preset::thesis::ThesisMode;
-use gaitlab_core::preset::{Creature, Engine, MAX_PRESET_BYTES, PathSpec, PresetError};
+use gaitlab_core::preset::{Creature, Engine, MAX_PRESET_BYTES, PathSpec, PresetError, Purpose};
 use gaitlab_engine::{Overrides, RunMetrics, driver_for};
+use serde_json::Value;
 
 use crate::drive::{Outputs, drive};
 use crate::fail::Failure;
@@ -40,6 +41,13 @@ pub struct RunArgs {
     /// Frames per second (default: the preset's).
     #[arg(long)]
     pub fps: Option<u32>,
+    /// Change one value, repeatable: a dotted preset path such as
+    /// `scenario.physics.speed_mps=2.5` or `skeleton.joints[3].gain=2` (checked
+    /// like a preset file), or a physics controller gain by name such as
+    /// `k_speed=0.1` (see `state().physics.gains` in the app). VALUE is JSON;
+    /// text that is not JSON is taken as a string (`scenario.physics.gait=bound`).
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
     /// BVH, CSV and JSON output.
     #[command(flatten)]
     pub outputs: Outputs,
@@ -47,18 +55,59 @@ pub struct RunArgs {
 
 /// `gaitlab run`.
 pub fn run(args: &RunArgs) -> Result<(), Failure> {
-    let creature = load::creature(&args.preset)?;
+    let (paths, gains) = settings(&args.set)?;
+    let creature = load::creature_with(&args.preset, Purpose::Scenario, &paths)?;
     let overrides = overrides(&creature, args)?;
     let mut driver = driver_for(&creature, &overrides).map_err(|e| flag_error(e, args))?;
     if let Some(physics) = driver.physics_mut() {
         // A headless run reports a fall; it does not start over.
         physics.reset_after_fall = false;
+        for (name, value) in &gains {
+            physics
+                .set_gain(name, *value)
+                .map_err(|e| Failure::input(format!("--set {e}")))?;
+        }
+    } else if let Some((name, _)) = gains.first() {
+        return Err(Failure::input(format!(
+            "--set {name}: engine {} has no controller gains (a preset value is a dotted path, e.g. scenario.thesis.walk.frequency_hz)",
+            creature.scenario.engine.name()
+        )));
     }
     let (fps, frames) = timing(args.fps, creature.scenario.fps, args.seconds)?;
     let measured = drive(&mut driver, frames, fps, &args.outputs)?;
     let metrics = RunMetrics::of(&creature.name, &driver, &measured).with_fps(fps);
     print(&metrics, args.outputs.json);
     Ok(())
+}
+
+/// `--set KEY=VALUE` arguments: dotted preset paths with JSON values, and
+/// controller gains by name with numbers.
+type Settings = (Vec<(String, Value)>, Vec<(String, f64)>);
+
+fn settings(set: &[String]) -> Result<Settings, Failure> {
+    let mut paths = Vec::new();
+    let mut gains = Vec::new();
+    for item in set {
+        let Some((key, text)) = item.split_once('=') else {
+            return Err(Failure::input(format!(
+                "--set {item}: expected KEY=VALUE (a preset path such as scenario.physics.speed_mps, or a gain name)"
+            )));
+        };
+        let key = key.trim();
+        if key.is_empty() {
+            return Err(Failure::input(format!("--set {item}: the key is empty")));
+        }
+        let value = serde_json::from_str(text).unwrap_or_else(|_| Value::from(text));
+        if key.contains('.') || key.contains('[') {
+            paths.push((key.to_owned(), value));
+        } else {
+            let number = value.as_f64().ok_or_else(|| {
+                Failure::input(format!("--set {key}: a gain is a number, not {text:?}"))
+            })?;
+            gains.push((key.to_owned(), number));
+        }
+    }
+    Ok((paths, gains))
 }
 
 /// The options `args` gives for `creature`'s engine; an option another engine

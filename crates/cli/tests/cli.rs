@@ -453,3 +453,97 @@ fn validate_refuses_what_run_refuses() {
     );
     assert_eq!(run_err, validate_err);
 }
+
+/// `run --set`: a dotted preset path gives the same run as the preset file
+/// edited by hand (5 s: the Table-2 figures start after the settling time); a gain by name changes the motion; bad keys name themselves.
+#[test]
+fn set_changes_preset_values_and_gains() {
+    let without_timing = |mut v: Value| {
+        for key in ["wall_ms", "steps_per_second", "realtime_factor"] {
+            v.as_object_mut().map(|o| o.remove(key));
+        }
+        v
+    };
+    let text = std::fs::read_to_string(
+        [
+            env!("CARGO_MANIFEST_DIR"),
+            "..",
+            "..",
+            "presets",
+            "raibert-biped.json",
+        ]
+        .iter()
+        .collect::<PathBuf>(),
+    )
+    .expect("bundled preset");
+    let mut preset: Value = serde_json::from_str(&text).expect("JSON");
+    preset["scenario"]["physics"]["speed_mps"] = serde_json::json!(1.5);
+    let path = scratch("biped-1.5.json");
+    std::fs::write(&path, preset.to_string()).expect("write");
+    let file = path.to_str().expect("utf-8");
+    let by_file = json_of(&gaitlab(&["run", file, "--seconds", "5", "--json"]));
+    let by_set = json_of(&gaitlab(&[
+        "run",
+        file,
+        "--seconds",
+        "5",
+        "--json",
+        "--set",
+        "scenario.physics.speed_mps=1.5",
+    ]));
+    let bundled_set = json_of(&gaitlab(&[
+        "run",
+        "raibert-biped",
+        "--seconds",
+        "5",
+        "--json",
+        "--set",
+        "scenario.physics.speed_mps=1.5",
+    ]));
+    assert_eq!(by_file["speed_desired_mps"], serde_json::json!(1.5));
+    assert_eq!(without_timing(by_set), without_timing(by_file.clone()));
+    let mut bundled_set = without_timing(bundled_set);
+    bundled_set["preset"] = by_file["preset"].clone();
+    assert_eq!(bundled_set, without_timing(by_file.clone()));
+    let stiff = json_of(&gaitlab(&[
+        "run",
+        file,
+        "--seconds",
+        "5",
+        "--json",
+        "--set",
+        "leg_damping=0",
+    ]));
+    assert_ne!(
+        without_timing(stiff),
+        without_timing(by_file.clone()),
+        "a gain changes the motion"
+    );
+    for (set, expected) in [
+        (
+            "scenario.physics.speed_mps=99",
+            "error: scenario.physics.speed_mps: must be a speed within",
+        ),
+        (
+            "scenario.nope.x=1",
+            "error: --set scenario.nope.x: scenario.nope is not in the preset",
+        ),
+        (
+            "no_such_gain=1",
+            "error: --set gain.no_such_gain: no such gain",
+        ),
+        (
+            "leg_damping=soft",
+            "error: --set leg_damping: a gain is a number",
+        ),
+        (
+            "leg_damping",
+            "error: --set leg_damping: expected KEY=VALUE",
+        ),
+    ] {
+        let output = gaitlab(&["run", "raibert-biped", "--seconds", "0.1", "--set", set]);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(2), "{set}: {stderr}");
+        assert!(stderr.starts_with(expected), "{set}: {stderr}");
+    }
+}

@@ -1,7 +1,9 @@
 //! The 3-D view's orbit camera: it circles a target point at a distance, with
 //! perspective or orthographic projection of the same apparent size at the
 //! target (She 2006 §6.2's "perspective" view option), orbit / pan / zoom from
-//! mouse and touch, and a follow mode that keeps a walking figure in view.
+//! mouse and touch, framing that fits a figure's whole box to the view's
+//! aspect ratio, and a follow mode that keeps a walking or running figure in
+//! view at any speed.
 //!
 //! # Conventions
 //! - World frame of gaitlab-core: metres, y up, x right, z forward.
@@ -30,8 +32,22 @@ pub const MIN_EYE_HEIGHT: f32 = 0.05;
 pub const ORBIT_RADIANS_PER_POINT: f32 = 0.008;
 /// Wheel zoom: the distance shrinks by `exp(ZOOM_PER_POINT · points scrolled)`.
 pub const ZOOM_PER_POINT: f32 = 0.0015;
-/// How fast follow mode closes the gap to the figure, per second (time constant 1/rate).
+/// Follow mode's natural frequency, rad/s: a critically damped tracker of this
+/// frequency closes a gap to the figure in about `4 / FOLLOW_RATE` seconds and,
+/// since it learns the figure's velocity, trails a figure at constant speed by
+/// nothing at all (a plain ease would trail it by `speed / rate`).
 pub const FOLLOW_RATE: f32 = 4.0;
+/// Follow mode jumps to the figure instead of easing when it is farther than
+/// this many camera distances away (a reset, or many frames stepped at once):
+/// it is out of view then, and easing would only sweep the view across the
+/// ground (and overshoot).
+pub const FOLLOW_JUMP_DISTANCES: f32 = 1.0;
+/// Framing fills at most this share of the view's half width and half height
+/// with the figure's box, leaving the rest as a margin.
+pub const FRAME_FILL: f32 = 0.8;
+/// Framing grows the figure's box by this much on every side, metres (bone and
+/// joint radii are not in the box).
+pub const FRAME_PAD_M: f32 = 0.06;
 
 /// An orbit camera. `Copy`, so a frame's camera travels into the paint callback.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -54,6 +70,9 @@ pub struct Camera {
     /// Where follow mode keeps the target relative to the figure's centre
     /// (horizontal; set by panning), metres.
     pub follow_offset: Vec3,
+    /// Follow mode's estimate of the figure's horizontal velocity, m/s: the
+    /// feed-forward that leaves no lag at constant speed.
+    pub follow_velocity: Vec3,
     /// Whether the camera has been placed around a figure; until then
     /// [`super::viewport::show`] frames the first figure it sees.
     pub framed: bool,
@@ -69,6 +88,7 @@ impl Default for Camera {
             perspective: true,
             fov_y: 40_f32.to_radians(),
             follow_offset: Vec3::ZERO,
+            follow_velocity: Vec3::ZERO,
             framed: false,
         }
     }
@@ -233,31 +253,87 @@ impl Camera {
         }
     }
 
-    /// Eases the target horizontally toward `centre` (plus the pan offset) over
+    /// Moves the target horizontally toward `centre` (plus the pan offset) over
     /// `dt` seconds; the height stays where the person put it.
+    ///
+    /// A critically damped tracker of natural frequency [`FOLLOW_RATE`] with
+    /// the figure's velocity as feed-forward: with the gap `e` from the target
+    /// to the goal, `v' = ω² e` and `target' = v + 2ω e`, so at a constant
+    /// speed `v` settles on the figure's velocity and the gap on zero. Each
+    /// step first moves the target by `v dt`, then corrects by the gap left
+    /// (so at constant speed the target lands on this frame's goal). A goal
+    /// more than [`FOLLOW_JUMP_DISTANCES`] camera distances away is jumped to.
     pub fn follow(&mut self, centre: Vec3, dt: f32) {
         if !centre.is_finite() || dt.is_nan() || dt <= 0.0 {
             return;
         }
+        let horizontal = Vec3::new(1.0, 0.0, 1.0);
         let goal = centre + self.follow_offset;
-        let blend = 1.0 - (-FOLLOW_RATE * dt.min(0.5)).exp();
-        self.target.x += (goal.x - self.target.x) * blend;
-        self.target.z += (goal.z - self.target.z) * blend;
-    }
-
-    /// Places the target at the centre of `bounds` and backs off until the
-    /// whole box fits the view; clears the pan offset.
-    pub fn frame(&mut self, bounds: &Bounds) {
-        let centre = bounds.centre().as_vec3();
-        if !centre.is_finite() {
+        if ((goal - self.target) * horizontal).length() > FOLLOW_JUMP_DISTANCES * self.distance {
+            self.target.x = goal.x;
+            self.target.z = goal.z;
             return;
         }
-        let radius = (bounds.radius() as f32).max(0.25);
+        // Predict, then correct (stable for the clamped step, ω·dt ≤ 0.4).
+        let dt = dt.min(0.1);
+        let predicted = self.target + self.follow_velocity * horizontal * dt;
+        let gap = (goal - predicted) * horizontal;
+        let velocity = (self.follow_velocity + FOLLOW_RATE * FOLLOW_RATE * dt * gap) * horizontal;
+        let target = predicted + 2.0 * FOLLOW_RATE * dt * gap;
+        if target.is_finite() && velocity.is_finite() {
+            self.target = target;
+            self.follow_velocity = velocity;
+        } else {
+            self.follow_velocity = Vec3::ZERO;
+        }
+    }
+
+    /// Frames `bounds` for a view of aspect ratio 1 (see [`Self::frame_for`]).
+    pub fn frame(&mut self, bounds: &Bounds) {
+        self.frame_for(bounds, 1.0);
+    }
+
+    /// Places the target at the centre of `bounds` and, keeping the viewing
+    /// direction (raised if the eye would go under the ground), backs off until
+    /// every corner of the box, grown by [`FRAME_PAD_M`], lies within
+    /// [`FRAME_FILL`] of the view's half height and half width for a view of
+    /// width / height `aspect` (a tall phone view needs more distance for the
+    /// width). Clears the pan offset and follow mode's velocity.
+    pub fn frame_for(&mut self, bounds: &Bounds, aspect: f32) {
+        let centre = bounds.centre().as_vec3();
+        let half = ((bounds.max - bounds.min).as_vec3() * 0.5 + Vec3::splat(FRAME_PAD_M))
+            .max(Vec3::splat(0.1));
+        if !centre.is_finite() || !half.is_finite() {
+            return;
+        }
+        let aspect = if aspect.is_finite() && aspect > 0.0 {
+            aspect
+        } else {
+            1.0
+        };
         self.target = centre;
-        self.distance = (1.3 * radius / (0.5 * self.fov_y).sin()).clamp(MIN_DISTANCE, MAX_DISTANCE);
         self.follow_offset = Vec3::ZERO;
+        self.follow_velocity = Vec3::ZERO;
         self.framed = true;
-        self.constrain();
+        let tan_y = FRAME_FILL * (0.5 * self.fov_y).tan();
+        let tan_x = tan_y * aspect;
+        // The lowest pitch depends on the distance: settle the two together.
+        for _ in 0..3 {
+            let (right, up, back) = (self.right(), self.up(), self.back());
+            let mut distance = MIN_DISTANCE;
+            for corner in 0..8 {
+                let sign = |bit: i32| if corner & bit == 0 { -1.0 } else { 1.0 };
+                let offset = half * Vec3::new(sign(1), sign(2), sign(4));
+                // A point `depth` nearer the eye than the target shows within
+                // the view when its sideways offsets fit at distance − depth.
+                let depth = offset.dot(back);
+                distance = distance
+                    .max(depth + offset.dot(right).abs() / tan_x)
+                    .max(depth + offset.dot(up).abs() / tan_y);
+            }
+            self.distance = distance;
+            self.constrain();
+        }
     }
 
     /// Applies one frame's gestures; `viewport_height` in points scales panning.
@@ -502,6 +578,83 @@ mod tests {
             camera.follow(centre, 1.0 / 60.0);
         }
         assert!((camera.target.x - kept.x).abs() < 1e-3 && (camera.target.z - kept.z).abs() < 1e-3);
+    }
+
+    #[test]
+    fn follow_keeps_a_running_figure_centred_at_any_speed() {
+        for speed in [0.5_f32, 3.5, 12.0] {
+            let mut camera = Camera::default();
+            let dt = 1.0 / 60.0;
+            let mut worst_late = 0.0_f32;
+            for frame in 0..600 {
+                let centre = Vec3::new(0.0, 0.9, speed * dt * frame as f32);
+                camera.follow(centre, dt);
+                if frame >= 180 {
+                    worst_late = worst_late.max((centre.z - camera.target.z).abs());
+                }
+            }
+            // A plain ease at FOLLOW_RATE would trail by speed / rate: 0.875 m at 3.5 m/s.
+            assert!(
+                worst_late < 1e-3,
+                "{speed} m/s: trails by {worst_late} m after 3 s"
+            );
+        }
+    }
+
+    #[test]
+    fn follow_jumps_to_a_figure_far_out_of_view() {
+        let mut camera = Camera::default();
+        let far = Vec3::new(0.0, 0.5, 40.0);
+        camera.follow(far, 1.0 / 60.0);
+        assert!((camera.target.z - 40.0).abs() < 1e-4, "{}", camera.target);
+        assert_eq!(camera.follow_velocity, Vec3::ZERO);
+    }
+
+    #[test]
+    fn framing_fits_the_box_to_the_aspect_ratio() {
+        let bounds = Bounds {
+            min: DVec3::new(-0.4, 0.0, -1.2),
+            max: DVec3::new(0.4, 1.1, 1.0),
+        };
+        for aspect in [0.46_f32, 1.0, 1.6, 2.4] {
+            for perspective in [true, false] {
+                let mut camera = Camera {
+                    perspective,
+                    ..Camera::default()
+                };
+                camera.frame_for(&bounds, aspect);
+                let mut widest = 0.0_f32;
+                // The box as framing grows it.
+                let (lo, hi) = (
+                    bounds.min - DVec3::splat(f64::from(FRAME_PAD_M)),
+                    bounds.max + DVec3::splat(f64::from(FRAME_PAD_M)),
+                );
+                for corner in 0..8 {
+                    let pick = |bit: i32, lo: f64, hi: f64| if corner & bit == 0 { lo } else { hi };
+                    let p = Vec3::new(
+                        pick(1, lo.x, hi.x) as f32,
+                        pick(2, lo.y, hi.y) as f32,
+                        pick(4, lo.z, hi.z) as f32,
+                    );
+                    let p = ndc(&camera, aspect, p);
+                    assert!(
+                        p.x.abs() <= FRAME_FILL + 1e-4 && p.y.abs() <= FRAME_FILL + 1e-4,
+                        "aspect {aspect}: {p} outside the framed part of the view"
+                    );
+                    widest = widest.max(p.x.abs()).max(p.y.abs());
+                }
+                // And, in perspective, it backs off no further than needed.
+                assert!(
+                    !perspective || widest > 0.95 * FRAME_FILL,
+                    "aspect {aspect}: only {widest} used"
+                );
+            }
+        }
+        // A tall view backs off further than a wide one.
+        let (mut tall, mut wide) = (Camera::default(), Camera::default());
+        tall.frame_for(&bounds, 0.46);
+        wide.frame_for(&bounds, 1.6);
+        assert!(tall.distance > 1.5 * wide.distance);
     }
 
     #[test]

@@ -37,6 +37,10 @@ impl Scene {
                 radius as f32,
                 TRUNK_COLOR,
             ));
+            // The trunk is part of the figure the camera frames.
+            let pad = DVec3::splat(radius.abs());
+            frame.include(a.min(b) - pad);
+            frame.include(a.max(b) + pad);
         }
         for (lo, hi) in boxes.filter(|(lo, hi)| lo.is_finite() && hi.is_finite()) {
             let corner = |i: usize| {
@@ -80,5 +84,16 @@ mod tests {
         );
         assert_eq!(scene.capsules().len(), before.0 + 1);
         assert_eq!(scene.segments().len(), before.1 + 12);
+        // The trunk, with its radius, is in the box the camera frames; the
+        // obstacles are not.
+        let bounds = scene.bounds().expect("bounds");
+        assert!(
+            (bounds.min - DVec3::splat(-0.1)).length() < 1e-12,
+            "{bounds:?}"
+        );
+        assert!(
+            (bounds.max - DVec3::new(1.1, 0.1, 0.1)).length() < 1e-12,
+            "{bounds:?}"
+        );
     }
 }

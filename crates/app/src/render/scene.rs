@@ -249,8 +249,9 @@ pub struct SceneFrame {
     pub segments: Vec<Segment>,
     /// Blob shadows of the bones and contact marks of the feet (when shadows are on).
     pub ground_marks: Vec<GroundMark>,
-    /// Box around the root, the joints and the effectors (not the targets);
-    /// `None` before the first fill or when no position is finite.
+    /// Box around the root, the joints and the effectors (not the targets)
+    /// and the physics trunk; `None` before the first fill or when no
+    /// position is finite.
     pub bounds: Option<Bounds>,
 }
 
@@ -263,7 +264,8 @@ impl SceneFrame {
         self.bounds = None;
     }
 
-    fn include(&mut self, p: DVec3) {
+    /// Grows [`Self::bounds`] to hold `p` (non-finite points are skipped).
+    pub(crate) fn include(&mut self, p: DVec3) {
         if !p.is_finite() {
             return;
         }

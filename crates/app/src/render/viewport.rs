@@ -1,8 +1,9 @@
 //! The 3-D view as an egui widget: takes the remaining space, turns mouse and
-//! touch gestures into camera moves, keeps a walking figure in view (follow
-//! mode), and draws the scene — with wgpu through a paint callback when the
-//! renderer is installed ([`super::gpu::install`]), otherwise as a painter's-
-//! algorithm 2-D projection with egui shapes (tests, software fallbacks).
+//! touch gestures into camera moves, frames the figure for the view's shape,
+//! keeps a walking or running figure in view (follow mode), and draws the
+//! scene — with wgpu through a paint callback when the renderer is installed
+//! ([`super::gpu::install`]), otherwise as a painter's-algorithm 2-D
+//! projection with egui shapes (tests, software fallbacks).
 
 use egui::{Color32, Pos2, Rect, Shape, Stroke};
 use glam::{Mat4, Vec3, Vec4};
@@ -19,9 +20,10 @@ const FOLLOW_SETTLED: f32 = 0.005;
 ///
 /// Gestures: drag to orbit; right / middle drag, shift + drag or two fingers
 /// to pan; wheel, ctrl + wheel or pinch to zoom; double click to frame the
-/// figure again. The camera frames the figure the first time it sees one (and
-/// whenever `camera.framed` is cleared), takes `view.perspective`, and follows
-/// the figure's centre when `view.follow` is on.
+/// figure again, paused or running. The camera frames the figure's whole box
+/// for the view's aspect ratio the first time it sees one (and whenever
+/// `camera.framed` is cleared, as a new preset does), takes
+/// `view.perspective`, and follows the figure's centre when `view.follow` is on.
 pub fn show(
     ui: &mut egui::Ui,
     scene: &Scene,
@@ -29,7 +31,7 @@ pub fn show(
     view: &ViewOptions,
 ) -> egui::Response {
     let (rect, response) = allocate(ui);
-    steer(ui, &response, scene, camera, view);
+    steer(ui, &response, aspect(rect), scene, camera, view);
     draw(ui, rect, response.id.value(), scene, camera, view);
     response
 }
@@ -47,7 +49,8 @@ pub fn show_split(
 ) -> egui::Response {
     let (rect, response) = allocate(ui);
     if let Some((first, _)) = panes.first() {
-        steer(ui, &response, first, camera, view);
+        let pane = split_rects(rect, panes.len())[0];
+        steer(ui, &response, aspect(pane), first, camera, view);
     }
     let text_color = ui.visuals().strong_text_color();
     let backdrop = ui.visuals().extreme_bg_color.gamma_multiply(0.8);
@@ -112,10 +115,17 @@ fn allocate(ui: &mut egui::Ui) -> (Rect, egui::Response) {
     ui.allocate_exact_size(size, egui::Sense::click_and_drag())
 }
 
-/// Gestures, first framing and follow mode for the camera.
+/// Width / height of `rect`.
+fn aspect(rect: Rect) -> f32 {
+    rect.width() / rect.height().max(1.0)
+}
+
+/// Gestures, framing (first sight, double click, new preset: for a view of
+/// width / height `aspect`) and follow mode for the camera.
 fn steer(
     ui: &egui::Ui,
     response: &egui::Response,
+    aspect: f32,
     scene: &Scene,
     camera: &mut Camera,
     view: &ViewOptions,
@@ -130,7 +140,8 @@ fn steer(
     if !camera.framed
         && let Some(bounds) = scene.bounds()
     {
-        camera.frame(&bounds);
+        camera.frame_for(&bounds, aspect);
+        ui.ctx().request_repaint();
     }
     if view.follow
         && let Some(centre) = scene.centre()
@@ -139,7 +150,7 @@ fn steer(
         let dt = ui.input(|i| i.stable_dt).clamp(0.0, 0.1);
         camera.follow(centre, dt);
         let gap = (centre + camera.follow_offset - camera.target) * Vec3::new(1.0, 0.0, 1.0);
-        if gap.length() > FOLLOW_SETTLED {
+        if gap.length() > FOLLOW_SETTLED || camera.follow_velocity.length() > FOLLOW_SETTLED {
             ui.ctx().request_repaint();
         }
     }
@@ -231,6 +242,36 @@ impl Projector {
     fn radius(&self, radius: f32, w: f32) -> f32 {
         radius * self.y_scale / w * 0.5 * self.rect.height()
     }
+}
+
+/// The figure's box on screen, `[x, y, width, height]` in the units of
+/// `rect` (a view rectangle `[x, y, width, height]`, e.g. physical pixels):
+/// the smallest rectangle holding every bone and sphere of `scene` (each with
+/// its radius) seen through `camera`. `None` without a figure, or when part of
+/// it is behind the near plane (then it is not wholly in view).
+#[must_use]
+pub fn figure_box(scene: &Scene, camera: &Camera, rect: [f32; 4]) -> Option<[f32; 4]> {
+    let [x, y, width, height] = rect;
+    if width.is_nan() || height.is_nan() || width < 1.0 || height < 1.0 {
+        return None;
+    }
+    let projector = Projector::new(
+        Rect::from_min_size(Pos2::new(x, y), egui::vec2(width, height)),
+        camera,
+    );
+    let balls = scene
+        .capsules()
+        .iter()
+        .flat_map(|c| [(c.a, c.radius), (c.b, c.radius)])
+        .chain(scene.spheres().iter().map(|s| (s.centre, s.radius)));
+    let mut out: Option<Rect> = None;
+    for (centre, radius) in balls {
+        let (at, w) = projector.point(Vec3::from_array(centre))?;
+        let r = projector.radius(radius, w);
+        let ball = Rect::from_center_size(at, egui::vec2(2.0 * r, 2.0 * r));
+        out = Some(out.map_or(ball, |b| b.union(ball)));
+    }
+    out.map(|b| [b.min.x, b.min.y, b.width(), b.height()])
 }
 
 /// The scene as egui shapes: background, ground grid, bones and spheres sorted

@@ -13,6 +13,7 @@
 
 mod build;
 mod bundled;
+mod edit;
 mod error;
 #[cfg(feature = "schema")]
 mod json_schema;
@@ -26,6 +27,7 @@ mod validate;
 
 pub use build::Creature;
 pub use bundled::{DEFAULT_PRESET, bundled, bundled_json, bundled_names, load_bundled};
+pub use edit::{MAX_EDIT_PATH_CHARS, set_preset_value};
 pub use error::{PresetError, ROOT_PATH};
 #[cfg(feature = "schema")]
 pub use json_schema::{SCHEMA_ID, SCHEMA_TITLE, preset_schema, preset_schema_text};

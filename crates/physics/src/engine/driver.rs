@@ -5,7 +5,6 @@
 //! says why when the simulation blows up (Raibert & Hodgins 1991, Figure 2).
 
 use gaitlab_core::driver::Driver;
-use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::physics::{check_hop_height_m, check_speed_mps};
 use gaitlab_core::preset::{Creature as PresetCreature, PhysicsParams, PresetError};
 use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
@@ -17,33 +16,10 @@ use crate::creatures::Species;
 use crate::dynamics::model::Joint as BodyJoint;
 use crate::engine::metrics::{GaitRecorder, GaitSummary};
 use crate::engine::preset::creature_from_preset;
+use crate::engine::probe::{self, PhysicsProbe};
+use crate::engine::steering::Steering;
 use crate::world::ground::{GroundParams, Obstacle};
 use crate::world::sim::{Controller, Sim, SimOptions};
-
-/// What the live plots show each frame.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct PhysicsProbe {
-    /// Trunk height above the ground (m).
-    pub height_m: f64,
-    /// Trunk pitch (deg, positive nose down).
-    pub pitch_deg: f64,
-    /// Trunk roll (deg).
-    pub roll_deg: f64,
-    /// First leg's hip-to-foot length (m).
-    pub leg_length_m: f64,
-    /// Total vertical ground force over body weight.
-    pub ground_force_bw: f64,
-    /// The state machine's state as its Figure-4 index (0 flight … 4 unloading).
-    pub phase_index: usize,
-    /// Forward speed of the centre of mass (m/s).
-    pub speed_mps: f64,
-}
-
-/// How fast the desired heading turns (rad/s at scale 1, ×1/√L).
-pub const TURN_RATE_RAD_S: f64 = 0.5;
-
-/// A waypoint counts as reached within this distance (m at scale 1).
-pub const WAYPOINT_RADIUS_M: f64 = 0.75;
 
 /// Seconds after a fall before the creature is put back at the start.
 pub const FALL_RESET_S: f64 = 1.5;
@@ -62,12 +38,8 @@ pub struct PhysicsDriver {
     pose: Pose,
     effectors: Vec<DVec3>,
     fell_at: Option<f64>,
-    /// The desired heading as it turns toward its goal (rad about +y).
-    heading: f64,
-    /// Where the heading is turning to (rad).
-    heading_goal: f64,
-    /// The next waypoint of `params.waypoints`.
-    waypoint: usize,
+    /// The desired heading and the waypoint being steered to.
+    steering: Steering,
     /// A controller waiting for the next flight to take over (a gait change).
     pending: Option<GaitController>,
     /// Whether a fall puts the creature back at the start after
@@ -187,9 +159,7 @@ impl PhysicsDriver {
             sim,
             controller,
             fell_at: None,
-            heading: 0.0,
-            heading_goal: 0.0,
-            waypoint: 0,
+            steering: Steering::default(),
             pending: None,
             reset_after_fall: true,
             message: None,
@@ -254,58 +224,16 @@ impl PhysicsDriver {
     }
 
     /// The trunk of a free-floating creature as a capsule `(a, b, radius)` in
-    /// the world: along the long axis of the uniform box with the trunk's mass
-    /// and principal moments. `None` for a planar model (its trunk is a link).
+    /// the world (see [`probe::trunk_capsule`]).
     #[must_use]
     pub fn trunk_capsule(&self) -> Option<(DVec3, DVec3, f64)> {
-        let model = &self.sim.creature.model;
-        let body = model
-            .bodies()
-            .first()
-            .filter(|b| model.free_base() && b.mass > 0.0)?;
-        let i = body.inertia_com;
-        let (ix, iy, iz) = (i.x_axis.x, i.y_axis.y, i.z_axis.z);
-        let half = |a: f64, b: f64, c: f64| (6.0 * (b + c - a) / body.mass).max(0.0).sqrt() / 2.0;
-        let h = DVec3::new(half(ix, iy, iz), half(iy, ix, iz), half(iz, ix, iy));
-        let (axis, long, radius) = if h.x >= h.y && h.x >= h.z {
-            (DVec3::X, h.x, (h.y + h.z) / 2.0)
-        } else if h.y >= h.z {
-            (DVec3::Y, h.y, (h.x + h.z) / 2.0)
-        } else {
-            (DVec3::Z, h.z, (h.x + h.y) / 2.0)
-        };
-        let w = self.sim.data.world[0];
-        let centre = w.rot * body.com + w.pos;
-        let reach = w.rot * axis * (long - radius).max(0.0);
-        Some((centre - reach, centre + reach, radius))
+        probe::trunk_capsule(&self.sim)
     }
 
     /// A snapshot of the trunk, first leg, ground force and state for plots.
     #[must_use]
     pub fn probe(&self) -> PhysicsProbe {
-        let c = &self.sim.creature;
-        let d = &self.sim.data;
-        let err = crate::control::attitude::attitude_error(c, d, 0.0, 0.0);
-        let trunk = d.world[c.trunk];
-        let leg_length_m = c.legs.first().map_or(0.0, |leg| {
-            let hip = trunk.rot * leg.hip_in_trunk + trunk.pos;
-            (d.point_world(leg.foot_body, leg.foot_point) - hip).length()
-        });
-        let weight = c.model.total_mass() * crate::dynamics::model::GRAVITY_MPS2;
-        let force: f64 = self.sim.contacts.iter().map(|k| k.force.y).sum();
-        let name = self.controller.phase_name();
-        PhysicsProbe {
-            height_m: trunk.pos.y,
-            pitch_deg: err.x.to_degrees(),
-            roll_deg: err.z.to_degrees(),
-            leg_length_m,
-            ground_force_bw: force / weight,
-            phase_index: crate::control::Phase::ALL
-                .iter()
-                .position(|p| p.name() == name)
-                .unwrap_or(0),
-            speed_mps: crate::control::attitude::com_velocity(c, d).z,
-        }
+        probe::probe(&self.sim, self.controller.phase_name())
     }
 
     /// The Table-2 figures since the last reset.
@@ -464,10 +392,11 @@ impl PhysicsDriver {
     }
 
     /// Turn the desired heading toward `heading` (rad about +y; 0 = +z) at
-    /// [`TURN_RATE_RAD_S`]. Waypoints, if any, take over again at the next frame.
+    /// [`TURN_RATE_RAD_S`](crate::engine::steering::TURN_RATE_RAD_S). Waypoints, if any,
+    /// take over again at the next frame.
     pub fn set_heading(&mut self, heading: f64) {
         if heading.is_finite() {
-            self.heading_goal = heading;
+            self.steering.heading_goal = heading;
             self.params.waypoints.clear();
         }
     }
@@ -475,37 +404,23 @@ impl PhysicsDriver {
     /// The desired heading now (rad).
     #[must_use]
     pub fn heading(&self) -> f64 {
-        self.heading
+        self.steering.heading
     }
 
     /// The next waypoint's index (equal to the count once all are reached).
     #[must_use]
     pub fn waypoint(&self) -> usize {
-        self.waypoint
+        self.steering.waypoint
     }
 
     /// Steer: aim at the next waypoint, and turn the heading toward its goal.
     fn steer(&mut self, dt: f64) {
-        let l = self.params.scale;
-        if let Some(&[x, z]) = self.params.waypoints.get(self.waypoint) {
-            let com =
-                crate::dynamics::energy::center_of_mass(&self.sim.creature.model, &self.sim.data);
-            let to = DVec3::new(x * l - com.x, 0.0, z * l - com.z);
-            if to.length() < WAYPOINT_RADIUS_M * l {
-                self.waypoint += 1;
-            } else {
-                self.heading_goal = to.x.patan2(to.z);
-            }
-        }
-        let error = (self.heading_goal - self.heading + std::f64::consts::PI)
-            .rem_euclid(std::f64::consts::TAU)
-            - std::f64::consts::PI;
-        let step = TURN_RATE_RAD_S / l.sqrt() * dt;
-        if error.abs() > 1e-12 {
-            self.heading += error.clamp(-step, step);
-            self.controller.set_heading(self.heading);
+        let (model, data) = (&self.sim.creature.model, &self.sim.data);
+        let com = || crate::dynamics::energy::center_of_mass(model, data);
+        if let Some(heading) = self.steering.steer(com, &self.params, dt) {
+            self.controller.set_heading(heading);
             if let Some(next) = self.pending.as_mut() {
-                next.set_heading(self.heading);
+                next.set_heading(heading);
             }
         }
     }
@@ -550,9 +465,7 @@ impl PhysicsDriver {
             self.controller = c;
         }
         self.pending = None;
-        self.heading = 0.0;
-        self.heading_goal = 0.0;
-        self.waypoint = 0;
+        self.steering = Steering::default();
         self.fell_at = None;
         self.message = Some(why);
         self.resets += 1;

@@ -2,11 +2,14 @@
 //! and the paper's figures out (Raibert & Hodgins 1991, Tables 2 and 3).
 //!
 //! The [`driver`] runs a [`preset`]'s creature under its gait controller for
-//! the app and the CLI; [`metrics`] measures the Table-2 figures and
+//! the app and the CLI, steering it ([`steering`]) and showing it ([`probe`]);
+//! [`metrics`] measures the Table-2 figures and
 //! [`table2`] holds the paper's; [`mjcf`] exports the creature to MuJoCo.
 
 pub mod driver;
 pub mod metrics;
 pub mod mjcf;
 pub mod preset;
+pub mod probe;
+pub mod steering;
 pub mod table2;

@@ -1,0 +1,221 @@
+//! Side-by-side comparison of IK methods (She 2006 §4.4: transpose, pinv,
+//! DLS, SDLS; PODA eq. 6's null-space centering; CCD as a non-Jacobian
+//! contrast): 2 or 4 views, each its own [`ThesisDriver`] with its own solver
+//! configuration, on the same creature, mode and parameters, advanced in lock
+//! step (same `dt`, same frame), so every view sees the same targets. Per view:
+//! tracking error (She 2006 §5.3's `d`), wall time per IK iteration, joint
+//! velocity jitter and limit hits. The "singularity" scenario pulls every limb
+//! target to about its full reach ([`gaitlab_motion::stretch`]).
+//!
+//! # The `compare` command and state (DESIGN.md "Browser")
+//! `{"compare": {"views": [NAME, …], "scenario": "script" | "singularity",
+//! "options": [{"lambda", "gamma_max", "max_step", "rank_tolerance",
+//! "null_space_gain"}, …]}}` starts (or reconfigures) a comparison; `views`
+//! holds 2 or 4 of [`CompareMethod::ALL`]'s names, `scenario` and `options`
+//! (one object per view, each key optional) may be left out. `{"compare":
+//! false}` leaves it. `state().compare` is that same object plus a
+//! `metrics` array (ignored by the command), so passing it back verbatim
+//! restores the configuration; it is `null` when no comparison runs.
+
+use gaitlab_core::Kinematics;
+use gaitlab_core::driver::Driver;
+use gaitlab_core::ik::IkOptions;
+use gaitlab_motion::ThesisDriver;
+use gaitlab_motion::stretch::StretchOptions;
+use serde_json::{Value, json};
+
+use crate::history::History;
+use crate::render::Scene;
+use crate::view::ViewOptions;
+
+mod config;
+mod method;
+mod metrics;
+
+pub use config::{CompareConfig, CompareScenario, DEFAULT_VIEWS};
+pub use method::{CompareMethod, DEFAULT_NULL_SPACE_GAIN, Parameter};
+pub use metrics::{JITTER_WINDOW_FRAMES, ViewMetrics};
+
+/// One view: its configuration, driver, figures, plot history and scene.
+pub struct CompareView {
+    /// The configuration.
+    pub method: CompareMethod,
+    pub(crate) driver: ThesisDriver,
+    pub(crate) metrics: ViewMetrics,
+    /// Largest effector error per frame (one series, metres).
+    pub(crate) history: History,
+    pub(crate) scene: Scene,
+    kinematics: Kinematics,
+}
+
+impl CompareView {
+    /// The view's driver.
+    #[must_use]
+    pub fn driver(&self) -> &ThesisDriver {
+        &self.driver
+    }
+
+    /// The view's figures.
+    #[must_use]
+    pub fn metrics(&self) -> &ViewMetrics {
+        &self.metrics
+    }
+
+    /// Mean over effectors of each effector's mean error since the reset, metres.
+    #[must_use]
+    pub fn mean_error_m(&self) -> f64 {
+        let Some(m) = self.driver.ik_metrics() else {
+            return 0.0;
+        };
+        let k = m.effector_count().max(1);
+        (0..k).filter_map(|e| m.mean_error_m(e)).sum::<f64>() / k as f64
+    }
+
+    /// Largest effector error since the reset, metres.
+    #[must_use]
+    pub fn max_error_m(&self) -> f64 {
+        let Some(m) = self.driver.ik_metrics() else {
+            return 0.0;
+        };
+        (0..m.effector_count())
+            .filter_map(|e| m.max_error_m(e))
+            .fold(0.0, f64::max)
+    }
+
+    fn refresh_scene(&mut self, view: &ViewOptions) {
+        let skeleton = self.driver.skeleton();
+        let pose = self.driver.pose();
+        self.kinematics.update(skeleton, &pose.root, &pose.joints);
+        self.scene.fill(
+            skeleton,
+            &self.kinematics,
+            pose.root.position,
+            self.driver.targets(),
+            view,
+        );
+    }
+}
+
+/// A running comparison.
+pub struct Comparison {
+    /// What runs.
+    pub config: CompareConfig,
+    pub(crate) views: Vec<CompareView>,
+}
+
+impl Comparison {
+    /// Builds one driver per view from `template` (the lab's thesis driver:
+    /// its skeleton, parameters, mode and origin), reset to time 0.
+    #[must_use]
+    pub fn new(config: CompareConfig, template: &ThesisDriver, view: &ViewOptions) -> Self {
+        let views = config
+            .views
+            .iter()
+            .zip(&config.options)
+            .map(|(&method, options)| {
+                let mut driver = template.clone();
+                driver.set_options(options.clone());
+                driver.set_stretch(
+                    (config.scenario == CompareScenario::Singularity).then(StretchOptions::default),
+                );
+                driver.reset();
+                let skeleton = driver.skeleton();
+                let mut view_state = CompareView {
+                    method,
+                    metrics: ViewMetrics::new(skeleton.joint_count()),
+                    history: History::new(vec![format!("{} max error (mm)", method.name())]),
+                    scene: Scene::default(),
+                    kinematics: Kinematics::new(skeleton),
+                    driver,
+                };
+                view_state.refresh_scene(view);
+                view_state
+            })
+            .collect();
+        Self { config, views }
+    }
+
+    /// The views.
+    #[must_use]
+    pub fn views(&self) -> &[CompareView] {
+        &self.views
+    }
+
+    /// Sets view `index`'s options live (the configuration keeps them).
+    pub fn set_options(&mut self, index: usize, options: IkOptions) {
+        if let (Some(view), Some(slot)) = (
+            self.views.get_mut(index),
+            self.config.options.get_mut(index),
+        ) {
+            view.driver.set_options(options.clone());
+            *slot = options;
+        }
+    }
+
+    /// Advances every view one frame of `dt` seconds, timing each with `clock`
+    /// (milliseconds) when there is one.
+    pub fn step(&mut self, dt: f64, clock: Option<&dyn Fn() -> f64>) {
+        for view in &mut self.views {
+            let started = clock.map(|c| c());
+            view.driver.step(dt);
+            if let (Some(started), Some(clock)) = (started, clock) {
+                view.metrics.wall_us += (clock() - started) * 1e3;
+            }
+            view.metrics.iterations += view.driver.ik_report().map_or(0, |r| r.iterations as u64);
+            let skeleton = view.driver.skeleton();
+            view.metrics.record(skeleton, &view.driver.pose().joints);
+            let error = view.driver.ik_report().map_or(0.0, |r| r.max_error_m);
+            view.history
+                .push(view.driver.time(), std::iter::once(error));
+        }
+    }
+
+    /// Back to time 0 with cleared figures.
+    pub fn reset(&mut self) {
+        for view in &mut self.views {
+            view.driver.reset();
+            view.metrics = ViewMetrics::new(view.driver.skeleton().joint_count());
+            view.history.clear();
+        }
+    }
+
+    /// Sets the thesis motion of every view.
+    pub fn set_mode(&mut self, mode: gaitlab_core::preset::thesis::ThesisMode) {
+        for view in &mut self.views {
+            view.driver.set_mode(mode);
+        }
+    }
+
+    /// Rebuilds every view's scene from its pose.
+    pub fn refresh_scenes(&mut self, view: &ViewOptions) {
+        for v in &mut self.views {
+            v.refresh_scene(view);
+        }
+    }
+
+    /// The state's `compare` object: the configuration plus per-view metrics.
+    #[must_use]
+    pub fn state(&self) -> Value {
+        let mut value = self.config.to_json();
+        let metrics: Vec<Value> = self
+            .views
+            .iter()
+            .map(|v| {
+                json!({
+                    "method": v.method.name(),
+                    "mean_error_m": v.mean_error_m(),
+                    "max_error_m": v.max_error_m(),
+                    "us_per_iteration": v.metrics.us_per_iteration(),
+                    "jitter_rad": v.metrics.jitter_rad(),
+                    "limit_hits": v.metrics.limit_hits,
+                    "frame": v.metrics.frames,
+                    "time_s": v.driver.time(),
+                })
+            })
+            .collect();
+        if let Some(object) = value.as_object_mut() {
+            object.insert("metrics".to_owned(), Value::Array(metrics));
+        }
+        value
+    }
+}
