@@ -491,7 +491,6 @@ impl Lab {
                 |c| c.config.views.iter().map(|m| m.name()).collect(),
             ),
             "compare": self.compare_state(),
-            "metrics": self.run_metrics(),
             "paused": self.paused,
             "frame": self.frame,
             "time_s": self.driver.time(),
@@ -507,6 +506,7 @@ impl Lab {
                 "effectors": effectors,
                 "creature_box_px": crate::render::viewport::figure_box(
                     &self.scene, &self.camera, self.view_rect_px),
+                "metrics": self.run_metrics(),
             }],
             "view_options": self.settings.view,
             "ik": {

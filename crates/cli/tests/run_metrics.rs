@@ -6,7 +6,7 @@
 //!   last bit. A deliberate change of an engine's motion re-records them:
 //!   `GAITLAB_UPDATE_GOLDEN=1 cargo test -p gaitlab-cli --test run_metrics`,
 //!   and the commit says why the figures moved.
-//! - The page's `state().metrics` against `gaitlab run --json` for the same
+//! - The page's `state().views[0].metrics` against `gaitlab run --json` for the same
 //!   frames (the engine layer's one metrics type): the lab, paused and stepped
 //!   exactly K frames through the command API, against the binary run for K
 //!   frames at the preset's fps, for an IK, a PODA and a physics creature.
@@ -126,7 +126,7 @@ fn lab_metrics(preset: &str, frames: usize) -> Value {
         lab.advance(0.0);
     }
     let state: Value = serde_json::from_str(&lab.state_json()).expect("state is JSON");
-    state["metrics"].clone()
+    state["views"][0]["metrics"].clone()
 }
 
 #[test]

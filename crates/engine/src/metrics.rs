@@ -1,6 +1,6 @@
 //! The figures a run reports — DESIGN.md's metric keys, one serializable type
 //! for every front end: `gaitlab run --json` and `gaitlab track --json` print
-//! it, the page's `state()` carries it as `metrics`. IK tracking (She 2006
+//! it, the page's `state()` carries it as `views[0].metrics`. IK tracking (She 2006
 //! §5.3's effector distance `d`), PODA gaits as measured from the motion
 //! (Girard & Maciejewski 1985: duty factor, relative phase, stride, slip), and
 //! Raibert & Hodgins 1991's Table-2 quantities.
