@@ -16,6 +16,7 @@ use serde_json::Value;
 
 use crate::fail::Failure;
 use crate::load;
+use crate::stdout::outln;
 
 /// Longest baseline file read, bytes.
 const MAX_BASELINE_BYTES: usize = 1024 * 1024;
@@ -118,7 +119,7 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
             }
             result = compare(&baseline, &current, args.tolerance_pct);
         }
-        println!("{}", result.table());
+        outln!("{}", result.table());
         if !result.passed() {
             let slower: Vec<String> = result
                 .regressions()
@@ -137,7 +138,7 @@ pub fn bench(args: &BenchArgs) -> Result<(), Failure> {
         return Ok(());
     }
     if args.json {
-        println!("{report}");
+        outln!("{report}");
     } else {
         print_table(&report);
     }
@@ -162,14 +163,19 @@ fn print_table(report: &Value) {
     print_ik_table(report);
     print_physics_table(report);
     let poda = report["poda"].as_array().into_iter().flatten();
-    println!();
-    println!(
+    outln!();
+    outln!(
         "{:<14} {:>6} {:>4} {:>12} {:>10} {:>12}",
-        "PODA preset", "joints", "legs", "µs/frame", "best", "budget"
+        "PODA preset",
+        "joints",
+        "legs",
+        "µs/frame",
+        "best",
+        "budget"
     );
     for row in poda {
         let budget = budget_text(row, "budget_us_per_frame");
-        println!(
+        outln!(
             "{:<14} {:>6} {:>4} {:>12.2} {:>10.2} {:>12}",
             row["preset"].as_str().unwrap_or("?"),
             row["joints"],
@@ -182,14 +188,19 @@ fn print_table(report: &Value) {
 }
 
 fn print_physics_table(report: &Value) {
-    println!();
-    println!(
+    outln!();
+    outln!(
         "{:<18} {:>6} {:>12} {:>12} {:>10} {:>16}",
-        "physics preset", "joints", "steps/s", "best", "× real", "budget"
+        "physics preset",
+        "joints",
+        "steps/s",
+        "best",
+        "× real",
+        "budget"
     );
     for row in report["physics"].as_array().into_iter().flatten() {
         if let Some(e) = row["error"].as_str() {
-            println!("{:<18} {e}", row["preset"].as_str().unwrap_or("?"));
+            outln!("{:<18} {e}", row["preset"].as_str().unwrap_or("?"));
             continue;
         }
         let budget = match (
@@ -199,7 +210,7 @@ fn print_physics_table(report: &Value) {
             (Some(b), Some(ok)) => format!("≥{b:.0} {}", if ok { "ok" } else { "MISS" }),
             _ => String::new(),
         };
-        println!(
+        outln!(
             "{:<18} {:>6} {:>12.0} {:>12.0} {:>10.1} {:>16}",
             row["preset"].as_str().unwrap_or("?"),
             row["joints"],
@@ -212,13 +223,20 @@ fn print_physics_table(report: &Value) {
 }
 
 fn print_ik_table(report: &Value) {
-    println!(
+    outln!(
         "{:<14} {:>6} {:>4} {:<10} {:>12} {:>10} {:>12} {:>10}",
-        "preset", "joints", "eff", "method", "µs/iter", "best", "µs/frame", "budget"
+        "preset",
+        "joints",
+        "eff",
+        "method",
+        "µs/iter",
+        "best",
+        "µs/frame",
+        "budget"
     );
     for row in report["ik"].as_array().into_iter().flatten() {
         let budget = budget_text(row, "budget_us_per_iteration");
-        println!(
+        outln!(
             "{:<14} {:>6} {:>4} {:<10} {:>12.2} {:>10.2} {:>12.2} {:>10}",
             row["preset"].as_str().unwrap_or("?"),
             row["joints"],

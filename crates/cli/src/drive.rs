@@ -1,6 +1,7 @@
 //! Running any driver headless for a number of frames: timing it and
 //! streaming its frames to `--bvh` / `--csv` through the engine layer's
-//! [`FrameWriter`] (the same writer the page's take uses).
+//! [`FrameWriter`] (the same writer the page's take uses), and a simulation's
+//! every step to `--trace` through its [`StepTrace`].
 
 use std::time::Instant;
 
@@ -8,7 +9,7 @@ use clap::Args;
 
 use gaitlab_core::driver::Driver;
 use gaitlab_engine::metrics::pose_within_limits;
-use gaitlab_engine::{AnyDriver, FrameWriter, Timing};
+use gaitlab_engine::{AnyDriver, FrameWriter, StepTrace, Timing};
 
 use crate::fail::Failure;
 use crate::options::written_frames;
@@ -52,12 +53,15 @@ impl<'a> Stream<'a> {
 }
 
 /// Steps `driver` `frames` times at `1/fps`, writing every frame to the
-/// requested outputs (only the last `--last` seconds of them, if asked).
+/// requested outputs (only the last `--last` seconds of them, if asked) and
+/// every simulation step to the `trace` file, if any (the caller has checked
+/// that the engine has one).
 pub fn drive(
     driver: &mut AnyDriver,
     frames: usize,
     fps: f64,
     outputs: &Outputs,
+    trace: Option<&str>,
 ) -> Result<Timing, Failure> {
     let dt = 1.0 / fps;
     let written = written_frames(outputs.last, frames, fps)?;
@@ -72,12 +76,33 @@ pub fn drive(
         let writer = FrameWriter::csv(&skeleton, driver.targets().is_some());
         streams.push(Stream::open(path, writer, written)?);
     }
+    let mut trace = match trace {
+        None => None,
+        Some(path) => {
+            let mut sink = FileSink::create(path).map_err(|failure| Failure {
+                message: format!("--trace {}", failure.message),
+                code: failure.code,
+            })?;
+            match StepTrace::begin(driver, &mut sink) {
+                Ok(writer) => Some((sink, writer)),
+                Err(Some(error)) => return Err(sink.fail(error)),
+                Err(None) => {
+                    return Err(Failure::input(
+                        "--trace: this engine has no simulation to trace",
+                    ));
+                }
+            }
+        }
+    };
     let start = Instant::now();
     let mut step_seconds = 0.0;
     let mut within_limits = true;
     for frame in 0..frames {
         let before = Instant::now();
-        driver.step(dt);
+        match &mut trace {
+            None => driver.step(dt),
+            Some((sink, writer)) => writer.step(driver, dt, sink).map_err(|e| sink.fail(e))?,
+        }
         step_seconds += before.elapsed().as_secs_f64();
         let pose = driver.pose();
         within_limits &= pose_within_limits(&skeleton, pose);
@@ -100,6 +125,9 @@ pub fn drive(
     }
     for stream in streams {
         stream.finish()?;
+    }
+    if let Some((sink, _)) = trace {
+        sink.finish()?;
     }
     Ok(Timing {
         frames,

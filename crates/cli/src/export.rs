@@ -3,11 +3,11 @@
 //! contact), written to standard output or `--out FILE`.
 
 use clap::Args;
-use gaitlab_core::preset::Engine;
 use gaitlab_engine::{Overrides, driver_for};
 
 use crate::fail::Failure;
 use crate::load;
+use crate::stdout::out;
 
 /// Arguments of `gaitlab export`.
 #[derive(Args, Debug)]
@@ -31,18 +31,12 @@ pub fn export(args: &ExportArgs) -> Result<(), Failure> {
         )));
     }
     let creature = load::creature(&args.preset)?;
-    if creature.scenario.engine != Engine::Physics {
+    let driver = driver_for(&creature, &Overrides::default()).map_err(Failure::input)?;
+    let Some(physics) = driver.physics() else {
         return Err(Failure::input(format!(
             "{}: MJCF export is for physics creatures; this preset's engine is {}",
             creature.name,
             creature.scenario.engine.name()
-        )));
-    }
-    let driver = driver_for(&creature, &Overrides::default()).map_err(Failure::input)?;
-    let Some(physics) = driver.physics() else {
-        return Err(Failure::input(format!(
-            "{}: MJCF export is for physics creatures",
-            creature.name
         )));
     };
     let xml = physics.mjcf(&creature.name);
@@ -50,7 +44,7 @@ pub fn export(args: &ExportArgs) -> Result<(), Failure> {
         Some(path) => {
             std::fs::write(path, xml).map_err(|e| Failure::input(format!("--out {path}: {e}")))?
         }
-        None => print!("{xml}"),
+        None => out!("{xml}"),
     }
     Ok(())
 }

@@ -10,6 +10,7 @@ use gaitlab_core::{Creature, PresetError};
 use gaitlab_engine::AnyDriver;
 
 use crate::fail::Failure;
+use crate::stdout::outln;
 
 /// Reads at most `limit` bytes of `path` as UTF-8 text; a larger file is an error
 /// that names the limit, and nothing past it is read.
@@ -92,13 +93,13 @@ fn preset_file(name_or_path: &str) -> Result<String, Failure> {
 pub fn print_presets() {
     for (name, _) in bundled() {
         match load_bundled(name) {
-            Some(Ok(creature)) => println!(
+            Some(Ok(creature)) => outln!(
                 "{name:<14} engine={:<4} joints={:<3} legs={}",
                 creature.scenario.engine.name(),
                 creature.skeleton.joint_count(),
                 legs(&creature)
             ),
-            Some(Err(error)) => println!("{name:<14} invalid: {error}"),
+            Some(Err(error)) => outln!("{name:<14} invalid: {error}"),
             None => {}
         }
     }
@@ -128,7 +129,7 @@ pub fn validate(file: &str) -> Result<(), Failure> {
     let creature = creature(file)?;
     let driver = gaitlab_engine::check(&creature).map_err(Failure::input)?;
     if let Some(driver) = driver.as_ref().and_then(AnyDriver::poda) {
-        println!(
+        outln!(
             "ok: {} — engine poda, {} joints, {} legs, gait {}, period {} s, duty factor {}, speed {} m/s",
             creature.name,
             creature.skeleton.joint_count(),
@@ -140,7 +141,7 @@ pub fn validate(file: &str) -> Result<(), Failure> {
         );
         return Ok(());
     }
-    println!(
+    outln!(
         "ok: {} — engine {}, {} joints, {} effectors, {} legs, mode {}, method {}",
         creature.name,
         creature.scenario.engine.name(),

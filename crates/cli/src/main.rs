@@ -11,6 +11,7 @@ mod options;
 mod print;
 mod run;
 mod sink;
+mod stdout;
 mod track;
 
 use std::process::ExitCode;

@@ -1,6 +1,7 @@
 //! Printing a run's [`RunMetrics`]: one JSON line (`--json`), or a short
 //! human-readable summary per engine.
 
+use crate::stdout::outln;
 use gaitlab_engine::RunMetrics;
 use gaitlab_engine::metrics::{GaitRunMetrics, IkRunMetrics, PhysicsRunMetrics};
 
@@ -8,7 +9,7 @@ use gaitlab_engine::metrics::{GaitRunMetrics, IkRunMetrics, PhysicsRunMetrics};
 pub fn print(metrics: &RunMetrics, as_json: bool) {
     if as_json {
         match serde_json::to_string(metrics) {
-            Ok(line) => println!("{line}"),
+            Ok(line) => outln!("{line}"),
             // Plain structs of numbers and strings always serialize.
             Err(error) => eprintln!("error: metrics: {error}"),
         }
@@ -26,16 +27,24 @@ fn mm(metres: Option<f64>) -> String {
 }
 
 fn print_ik(m: &IkRunMetrics) {
-    println!(
+    outln!(
         "{} · engine {} · method {} · {} frames ({:.2} s simulated) in {:.1} ms · {:.2} µs per IK iteration",
-        m.preset, m.engine, m.method, m.frames, m.sim_seconds, m.wall_ms, m.us_per_iteration,
+        m.preset,
+        m.engine,
+        m.method,
+        m.frames,
+        m.sim_seconds,
+        m.wall_ms,
+        m.us_per_iteration,
     );
-    println!(
+    outln!(
         "  {:<14} {:>12} {:>12}",
-        "effector", "mean err mm", "max err mm"
+        "effector",
+        "mean err mm",
+        "max err mm"
     );
     for effector in &m.effectors {
-        println!(
+        outln!(
             "  {:<20} {:>12} {:>12}",
             effector.name,
             mm(effector.mean_error_m),
@@ -46,24 +55,33 @@ fn print_ik(m: &IkRunMetrics) {
 
 fn print_gait(m: &GaitRunMetrics) {
     let or_nan = |v: Option<f64>| v.unwrap_or(f64::NAN);
-    println!(
+    outln!(
         "{} · engine poda · gait {} · {} frames ({:.2} s simulated) in {:.1} ms · {:.1} µs per frame",
-        m.preset, m.gait, m.frames, m.sim_seconds, m.wall_ms, m.us_per_frame,
+        m.preset,
+        m.gait,
+        m.frames,
+        m.sim_seconds,
+        m.wall_ms,
+        m.us_per_frame,
     );
-    println!(
+    outln!(
         "  foot slip max {:.3} mm · period {:.3} s · stride {:.3} m · body speed {:.3} m/s",
         m.foot_slip_max_m * 1e3,
         or_nan(m.period_s),
         or_nan(m.stride_length_m),
         m.body_speed_mps,
     );
-    println!(
+    outln!(
         "  {:<14} {:>10} {:>10} {:>10} {:>10}",
-        "leg", "duty", "(set)", "phase", "(set)"
+        "leg",
+        "duty",
+        "(set)",
+        "phase",
+        "(set)"
     );
     let value = |v: Option<f64>| v.map_or("-".to_owned(), |v| format!("{v:.3}"));
     for leg in &m.legs {
-        println!(
+        outln!(
             "  {:<14} {:>10} {:>10} {:>10} {:>10}",
             leg.name,
             value(leg.duty_factor),
@@ -75,7 +93,7 @@ fn print_gait(m: &GaitRunMetrics) {
 }
 
 fn print_physics(m: &PhysicsRunMetrics) {
-    println!(
+    outln!(
         "{} · engine physics · gait {} · {:.1} s simulated · fell {} · speed {:.2} of {:.2} m/s · stride {:.2} m in {:.2} s · flight {:.3} s · stance {:.3} s · pitch {:.1}° · roll {:.1}° · friction needed {:.2} · {:.0} steps/s ({:.0}× real time)",
         m.preset,
         m.gait,

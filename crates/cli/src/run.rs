@@ -1,7 +1,7 @@
 //! `gaitlab run PRESET_OR_FILE [--mode M] [--method K] [--gait G] [--path FILE]
-//! [--speed V] [--seconds S] [--fps N] [--set KEY=VALUE] [--bvh FILE] [--csv FILE]
-//! [--last S] [--json]`: any preset headless. The options each engine takes are checked
-//! here; the driver comes from the engine layer's `driver_for`.
+//! [--speed V] [--seconds S] [--fps N] [--set KEY=VALUE] [--trace FILE] [--bvh FILE]
+//! [--csv FILE] [--last S] [--json]`: any preset headless. The options each engine
+//! takes are checked here; the driver comes from the engine layer's `driver_for`.
 
 use clap::Args;
 use gaitlab_core::preset::thesis::ThesisMode;
@@ -46,8 +46,17 @@ pub struct RunArgs {
     /// like a preset file), or a physics controller gain by name such as
     /// `k_speed=0.1` (see `state().physics.gains` in the app). VALUE is JSON;
     /// text that is not JSON is taken as a string (`scenario.physics.gait=bound`).
+    /// Physics runs also take `scenario.physics.control_every=N`,
+    /// `scenario.physics.ground={"vertical_stiffness": …}` and any controller
+    /// parameter, `scenario.physics.controller={"thrust_m": 0.05}` (docs/physics.md).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
+    /// Write the simulation's state after every integration step (0.4 ms at
+    /// scale 1) as CSV to this file: time, the state machine's state, trunk and
+    /// centre of mass, attitude, per leg its length, spring rest, contact and
+    /// ground force, every joint coordinate (engine physics; see docs/physics.md).
+    #[arg(long, value_name = "FILE.csv")]
+    pub trace: Option<String>,
     /// BVH, CSV and JSON output.
     #[command(flatten)]
     pub outputs: Outputs,
@@ -74,7 +83,13 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
         )));
     }
     let (fps, frames) = timing(args.fps, creature.scenario.fps, args.seconds)?;
-    let measured = drive(&mut driver, frames, fps, &args.outputs)?;
+    let measured = drive(
+        &mut driver,
+        frames,
+        fps,
+        &args.outputs,
+        args.trace.as_deref(),
+    )?;
     let metrics = RunMetrics::of(&creature.name, &driver, &measured).with_fps(fps);
     print(&metrics, args.outputs.json);
     Ok(())
@@ -138,6 +153,7 @@ fn overrides(creature: &Creature, args: &RunArgs) -> Result<Overrides, Failure> 
                     scenario.engine.name()
                 )));
             }
+            refuse_trace(scenario.engine, args)?;
             overrides.mode = match &args.mode {
                 None => None,
                 Some(name) => Some(ThesisMode::parse(name).ok_or_else(|| {
@@ -154,6 +170,7 @@ fn overrides(creature: &Creature, args: &RunArgs) -> Result<Overrides, Failure> 
                     "--mode and --method belong to engine ik; engine poda takes --gait and --path",
                 ));
             }
+            refuse_trace(scenario.engine, args)?;
             if let Some(file) = &args.path {
                 let text = load::read_limited(file, MAX_PRESET_BYTES, "path")?;
                 let spec: PathSpec = serde_json::from_str(&text)
@@ -171,6 +188,17 @@ fn overrides(creature: &Creature, args: &RunArgs) -> Result<Overrides, Failure> 
         }
     }
     Ok(overrides)
+}
+
+/// `--trace` for an engine without a simulation to trace.
+fn refuse_trace(engine: Engine, args: &RunArgs) -> Result<(), Failure> {
+    match &args.trace {
+        Some(_) => Err(Failure::input(format!(
+            "--trace: engine {} has no simulated state machine or ground forces to trace; --trace is for engine physics",
+            engine.name()
+        ))),
+        None => Ok(()),
+    }
 }
 
 /// An engine error about a value an option set is reported at the option.

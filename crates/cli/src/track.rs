@@ -59,7 +59,7 @@ pub fn track(args: &TrackArgs) -> Result<(), Failure> {
     };
     let mut driver =
         driver_for(&creature, &overrides).map_err(|e| Failure::input(format!("--{e}")))?;
-    let measured = drive(&mut driver, frames, fps, &args.outputs)?;
+    let measured = drive(&mut driver, frames, fps, &args.outputs, None)?;
     let mut metrics = RunMetrics::of(&creature.name, &driver, &measured).with_fps(fps);
     if let RunMetrics::Ik(ik) = &mut metrics {
         ik.targets_file = Some(args.targets.clone());

@@ -2,18 +2,13 @@
 //! acceptance figures (walk + SDLS foot error), bad input handling, and the BVH
 //! round trip through the core's reader.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
+mod common;
 
+use std::path::PathBuf;
+
+use common::{bundled_preset, gaitlab, json_of, scratch};
 use gaitlab_core::export::parse_bvh;
 use serde_json::Value;
-
-fn gaitlab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_gaitlab"))
-        .args(args)
-        .output()
-        .expect("the gaitlab binary runs")
-}
 
 fn fixture(name: &str) -> String {
     let path: PathBuf = [
@@ -27,21 +22,6 @@ fn fixture(name: &str) -> String {
     .iter()
     .collect();
     path.to_string_lossy().into_owned()
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("gaitlab-cli-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir.join(name)
-}
-
-fn json_of(output: &Output) -> Value {
-    assert!(
-        output.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    serde_json::from_slice(&output.stdout).expect("one JSON object on stdout")
 }
 
 fn effector_mean(metrics: &Value, name: &str) -> f64 {
@@ -421,19 +401,7 @@ fn ten_thousand_joints_and_other_nonsense_exit_2_without_panicking() {
 /// so the quadruped cut to three legs fails there with `run`'s own message.
 #[test]
 fn validate_refuses_what_run_refuses() {
-    let text = std::fs::read_to_string(
-        [
-            env!("CARGO_MANIFEST_DIR"),
-            "..",
-            "..",
-            "presets",
-            "raibert-quadruped.json",
-        ]
-        .iter()
-        .collect::<PathBuf>(),
-    )
-    .expect("bundled preset");
-    let mut preset: Value = serde_json::from_str(&text).expect("JSON");
+    let mut preset = bundled_preset("raibert-quadruped");
     let legs = preset["scenario"]["physics"]["legs"]
         .as_array_mut()
         .expect("physics legs");
@@ -464,19 +432,7 @@ fn set_changes_preset_values_and_gains() {
         }
         v
     };
-    let text = std::fs::read_to_string(
-        [
-            env!("CARGO_MANIFEST_DIR"),
-            "..",
-            "..",
-            "presets",
-            "raibert-biped.json",
-        ]
-        .iter()
-        .collect::<PathBuf>(),
-    )
-    .expect("bundled preset");
-    let mut preset: Value = serde_json::from_str(&text).expect("JSON");
+    let mut preset = bundled_preset("raibert-biped");
     preset["scenario"]["physics"]["speed_mps"] = serde_json::json!(1.5);
     let path = scratch("biped-1.5.json");
     std::fs::write(&path, preset.to_string()).expect("write");
@@ -545,5 +501,30 @@ fn set_changes_preset_values_and_gains() {
         let stderr = String::from_utf8_lossy(&output.stderr);
         assert_eq!(output.status.code(), Some(2), "{set}: {stderr}");
         assert!(stderr.starts_with(expected), "{set}: {stderr}");
+    }
+}
+
+/// Output into a pipe whose reader has gone (`gaitlab run human --json | head -c1`)
+/// ends quietly with status 0, not with a panic.
+#[test]
+fn a_closed_stdout_pipe_ends_quietly() {
+    use std::process::{Command, Stdio};
+    for args in [
+        &["run", "human", "--seconds", "1", "--json"][..],
+        &["presets"][..],
+        &["export", "raibert-biped", "--format", "mjcf"][..],
+    ] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_gaitlab"))
+            .args(args)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("the gaitlab binary starts");
+        // Close the reading end before the command writes anything.
+        drop(child.stdout.take());
+        let output = child.wait_with_output().expect("it ends");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(0), "{args:?}: {stderr}");
+        assert!(stderr.is_empty(), "{args:?}: {stderr}");
     }
 }

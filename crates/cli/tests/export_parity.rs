@@ -6,35 +6,19 @@
 //! at the preset's fps — for an IK, a PODA and a physics creature, the whole
 //! take and its last N seconds (`save.last_s` against `--last`).
 
-use std::path::PathBuf;
-use std::process::Command;
+mod common;
 
+use common::{gaitlab_ok, scratch_arg};
 use gaitlab_app::{Lab, Settings};
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("gaitlab-parity-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir.join(name)
-}
 
 /// The CLI's BVH and CSV for `args` (preset first).
 fn cli_files(tag: &str, args: &[&str]) -> (String, String) {
-    let bvh = scratch(&format!("{tag}.bvh"));
-    let csv = scratch(&format!("{tag}.csv"));
-    let output = Command::new(env!("CARGO_BIN_EXE_gaitlab"))
-        .arg("run")
-        .args(args)
-        .arg("--bvh")
-        .arg(&bvh)
-        .arg("--csv")
-        .arg(&csv)
-        .output()
-        .expect("the gaitlab binary runs");
-    assert!(
-        output.status.success(),
-        "gaitlab run {args:?}: {}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    let bvh = scratch_arg(&format!("{tag}.bvh"));
+    let csv = scratch_arg(&format!("{tag}.csv"));
+    let mut all = vec!["run"];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["--bvh", &bvh, "--csv", &csv]);
+    gaitlab_ok(&all);
     (
         std::fs::read_to_string(bvh).expect("BVH written"),
         std::fs::read_to_string(csv).expect("CSV written"),

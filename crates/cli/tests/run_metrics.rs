@@ -11,53 +11,18 @@
 //!   exactly K frames through the command API, against the binary run for K
 //!   frames at the preset's fps, for an IK, a PODA and a physics creature.
 
-use std::path::PathBuf;
-use std::process::Command;
+mod common;
 
+use std::path::PathBuf;
+
+use common::{bundled_names, gaitlab_ok, run_json, without_timing};
 use gaitlab_app::{Lab, Settings};
 use serde_json::Value;
-
-const TIMING_KEYS: [&str; 5] = [
-    "wall_ms",
-    "us_per_frame",
-    "us_per_iteration",
-    "steps_per_second",
-    "realtime_factor",
-];
-
-/// `value` without the timing keys, at any depth.
-fn without_timing(value: Value) -> Value {
-    match value {
-        Value::Object(map) => Value::Object(
-            map.into_iter()
-                .filter(|(key, _)| !TIMING_KEYS.contains(&key.as_str()))
-                .map(|(key, v)| (key, without_timing(v)))
-                .collect(),
-        ),
-        Value::Array(items) => Value::Array(items.into_iter().map(without_timing).collect()),
-        other => other,
-    }
-}
 
 fn golden_dir() -> PathBuf {
     [env!("CARGO_MANIFEST_DIR"), "tests", "golden", "run-10s"]
         .iter()
         .collect()
-}
-
-fn bundled_names() -> Vec<String> {
-    let dir: PathBuf = [env!("CARGO_MANIFEST_DIR"), "..", "..", "presets"]
-        .iter()
-        .collect();
-    let mut names: Vec<String> = std::fs::read_dir(&dir)
-        .expect("presets/ is readable")
-        .filter_map(|entry| {
-            let path = entry.ok()?.path();
-            (path.extension()? == "json").then(|| path.file_stem()?.to_str().map(str::to_owned))?
-        })
-        .collect();
-    names.sort();
-    names
 }
 
 #[test]
@@ -67,15 +32,7 @@ fn every_bundled_preset_runs_as_recorded() {
     assert!(names.len() >= 9, "bundled presets: {names:?}");
     let mut differ = Vec::new();
     for name in &names {
-        let output = Command::new(env!("CARGO_BIN_EXE_gaitlab"))
-            .args(["run", name, "--seconds", "10", "--json"])
-            .output()
-            .expect("the gaitlab binary runs");
-        assert!(
-            output.status.success(),
-            "{name}: {}",
-            String::from_utf8_lossy(&output.stderr)
-        );
+        let output = gaitlab_ok(&["run", name, "--seconds", "10", "--json"]);
         let got: Value = serde_json::from_slice(&output.stdout).expect("one JSON object");
         let got = without_timing(got);
         let path = golden_dir().join(format!("{name}.json"));
@@ -103,16 +60,7 @@ fn every_bundled_preset_runs_as_recorded() {
 }
 
 fn cli_metrics(preset: &str, seconds: &str) -> Value {
-    let output = Command::new(env!("CARGO_BIN_EXE_gaitlab"))
-        .args(["run", preset, "--seconds", seconds, "--json"])
-        .output()
-        .expect("the gaitlab binary runs");
-    assert!(
-        output.status.success(),
-        "{preset}: {}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    serde_json::from_slice(&output.stdout).expect("one JSON object")
+    run_json(preset, seconds, &[])
 }
 
 fn lab_metrics(preset: &str, frames: usize) -> Value {

@@ -3,8 +3,8 @@
 //! Maciejewski 1985's PODA gaits, Raibert & Hodgins 1991's simulation. Front
 //! ends (the page, the CLI, the benchmark suite) build every driver with
 //! [`driver_for`], hold it as an [`AnyDriver`], report its figures as
-//! [`RunMetrics`] and write its frames with a [`take::FrameWriter`] (a page's
-//! recording is a [`Take`]).
+//! [`RunMetrics`], write its frames with a [`take::FrameWriter`] (a page's
+//! recording is a [`Take`]) and a simulation's every step with a [`StepTrace`].
 //!
 //! Pure like the crates below it: no I/O and no clocks (callers measure time).
 
@@ -13,9 +13,11 @@ pub mod driver_for;
 pub mod metrics;
 pub mod switch;
 pub mod take;
+pub mod trace;
 
 pub use any_driver::AnyDriver;
 pub use driver_for::{Overrides, Tracking, check, driver_for};
 pub use metrics::{RunMetrics, Timing};
 pub use switch::bundled_for_engine;
 pub use take::{FrameWriter, MAX_TAKE_S, Take};
+pub use trace::StepTrace;

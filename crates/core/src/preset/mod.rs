@@ -33,7 +33,7 @@ pub use error::{PresetError, ROOT_PATH};
 pub use json_schema::{SCHEMA_ID, SCHEMA_TITLE, preset_schema, preset_schema_text};
 pub use limits::{MAX_EFFECTORS, MAX_JOINTS, MAX_LIMBS, MAX_NAME_CHARS, MAX_PRESET_BYTES};
 pub use physics::{
-    MassSpec, ObstacleSpec, PhysicsBase, PhysicsBodySpec, PhysicsLegSpec, PhysicsModel,
+    GroundSpec, MassSpec, ObstacleSpec, PhysicsBase, PhysicsBodySpec, PhysicsLegSpec, PhysicsModel,
     PhysicsParams,
 };
 pub use poda::{PathKindSpec, PathSpec, PodaLegSpec, PodaParams, check_transfer_keys};

@@ -2,13 +2,16 @@
 //! preset — the mass, mass centre and inertia of every body (Table 3), which
 //! joints form each leg (hip, leg spring, knee, foot), the tail and neck,
 //! the gait, desired speed and hop height, the dynamic scale factor L
-//! (Table 1), the integration step and any obstacles.
+//! (Table 1), the integration step, the control rate, the ground's springs,
+//! the gait controller's parameters and any obstacles.
 //!
 //! The skeleton gives the bodies' geometry: each joint moves one body, the
 //! root is the trunk (a free-floating base) or, for a planar model, fixed in
 //! the world with the base's slides and pitch as the first joints. Only values
 //! are checked here (ranges, names); `gaitlab-physics` checks the structure
 //! its controllers need (leg counts, gait names) when it builds the creature.
+
+use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
@@ -26,6 +29,14 @@ pub const MAX_PHYSICS_SPEED_MPS: f64 = 15.0;
 /// guards validity (a finite, non-negative height the legs could reach), not
 /// stability — a high hop may still fall, and the blow-up guard says so.
 pub const HOP_HEIGHT_RANGE_M: (f64, f64) = (0.0, 2.0);
+/// Most integration steps between two runs of the controller.
+pub const MAX_CONTROL_EVERY: u32 = 100;
+/// Largest ground spring stiffness (N/m) or damping (N·s/m) at scale 1.
+pub const MAX_GROUND_COEFFICIENT: f64 = 1e8;
+/// Largest magnitude of a gait controller parameter.
+pub const MAX_CONTROLLER_VALUE: f64 = 1e7;
+/// Most gait controller parameters one preset may set.
+pub const MAX_CONTROLLER_VALUES: usize = 64;
 
 /// Checks a desired speed (m/s at scale 1) against [`MAX_PHYSICS_SPEED_MPS`].
 ///
@@ -208,6 +219,21 @@ pub struct PhysicsParams {
     /// Integration step at scale 1 (s). Default 0.0004 (the paper's).
     #[serde(default = "default_dt")]
     pub dt_s: f64,
+    /// Run the controller every this many integration steps (1 = every
+    /// step). Default 1 (the paper's controllers run at the integration rate).
+    #[serde(default = "default_control_every", skip_serializing_if = "is_one")]
+    pub control_every: u32,
+    /// The ground's springs and dampers at scale 1 in place of the model's
+    /// ("Modeling": the quadruped's and biped's 50 000 N/m and 500 N·s/m, the
+    /// kangaroo's own softer ground). Default: the model's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ground: Option<GroundSpec>,
+    /// The gait controller's parameters by name, at scale 1 in the paper's
+    /// units, in place of its defaults (`{"thrust_m": 0.05}`); the names are
+    /// the controller's (`gaitlab run … --set scenario.physics.controller.x=1`
+    /// names them when one is wrong). Default: none changed.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub controller: BTreeMap<String, f64>,
     /// Boxes on the ground.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub obstacles: Vec<ObstacleSpec>,
@@ -215,6 +241,67 @@ pub struct PhysicsParams {
     /// through in order, turning its desired heading toward the next one.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub waypoints: Vec<[f64; 2]>,
+}
+
+/// The ground's linear springs and dampers (`scenario.physics.ground`), at
+/// scale 1; a field left out keeps the model's value.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct GroundSpec {
+    /// Vertical stiffness (N/m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vertical_stiffness: Option<f64>,
+    /// Vertical damping (N·s/m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vertical_damping: Option<f64>,
+    /// Tangential stiffness (N/m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tangential_stiffness: Option<f64>,
+    /// Tangential damping (N·s/m).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tangential_damping: Option<f64>,
+}
+
+impl GroundSpec {
+    /// Checks every value given: finite, ≥ 0 and at most
+    /// [`MAX_GROUND_COEFFICIENT`] (stiffness must be > 0).
+    ///
+    /// # Errors
+    /// The first offending value, with its JSON path under `prefix`.
+    pub fn check(&self, prefix: &str) -> Result<(), PresetError> {
+        for (name, value, positive) in [
+            ("vertical_stiffness", self.vertical_stiffness, true),
+            ("vertical_damping", self.vertical_damping, false),
+            ("tangential_stiffness", self.tangential_stiffness, true),
+            ("tangential_damping", self.tangential_damping, false),
+        ] {
+            let Some(v) = value else { continue };
+            let ok = v.is_finite()
+                && v <= MAX_GROUND_COEFFICIENT
+                && (v > 0.0 || (!positive && v == 0.0));
+            if !ok {
+                let least = if positive {
+                    "more than 0"
+                } else {
+                    "at least 0"
+                };
+                return Err(PresetError::new(
+                    format!("{prefix}.{name}"),
+                    format!("must be {least} and at most {MAX_GROUND_COEFFICIENT}"),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+fn default_control_every() -> u32 {
+    1
+}
+
+fn is_one(n: &u32) -> bool {
+    *n == 1
 }
 
 fn default_speed() -> f64 {
@@ -350,6 +437,29 @@ impl PhysicsParams {
                 at("dt_s"),
                 format!("must be a time step in [{lo}, {hi}] s"),
             ));
+        }
+        if self.control_every == 0 || self.control_every > MAX_CONTROL_EVERY {
+            return Err(PresetError::new(
+                at("control_every"),
+                format!("must be a whole number of steps from 1 to {MAX_CONTROL_EVERY}"),
+            ));
+        }
+        if let Some(ground) = &self.ground {
+            ground.check(&at("ground"))?;
+        }
+        if self.controller.len() > MAX_CONTROLLER_VALUES {
+            return Err(PresetError::new(
+                at("controller"),
+                format!("at most {MAX_CONTROLLER_VALUES} parameters"),
+            ));
+        }
+        for (name, value) in &self.controller {
+            if !(value.is_finite() && value.abs() <= MAX_CONTROLLER_VALUE) {
+                return Err(PresetError::new(
+                    format!("{prefix}.controller.{name}"),
+                    format!("must be a finite number within ±{MAX_CONTROLLER_VALUE}"),
+                ));
+            }
         }
         if self.obstacles.len() > MAX_OBSTACLES {
             return Err(PresetError::new(

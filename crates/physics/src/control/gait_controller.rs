@@ -7,6 +7,7 @@ use gaitlab_core::preset::{PhysicsParams, PresetError};
 use crate::control::biped_gallop::{BipedGallop, BipedGallopParams, GallopStyle};
 use crate::control::biped_run::{BipedRun, BipedRunParams};
 use crate::control::kangaroo_hop::{KangarooHop, KangarooHopParams, kangaroo_start};
+use crate::control::parameters::NamedParameters;
 use crate::control::quadruped_bound::{
     BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
 };
@@ -115,12 +116,37 @@ pub fn start_state(sim: &mut Sim, controller: &GaitController, speed_mps: f64) {
     }
 }
 
-/// The controller of `gait` for `creature`, with `params`' speed, hop height
-/// and obstacles.
+/// `p` with the preset's controller parameters (`scenario.physics.controller`)
+/// set by name.
+///
+/// # Errors
+/// `scenario.physics.controller.NAME` for a name the gait's controller lacks.
+fn with_parameters<P: NamedParameters>(
+    mut p: P,
+    params: &PhysicsParams,
+    gait: &str,
+) -> Result<P, PresetError> {
+    for (name, &value) in &params.controller {
+        if !p.set_parameter(name, value) {
+            return Err(PresetError::new(
+                format!("scenario.physics.controller.{name}"),
+                format!(
+                    "the {gait} controller has no such parameter (it has: {})",
+                    P::NAMES.join(", ")
+                ),
+            ));
+        }
+    }
+    Ok(p)
+}
+
+/// The controller of `gait` for `creature`, with `params`' speed, hop height,
+/// obstacles and controller parameters.
 ///
 /// # Errors
 /// `scenario.physics.gait` for a gait the model lacks; `scenario.physics.legs`
-/// when the legs do not fit the gait's controller.
+/// when the legs do not fit the gait's controller; `scenario.physics.controller.NAME`
+/// for a parameter it does not have.
 pub fn make_controller(
     creature: &PhysicalCreature,
     gait: &str,
@@ -156,6 +182,7 @@ pub fn make_controller(
                 hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
                 ..d
             };
+            let p = with_parameters(p, params, gait)?;
             Ok(GaitController::BipedRun(Box::new(BipedRun::new(p, l))))
         }
         (Species::Biped, "gallop" | "gallop_alternate") => {
@@ -174,6 +201,7 @@ pub fn make_controller(
                 style,
                 ..d
             };
+            let p = with_parameters(p, params, gait)?;
             Ok(GaitController::BipedGallop(Box::new(BipedGallop::new(
                 p, l,
             ))))
@@ -190,6 +218,7 @@ pub fn make_controller(
                     speed_mps: params.speed_mps,
                     ..QuadrupedRunParams::default()
                 };
+                let p = with_parameters(p, params, gait)?;
                 return Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(p, l))));
             }
             let style = if gait == "bound" {
@@ -202,6 +231,7 @@ pub fn make_controller(
                 style,
                 ..QuadrupedBoundParams::default()
             };
+            let p = with_parameters(p, params, gait)?;
             Ok(GaitController::QuadrupedBound(Box::new(
                 QuadrupedBound::new(p, l),
             )))
@@ -229,6 +259,7 @@ pub fn make_controller(
                 obstacle_depth_m: obstacle.map_or(d.obstacle_depth_m, |o| o.depth_m),
                 ..d
             };
+            let p = with_parameters(p, params, gait)?;
             Ok(GaitController::Kangaroo(Box::new(KangarooHop::new(p))))
         }
         _ => Err(bad()),

@@ -11,6 +11,7 @@ pub mod gains;
 pub mod gait_controller;
 pub mod hip_servo;
 pub mod kangaroo_hop;
+pub mod parameters;
 pub mod phase;
 pub mod placement;
 pub mod quadruped_bound;

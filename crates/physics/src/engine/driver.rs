@@ -116,12 +116,21 @@ impl PhysicsDriver {
         let start_root = preset.root_position * l;
         let options = SimOptions {
             dt: params.dt_s * l.sqrt(),
+            control_every: params.control_every,
             ..SimOptions::default()
         };
-        let ground = match creature.species {
-            Species::Kangaroo => kangaroo_ground().scaled(l),
-            _ => GroundParams::default().scaled(l),
+        let mut ground = match creature.species {
+            Species::Kangaroo => kangaroo_ground(),
+            _ => GroundParams::default(),
         };
+        if let Some(spec) = &params.ground {
+            let set = |slot: &mut f64, value: Option<f64>| *slot = value.unwrap_or(*slot);
+            set(&mut ground.vertical_stiffness, spec.vertical_stiffness);
+            set(&mut ground.vertical_damping, spec.vertical_damping);
+            set(&mut ground.tangential_stiffness, spec.tangential_stiffness);
+            set(&mut ground.tangential_damping, spec.tangential_damping);
+        }
+        let ground = ground.scaled(l);
         let mut sim = Sim::new(creature, ground, options);
         for o in &params.obstacles {
             sim.terrain.obstacles.push(Obstacle {
@@ -473,8 +482,12 @@ impl PhysicsDriver {
     }
 }
 
-impl Driver for PhysicsDriver {
-    fn step(&mut self, dt: f64) {
+impl PhysicsDriver {
+    /// [`Driver::step`] calling `after_step` with the driver after every
+    /// integration step that succeeded (what a per-step trace,
+    /// [`crate::engine::trace`], reads); the motion is exactly that of
+    /// [`Driver::step`].
+    pub fn step_observed(&mut self, dt: f64, mut after_step: impl FnMut(&Self)) {
         if !(dt.is_finite() && dt > 0.0) {
             return;
         }
@@ -492,6 +505,7 @@ impl Driver for PhysicsDriver {
             }
             self.recorder.record(&self.sim);
             self.take_over();
+            after_step(self);
             stepped += 1;
         }
         self.sim.settle_accumulator();
@@ -514,6 +528,12 @@ impl Driver for PhysicsDriver {
             _ => {}
         }
         self.update_pose();
+    }
+}
+
+impl Driver for PhysicsDriver {
+    fn step(&mut self, dt: f64) {
+        self.step_observed(dt, |_| {});
     }
 
     fn time(&self) -> f64 {

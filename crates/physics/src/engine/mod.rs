@@ -4,7 +4,8 @@
 //! The [`driver`] runs a [`preset`]'s creature under its gait controller for
 //! the app and the CLI, steering it ([`steering`]) and showing it ([`probe`]);
 //! [`metrics`] measures the Table-2 figures and
-//! [`table2`] holds the paper's; [`mjcf`] exports the creature to MuJoCo.
+//! [`table2`] holds the paper's; [`mjcf`] exports the creature to MuJoCo;
+//! [`trace`] writes its state after every step.
 
 pub mod driver;
 pub mod metrics;
@@ -13,3 +14,4 @@ pub mod preset;
 pub mod probe;
 pub mod steering;
 pub mod table2;
+pub mod trace;

@@ -276,6 +276,9 @@ pub fn to_preset(creature: &PhysicalCreature, meta: &PresetMeta) -> Preset {
         hop_height_m: None,
         scale: 1.0,
         dt_s: 0.0004,
+        control_every: 1,
+        ground: None,
+        controller: std::collections::BTreeMap::new(),
         obstacles: Vec::new(),
         waypoints: Vec::new(),
     };

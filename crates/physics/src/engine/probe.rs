@@ -53,6 +53,16 @@ pub fn trunk_capsule(sim: &Sim) -> Option<(DVec3, DVec3, f64)> {
     Some((centre - reach, centre + reach, radius))
 }
 
+/// The Figure-4 index of the state named `phase_name` (0 flight … 4
+/// unloading), 0 for a state outside Figure 4.
+#[must_use]
+pub fn phase_index(phase_name: &str) -> usize {
+    crate::control::Phase::ALL
+        .iter()
+        .position(|p| p.name() == phase_name)
+        .unwrap_or(0)
+}
+
 /// A snapshot of the trunk, first leg, ground force and the state machine's
 /// state (`phase_name`, Figure 4) for plots.
 #[must_use]
@@ -74,10 +84,7 @@ pub fn probe(sim: &Sim, phase_name: &str) -> PhysicsProbe {
         roll_deg: err.z.to_degrees(),
         leg_length_m,
         ground_force_bw: force / weight,
-        phase_index: crate::control::Phase::ALL
-            .iter()
-            .position(|p| p.name() == name)
-            .unwrap_or(0),
+        phase_index: phase_index(name),
         speed_mps: crate::control::attitude::com_velocity(c, d).z,
     }
 }
