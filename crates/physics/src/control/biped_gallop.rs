@@ -494,6 +494,10 @@ impl Controller for BipedGallop {
         self.phase.name()
     }
 
+    fn leg_phase_name(&self, leg: usize) -> Option<&'static str> {
+        self.legs.get(leg).map(|l| l.phase.name())
+    }
+
     fn set_speed(&mut self, speed_mps: f64) {
         self.params.speed_mps = speed_mps;
     }

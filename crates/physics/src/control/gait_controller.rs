@@ -80,6 +80,10 @@ impl Controller for GaitController {
         self.inner().phase_name()
     }
 
+    fn leg_phase_name(&self, leg: usize) -> Option<&'static str> {
+        self.inner().leg_phase_name(leg)
+    }
+
     fn set_speed(&mut self, speed_mps: f64) {
         self.inner_mut().set_speed(speed_mps);
     }

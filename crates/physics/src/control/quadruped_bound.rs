@@ -520,6 +520,11 @@ impl Controller for QuadrupedBound {
         self.phase().name()
     }
 
+    fn leg_phase_name(&self, leg: usize) -> Option<&'static str> {
+        let pair = PAIRS.iter().position(|legs| legs.contains(&leg))?;
+        Some(self.pair_phase(pair).name())
+    }
+
     fn set_speed(&mut self, speed_mps: f64) {
         self.params.speed_mps = speed_mps;
     }

@@ -406,6 +406,10 @@ impl Controller for QuadrupedRun {
         self.phase().name()
     }
 
+    fn leg_phase_name(&self, leg: usize) -> Option<&'static str> {
+        self.leg_phase.get(leg).map(|p| p.name())
+    }
+
     fn set_speed(&mut self, speed_mps: f64) {
         self.params.speed_mps = speed_mps;
     }

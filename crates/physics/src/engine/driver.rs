@@ -232,6 +232,16 @@ impl PhysicsDriver {
         self.controller.phase_name()
     }
 
+    /// The state of leg `leg`'s own state machine where the controller runs
+    /// one per leg (the biped gallop, the trot) or per pair (the bound and
+    /// quadruped gallop); else the controller's state ([`Self::phase_name`]).
+    #[must_use]
+    pub fn leg_phase_name(&self, leg: usize) -> &'static str {
+        self.controller
+            .leg_phase_name(leg)
+            .unwrap_or_else(|| self.controller.phase_name())
+    }
+
     /// The trunk of a free-floating creature as a capsule `(a, b, radius)` in
     /// the world (see [`probe::trunk_capsule`]).
     #[must_use]

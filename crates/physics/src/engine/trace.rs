@@ -1,7 +1,7 @@
 //! The per-step trace of a running simulation (`gaitlab run … --trace
 //! FILE.csv`): after every integration step, the state machine's state
 //! (Raibert & Hodgins 1991, Figure 4), the trunk and centre of mass, the
-//! attitude, each leg's length, spring rest, contact and ground force (the
+//! attitude, each leg's state, length, spring rest, contact and ground force (the
 //! "Modeling" section's ground springs), the desired speed and heading, and
 //! every joint coordinate — what the old `examples/*trial.rs` printed.
 //!
@@ -25,6 +25,9 @@ use crate::engine::probe;
 /// One leg in one [`TraceRow`].
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct LegTrace {
+    /// The state of the leg's own state machine, where the controller runs
+    /// one per leg or per pair of legs; else the controller's state.
+    pub state: &'static str,
     /// Whether the foot is on the ground.
     pub touching: bool,
     /// Hip-to-foot length (m).
@@ -117,10 +120,17 @@ impl TraceRow {
             rate.y.to_degrees(),
         ];
         let mut vertical = 0.0;
-        for ((out, leg), contact) in self.legs.iter_mut().zip(&creature.legs).zip(&sim.contacts) {
+        for (i, ((out, leg), contact)) in self
+            .legs
+            .iter_mut()
+            .zip(&creature.legs)
+            .zip(&sim.contacts)
+            .enumerate()
+        {
             let hip = trunk_frame.rot * leg.hip_in_trunk + trunk_frame.pos;
             let foot = data.point_world(leg.foot_body, leg.foot_point);
             *out = LegTrace {
+                state: driver.leg_phase_name(i),
                 touching: contact.touching,
                 length_m: (foot - hip).length(),
                 spring_rest: sim.drives.get(leg.spring).map_or(0.0, |d| d.spring.rest),
@@ -186,6 +196,7 @@ impl TraceWriter {
         for leg in &driver.sim().creature.legs {
             let name = column_name(&leg.name);
             for column in [
+                "state",
                 "touching",
                 "length_m",
                 "spring_rest",
@@ -251,7 +262,8 @@ impl TraceWriter {
         for leg in &r.legs {
             write!(
                 out,
-                ",{},{:.6},{:.6},{:.6},{:.6},{:.6},{:.3},{:.3},{:.3}",
+                ",{},{},{:.6},{:.6},{:.6},{:.6},{:.6},{:.3},{:.3},{:.3}",
+                leg.state,
                 u8::from(leg.touching),
                 leg.length_m,
                 leg.spring_rest,
@@ -298,6 +310,24 @@ mod tests {
         let time: f64 = last[0].parse().expect("a time");
         assert!((time - d.time()).abs() < 1e-6, "{time} vs {}", d.time());
         assert_eq!(writer.row().time_s, d.time());
+    }
+
+    /// The trot runs a state machine per leg: diagonal pairs are seen in
+    /// different states.
+    #[test]
+    fn each_leg_has_its_own_state_where_the_controller_has_one() {
+        let mut d = driver("raibert-quadruped");
+        let mut writer = TraceWriter::new(&d);
+        let mut sink = String::new();
+        let mut differ = false;
+        for _ in 0..60 {
+            writer.step(&mut d, 1.0 / 60.0, &mut sink).expect("rows");
+            sink.clear();
+            let legs = &writer.row().legs;
+            differ |= legs.iter().any(|l| l.state != legs[0].state);
+            assert!(legs.iter().all(|l| !l.state.is_empty()));
+        }
+        assert!(differ, "the four legs always in one state");
     }
 
     #[test]

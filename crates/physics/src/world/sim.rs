@@ -92,6 +92,13 @@ pub trait Controller {
         ""
     }
 
+    /// The state of leg `leg`'s own state machine, for a controller that runs
+    /// one per leg or per pair of legs; `None` where the controller's one
+    /// state is all there is.
+    fn leg_phase_name(&self, _leg: usize) -> Option<&'static str> {
+        None
+    }
+
     /// Change the desired forward speed (m/s at scale 1) while running.
     fn set_speed(&mut self, _speed_mps: f64) {}
 
