@@ -57,6 +57,11 @@ fn a_short_run_has_a_header_and_one_row_per_step() {
     ] {
         column(&header, name);
     }
+    for leg in ["left", "right"] {
+        for field in ["state", "touching", "length_m", "spring_rest", "force_y_n"] {
+            column(&header, &format!("{leg}.{field}"));
+        }
+    }
     assert!(
         header.iter().any(|h| h.ends_with(".length_m")),
         "{header:?}"
