@@ -1,336 +1,29 @@
-//! What the 3-D view draws, in world metres: bones as capsules, joints,
-//! effectors and targets as spheres, line segments (She 2006 §6.2's view
-//! options: error segments, rotation axes, world axes) and the marks the figure
-//! leaves on the ground (blob shadows and foot contacts).
-//!
-//! [`Scene::fill`] rebuilds everything from a skeleton's forward kinematics
-//! once per frame. The lists live in one [`SceneFrame`] behind an [`Arc`]: the
-//! renderer takes a cheap clone of the `Arc` for the frame it draws, and once
-//! that frame is on screen the next `fill` reuses the same allocations (no
-//! per-frame allocation after warm-up). Should a drawn frame still be held
-//! when `fill` runs, `fill` copies it once instead of waiting.
-//!
-//! # Conventions
-//! - World frame of gaitlab-core: metres, y up, ground plane at y = [`GROUND_Y`].
-//! - Positions are `f32` (what the GPU reads); the kinematics are `f64`.
-//! - Colours are sRGB-encoded RGBA in `[0, 1]` (like egui's `Color32`), not linear.
-//! - Primitive types are `#[repr(C)]` and [`bytemuck::Pod`]: the GPU instance
-//!   buffers are byte copies of the lists.
+//! [`Scene::fill`]: the figure as primitives from a skeleton's forward
+//! kinematics (She 2006 §6.2's view options): bones and joint spheres,
+//! effectors, blob shadows and contact marks, IK targets with their error
+//! segments, joint rotation (or sliding) axes and the world axes.
 
-use std::sync::Arc;
-
-use bytemuck::{Pod, Zeroable};
 use gaitlab_core::ik::Targets;
 use gaitlab_core::{Kinematics, Skeleton};
 use glam::{DVec3, Vec3};
 
+use super::frame::Scene;
+use super::palette::{
+    CENTRE_COLOR, EFFECTOR_COLOR, ERROR_COLOR, PRISMATIC_AXIS_COLOR, REVOLUTE_AXIS_COLOR,
+    TARGET_COLOR, WORLD_AXIS_COLORS, shade, side_color,
+};
+use super::primitives::{Capsule, GroundMark, Segment, Sphere};
+use super::sizes::{
+    COINCIDENT, CONTACT_DARKNESS, CONTACT_HEIGHT, GROUND_Y, JOINT_SPHERE_SCALE, MIN_BONE_RADIUS,
+    SHADOW_DARKNESS, SHADOW_FADE_HEIGHT, WORLD_AXIS_LENGTH,
+};
 use crate::view::ViewOptions;
-
-/// Height of the ground plane, world metres.
-pub const GROUND_Y: f32 = 0.0;
-
-/// Colour of bones and joints on the figure's centre line (sRGB).
-pub const CENTRE_COLOR: [f32; 4] = [0.80, 0.81, 0.84, 1.0];
-/// Colour of bones and joints whose name starts with `left` (sRGB).
-pub const LEFT_COLOR: [f32; 4] = [0.36, 0.60, 0.96, 1.0];
-/// Colour of bones and joints whose name starts with `right` (sRGB).
-pub const RIGHT_COLOR: [f32; 4] = [0.96, 0.52, 0.34, 1.0];
-/// Colour of end effectors (sRGB).
-pub const EFFECTOR_COLOR: [f32; 4] = [0.98, 0.80, 0.26, 1.0];
-/// Colour of IK targets (sRGB).
-pub const TARGET_COLOR: [f32; 4] = [0.93, 0.16, 0.14, 1.0];
-/// Colour of the segment from an effector to its target (sRGB).
-pub const ERROR_COLOR: [f32; 4] = [1.0, 0.33, 0.28, 1.0];
-/// Colour of a revolute joint's rotation axis (sRGB).
-pub const REVOLUTE_AXIS_COLOR: [f32; 4] = [0.96, 0.86, 0.22, 1.0];
-/// Colour of a prismatic joint's sliding axis (sRGB).
-pub const PRISMATIC_AXIS_COLOR: [f32; 4] = [0.25, 0.90, 0.90, 1.0];
-/// Colours of the world x, y and z axes (sRGB).
-pub const WORLD_AXIS_COLORS: [[f32; 4]; 3] = [
-    [0.92, 0.22, 0.20, 1.0],
-    [0.32, 0.86, 0.32, 1.0],
-    [0.26, 0.48, 1.0, 1.0],
-];
-
-/// Length of each world axis, metres.
-pub const WORLD_AXIS_LENGTH: f32 = 0.5;
-/// Joint spheres are this much wider than the bone ending at the joint.
-pub const JOINT_SPHERE_SCALE: f32 = 1.3;
-/// Bones with a `size` of zero are drawn this thin, metres.
-pub const MIN_BONE_RADIUS: f32 = 0.006;
-/// Effectors nearer the ground than this (plus their radius) leave a contact mark, metres.
-pub const CONTACT_HEIGHT: f32 = 0.02;
-
-/// Darkness of a blob shadow at its centre (before fading with height).
-pub const SHADOW_DARKNESS: f32 = 0.55;
-/// Casters this high above the ground (or higher) cast no shadow, metres;
-/// below it shadows fade linearly with height.
-pub const SHADOW_FADE_HEIGHT: f32 = 2.0;
-/// Darkness of a foot's contact mark.
-pub const CONTACT_DARKNESS: f32 = 0.75;
-
-/// Points closer than this are one point (zero-length bones are skipped), metres.
-const COINCIDENT: f64 = 1e-6;
-
-/// A bone: a capsule from `a` to `b` (`a == b` makes it a sphere).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
-pub struct Capsule {
-    /// Start point (the parent joint), world metres.
-    pub a: [f32; 3],
-    /// Radius, metres.
-    pub radius: f32,
-    /// End point (the child joint or effector), world metres.
-    pub b: [f32; 3],
-    padding: f32,
-    /// sRGB colour.
-    pub color: [f32; 4],
-}
-
-impl Capsule {
-    /// A capsule from `a` to `b` with `radius` and sRGB `color`.
-    #[must_use]
-    pub fn new(a: Vec3, b: Vec3, radius: f32, color: [f32; 4]) -> Self {
-        Self {
-            a: a.to_array(),
-            radius,
-            b: b.to_array(),
-            padding: 0.0,
-            color,
-        }
-    }
-}
-
-impl From<&Sphere> for Capsule {
-    /// The sphere as a capsule of zero length (the renderer draws both with one pipeline).
-    fn from(sphere: &Sphere) -> Self {
-        Self {
-            a: sphere.centre,
-            radius: sphere.radius,
-            b: sphere.centre,
-            padding: 0.0,
-            color: sphere.color,
-        }
-    }
-}
-
-/// A sphere: a joint, an effector or a target.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
-pub struct Sphere {
-    /// Centre, world metres.
-    pub centre: [f32; 3],
-    /// Radius, metres.
-    pub radius: f32,
-    /// sRGB colour.
-    pub color: [f32; 4],
-}
-
-impl Sphere {
-    /// A sphere at `centre` with `radius` and sRGB `color`.
-    #[must_use]
-    pub fn new(centre: Vec3, radius: f32, color: [f32; 4]) -> Self {
-        Self {
-            centre: centre.to_array(),
-            radius,
-            color,
-        }
-    }
-}
-
-/// A line segment of constant screen width.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
-pub struct Segment {
-    /// Start, world metres.
-    pub a: [f32; 3],
-    /// Width on screen, points (not pixels).
-    pub width: f32,
-    /// End, world metres.
-    pub b: [f32; 3],
-    padding: f32,
-    /// sRGB colour; alpha blends.
-    pub color: [f32; 4],
-}
-
-impl Segment {
-    /// A segment from `a` to `b`, `width` points wide.
-    #[must_use]
-    pub fn new(a: Vec3, b: Vec3, width: f32, color: [f32; 4]) -> Self {
-        Self {
-            a: a.to_array(),
-            width,
-            b: b.to_array(),
-            padding: 0.0,
-            color,
-        }
-    }
-}
-
-/// A soft dark mark on the ground: the blob shadow of a capsule or sphere
-/// seen from straight above, or a foot's contact mark.
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
-pub struct GroundMark {
-    /// Ground position (x, z) of one end, metres.
-    pub a: [f32; 2],
-    /// Ground position (x, z) of the other end, metres.
-    pub b: [f32; 2],
-    /// Radius of the caster, metres.
-    pub radius: f32,
-    /// Height of the caster's lowest end above the ground, metres (the shadow
-    /// softens and fades with it).
-    pub height: f32,
-    /// Darkness at the centre, 0 (none) to 1 (black).
-    pub darkness: f32,
-    padding: f32,
-}
-
-impl GroundMark {
-    /// A mark from ground point `a` to `b` (x, z).
-    #[must_use]
-    pub fn new(a: [f32; 2], b: [f32; 2], radius: f32, height: f32, darkness: f32) -> Self {
-        Self {
-            a,
-            b,
-            radius,
-            height,
-            darkness,
-            padding: 0.0,
-        }
-    }
-}
-
-/// An axis-aligned box, world metres.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Bounds {
-    /// Smallest x, y, z.
-    pub min: DVec3,
-    /// Largest x, y, z.
-    pub max: DVec3,
-}
-
-impl Bounds {
-    /// The box around one point.
-    #[must_use]
-    pub fn point(p: DVec3) -> Self {
-        Self { min: p, max: p }
-    }
-
-    /// Grows the box to hold `p`.
-    pub fn include(&mut self, p: DVec3) {
-        self.min = self.min.min(p);
-        self.max = self.max.max(p);
-    }
-
-    /// Centre of the box.
-    #[must_use]
-    pub fn centre(&self) -> DVec3 {
-        0.5 * (self.min + self.max)
-    }
-
-    /// Half the diagonal: the radius of the sphere around the box.
-    #[must_use]
-    pub fn radius(&self) -> f64 {
-        0.5 * (self.max - self.min).length()
-    }
-}
-
-/// One frame's primitives. Read it through [`Scene`]; the renderer holds an
-/// `Arc` of it while drawing.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct SceneFrame {
-    /// Bones: one per joint (from its parent, or from the root) and one per
-    /// effector (from its joint), skipping zero-length ones.
-    pub capsules: Vec<Capsule>,
-    /// Joints, effectors and (when shown) targets.
-    pub spheres: Vec<Sphere>,
-    /// Error segments, rotation axes and world axes, as enabled.
-    pub segments: Vec<Segment>,
-    /// Blob shadows of the bones and contact marks of the feet (when shadows are on).
-    pub ground_marks: Vec<GroundMark>,
-    /// Box around the root, the joints and the effectors (not the targets)
-    /// and the physics trunk; `None` before the first fill or when no
-    /// position is finite.
-    pub bounds: Option<Bounds>,
-}
-
-impl SceneFrame {
-    fn clear(&mut self) {
-        self.capsules.clear();
-        self.spheres.clear();
-        self.segments.clear();
-        self.ground_marks.clear();
-        self.bounds = None;
-    }
-
-    /// Grows [`Self::bounds`] to hold `p` (non-finite points are skipped).
-    pub(crate) fn include(&mut self, p: DVec3) {
-        if !p.is_finite() {
-            return;
-        }
-        match &mut self.bounds {
-            Some(bounds) => bounds.include(p),
-            None => self.bounds = Some(Bounds::point(p)),
-        }
-    }
-}
-
-/// The figure as drawable primitives, rebuilt each frame by [`Scene::fill`].
-#[derive(Clone, Debug, Default)]
-pub struct Scene {
-    frame: Arc<SceneFrame>,
-}
-
-/// Whether `name` starts with `prefix`, ignoring ASCII case.
-fn starts_with_ignore_case(name: &str, prefix: &str) -> bool {
-    name.as_bytes()
-        .get(..prefix.len())
-        .is_some_and(|head| head.eq_ignore_ascii_case(prefix.as_bytes()))
-}
-
-/// Colour by side: names starting with `left` / `right` (any case: `left_knee`,
-/// `LeftUpLeg`) are the figure's left / right.
-fn side_color(name: &str) -> [f32; 4] {
-    if starts_with_ignore_case(name, "left") {
-        LEFT_COLOR
-    } else if starts_with_ignore_case(name, "right") {
-        RIGHT_COLOR
-    } else {
-        CENTRE_COLOR
-    }
-}
-
-/// `color` with its RGB scaled by `factor` (alpha kept).
-fn shade(color: [f32; 4], factor: f32) -> [f32; 4] {
-    [
-        color[0] * factor,
-        color[1] * factor,
-        color[2] * factor,
-        color[3],
-    ]
-}
 
 fn f32_point(p: DVec3) -> Vec3 {
     p.as_vec3()
 }
 
-impl From<SceneFrame> for Scene {
-    /// A scene showing hand-made primitives.
-    fn from(frame: SceneFrame) -> Self {
-        Self {
-            frame: Arc::new(frame),
-        }
-    }
-}
-
 impl Scene {
-    /// An empty scene.
-    #[must_use]
-    pub fn new() -> Self {
-        Self::default()
-    }
-
     /// Rebuilds the primitives for one pose.
     ///
     /// - `kin` must be the forward kinematics of `skeleton` (joints or
@@ -349,7 +42,7 @@ impl Scene {
         targets: Option<&Targets>,
         view: &ViewOptions,
     ) {
-        let frame = Arc::make_mut(&mut self.frame);
+        let frame = self.frame_mut();
         frame.clear();
         frame.include(root);
         let joints = skeleton.joints();
@@ -526,61 +219,16 @@ impl Scene {
             }
         }
     }
-
-    /// The primitives, for adding overlays after [`Scene::fill`] (copied
-    /// first if the renderer still holds the previous frame).
-    pub(crate) fn frame_mut(&mut self) -> &mut SceneFrame {
-        Arc::make_mut(&mut self.frame)
-    }
-
-    /// The primitives of the last fill, shared with the renderer.
-    #[must_use]
-    pub fn frame(&self) -> &Arc<SceneFrame> {
-        &self.frame
-    }
-
-    /// Bones.
-    #[must_use]
-    pub fn capsules(&self) -> &[Capsule] {
-        &self.frame.capsules
-    }
-
-    /// Joints, effectors and targets.
-    #[must_use]
-    pub fn spheres(&self) -> &[Sphere] {
-        &self.frame.spheres
-    }
-
-    /// Error segments and axes.
-    #[must_use]
-    pub fn segments(&self) -> &[Segment] {
-        &self.frame.segments
-    }
-
-    /// Shadows and contact marks on the ground.
-    #[must_use]
-    pub fn ground_marks(&self) -> &[GroundMark] {
-        &self.frame.ground_marks
-    }
-
-    /// Box around the figure (root, joints, effectors).
-    #[must_use]
-    pub fn bounds(&self) -> Option<Bounds> {
-        self.frame.bounds
-    }
-
-    /// Centre of the figure's box: what the camera follows.
-    #[must_use]
-    pub fn centre(&self) -> Option<DVec3> {
-        self.frame.bounds.map(|bounds| bounds.centre())
-    }
 }
 
 #[cfg(test)]
 mod tests {
+    use std::sync::Arc;
+
     use gaitlab_core::{Effector, Joint, Pose, RootTransform};
 
     use super::*;
+    use crate::render::scene::{LEFT_COLOR, RIGHT_COLOR};
 
     /// A root-attached hip, a left and a right leg of one revolute joint each,
     /// with a foot effector at the end of each leg.
@@ -775,14 +423,5 @@ mod tests {
         assert_eq!(scene.capsules().len(), 2);
         let bounds = scene.bounds().expect("bounds");
         assert!(bounds.min.is_finite() && bounds.max.is_finite());
-    }
-
-    #[test]
-    fn side_from_name() {
-        assert_eq!(side_color("left_knee"), LEFT_COLOR);
-        assert_eq!(side_color("LeftUpLeg"), LEFT_COLOR);
-        assert_eq!(side_color("right_ankle"), RIGHT_COLOR);
-        assert_eq!(side_color("spine"), CENTRE_COLOR);
-        assert_eq!(side_color("é"), CENTRE_COLOR);
     }
 }

@@ -1,0 +1,136 @@
+//! Framing: [`Camera::frame_for`] fits a figure's whole box, with a margin, to
+//! a view of any aspect ratio (a tall phone view backs off further for the
+//! width), keeping the viewing direction.
+
+use glam::Vec3;
+
+use super::orbit::{Camera, MIN_DISTANCE};
+use crate::render::scene::Bounds;
+
+/// Framing fills at most this share of the view's half width and half height
+/// with the figure's box, leaving the rest as a margin.
+pub const FRAME_FILL: f32 = 0.8;
+/// Framing grows the figure's box by this much on every side, metres (bone and
+/// joint radii are not in the box).
+pub const FRAME_PAD_M: f32 = 0.06;
+
+impl Camera {
+    /// Frames `bounds` for a view of aspect ratio 1 (see [`Self::frame_for`]).
+    pub fn frame(&mut self, bounds: &Bounds) {
+        self.frame_for(bounds, 1.0);
+    }
+
+    /// Places the target at the centre of `bounds` and, keeping the viewing
+    /// direction (raised if the eye would go under the ground), backs off until
+    /// every corner of the box, grown by [`FRAME_PAD_M`], lies within
+    /// [`FRAME_FILL`] of the view's half height and half width for a view of
+    /// width / height `aspect` (a tall phone view needs more distance for the
+    /// width). Clears the pan offset and follow mode's velocity.
+    pub fn frame_for(&mut self, bounds: &Bounds, aspect: f32) {
+        let centre = bounds.centre().as_vec3();
+        let half = ((bounds.max - bounds.min).as_vec3() * 0.5 + Vec3::splat(FRAME_PAD_M))
+            .max(Vec3::splat(0.1));
+        if !centre.is_finite() || !half.is_finite() {
+            return;
+        }
+        let aspect = if aspect.is_finite() && aspect > 0.0 {
+            aspect
+        } else {
+            1.0
+        };
+        self.target = centre;
+        self.follow_offset = Vec3::ZERO;
+        self.follow_velocity = Vec3::ZERO;
+        self.framed = true;
+        let tan_y = FRAME_FILL * (0.5 * self.fov_y).tan();
+        let tan_x = tan_y * aspect;
+        // The lowest pitch depends on the distance: settle the two together.
+        for _ in 0..3 {
+            let (right, up, back) = (self.right(), self.up(), self.back());
+            let mut distance = MIN_DISTANCE;
+            for corner in 0..8 {
+                let sign = |bit: i32| if corner & bit == 0 { -1.0 } else { 1.0 };
+                let offset = half * Vec3::new(sign(1), sign(2), sign(4));
+                // A point `depth` nearer the eye than the target shows within
+                // the view when its sideways offsets fit at distance − depth.
+                let depth = offset.dot(back);
+                distance = distance
+                    .max(depth + offset.dot(right).abs() / tan_x)
+                    .max(depth + offset.dot(up).abs() / tan_y);
+            }
+            self.distance = distance;
+            self.constrain();
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::DVec3;
+
+    use super::*;
+    use crate::render::camera::projection::ndc;
+
+    #[test]
+    fn framing_fits_the_box_to_the_aspect_ratio() {
+        let bounds = Bounds {
+            min: DVec3::new(-0.4, 0.0, -1.2),
+            max: DVec3::new(0.4, 1.1, 1.0),
+        };
+        for aspect in [0.46_f32, 1.0, 1.6, 2.4] {
+            for perspective in [true, false] {
+                let mut camera = Camera {
+                    perspective,
+                    ..Camera::default()
+                };
+                camera.frame_for(&bounds, aspect);
+                let mut widest = 0.0_f32;
+                // The box as framing grows it.
+                let (lo, hi) = (
+                    bounds.min - DVec3::splat(f64::from(FRAME_PAD_M)),
+                    bounds.max + DVec3::splat(f64::from(FRAME_PAD_M)),
+                );
+                for corner in 0..8 {
+                    let pick = |bit: i32, lo: f64, hi: f64| if corner & bit == 0 { lo } else { hi };
+                    let p = Vec3::new(
+                        pick(1, lo.x, hi.x) as f32,
+                        pick(2, lo.y, hi.y) as f32,
+                        pick(4, lo.z, hi.z) as f32,
+                    );
+                    let p = ndc(&camera, aspect, p);
+                    assert!(
+                        p.x.abs() <= FRAME_FILL + 1e-4 && p.y.abs() <= FRAME_FILL + 1e-4,
+                        "aspect {aspect}: {p} outside the framed part of the view"
+                    );
+                    widest = widest.max(p.x.abs()).max(p.y.abs());
+                }
+                // And, in perspective, it backs off no further than needed.
+                assert!(
+                    !perspective || widest > 0.95 * FRAME_FILL,
+                    "aspect {aspect}: only {widest} used"
+                );
+            }
+        }
+        // A tall view backs off further than a wide one.
+        let (mut tall, mut wide) = (Camera::default(), Camera::default());
+        tall.frame_for(&bounds, 0.46);
+        wide.frame_for(&bounds, 1.6);
+        assert!(tall.distance > 1.5 * wide.distance);
+    }
+
+    #[test]
+    fn framing_fits_the_figure() {
+        let mut camera = Camera::default();
+        let bounds = Bounds {
+            min: DVec3::new(-0.3, 0.0, -0.2),
+            max: DVec3::new(0.3, 1.8, 0.2),
+        };
+        camera.frame(&bounds);
+        assert!(camera.framed);
+        assert!((camera.target - Vec3::new(0.0, 0.9, 0.0)).length() < 1e-6);
+        for corner in [bounds.min, bounds.max] {
+            let p = ndc(&camera, 1.0, corner.as_vec3());
+            assert!(p.x.abs() < 1.0 && p.y.abs() < 1.0, "{p} is off screen");
+        }
+    }
+}

@@ -1,0 +1,160 @@
+//! Thesis parameter ranges (She 2006 §5.1.1, §5.2.3): gait cycles, slowdown,
+//! speed, iterations per frame, posture gain, start ramp and wounded weights,
+//! and wounded joints that exist and are listed once.
+
+use std::collections::HashMap;
+
+use crate::preset::PresetError;
+use crate::preset::thesis::{CycleShape, ThesisParams};
+
+use super::names::NamePlace;
+use super::values::check_vector;
+
+/// Lowest thesis `slowdown` (1 = real time).
+pub const MIN_SLOWDOWN: f64 = 1.0;
+/// Highest thesis `slowdown`.
+pub const MAX_SLOWDOWN: f64 = 100.0;
+/// Highest gait-cycle frequency, Hz.
+pub const MAX_FREQUENCY_HZ: f64 = 10.0;
+/// Highest forward speed, m/s.
+pub const MAX_SPEED_MPS: f64 = 20.0;
+/// Most IK iterations per frame a preset may ask for.
+pub const MAX_ITERATIONS_PER_FRAME: usize = 100;
+/// Largest wounded `multiply` factor.
+pub const MAX_WOUNDED_MULTIPLY: f64 = 10.0;
+/// Largest magnitude of a wounded `add` term, radians per iteration.
+pub const MAX_WOUNDED_ADD: f64 = 0.5;
+/// Longest thesis start ramp, seconds.
+pub const MAX_START_RAMP_S: f64 = 10.0;
+
+fn check_cycle(prefix: &str, shape: &CycleShape) -> Result<(), PresetError> {
+    let at = |field: &str| format!("{prefix}.{field}");
+    if !(shape.frequency_hz > 0.0 && shape.frequency_hz <= MAX_FREQUENCY_HZ) {
+        return Err(PresetError::new(
+            at("frequency_hz"),
+            format!("must be in (0, {MAX_FREQUENCY_HZ}] Hz"),
+        ));
+    }
+    for (field, v) in [
+        ("front_foot", shape.front_foot),
+        ("back_foot", shape.back_foot),
+        ("front_hand", shape.front_hand),
+        ("back_hand", shape.back_hand),
+    ] {
+        check_vector(&at(field), v)?;
+    }
+    if !(shape.root_height_m.is_finite() && shape.root_height_m > 0.0) {
+        return Err(PresetError::new(
+            at("root_height_m"),
+            "must be a positive number of metres",
+        ));
+    }
+    for (field, value) in [
+        ("step_height_m", shape.step_height_m),
+        ("bounce_m", shape.bounce_m),
+    ] {
+        if !(value.is_finite() && value >= 0.0) {
+            return Err(PresetError::new(
+                at(field),
+                "must be a finite number of metres ≥ 0",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Thesis parameters and wounded joints (engine `ik`); the roles are checked
+/// apart, by [`check_thesis_roles`](super::roles::check_thesis_roles), where the script will run.
+pub(super) fn check_thesis(
+    names: &HashMap<&str, NamePlace>,
+    thesis: &ThesisParams,
+) -> Result<(), PresetError> {
+    check_thesis_values("scenario.thesis", thesis)?;
+    let mut wounded_seen: HashMap<&str, usize> = HashMap::new();
+    for (i, wounded) in thesis.wounded.iter().enumerate() {
+        let at = |field: &str| format!("scenario.thesis.wounded[{i}].{field}");
+        if !names.contains_key(wounded.joint.as_str()) {
+            return Err(PresetError::new(
+                at("joint"),
+                format!("no joint named {:?}", wounded.joint),
+            ));
+        }
+        if let Some(first) = wounded_seen.insert(wounded.joint.as_str(), i) {
+            return Err(PresetError::new(
+                at("joint"),
+                format!(
+                    "joint {:?} is already listed at scenario.thesis.wounded[{first}]",
+                    wounded.joint
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The ranges of every thesis parameter that does not depend on the skeleton
+/// (cycle shapes, slowdown, speed, iterations, posture gain, start ramp and the
+/// wounded weights), shared by presets and by live edits of a running driver.
+/// Paths start with `prefix` (e.g. `scenario.thesis`; empty for none).
+///
+/// # Errors
+/// A [`PresetError`] naming the first value out of range.
+pub fn check_thesis_values(prefix: &str, thesis: &ThesisParams) -> Result<(), PresetError> {
+    let at = |field: &str| {
+        if prefix.is_empty() {
+            field.to_owned()
+        } else {
+            format!("{prefix}.{field}")
+        }
+    };
+    check_cycle(&at("walk"), &thesis.walk)?;
+    check_cycle(&at("run"), &thesis.run)?;
+    if !(MIN_SLOWDOWN..=MAX_SLOWDOWN).contains(&thesis.slowdown) {
+        return Err(PresetError::new(
+            at("slowdown"),
+            format!("must be between {MIN_SLOWDOWN} and {MAX_SLOWDOWN}"),
+        ));
+    }
+    if let Some(speed) = thesis.speed_mps
+        && !(0.0..=MAX_SPEED_MPS).contains(&speed)
+    {
+        return Err(PresetError::new(
+            at("speed_mps"),
+            format!("must be between 0 and {MAX_SPEED_MPS} m/s"),
+        ));
+    }
+    if !(1..=MAX_ITERATIONS_PER_FRAME).contains(&thesis.iterations_per_frame) {
+        return Err(PresetError::new(
+            at("iterations_per_frame"),
+            format!("must be between 1 and {MAX_ITERATIONS_PER_FRAME}"),
+        ));
+    }
+    if !(0.0..=1.0).contains(&thesis.posture_gain) {
+        return Err(PresetError::new(
+            at("posture_gain"),
+            "must be between 0 and 1",
+        ));
+    }
+    if !(0.0..=MAX_START_RAMP_S).contains(&thesis.start_ramp_s) {
+        return Err(PresetError::new(
+            at("start_ramp_s"),
+            format!("must be between 0 and {MAX_START_RAMP_S} seconds"),
+        ));
+    }
+    for (i, wounded) in thesis.wounded.iter().enumerate() {
+        let at = |field: &str| at(&format!("wounded[{i}].{field}"));
+        if !(0.0..=MAX_WOUNDED_MULTIPLY).contains(&wounded.multiply) {
+            return Err(PresetError::new(
+                at("multiply"),
+                format!("must be between 0 and {MAX_WOUNDED_MULTIPLY}"),
+            ));
+        }
+        if !(wounded.add.is_finite() && wounded.add.abs() <= MAX_WOUNDED_ADD) {
+            return Err(PresetError::new(
+                at("add"),
+                format!("must be between -{MAX_WOUNDED_ADD} and {MAX_WOUNDED_ADD} radians"),
+            ));
+        }
+    }
+    Ok(())
+}
