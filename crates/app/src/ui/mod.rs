@@ -10,7 +10,13 @@ use egui_plot::{Legend, Line, Plot, PlotPoints};
 use crate::history::History;
 use crate::lab::{Lab, MAX_PLOT_JOINTS};
 use crate::render::viewport;
-use crate::{panels, panels_compare, panels_editor, panels_gait, panels_path, panels_physics};
+use panels::ik as basic;
+use panels::{
+    compare as panels_compare, gait as panels_gait, path as panels_path, physics as panels_physics,
+    share as panels_editor,
+};
+
+mod panels;
 
 /// Below this width (points, i.e. CSS pixels) the lab takes its phone layout:
 /// the 3-D view fills the screen under a slim bar, the controls open as a
@@ -110,12 +116,12 @@ impl Lab {
     /// Every control panel, top to bottom (the wide layout's side panel and
     /// the phone layout's drawer).
     fn controls(&mut self, ui: &mut egui::Ui) {
-        panels::engine(ui, self);
-        panels::preset(ui, self);
+        basic::engine(ui, self);
+        basic::preset(ui, self);
         panels_editor::share(ui, self);
         // The phone layout's bar above the drawer has these already.
         if !self.narrow {
-            panels::buttons(ui, self);
+            basic::buttons(ui, self);
         }
         ui.separator();
         if self.driver.physics().is_some() {
@@ -126,13 +132,13 @@ impl Lab {
         } else {
             panels_compare::controls(ui, self);
             if self.compare.is_none() {
-                panels::method(ui, self);
+                basic::method(ui, self);
             }
-            panels::motion(ui, self);
-            panels::speed_and_targets(ui, self);
+            basic::motion(ui, self);
+            basic::speed_and_targets(ui, self);
         }
-        panels::view(ui, self);
-        panels::recording(ui, self);
+        basic::view(ui, self);
+        basic::recording(ui, self);
         ui.separator();
         self.readout(ui);
     }
@@ -159,7 +165,7 @@ impl Lab {
                 if toggle.clicked() {
                     self.controls_open = !self.controls_open;
                 }
-                panels::buttons(ui, self);
+                basic::buttons(ui, self);
             });
         });
         if !self.controls_open {

@@ -15,9 +15,16 @@ use wasm_bindgen::prelude::*;
 use crate::lab::Lab;
 use crate::link;
 use crate::settings::Settings;
-use crate::web_download::offer_text;
-use crate::web_file::{self, Inbox};
-use crate::web_video::{ErrorSlot, VideoRecorder};
+use download::offer_text;
+use file::Inbox;
+use video::{ErrorSlot, VideoRecorder};
+
+mod codecs;
+mod download;
+mod encoder;
+mod file;
+mod media_recorder;
+mod video;
 
 /// Depth buffer bits requested from eframe (the 3-D view's pass matches it).
 const DEPTH_BITS: u8 = 24;
@@ -112,7 +119,7 @@ impl WebApp {
             );
         }
         let files = Inbox::default();
-        let file_input = match web_file::install_input(&files, &cc.egui_ctx) {
+        let file_input = match file::install_input(&files, &cc.egui_ctx) {
             Ok(input) => Some(input),
             Err(error) => {
                 lab.report_error(format!("file picker: {error:?}"));
@@ -148,8 +155,8 @@ impl WebApp {
     /// Loads preset files that were picked or dropped, and opens the picker
     /// when the person asked for it.
     fn sync_files(&mut self, ctx: &egui::Context) {
-        web_file::take_dropped(ctx, &self.files);
-        let arrived: Vec<web_file::Arrived> = self.files.borrow_mut().drain(..).collect();
+        file::take_dropped(ctx, &self.files);
+        let arrived: Vec<file::Arrived> = self.files.borrow_mut().drain(..).collect();
         for (name, bytes) in arrived {
             match bytes {
                 // load_preset_file shows its own problems.

@@ -17,6 +17,9 @@ use crate::history::History;
 use crate::render::{Camera, Scene};
 use crate::settings::Settings;
 
+mod compare;
+mod editor;
+
 /// Longest real time one UI frame may advance the animation, seconds (a tab
 /// that was hidden does not fast-forward).
 const MAX_FRAME_ADVANCE_S: f64 = 0.1;
