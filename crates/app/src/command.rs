@@ -275,7 +275,7 @@ impl Lab {
         ] {
             if let Some(v) = get(key) {
                 let x = number(key, v, lo, hi)?;
-                let ik = &mut self.settings.ik;
+                let ik = &mut self.session.settings.ik;
                 match key {
                     "lambda" => ik.lambda = x,
                     "gamma_max" => ik.gamma_max = x,
@@ -286,7 +286,7 @@ impl Lab {
             }
         }
         if let Some(v) = get("enforce_limits") {
-            self.settings.ik.enforce_limits = flag("enforce_limits", v)?;
+            self.session.settings.ik.enforce_limits = flag("enforce_limits", v)?;
             ik_changed = true;
         }
         if ik_changed {
@@ -296,7 +296,7 @@ impl Lab {
             self.set_heading_deg(number("heading_deg", v, -180.0, 180.0)?);
         }
         if let Some(v) = get("plots") {
-            self.settings.plots = flag("plots", v)?;
+            self.session.settings.plots = flag("plots", v)?;
         }
         if let Some(v) = get("plot_joints") {
             let names = v
@@ -316,14 +316,15 @@ impl Lab {
             }
         }
         if let Some(v) = get("last_s") {
-            self.settings.export_last_s = number("last_s", v, 0.0, gaitlab_engine::MAX_TAKE_S)?;
+            self.session.settings.export_last_s =
+                number("last_s", v, 0.0, gaitlab_engine::MAX_TAKE_S)?;
         }
         if let Some(v) = get("save") {
             self.apply_save(v)?;
         }
         if let Some(v) = get("video_size") {
             let name = text("video_size", v)?;
-            self.settings.video_size = VideoSize::parse(name).ok_or_else(|| {
+            self.session.settings.video_size = VideoSize::parse(name).ok_or_else(|| {
                 format!("video_size: unknown size {name:?} (view, p360, p720, p1080)")
             })?;
         }
@@ -332,22 +333,26 @@ impl Lab {
         }
         if let Some(v) = get("theme") {
             let name = text("theme", v)?;
-            self.settings.theme = Theme::parse(name)
+            self.session.settings.theme = Theme::parse(name)
                 .ok_or_else(|| format!("theme: unknown theme {name:?} (system, light, dark)"))?;
         }
         if let Some(v) = get("narrow") {
-            self.narrow_override = match v {
+            self.layout.narrow_override = match v {
                 Value::Null => None,
                 v => Some(flag("narrow", v)?),
             };
         }
         if let Some(v) = get("views") {
-            let mut views = self.settings.view.clone();
+            let mut views = self.session.settings.view.clone();
             apply_views(&mut views, v)?;
-            self.settings.view = views;
+            self.session.settings.view = views;
         }
         if let Some(v) = get("camera") {
-            crate::camera_state::apply_camera(&mut self.camera, &mut self.settings.view, v)?;
+            crate::camera_state::apply_camera(
+                &mut self.camera,
+                &mut self.session.settings.view,
+                v,
+            )?;
         }
         if let Some(v) = get("editor_open") {
             self.set_editor_open(flag("editor_open", v)?);
@@ -409,9 +414,9 @@ impl Lab {
     /// paused, frame, fps, per-view error metrics, last error.
     #[must_use]
     pub fn state_json(&self) -> String {
-        let skeleton = &self.creature.skeleton;
-        let report = self.driver.ik_report();
-        let metrics = self.driver.ik_metrics();
+        let skeleton = &self.session.creature.skeleton;
+        let report = self.stage.driver.ik_report();
+        let metrics = self.stage.driver.ik_metrics();
         let effectors: Vec<Value> = skeleton
             .effectors()
             .iter()
@@ -426,16 +431,16 @@ impl Lab {
             })
             .collect();
         json!({
-            "preset": self.creature.name,
-            "custom_preset": self.custom_preset.is_some(),
-            "engine": self.creature.scenario.engine.name(),
-            "mode": self.settings.mode.name(),
+            "preset": self.session.creature.name,
+            "custom_preset": self.session.custom_preset.is_some(),
+            "engine": self.session.creature.scenario.engine.name(),
+            "mode": self.session.settings.mode.name(),
             "gait": self
-                .driver
+                .stage.driver
                 .poda()
                 .map(gaitlab_motion::PodaDriver::gait_name)
-                .or_else(|| self.driver.physics().map(gaitlab_physics::PhysicsDriver::gait)),
-            "physics": self.driver.physics().map(|driver| {
+                .or_else(|| self.stage.driver.physics().map(gaitlab_physics::PhysicsDriver::gait)),
+            "physics": self.stage.driver.physics().map(|driver| {
                 let s = driver.summary();
                 let probe = driver.probe();
                 json!({
@@ -465,7 +470,7 @@ impl Lab {
                         .collect::<Map<String, Value>>(),
                 })
             }),
-            "poda": self.driver.poda().map(|driver| {
+            "poda": self.stage.driver.poda().map(|driver| {
                 let gait = driver.gait();
                 json!({
                     "period_s": gait.period_s(),
@@ -485,73 +490,73 @@ impl Lab {
                     "derived": self.gait_derived,
                 })
             }),
-            "method": self.settings.method.name(),
+            "method": self.session.settings.method.name(),
             "methods": self.compare.as_ref().map_or_else(
-                || vec![self.settings.method.name()],
+                || vec![self.session.settings.method.name()],
                 |c| c.config.views.iter().map(|m| m.name()).collect(),
             ),
             "compare": self.compare_state(),
-            "paused": self.paused,
-            "frame": self.frame,
-            "time_s": self.driver.time(),
-            "fps": self.fps,
-            "sim_us_per_frame": self.sim_us_per_frame,
+            "paused": self.playback.paused,
+            "frame": self.stage.frame,
+            "time_s": self.stage.driver.time(),
+            "fps": self.playback.fps,
+            "sim_us_per_frame": self.playback.sim_us_per_frame,
             "wasm_memory_bytes": crate::memory::wasm_memory_bytes(),
             "wasm_heap_live_bytes": crate::memory::wasm_heap_bytes().map(|(live, _)| live),
             "wasm_heap_peak_bytes": crate::memory::wasm_heap_bytes().map(|(_, peak)| peak),
-            "view_rect_px": self.view_rect_px,
+            "view_rect_px": self.layout.view_rect_px,
             "joints": skeleton.joint_count(),
             "views": [{
-                "method": self.settings.method.name(),
+                "method": self.session.settings.method.name(),
                 "effectors": effectors,
                 "creature_box_px": crate::render::viewport::figure_box(
-                    &self.scene, &self.camera, self.view_rect_px),
+                    &self.stage.scene, &self.camera, self.layout.view_rect_px),
                 "metrics": self.run_metrics(),
             }],
-            "view_options": self.settings.view,
+            "view_options": self.session.settings.view,
             "ik": {
-                "lambda": self.settings.ik.lambda,
-                "gamma_max": self.settings.ik.gamma_max,
-                "max_step": self.settings.ik.max_step,
-                "null_space_gain": self.settings.ik.null_space_gain,
-                "enforce_limits": self.settings.ik.enforce_limits,
+                "lambda": self.session.settings.ik.lambda,
+                "gamma_max": self.session.settings.ik.gamma_max,
+                "max_step": self.session.settings.ik.max_step,
+                "null_space_gain": self.session.settings.ik.null_space_gain,
+                "enforce_limits": self.session.settings.ik.enforce_limits,
             },
-            "plots": self.settings.plots,
+            "plots": self.session.settings.plots,
             "editor": {
                 "open": self.editor.open,
                 "dirty": self.editor.dirty(),
                 "error": self.editor.error,
             },
-            "heading_deg": self.settings.heading_deg,
+            "heading_deg": self.session.settings.heading_deg,
             "backend": self.backend,
-            "camera": crate::camera_state::camera_json(&self.camera, &self.settings.view),
+            "camera": crate::camera_state::camera_json(&self.camera, &self.session.settings.view),
             "plot_joints": self
-                .plot_joints
+                .plots.joints
                 .iter()
                 .map(|&j| skeleton.joints()[j].name.as_str())
                 .collect::<Vec<_>>(),
             "recording": {
-                "active": self.recording,
-                "frames": self.take.as_ref().map_or(0, gaitlab_engine::Take::frames),
-                "seconds": self.take.as_ref().map_or(0.0, gaitlab_engine::Take::seconds),
-                "last_s": self.settings.export_last_s,
+                "active": self.take.recording(),
+                "frames": self.take.take().map_or(0, gaitlab_engine::Take::frames),
+                "seconds": self.take.take().map_or(0.0, gaitlab_engine::Take::seconds),
+                "last_s": self.session.settings.export_last_s,
             },
-            "theme": self.settings.theme.name(),
-            "dark": self.dark_mode,
+            "theme": self.session.settings.theme.name(),
+            "dark": self.layout.dark_mode,
             "layout": {
-                "narrow": self.narrow,
-                "controls_open": self.controls_open,
-                "controls_button_pt": self.controls_button_pt,
+                "narrow": self.layout.narrow,
+                "controls_open": self.layout.controls_open,
+                "controls_button_pt": self.layout.controls_button_pt,
             },
             "video": {
-                "recording": self.video_recording,
-                "frames": self.video_frames,
-                "encoder": self.video_encoder,
-                "skipped": self.video_skipped,
-                "seconds": self.video_seconds,
-                "size": self.settings.video_size.name(),
+                "recording": self.video.recording,
+                "frames": self.video.frames,
+                "encoder": self.video.encoder,
+                "skipped": self.video.skipped,
+                "seconds": self.video.seconds,
+                "size": self.session.settings.video_size.name(),
             },
-            "last_error": self.last_error,
+            "last_error": self.session.last_error,
         })
         .to_string()
     }
@@ -560,17 +565,19 @@ impl Lab {
     /// reset: the engine layer's one metrics type. Wall-time fields come from
     /// the page's smoothed time per frame; `within_limits` is the current pose's.
     fn run_metrics(&self) -> gaitlab_engine::RunMetrics {
-        let frames = usize::try_from(self.frame).unwrap_or(usize::MAX);
-        let step_ms = self.sim_us_per_frame * self.frame as f64 / 1e3;
-        let within_limits =
-            gaitlab_engine::metrics::pose_within_limits(self.driver.skeleton(), self.driver.pose());
+        let frames = usize::try_from(self.stage.frame).unwrap_or(usize::MAX);
+        let step_ms = self.playback.sim_us_per_frame * self.stage.frame as f64 / 1e3;
+        let within_limits = gaitlab_engine::metrics::pose_within_limits(
+            self.stage.driver.skeleton(),
+            self.stage.driver.pose(),
+        );
         let timing = gaitlab_engine::Timing {
             frames,
             step_ms,
             wall_ms: step_ms,
             within_limits,
         };
-        gaitlab_engine::RunMetrics::of(&self.creature.name, &self.driver, &timing)
+        gaitlab_engine::RunMetrics::of(&self.session.creature.name, &self.stage.driver, &timing)
             .with_fps(1.0 / self.frame_seconds())
     }
 }

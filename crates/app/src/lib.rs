@@ -17,7 +17,7 @@ pub mod link_state;
 pub mod memory;
 pub mod settings;
 pub mod theme;
-mod ui;
+pub mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;
 pub mod webm;

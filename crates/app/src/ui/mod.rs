@@ -5,18 +5,11 @@
 //! drawer toggled from a slim top bar and the plots are hidden, so the 3-D
 //! view keeps most of the screen.
 
-use egui_plot::{Legend, Line, Plot, PlotPoints};
-
-use crate::history::History;
-use crate::lab::{Lab, MAX_PLOT_JOINTS};
+use crate::lab::Lab;
 use crate::render::viewport;
-use panels::ik as basic;
-use panels::{
-    compare as panels_compare, gait as panels_gait, path as panels_path, physics as panels_physics,
-    share as panels_editor,
-};
 
-mod panels;
+pub mod panels;
+mod plots;
 
 /// Below this width (points, i.e. CSS pixels) the lab takes its phone layout:
 /// the 3-D view fills the screen under a slim bar, the controls open as a
@@ -37,13 +30,14 @@ impl Lab {
         self.take_dropped_file(ui);
         self.advance(dt);
 
-        self.narrow = self
+        self.layout.narrow = self
+            .layout
             .narrow_override
             .unwrap_or(ui.available_width() < NARROW_WIDTH_PT);
-        if self.narrow {
+        if self.layout.narrow {
             self.phone_layout(ui);
         } else {
-            self.controls_button_pt = [0.0; 4];
+            self.layout.controls_button_pt = [0.0; 4];
             egui::Panel::left("gaitlab-controls")
                 .resizable(true)
                 .default_size(290.0)
@@ -57,17 +51,17 @@ impl Lab {
                 egui::Panel::bottom("gaitlab-compare")
                     .resizable(true)
                     .default_size(330.0)
-                    .show(ui, |ui| panels_compare::cards(ui, self));
-            } else if self.settings.plots {
+                    .show(ui, |ui| panels::compare_cards(ui, self));
+            } else if self.session.settings.plots {
                 egui::Panel::bottom("gaitlab-plots")
                     .resizable(true)
                     .default_size(170.0)
-                    .show(ui, |ui| self.plots(ui));
+                    .show(ui, |ui| self.plots_ui(ui));
             }
         }
-        panels_editor::editor_window(&ui.ctx().clone(), self);
+        panels::editor_window(&ui.ctx().clone(), self);
         egui::CentralPanel::default().show(ui, |ui| {
-            if let Some(error) = self.last_error.clone() {
+            if let Some(error) = self.session.last_error.clone() {
                 ui.horizontal_wrapped(|ui| {
                     ui.colored_label(
                         egui::Color32::from_rgb(230, 90, 70),
@@ -94,53 +88,42 @@ impl Lab {
                         .views()
                         .iter()
                         .zip(&labels)
-                        .map(|(v, label)| (&v.scene, label.as_str()))
+                        .map(|(v, label)| (&v.stage.scene, label.as_str()))
                         .collect();
-                    viewport::show_split(ui, &panes, &mut self.camera, &self.settings.view).rect
+                    viewport::show_split(ui, &panes, &mut self.camera, &self.session.settings.view)
+                        .rect
                 }
-                None => viewport::show(ui, &self.scene, &mut self.camera, &self.settings.view).rect,
+                None => {
+                    viewport::show(
+                        ui,
+                        &self.stage.scene,
+                        &mut self.camera,
+                        &self.session.settings.view,
+                    )
+                    .rect
+                }
             };
             let ppp = ui.ctx().pixels_per_point();
-            self.view_rect_px = [
+            self.layout.view_rect_px = [
                 rect.min.x * ppp,
                 rect.min.y * ppp,
                 rect.width() * ppp,
                 rect.height() * ppp,
             ];
         });
-        if !self.paused {
+        if !self.playback.paused {
             ui.ctx().request_repaint();
         }
     }
 
-    /// Every control panel, top to bottom (the wide layout's side panel and
-    /// the phone layout's drawer).
+    /// Every control panel of the registry that shows for the lab, top to
+    /// bottom (the wide layout's side panel and the phone layout's drawer).
     fn controls(&mut self, ui: &mut egui::Ui) {
-        basic::engine(ui, self);
-        basic::preset(ui, self);
-        panels_editor::share(ui, self);
-        // The phone layout's bar above the drawer has these already.
-        if !self.narrow {
-            basic::buttons(ui, self);
-        }
-        ui.separator();
-        if self.driver.physics().is_some() {
-            panels_physics::physics(ui, self);
-        } else if self.driver.poda().is_some() {
-            panels_gait::gait(ui, self);
-            panels_path::path(ui, self);
-        } else {
-            panels_compare::controls(ui, self);
-            if self.compare.is_none() {
-                basic::method(ui, self);
+        for panel in panels::REGISTRY {
+            if panel.shown_for(self) {
+                panel.ui(self, ui);
             }
-            basic::motion(ui, self);
-            basic::speed_and_targets(ui, self);
         }
-        basic::view(ui, self);
-        basic::recording(ui, self);
-        ui.separator();
-        self.readout(ui);
     }
 
     /// The phone layout: a slim bar (controls drawer toggle, Reset, Play,
@@ -150,25 +133,25 @@ impl Lab {
         egui::Panel::top("gaitlab-phone-bar").show(ui, |ui| {
             ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
             ui.horizontal_wrapped(|ui| {
-                let label = if self.controls_open {
+                let label = if self.layout.controls_open {
                     "Hide controls"
                 } else {
                     "Controls"
                 };
                 let toggle = ui
-                    .selectable_label(self.controls_open, label)
+                    .selectable_label(self.layout.controls_open, label)
                     .on_hover_text(
                         "Open or close the control panels over the lower part of the screen",
                     );
                 let r = toggle.rect;
-                self.controls_button_pt = [r.min.x, r.min.y, r.width(), r.height()];
+                self.layout.controls_button_pt = [r.min.x, r.min.y, r.width(), r.height()];
                 if toggle.clicked() {
-                    self.controls_open = !self.controls_open;
+                    self.layout.controls_open = !self.layout.controls_open;
                 }
-                basic::buttons(ui, self);
+                panels::buttons(ui, self);
             });
         });
-        if !self.controls_open {
+        if !self.layout.controls_open {
             return;
         }
         let height = (ui.available_height() * DRAWER_HEIGHT_FRACTION).max(160.0);
@@ -190,24 +173,24 @@ impl Lab {
     /// Applies the chosen theme to egui (it takes effect from the next frame)
     /// and notes whether this frame is dark.
     fn apply_theme(&mut self, ui: &egui::Ui) {
-        let wanted = self.settings.theme.preference();
+        let wanted = self.session.settings.theme.preference();
         if ui.ctx().options(|o| o.theme_preference) != wanted {
             ui.ctx().set_theme(wanted);
             ui.ctx().request_repaint();
         }
-        self.dark_mode = ui.visuals().dark_mode;
+        self.layout.dark_mode = ui.visuals().dark_mode;
     }
 
     /// Whether the last frame used the phone layout.
     #[must_use]
     pub fn narrow(&self) -> bool {
-        self.narrow
+        self.layout.narrow
     }
 
     /// Whether the phone layout's controls drawer is open.
     #[must_use]
     pub fn controls_open(&self) -> bool {
-        self.controls_open
+        self.layout.controls_open
     }
 
     fn keyboard(&mut self, ui: &egui::Ui) {
@@ -222,7 +205,7 @@ impl Lab {
             )
         });
         if space {
-            self.set_paused(!self.paused);
+            self.set_paused(!self.playback.paused);
         }
         if reset {
             self.reset();
@@ -232,136 +215,4 @@ impl Lab {
             self.single_step();
         }
     }
-
-    fn readout(&self, ui: &mut egui::Ui) {
-        // Side by side, the views' drivers run and the single one waits.
-        let time_s = self
-            .compare
-            .as_ref()
-            .and_then(|c| c.views().first())
-            .map_or_else(
-                || gaitlab_core::driver::Driver::time(&self.driver),
-                |view| gaitlab_core::driver::Driver::time(&view.driver),
-            );
-        ui.label(format!(
-            "frame {} · t = {:.2} s · {:.0} fps",
-            self.frame, time_s, self.fps
-        ));
-        if self.compare.is_some() {
-            ui.label("Side by side: each view's errors are in its card below.");
-            return;
-        }
-        if self.sim_us_per_frame > 0.0 {
-            ui.label(format!(
-                "simulation + IK: {:.1} µs per frame",
-                self.sim_us_per_frame
-            ));
-        }
-        if let Some(report) = gaitlab_core::driver::Driver::ik_report(&self.driver) {
-            for (effector, error) in self
-                .creature
-                .skeleton
-                .effectors()
-                .iter()
-                .zip(&report.effector_error_m)
-            {
-                ui.label(format!("{}: {:.2} mm", effector.name, error * 1e3));
-            }
-        }
-    }
-
-    fn plots(&mut self, ui: &mut egui::Ui) {
-        let physics = self.driver.physics().is_some();
-        let half = (ui.available_width() - ui.spacing().item_spacing.x).max(0.0) / 2.0;
-        let height = ui.available_height();
-        ui.horizontal(|ui| {
-            ui.allocate_ui(egui::vec2(half, height), |ui| {
-                ui.vertical(|ui| {
-                    if physics {
-                        ui.label("Body: height, leg length, ground force, state");
-                        series_plot(ui, "gaitlab-body-plot", &self.history, 1.0, 1.0);
-                    } else {
-                        ui.label("Effector error (mm)");
-                        series_plot(ui, "gaitlab-error-plot", &self.history, 1e3, 1.0);
-                    }
-                });
-            });
-            ui.allocate_ui(egui::vec2(half, height), |ui| {
-                ui.vertical(|ui| {
-                    if physics {
-                        ui.label("Trunk attitude (°)");
-                        series_plot(ui, "gaitlab-attitude-plot", &self.joint_history, 1.0, 10.0);
-                        return;
-                    }
-                    ui.horizontal(|ui| {
-                        ui.label("Joint angles");
-                        self.joint_picker(ui);
-                    });
-                    series_plot(ui, "gaitlab-joint-plot", &self.joint_history, 1.0, 10.0);
-                });
-            });
-        });
-    }
-
-    /// A menu of the creature's joints with a checkbox each (at most
-    /// [`MAX_PLOT_JOINTS`] plotted).
-    fn joint_picker(&mut self, ui: &mut egui::Ui) {
-        let mut chosen: Option<Vec<String>> = None;
-        let menu = ui.menu_button("Joints…", |ui| {
-            egui::ScrollArea::vertical()
-                .max_height(300.0)
-                .show(ui, |ui| {
-                    let joints = self.creature.skeleton.joints();
-                    for (j, joint) in joints.iter().enumerate() {
-                        let mut on = self.plot_joints.contains(&j);
-                        let full = self.plot_joints.len() >= MAX_PLOT_JOINTS;
-                        let enabled = on || !full;
-                        if ui
-                            .add_enabled(enabled, egui::Checkbox::new(&mut on, joint.name.as_str()))
-                            .on_hover_text(format!(
-                                "Plot this joint's angle (degrees; prismatic joints in millimetres), at most {MAX_PLOT_JOINTS}"
-                            ))
-                            .changed()
-                        {
-                            let mut names: Vec<String> = self
-                                .plot_joints
-                                .iter()
-                                .filter(|&&k| k != j)
-                                .map(|&k| joints[k].name.clone())
-                                .collect();
-                            if on {
-                                names.push(joint.name.clone());
-                            }
-                            chosen = Some(names);
-                        }
-                    }
-                });
-        });
-        menu.response
-            .on_hover_text("Choose which joints' angles the plot shows");
-        if let Some(names) = chosen
-            && let Err(error) = self.set_plot_joints(&names)
-        {
-            self.report_error(error);
-        }
-    }
-}
-
-/// One live plot of every series in `history`, values scaled by `scale`; the
-/// y range always includes [0, `min_span`].
-fn series_plot(ui: &mut egui::Ui, id: &str, history: &History, scale: f64, min_span: f64) {
-    Plot::new(id)
-        .legend(Legend::default())
-        .allow_drag(false)
-        .allow_zoom(false)
-        .allow_scroll(false)
-        .include_y(0.0)
-        .include_y(min_span)
-        .show(ui, |plot| {
-            for (s, name) in history.names.iter().enumerate() {
-                let points: Vec<[f64; 2]> =
-                    history.points(s).map(|[t, v]| [t, v * scale]).collect();
-                plot.line(Line::new(name.as_str(), PlotPoints::from(points)));
-            }
-        });
 }

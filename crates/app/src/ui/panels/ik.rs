@@ -1,19 +1,67 @@
-//! The control panels, after She 2006 §6.2's workbench: Method (with λ, γmax
-//! and the step clamp), Motion, Motion control (wounded, moving forward), View,
-//! Object transformation, Speed, Target positions, Recording, and the Reset /
-//! Pause / Step buttons; plus a preset picker and the live error plot.
+//! The IK engine's panels, after She 2006 §6.2's workbench: Method (with λ,
+//! γmax and the step clamp), Motion and motion control (wounded, moving
+//! forward), Speed and Target positions.
 
 use gaitlab_core::ik::Method;
-use gaitlab_core::preset::bundled_names;
 use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_motion::validate_params;
 
+use super::panel::Panel;
 use crate::lab::Lab;
-use crate::settings::VideoSize;
-use crate::theme::Theme;
+
+/// The Method panel (hidden while a comparison runs: each view has its own).
+pub struct MethodPanel;
+
+impl Panel for MethodPanel {
+    fn title(&self) -> &'static str {
+        "Method"
+    }
+
+    fn shown_for(&self, lab: &Lab) -> bool {
+        lab.driver().thesis().is_some() && lab.comparison().is_none()
+    }
+
+    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+        method(ui, lab);
+    }
+}
+
+/// The Motion panel.
+pub struct MotionPanel;
+
+impl Panel for MotionPanel {
+    fn title(&self) -> &'static str {
+        "Motion"
+    }
+
+    fn shown_for(&self, lab: &Lab) -> bool {
+        lab.driver().thesis().is_some()
+    }
+
+    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+        motion(ui, lab);
+    }
+}
+
+/// The Speed and Target positions panels.
+pub struct SpeedAndTargetsPanel;
+
+impl Panel for SpeedAndTargetsPanel {
+    fn title(&self) -> &'static str {
+        "Speed"
+    }
+
+    fn shown_for(&self, lab: &Lab) -> bool {
+        lab.driver().thesis().is_some()
+    }
+
+    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+        speed_and_targets(ui, lab);
+    }
+}
 
 /// Human labels of the methods, in the thesis' order.
-pub(crate) fn method_label(method: Method) -> &'static str {
+fn method_label(method: Method) -> &'static str {
     match method {
         Method::Transpose => "Jacobian transpose",
         Method::Pinv => "Pseudoinverse",
@@ -45,66 +93,18 @@ fn mode_label(mode: ThesisMode) -> &'static str {
     }
 }
 
-/// The engine selector: She 2006's IK tracking or PODA's gait synthesis
-/// (switching loads the matching creature).
-pub fn engine(ui: &mut egui::Ui, lab: &mut Lab) {
-    use gaitlab_core::preset::Engine;
-    let mut engine = lab.engine();
-    ui.horizontal(|ui| {
-        ui.label("Engine");
-        ui.radio_value(&mut engine, Engine::Ik, "IK (She 2006)")
-            .on_hover_text("Sinusoidal effector targets tracked by Jacobian IK (She 2006)");
-        ui.radio_value(&mut engine, Engine::Poda, "PODA gaits")
-            .on_hover_text("Gait synthesis from period, duty factor and phases (Girard & Maciejewski 1985)");
-        ui.radio_value(&mut engine, Engine::Physics, "Physics")
-            .on_hover_text("Simulated runners under hopping, speed and posture control (Raibert & Hodgins 1991)");
-    });
-    if engine != lab.engine()
-        && let Err(error) = lab.set_engine(engine)
-    {
-        lab.report_error(error);
-    }
-}
-
-/// The preset picker.
-pub fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
-    let current = lab.creature().name.clone();
-    let mut chosen = None;
-    egui::ComboBox::from_label("Preset")
-        .selected_text(current.as_str())
-        .show_ui(ui, |ui| {
-            for name in bundled_names() {
-                if ui
-                    .selectable_label(name == current, name)
-                    .on_hover_text("Load this bundled creature with its own scenario")
-                    .clicked()
-                {
-                    chosen = Some(name);
-                }
-            }
-        })
-        .response
-        .on_hover_text("The creature and its scenario (bundled presets)");
-    if let Some(name) = chosen
-        && name != current
-        && let Err(error) = lab.set_preset(name)
-    {
-        lab.report_error(error);
-    }
-}
-
 /// Method panel: the four IK methods and their parameters.
-pub fn method(ui: &mut egui::Ui, lab: &mut Lab) {
+fn method(ui: &mut egui::Ui, lab: &mut Lab) {
     ui.collapsing("Method", |ui| {
-        let mut method = lab.settings.method;
+        let mut method = lab.session.settings.method;
         for m in Method::ALL {
             ui.radio_value(&mut method, m, method_label(m))
                 .on_hover_text(method_hint(m));
         }
-        if method != lab.settings.method {
+        if method != lab.session.settings.method {
             lab.set_method(method);
         }
-        let ik = &mut lab.settings.ik;
+        let ik = &mut lab.session.settings.ik;
         let mut changed = false;
         changed |= ui
             .add(
@@ -149,14 +149,14 @@ pub fn method(ui: &mut egui::Ui, lab: &mut Lab) {
 }
 
 /// Motion and motion-control panels.
-pub fn motion(ui: &mut egui::Ui, lab: &mut Lab) {
+fn motion(ui: &mut egui::Ui, lab: &mut Lab) {
     ui.collapsing("Motion", |ui| {
-        let mut mode = lab.settings.mode;
+        let mut mode = lab.session.settings.mode;
         for m in ThesisMode::ALL {
             ui.radio_value(&mut mode, m, mode_label(m))
                 .on_hover_text("The thesis motion the targets follow");
         }
-        if mode != lab.settings.mode {
+        if mode != lab.session.settings.mode {
             lab.set_mode(mode);
         }
         let Some(thesis) = lab.driver().thesis() else {
@@ -198,13 +198,13 @@ fn apply_params(lab: &mut Lab, params: gaitlab_core::preset::thesis::ThesisParam
 
 /// Speed and target-position panels: the thesis' step frequency, slowdown and
 /// speed, and the front/back extremes of the feet and hands.
-pub fn speed_and_targets(ui: &mut egui::Ui, lab: &mut Lab) {
+fn speed_and_targets(ui: &mut egui::Ui, lab: &mut Lab) {
     let Some(thesis) = lab.driver().thesis() else {
         return;
     };
     let mut params = thesis.params().clone();
     let script_speed = thesis.script().speed_mps();
-    let running = lab.settings.mode.running();
+    let running = lab.session.settings.mode.running();
     let mut changed = false;
     ui.collapsing("Speed", |ui| {
         let shape = if running {
@@ -279,183 +279,4 @@ pub fn speed_and_targets(ui: &mut egui::Ui, lab: &mut Lab) {
     if changed {
         apply_params(lab, params);
     }
-}
-
-/// View and object-transformation panels.
-pub fn view(ui: &mut egui::Ui, lab: &mut Lab) {
-    ui.collapsing("View", |ui| {
-        let view = &mut lab.settings.view;
-        ui.checkbox(&mut view.world_axes, "Axes")
-            .on_hover_text("World x (red), y (green), z (blue) axes at the origin, 1 m long");
-        ui.checkbox(&mut view.perspective, "Perspective")
-            .on_hover_text("Perspective projection (off: orthographic)");
-        ui.checkbox(&mut view.joint_axes, "Rotation axes")
-            .on_hover_text("Each joint's rotation axis as a short segment");
-        ui.checkbox(&mut view.targets, "Draw targets")
-            .on_hover_text(
-                "Targets, footholds and the error segment from each effector to its target",
-            );
-        ui.checkbox(&mut view.grid, "Ground grid")
-            .on_hover_text("Ground grid lines, 1 m apart");
-        ui.checkbox(&mut view.shadow, "Shadow")
-            .on_hover_text("The figure's shadow and foot contact marks on the ground");
-        ui.checkbox(&mut view.follow, "Follow the figure")
-            .on_hover_text("Keep the camera centred on the figure as it moves");
-        ui.checkbox(&mut lab.settings.plots, "Plots")
-            .on_hover_text("Show the live error and joint-angle plots (hidden on phones)");
-        theme(ui, lab);
-    });
-    ui.collapsing("Object transformation", |ui| {
-        let mut heading = lab.settings.heading_deg;
-        if ui
-            .add(egui::Slider::new(&mut heading, -180.0..=180.0).text("Heading (°)"))
-            .on_hover_text(
-                "Direction the figure faces, degrees about the vertical axis (restarts the motion)",
-            )
-            .changed()
-        {
-            lab.set_heading_deg(heading);
-        }
-    });
-}
-
-/// Recording panel (She 2006 §6.2): a motion take saved as BVH or CSV, and a
-/// video of the 3-D view at a chosen frame size (in the browser).
-pub fn recording(ui: &mut egui::Ui, lab: &mut Lab) {
-    ui.collapsing("Recording", |ui| {
-        ui.horizontal(|ui| {
-            if lab.recording() {
-                if ui
-                    .button("Stop motion")
-                    .on_hover_text("Stop recording; the take stays available to save")
-                    .clicked()
-                {
-                    lab.stop_recording();
-                }
-            } else if ui
-                .button("Record motion")
-                .on_hover_text("Record every animation frame: pose, effectors and targets")
-                .clicked()
-            {
-                lab.start_recording();
-            }
-            if let Some(take) = lab.take() {
-                ui.label(format!(
-                    "{} frames · {:.1} s",
-                    take.frames(),
-                    take.seconds()
-                ));
-            }
-        });
-        let has_take = lab.take().is_some_and(|t| t.frames() > 0);
-        ui.horizontal(|ui| {
-            ui.label("Save the last");
-            ui.add(
-                egui::DragValue::new(&mut lab.settings.export_last_s)
-                    .range(0.0..=gaitlab_engine::MAX_TAKE_S)
-                    .speed(0.1)
-                    .max_decimals(2)
-                    .suffix(" s"),
-            )
-            .on_hover_text("Seconds at the end of the take that Save BVH / Save CSV write, in seconds of animation; 0 saves the whole take");
-        });
-        ui.horizontal(|ui| {
-            for (label, format, hint) in [
-                (
-                    "Save BVH",
-                    "bvh",
-                    "Motion capture file for Blender, Maya and friends",
-                ),
-                (
-                    "Save CSV",
-                    "csv",
-                    "Time, root, joint values, effectors and targets",
-                ),
-            ] {
-                if ui
-                    .add_enabled(has_take, egui::Button::new(label))
-                    .on_hover_text(hint)
-                    .clicked()
-                    && let Err(error) = lab.save_take_as_set(format)
-                {
-                    lab.report_error(error);
-                }
-            }
-        });
-        ui.separator();
-        let mut size = lab.settings.video_size;
-        egui::ComboBox::from_label("Video frame size")
-            .selected_text(size.label())
-            .show_ui(ui, |ui| {
-                for s in VideoSize::ALL {
-                    ui.selectable_value(&mut size, s, s.label())
-                        .on_hover_text("Width × height of the recorded video, pixels");
-                }
-            })
-            .response
-            .on_hover_text("Frame size of the WebM video, pixels (View size: the 3-D view as shown)");
-        lab.settings.video_size = size;
-        let video_supported = cfg!(target_arch = "wasm32");
-        ui.add_enabled_ui(video_supported, |ui| {
-            if lab.video_recording() {
-                if ui
-                    .button("Stop video")
-                    .on_hover_text("Stop the video and download it as a WebM file")
-                    .clicked()
-                {
-                    lab.set_video_recording(false);
-                }
-            } else if ui
-                .button("Record video")
-                .on_hover_text("Record the 3-D view as a WebM video")
-                .clicked()
-            {
-                lab.set_video_recording(true);
-            }
-        });
-    });
-}
-
-/// Reset / Pause / Step, with the keyboard shortcuts (space, R, .).
-pub fn buttons(ui: &mut egui::Ui, lab: &mut Lab) {
-    ui.horizontal(|ui| {
-        if ui
-            .button("Reset")
-            .on_hover_text("Back to time 0 and the rest pose (key R)")
-            .clicked()
-        {
-            lab.reset();
-        }
-        let label = if lab.paused() { "Play" } else { "Pause" };
-        if ui
-            .button(label)
-            .on_hover_text("Pause or resume the animation (space bar)")
-            .clicked()
-        {
-            lab.set_paused(!lab.paused());
-        }
-        if ui
-            .button("Step")
-            .on_hover_text("Pause and advance exactly one animation frame (key .)")
-            .clicked()
-        {
-            lab.set_paused(true);
-            lab.single_step();
-        }
-    });
-}
-
-/// The colour scheme: system, light or dark (the panels and the 3-D view).
-pub fn theme(ui: &mut egui::Ui, lab: &mut Lab) {
-    ui.horizontal(|ui| {
-        ui.label("Theme");
-        for theme in Theme::ALL {
-            ui.radio_value(&mut lab.settings.theme, theme, theme.label())
-                .on_hover_text(match theme {
-                    Theme::System => "Follow the system's light or dark preference",
-                    Theme::Light => "Light panels and a light 3-D view",
-                    Theme::Dark => "Dark panels and a dark 3-D view",
-                });
-        }
-    });
 }
