@@ -5,9 +5,8 @@
 pub mod render;
 pub mod view;
 
+pub mod api;
 pub mod bench;
-pub mod camera_state;
-pub mod command;
 pub mod compare;
 pub mod editor;
 pub mod history;

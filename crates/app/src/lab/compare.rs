@@ -4,6 +4,7 @@
 
 use serde_json::Value;
 
+use crate::api::compare::{CompareValue, config_from_command};
 use crate::compare::{CompareConfig, Comparison};
 use crate::lab::{Effect, Lab};
 
@@ -54,15 +55,14 @@ impl Lab {
     ///
     /// # Errors
     /// `compare…: reason`; nothing changes then.
-    pub fn apply_compare_command(&mut self, value: &Value) -> Result<(), String> {
-        if value == &Value::Bool(false) || value.is_null() {
+    pub fn apply_compare_command(&mut self, value: &CompareValue) -> Result<(), String> {
+        let CompareValue::On(command) = value else {
             self.stop_compare();
             return Ok(());
-        }
+        };
         let mut base = self.session.settings.ik.clone();
         base.method = self.session.settings.method;
-        let config =
-            CompareConfig::from_json(value, &base, self.compare.as_ref().map(|c| &c.config))?;
+        let config = config_from_command(command, &base, self.compare.as_ref().map(|c| &c.config))?;
         self.start_compare(config)
     }
 
