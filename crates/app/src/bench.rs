@@ -156,7 +156,9 @@ pub fn run(json: &str, clock_ms: &mut dyn FnMut() -> f64) -> Result<String, Stri
         Some(Err(error)) => return Err(format!("bench.preset: {preset}: {error}")),
         None => return Err(format!("bench.preset: no bundled preset named {preset:?}")),
     };
-    if creature.scenario.engine == gaitlab_core::preset::Engine::Physics {
+    // A validated preset has a physical model exactly when it runs on the
+    // physics engine.
+    if creature.scenario.physics.is_some() {
         // Physics: integration steps per second, as `gaitlab bench` reports.
         let step_options = gaitlab_bench::step::StepBenchOptions {
             repeats: options.repeats,

@@ -1,5 +1,5 @@
 //! The preset editor's model (issue 6 item 3): the current preset's JSON as
-//! editable text and the last problem. The lab's side (`lab_editor.rs`) fills
+//! editable text and the last problem. The lab's side (`lab/editor.rs`) fills
 //! it and runs Apply / Revert, files loaded by picker or drag-and-drop, and
 //! "Download preset". Validation is the core's (DESIGN.md "Input limits"):
 //! errors read `preset: json.path: reason`, syntax errors name the line and

@@ -5,41 +5,20 @@
 pub mod render;
 pub mod view;
 
+pub mod api;
 pub mod bench;
-pub mod camera_state;
-pub mod command;
 pub mod compare;
 pub mod editor;
 pub mod history;
 pub mod lab;
-mod lab_compare;
-mod lab_editor;
 pub mod link;
 pub mod link_state;
 pub mod memory;
-mod panels;
-mod panels_compare;
-mod panels_editor;
-mod panels_gait;
-mod panels_path;
-mod panels_physics;
 pub mod settings;
 pub mod theme;
-mod ui;
+pub mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;
-#[cfg(target_arch = "wasm32")]
-mod web_codecs;
-#[cfg(target_arch = "wasm32")]
-mod web_download;
-#[cfg(target_arch = "wasm32")]
-mod web_encoder;
-#[cfg(target_arch = "wasm32")]
-mod web_file;
-#[cfg(target_arch = "wasm32")]
-mod web_media_recorder;
-#[cfg(target_arch = "wasm32")]
-mod web_video;
 pub mod webm;
 
 pub use lab::Lab;

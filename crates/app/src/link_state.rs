@@ -92,9 +92,10 @@ impl Lab {
         FullLink {
             preset_json: self.preset_text(),
             bundled: self
+                .session
                 .custom_preset
                 .is_none()
-                .then(|| self.settings.preset.clone()),
+                .then(|| self.session.settings.preset.clone()),
             state: self.link_state(),
         }
     }
@@ -199,7 +200,6 @@ impl Lab {
             self.report_error(errors.join("; "));
         }
         // The link has been applied: the address bar already shows it.
-        self.link_changed = false;
-        self.preset_changed = false;
+        self.outbox.forget_link_changes();
     }
 }

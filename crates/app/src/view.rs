@@ -5,6 +5,7 @@ use serde::{Deserialize, Serialize};
 
 /// Drawing options of the 3-D view. Persisted with the other settings.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(default)]
 pub struct ViewOptions {
     /// Draw the world x (red), y (green), z (blue) axes at the origin.

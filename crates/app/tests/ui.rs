@@ -45,7 +45,7 @@ fn choosing_a_method_and_a_motion_in_the_ui_changes_the_lab() {
     harness.get_by_label("Damped least squares").click();
     harness.run();
     assert_eq!(
-        harness.state().settings.method,
+        harness.state().settings().method,
         gaitlab_core::ik::Method::Dls
     );
     harness.get_by_label("Motion").click();
@@ -53,7 +53,7 @@ fn choosing_a_method_and_a_motion_in_the_ui_changes_the_lab() {
     harness.get_by_label("Wounded running").click();
     harness.run();
     assert_eq!(
-        harness.state().settings.mode,
+        harness.state().settings().mode,
         gaitlab_core::preset::thesis::ThesisMode::WoundedRun
     );
 }

@@ -5,7 +5,8 @@
 //! step (same `dt`, same frame), so every view sees the same targets. Per view:
 //! tracking error (She 2006 §5.3's `d`), wall time per IK iteration, joint
 //! velocity jitter and limit hits. The "singularity" scenario pulls every limb
-//! target to about its full reach ([`gaitlab_motion::stretch`]).
+//! target to about its full reach ([`gaitlab_motion::stretch`]). Each view is a
+//! [`Stage`] over its own driver, as the lab's single view is.
 //!
 //! # The `compare` command and state (DESIGN.md "Browser")
 //! `{"compare": {"views": [NAME, …], "scenario": "script" | "singularity",
@@ -17,7 +18,6 @@
 //! `metrics` array (ignored by the command), so passing it back verbatim
 //! restores the configuration; it is `null` when no comparison runs.
 
-use gaitlab_core::Kinematics;
 use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::IkOptions;
 use gaitlab_motion::ThesisDriver;
@@ -25,7 +25,7 @@ use gaitlab_motion::stretch::StretchOptions;
 use serde_json::{Value, json};
 
 use crate::history::History;
-use crate::render::Scene;
+use crate::lab::Stage;
 use crate::view::ViewOptions;
 
 mod config;
@@ -36,23 +36,26 @@ pub use config::{CompareConfig, CompareScenario, DEFAULT_VIEWS};
 pub use method::{CompareMethod, DEFAULT_NULL_SPACE_GAIN, Parameter};
 pub use metrics::{JITTER_WINDOW_FRAMES, ViewMetrics};
 
-/// One view: its configuration, driver, figures, plot history and scene.
+/// One view: its configuration, its stage (driver, scene, and as history the
+/// largest effector error per frame, one series in metres) and its figures.
 pub struct CompareView {
     /// The configuration.
     pub method: CompareMethod,
-    pub(crate) driver: ThesisDriver,
+    pub(crate) stage: Stage<ThesisDriver>,
     pub(crate) metrics: ViewMetrics,
-    /// Largest effector error per frame (one series, metres).
-    pub(crate) history: History,
-    pub(crate) scene: Scene,
-    kinematics: Kinematics,
 }
 
 impl CompareView {
     /// The view's driver.
     #[must_use]
     pub fn driver(&self) -> &ThesisDriver {
-        &self.driver
+        &self.stage.driver
+    }
+
+    /// The view's stage.
+    #[must_use]
+    pub fn stage(&self) -> &Stage<ThesisDriver> {
+        &self.stage
     }
 
     /// The view's figures.
@@ -64,7 +67,7 @@ impl CompareView {
     /// Mean over effectors of each effector's mean error since the reset, metres.
     #[must_use]
     pub fn mean_error_m(&self) -> f64 {
-        let Some(m) = self.driver.ik_metrics() else {
+        let Some(m) = self.stage.driver.ik_metrics() else {
             return 0.0;
         };
         let k = m.effector_count().max(1);
@@ -74,25 +77,12 @@ impl CompareView {
     /// Largest effector error since the reset, metres.
     #[must_use]
     pub fn max_error_m(&self) -> f64 {
-        let Some(m) = self.driver.ik_metrics() else {
+        let Some(m) = self.stage.driver.ik_metrics() else {
             return 0.0;
         };
         (0..m.effector_count())
             .filter_map(|e| m.max_error_m(e))
             .fold(0.0, f64::max)
-    }
-
-    fn refresh_scene(&mut self, view: &ViewOptions) {
-        let skeleton = self.driver.skeleton();
-        let pose = self.driver.pose();
-        self.kinematics.update(skeleton, &pose.root, &pose.joints);
-        self.scene.fill(
-            skeleton,
-            &self.kinematics,
-            pose.root.position,
-            self.driver.targets(),
-            view,
-        );
     }
 }
 
@@ -119,16 +109,15 @@ impl Comparison {
                     (config.scenario == CompareScenario::Singularity).then(StretchOptions::default),
                 );
                 driver.reset();
-                let skeleton = driver.skeleton();
                 let mut view_state = CompareView {
                     method,
-                    metrics: ViewMetrics::new(skeleton.joint_count()),
-                    history: History::new(vec![format!("{} max error (mm)", method.name())]),
-                    scene: Scene::default(),
-                    kinematics: Kinematics::new(skeleton),
-                    driver,
+                    metrics: ViewMetrics::new(driver.skeleton().joint_count()),
+                    stage: Stage::new(
+                        driver,
+                        History::new(vec![format!("{} max error (mm)", method.name())]),
+                    ),
                 };
-                view_state.refresh_scene(view);
+                view_state.stage.refresh_scene(view);
                 view_state
             })
             .collect();
@@ -147,7 +136,7 @@ impl Comparison {
             self.views.get_mut(index),
             self.config.options.get_mut(index),
         ) {
-            view.driver.set_options(options.clone());
+            view.stage.driver.set_options(options.clone());
             *slot = options;
         }
     }
@@ -157,39 +146,40 @@ impl Comparison {
     pub fn step(&mut self, dt: f64, clock: Option<&dyn Fn() -> f64>) {
         for view in &mut self.views {
             let started = clock.map(|c| c());
-            view.driver.step(dt);
+            view.stage.step(dt);
             if let (Some(started), Some(clock)) = (started, clock) {
                 view.metrics.wall_us += (clock() - started) * 1e3;
             }
-            view.metrics.iterations += view.driver.ik_report().map_or(0, |r| r.iterations as u64);
-            let skeleton = view.driver.skeleton();
-            view.metrics.record(skeleton, &view.driver.pose().joints);
-            let error = view.driver.ik_report().map_or(0.0, |r| r.max_error_m);
-            view.history
-                .push(view.driver.time(), std::iter::once(error));
+            let stage = &mut view.stage;
+            view.metrics.iterations += stage.driver.ik_report().map_or(0, |r| r.iterations as u64);
+            let skeleton = stage.driver.skeleton();
+            view.metrics.record(skeleton, &stage.driver.pose().joints);
+            let error = stage.driver.ik_report().map_or(0.0, |r| r.max_error_m);
+            stage
+                .history
+                .push(stage.driver.time(), std::iter::once(error));
         }
     }
 
     /// Back to time 0 with cleared figures.
     pub fn reset(&mut self) {
         for view in &mut self.views {
-            view.driver.reset();
-            view.metrics = ViewMetrics::new(view.driver.skeleton().joint_count());
-            view.history.clear();
+            view.stage.reset();
+            view.metrics = ViewMetrics::new(view.stage.driver.skeleton().joint_count());
         }
     }
 
     /// Sets the thesis motion of every view.
     pub fn set_mode(&mut self, mode: gaitlab_core::preset::thesis::ThesisMode) {
         for view in &mut self.views {
-            view.driver.set_mode(mode);
+            view.stage.driver.set_mode(mode);
         }
     }
 
     /// Rebuilds every view's scene from its pose.
     pub fn refresh_scenes(&mut self, view: &ViewOptions) {
         for v in &mut self.views {
-            v.refresh_scene(view);
+            v.stage.refresh_scene(view);
         }
     }
 
@@ -209,7 +199,7 @@ impl Comparison {
                     "jitter_rad": v.metrics.jitter_rad(),
                     "limit_hits": v.metrics.limit_hits,
                     "frame": v.metrics.frames,
-                    "time_s": v.driver.time(),
+                    "time_s": v.stage.driver.time(),
                 })
             })
             .collect();

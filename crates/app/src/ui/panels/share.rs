@@ -4,13 +4,27 @@
 //! Apply / Revert, file loading and download, its validation message (the
 //! core's `json.path: reason`) under the text.
 
+use super::panel::Panel;
 use crate::lab::Lab;
+
+/// The Share row.
+pub struct SharePanel;
+
+impl Panel for SharePanel {
+    fn title(&self) -> &'static str {
+        "Share"
+    }
+
+    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+        share(ui, lab);
+    }
+}
 
 /// Colour of problem messages.
 const PROBLEM: egui::Color32 = egui::Color32::from_rgb(230, 90, 70);
 
 /// The Share row: Copy link, Edit preset, Load preset file, Download preset.
-pub fn share(ui: &mut egui::Ui, lab: &mut Lab) {
+fn share(ui: &mut egui::Ui, lab: &mut Lab) {
     ui.horizontal_wrapped(|ui| {
         if ui
             .button("Copy link")
@@ -45,7 +59,7 @@ pub fn share(ui: &mut egui::Ui, lab: &mut Lab) {
             .on_hover_text("Load a preset JSON file (or drop one onto the page); at most 256 KiB")
             .clicked()
         {
-            lab.file_pick_requested = true;
+            lab.request_file_pick();
         }
         if ui
             .button("Download preset")
@@ -125,7 +139,7 @@ pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
                     .on_hover_text("Load a preset JSON file (or drop one onto the page)")
                     .clicked()
                 {
-                    lab.file_pick_requested = true;
+                    lab.request_file_pick();
                 }
                 if ui
                     .button("Download")

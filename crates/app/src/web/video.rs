@@ -3,8 +3,8 @@
 //! movie file … at the frame size they want"). Each displayed frame, the view's
 //! rectangle of the app canvas is drawn, fitted and centred, into an offscreen
 //! canvas of the chosen size, and that canvas goes to an encoder: WebCodecs
-//! into a WebM with a duration and cues ([`crate::web_codecs`]) where the
-//! browser has it, `MediaRecorder` ([`crate::web_media_recorder`]) otherwise.
+//! into a WebM with a duration and cues ([`super::codecs`]) where the
+//! browser has it, `MediaRecorder` ([`super::media_recorder`]) otherwise.
 //! The file is offered as a download when the recording stops.
 //!
 //! The copy runs in its own `requestAnimationFrame` callback, first scheduled
@@ -19,10 +19,10 @@ use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-use crate::web_codecs::{self, CodecEncoder};
-use crate::web_download::offer_blob;
-use crate::web_encoder::describe;
-use crate::web_media_recorder::MediaSink;
+use super::codecs::{self, CodecEncoder};
+use super::download::offer_blob;
+use super::encoder::describe;
+use super::media_recorder::MediaSink;
 
 /// Background of the letterbox around a view whose aspect differs from the frame's.
 const LETTERBOX: &str = "#15171c";
@@ -165,7 +165,7 @@ impl VideoRecorder {
         let context = context_2d(&target).map_err(|e| describe(&e))?;
 
         let running = Rc::new(Cell::new(true));
-        let sink = if web_codecs::available() {
+        let sink = if codecs::available() {
             let sink = Rc::new(RefCell::new(Sink::Opening));
             let (sink_, running_, errors_) =
                 (Rc::clone(&sink), Rc::clone(&running), Rc::clone(&errors));

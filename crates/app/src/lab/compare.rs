@@ -4,8 +4,9 @@
 
 use serde_json::Value;
 
+use crate::api::compare::{CompareValue, config_from_command};
 use crate::compare::{CompareConfig, Comparison};
-use crate::lab::Lab;
+use crate::lab::{Effect, Lab};
 
 impl Lab {
     /// The running comparison, if any.
@@ -24,24 +25,28 @@ impl Lab {
     /// # Errors
     /// `compare: …` when the engine is not `ik`; nothing changes then.
     pub fn start_compare(&mut self, config: CompareConfig) -> Result<(), String> {
-        let Some(template) = self.driver.thesis() else {
+        let Some(template) = self.stage.driver.thesis() else {
             return Err(format!(
                 "compare: engine {} has no IK methods to compare (use the ik engine: human or ik-quadruped)",
-                self.creature.scenario.engine.name()
+                self.session.engine_name()
             ));
         };
         let mut template = template.clone();
         gaitlab_core::driver::Driver::reset(&mut template);
-        self.compare = Some(Comparison::new(config, &template, &self.settings.view));
-        self.frame = 0;
-        self.link_changed = true;
+        self.compare = Some(Comparison::new(
+            config,
+            &template,
+            &self.session.settings.view,
+        ));
+        self.stage.frame = 0;
+        self.outbox.push(Effect::LinkChanged);
         Ok(())
     }
 
     /// Leaves the comparison (the single view carries on).
     pub fn stop_compare(&mut self) {
         if self.compare.take().is_some() {
-            self.link_changed = true;
+            self.outbox.push(Effect::LinkChanged);
         }
     }
 
@@ -50,15 +55,14 @@ impl Lab {
     ///
     /// # Errors
     /// `compare…: reason`; nothing changes then.
-    pub fn apply_compare_command(&mut self, value: &Value) -> Result<(), String> {
-        if value == &Value::Bool(false) || value.is_null() {
+    pub fn apply_compare_command(&mut self, value: &CompareValue) -> Result<(), String> {
+        let CompareValue::On(command) = value else {
             self.stop_compare();
             return Ok(());
-        }
-        let mut base = self.settings.ik.clone();
-        base.method = self.settings.method;
-        let config =
-            CompareConfig::from_json(value, &base, self.compare.as_ref().map(|c| &c.config))?;
+        };
+        let mut base = self.session.settings.ik.clone();
+        base.method = self.session.settings.method;
+        let config = config_from_command(command, &base, self.compare.as_ref().map(|c| &c.config))?;
         self.start_compare(config)
     }
 
@@ -75,8 +79,8 @@ impl Lab {
         let Some(config) = self.compare.take().map(|c| c.config) else {
             return;
         };
-        if self.driver.thesis().is_none() {
-            self.link_changed = true;
+        if self.stage.driver.thesis().is_none() {
+            self.outbox.push(Effect::LinkChanged);
             return;
         }
         if let Err(error) = self.start_compare(config) {

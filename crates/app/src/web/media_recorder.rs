@@ -12,8 +12,8 @@
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-use crate::web_download::offer_blob;
-use crate::web_encoder::{BITS_PER_SECOND, describe};
+use super::download::offer_blob;
+use super::encoder::{BITS_PER_SECOND, describe};
 
 /// Container and codec choices, best first.
 const MIME_TYPES: [&str; 4] = [

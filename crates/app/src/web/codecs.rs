@@ -21,7 +21,7 @@ use js_sys::{Object, Reflect};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen_futures::JsFuture;
 
-use crate::web_encoder::{BITS_PER_SECOND, describe};
+use super::encoder::{BITS_PER_SECOND, describe};
 use crate::webm::{VideoCodec, WebmMuxer};
 
 #[wasm_bindgen]

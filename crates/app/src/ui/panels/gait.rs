@@ -7,13 +7,31 @@
 use gaitlab_core::driver::Driver as _;
 use gaitlab_motion::poda::gait_names;
 
+use super::panel::Panel;
 use crate::lab::{GaitShapeEdit, Lab};
+
+/// The PODA gait panel.
+pub struct GaitPanel;
+
+impl Panel for GaitPanel {
+    fn title(&self) -> &'static str {
+        "Gait"
+    }
+
+    fn shown_for(&self, lab: &Lab) -> bool {
+        lab.driver().poda().is_some()
+    }
+
+    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+        gait(ui, lab);
+    }
+}
 
 /// Height of one leg's row in the footfall diagram, points.
 const ROW_HEIGHT: f32 = 12.0;
 
 /// The gait panel (shown for PODA creatures).
-pub fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
+fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
     let Some(driver) = lab.driver().poda() else {
         return;
     };

@@ -7,10 +7,28 @@ use gaitlab_core::driver::Driver as _;
 use gaitlab_physics::control::gait_controller::gait_names;
 use gaitlab_physics::engine::table2::{measured, paper_rows};
 
+use super::panel::Panel;
 use crate::lab::Lab;
 
+/// The physics panel.
+pub struct PhysicsPanel;
+
+impl Panel for PhysicsPanel {
+    fn title(&self) -> &'static str {
+        "Physics"
+    }
+
+    fn shown_for(&self, lab: &Lab) -> bool {
+        lab.driver().physics().is_some()
+    }
+
+    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+        physics(ui, lab);
+    }
+}
+
 /// The physics panel (shown for physics creatures).
-pub fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
+fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     let Some(driver) = lab.driver().physics() else {
         return;
     };

@@ -6,7 +6,25 @@
 use gaitlab_core::preset::{PathKindSpec, PathSpec};
 use glam::DVec2;
 
+use super::panel::Panel;
 use crate::lab::Lab;
+
+/// The body-path editor.
+pub struct PathPanel;
+
+impl Panel for PathPanel {
+    fn title(&self) -> &'static str {
+        "Path"
+    }
+
+    fn shown_for(&self, lab: &Lab) -> bool {
+        lab.driver().poda().is_some()
+    }
+
+    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+        path(ui, lab);
+    }
+}
 
 /// Side of the square top-down view, points.
 const VIEW_SIZE: f32 = 250.0;
@@ -40,7 +58,7 @@ fn preset_path(name: &str, start: DVec2) -> PathSpec {
 }
 
 /// The path panel (shown for PODA creatures).
-pub fn path(ui: &mut egui::Ui, lab: &mut Lab) {
+fn path(ui: &mut egui::Ui, lab: &mut Lab) {
     let Some(driver) = lab.driver().poda() else {
         return;
     };

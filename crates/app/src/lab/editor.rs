@@ -5,18 +5,13 @@
 use gaitlab_core::preset::MAX_PRESET_BYTES;
 
 use crate::editor::{PresetEditor, readable_json};
-use crate::lab::{Download, Lab};
+use crate::lab::{Download, Effect, Lab};
 
 impl Lab {
     /// The running preset's JSON: the custom text, or the bundled file.
     #[must_use]
     pub fn preset_text(&self) -> String {
-        match &self.custom_preset {
-            Some(json) => json.clone(),
-            None => gaitlab_core::preset::bundled_json(&self.settings.preset)
-                .map(str::to_owned)
-                .unwrap_or_default(),
-        }
+        self.session.preset_text()
     }
 
     /// The preset editor.
@@ -112,9 +107,15 @@ impl Lab {
         result
     }
 
+    /// Asks the front end to open the preset file picker.
+    pub fn request_file_pick(&mut self) {
+        self.outbox.push(Effect::PickFile);
+    }
+
     /// Queues the running preset's JSON as a download (`NAME.json`).
     pub fn download_preset(&mut self) {
         let clean: String = self
+            .session
             .creature
             .name
             .chars()
@@ -125,11 +126,11 @@ impl Lab {
         } else {
             format!("{clean}.json")
         };
-        self.pending_download = Some(Download {
+        self.outbox.push(Effect::Download(Download {
             file_name,
             mime: "application/json",
             text: self.preset_text(),
-        });
+        }));
     }
 
     /// Loads the first file dropped on the window this frame, if any (natively;

@@ -5,11 +5,29 @@
 
 use egui_plot::{Line, Plot, PlotPoints};
 
+use super::panel::Panel;
 use crate::compare::{CompareConfig, CompareMethod, CompareScenario, DEFAULT_VIEWS, Parameter};
 use crate::lab::Lab;
 
+/// The "Side by side" controls.
+pub struct SideBySidePanel;
+
+impl Panel for SideBySidePanel {
+    fn title(&self) -> &'static str {
+        "Side by side"
+    }
+
+    fn shown_for(&self, lab: &Lab) -> bool {
+        lab.driver().thesis().is_some()
+    }
+
+    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+        controls(ui, lab);
+    }
+}
+
 /// The "Side by side" section of the left panel (IK engine only).
-pub fn controls(ui: &mut egui::Ui, lab: &mut Lab) {
+fn controls(ui: &mut egui::Ui, lab: &mut Lab) {
     egui::CollapsingHeader::new("Side by side")
         .default_open(false)
         .show(ui, |ui| {
@@ -96,8 +114,8 @@ fn scenario_label(scenario: CompareScenario) -> &'static str {
 
 /// The lab's IK options, the defaults of a new view.
 fn base(lab: &Lab) -> gaitlab_core::ik::IkOptions {
-    let mut options = lab.settings.ik.clone();
-    options.method = lab.settings.method;
+    let mut options = lab.session.settings.ik.clone();
+    options.method = lab.session.settings.method;
     options
 }
 
@@ -160,7 +178,7 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
                         }
                     });
                 let points: Vec<[f64; 2]> = view
-                    .history
+                    .stage.history
                     .points(0)
                     .map(|[t, v]| [t, v * 1e3])
                     .collect();

@@ -12,12 +12,19 @@ use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-use crate::lab::Lab;
+use crate::lab::{Download, Effect, Lab};
 use crate::link;
 use crate::settings::Settings;
-use crate::web_download::offer_text;
-use crate::web_file::{self, Inbox};
-use crate::web_video::{ErrorSlot, VideoRecorder};
+use download::offer_text;
+use file::Inbox;
+use video::{ErrorSlot, VideoRecorder};
+
+mod codecs;
+mod download;
+mod encoder;
+mod file;
+mod media_recorder;
+mod video;
 
 /// Depth buffer bits requested from eframe (the 3-D view's pass matches it).
 const DEPTH_BITS: u8 = 24;
@@ -112,7 +119,7 @@ impl WebApp {
             );
         }
         let files = Inbox::default();
-        let file_input = match web_file::install_input(&files, &cc.egui_ctx) {
+        let file_input = match file::install_input(&files, &cc.egui_ctx) {
             Ok(input) => Some(input),
             Err(error) => {
                 lab.report_error(format!("file picker: {error:?}"));
@@ -145,11 +152,10 @@ impl WebApp {
         self.lab.open_link(&query, &fragment);
     }
 
-    /// Loads preset files that were picked or dropped, and opens the picker
-    /// when the person asked for it.
-    fn sync_files(&mut self, ctx: &egui::Context) {
-        web_file::take_dropped(ctx, &self.files);
-        let arrived: Vec<web_file::Arrived> = self.files.borrow_mut().drain(..).collect();
+    /// Loads preset files that were picked or dropped.
+    fn load_files(&mut self, ctx: &egui::Context) {
+        file::take_dropped(ctx, &self.files);
+        let arrived: Vec<file::Arrived> = self.files.borrow_mut().drain(..).collect();
         for (name, bytes) in arrived {
             match bytes {
                 // load_preset_file shows its own problems.
@@ -157,33 +163,55 @@ impl WebApp {
                 Err(error) => self.lab.report_error(format!("file {name}: {error}")),
             }
         }
-        if std::mem::take(&mut self.lab.file_pick_requested) {
-            match &self.file_input {
-                Some(input) => input.click(),
-                None => self
-                    .lab
-                    .report_error("file picker: not available on this page"),
+    }
+
+    /// Carries out what the lab queued in its outbox: downloads, the file
+    /// picker, the video recorder, and the address bar (once, pushing a
+    /// history entry when the preset changed).
+    fn carry_out_effects(&mut self, ctx: &egui::Context) {
+        let mut link: Option<bool> = None;
+        for effect in self.lab.drain_effects() {
+            match effect {
+                Effect::Download(download) => self.deliver(&download),
+                Effect::PickFile => self.open_picker(),
+                Effect::LinkChanged => link = Some(link.unwrap_or(false)),
+                Effect::PresetChanged => link = Some(true),
+                Effect::StartVideo => self.start_video(ctx),
+                Effect::StopVideo => {
+                    if let Some(video) = self.video.take() {
+                        video.stop();
+                    }
+                }
             }
+        }
+        if let Some(push) = link {
+            self.update_url(push);
         }
     }
 
-    /// Mirrors the lab's state in the address bar.
-    fn update_url(&mut self) {
-        if !self.lab.link_changed {
-            return;
+    /// Opens the preset file picker.
+    fn open_picker(&mut self) {
+        match &self.file_input {
+            Some(input) => input.click(),
+            None => self
+                .lab
+                .report_error("file picker: not available on this page"),
         }
-        let push = self.lab.preset_changed;
-        self.lab.link_changed = false;
-        self.lab.preset_changed = false;
+    }
+
+    /// Mirrors the lab's state in the address bar: a new history entry when
+    /// `push` (the preset changed, so Back returns to the previous one).
+    fn update_url(&mut self, push: bool) {
         let Some(history) = window().and_then(|w| w.history().ok()) else {
             return;
         };
+        let settings = self.lab.settings();
         let mut url = link::query(
-            &self.lab.settings.preset,
-            self.lab.settings.mode.name(),
-            self.lab.settings.method.name(),
+            &settings.preset,
+            settings.mode.name(),
+            settings.method.name(),
         );
-        if let Some(json) = &self.lab.custom_preset {
+        if let Some(json) = &self.lab.session.custom_preset {
             url.push_str("#p=");
             url.push_str(&link::encode_preset(json));
         }
@@ -197,18 +225,51 @@ impl WebApp {
         }
     }
 
-    /// Hands a saved take to the person as a download.
-    fn deliver_download(&mut self) {
-        if let Some(download) = self.lab.take_download()
-            && let Err(error) = offer_text(&download.text, &download.file_name, download.mime)
-        {
+    /// Hands a file to the person as a download.
+    fn deliver(&mut self, download: &Download) {
+        if let Err(error) = offer_text(&download.text, &download.file_name, download.mime) {
             self.lab
                 .report_error(format!("save: the browser refused the download: {error:?}"));
         }
     }
 
-    /// Starts, follows or stops the video recorder as the lab asks.
-    fn sync_video(&mut self, ctx: &egui::Context) {
+    /// Starts the video recorder on the 3-D view.
+    fn start_video(&mut self, ctx: &egui::Context) {
+        if self.video.is_some() {
+            return;
+        }
+        let settings = self.lab.settings();
+        let name = format!(
+            "gaitlab-{}-{}-{}",
+            self.lab.creature().name,
+            settings.mode.name(),
+            settings.method.name()
+        );
+        match VideoRecorder::start(
+            self.canvas.clone(),
+            self.lab.view_rect_px(),
+            settings.video_size.pixels(),
+            name,
+            Rc::clone(&self.video_errors),
+        ) {
+            Ok(video) => {
+                self.lab.video.frames = 0;
+                self.lab.video.skipped = 0;
+                self.lab.video.seconds = 0.0;
+                self.lab.video.encoder = video.encoder();
+                self.video = Some(video);
+                ctx.request_repaint();
+            }
+            Err(error) => {
+                self.lab.set_video_recording(false);
+                self.lab.report_error(format!("video: {error}"));
+            }
+        }
+    }
+
+    /// Follows the running video recorder: its errors stop it, otherwise it
+    /// tracks the 3-D view and reports its figures to the lab.
+    fn follow_video(&mut self, ctx: &egui::Context) {
         let failed = self.video_errors.borrow_mut().take();
         if let Some(error) = failed {
             self.lab.report_error(error);
@@ -217,47 +278,15 @@ impl WebApp {
             }
             self.lab.set_video_recording(false);
         }
-        match (self.lab.video_recording(), self.video.take()) {
-            (true, Some(video)) => {
-                video.set_rect(self.lab.view_rect_px());
-                self.lab.video_frames = video.frames();
-                self.lab.video_encoder = video.encoder();
-                self.lab.video_skipped = video.skipped();
-                self.lab.video_seconds = video.seconds();
-                self.video = Some(video);
-                // Every frame must be painted for the recording to be smooth.
-                ctx.request_repaint();
-            }
-            (true, None) => {
-                let name = format!(
-                    "gaitlab-{}-{}-{}",
-                    self.lab.creature().name,
-                    self.lab.settings.mode.name(),
-                    self.lab.settings.method.name()
-                );
-                match VideoRecorder::start(
-                    self.canvas.clone(),
-                    self.lab.view_rect_px(),
-                    self.lab.settings.video_size.pixels(),
-                    name,
-                    Rc::clone(&self.video_errors),
-                ) {
-                    Ok(video) => {
-                        self.lab.video_frames = 0;
-                        self.lab.video_skipped = 0;
-                        self.lab.video_seconds = 0.0;
-                        self.lab.video_encoder = video.encoder();
-                        self.video = Some(video);
-                        ctx.request_repaint();
-                    }
-                    Err(error) => {
-                        self.lab.set_video_recording(false);
-                        self.lab.report_error(format!("video: {error}"));
-                    }
-                }
-            }
-            (false, Some(video)) => video.stop(),
-            (false, None) => {}
+        if let Some(video) = &self.video {
+            video.set_rect(self.lab.view_rect_px());
+            let status = &mut self.lab.video;
+            status.frames = video.frames();
+            status.encoder = video.encoder();
+            status.skipped = video.skipped();
+            status.seconds = video.seconds();
+            // Every frame must be painted for the recording to be smooth.
+            ctx.request_repaint();
         }
     }
 
@@ -305,16 +334,15 @@ impl eframe::App for WebApp {
             self.apply_url();
         }
         let ctx = ui.ctx().clone();
-        self.sync_files(&ctx);
+        self.load_files(&ctx);
         self.lab.ui(ui);
-        self.deliver_download();
-        self.sync_video(&ctx);
-        self.update_url();
+        self.carry_out_effects(&ctx);
+        self.follow_video(&ctx);
         self.signal_first_frame();
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        eframe::set_value(storage, SETTINGS_KEY, &self.lab.settings);
+        eframe::set_value(storage, SETTINGS_KEY, self.lab.settings());
     }
 
     fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {

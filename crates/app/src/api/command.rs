@@ -1,0 +1,449 @@
+//! The `command(json)` API (DESIGN.md "Browser", docs/app.md): the typed
+//! [`Command`] — every key optional, unknown keys refused — and
+//! [`Lab::command`], which reads it whole and then applies its keys in a fixed
+//! order. Commands are plain data; nothing in them is evaluated.
+
+use std::collections::BTreeMap;
+
+use serde::Deserialize;
+use serde::de::{Deserializer, MapAccess, Visitor};
+
+use super::camera::CameraCommand;
+use super::compare::CompareValue;
+use super::error::{from_value, object, present};
+use super::names::{EngineName, MethodName, ModeName, SaveFormatName, ThemeName, VideoSizeName};
+use crate::lab::{GaitShapeEdit, Lab};
+
+/// Longest command text accepted, bytes (a custom preset rides in `preset_json`).
+pub const MAX_COMMAND_BYTES: usize = 300 * 1024;
+
+/// `gain`: one physics controller gain.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct GainCommand {
+    /// The gain's name (`state().physics.gains` lists them).
+    pub name: String,
+    /// Its new value.
+    pub value: f64,
+}
+
+/// `center`: a PODA leg joint's eq. 6 center and gain.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct CenterCommand {
+    /// A leg joint's name.
+    pub joint: String,
+    /// The joint angle the leg is pulled toward, radians.
+    pub center: f64,
+    /// How hard, 0–1.
+    pub gain: f64,
+}
+
+/// `views`: view flags to set (the others stay).
+#[derive(Clone, Debug, Default, PartialEq, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct ViewsCommand {
+    /// World axes at the origin.
+    pub world_axes: Option<bool>,
+    /// Joint frames.
+    pub joint_axes: Option<bool>,
+    /// IK targets.
+    pub targets: Option<bool>,
+    /// Perspective (true) or orthographic projection.
+    pub perspective: Option<bool>,
+    /// The camera follows the figure.
+    pub follow: Option<bool>,
+    /// The ground grid.
+    pub grid: Option<bool>,
+    /// The figure's shadow.
+    pub shadow: Option<bool>,
+}
+
+/// `save`'s object form.
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct SaveObject {
+    /// The file format.
+    pub format: SaveFormatName,
+    /// Seconds at the take's end to write; 0 or null for all.
+    pub last_s: Option<f64>,
+}
+
+/// `save`: a format (the panel's "last N seconds" apply) or `{format, last_s}`.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[cfg_attr(feature = "schema", schemars(untagged))]
+pub enum SaveCommand {
+    /// `"bvh"` or `"csv"`.
+    Format(SaveFormatName),
+    /// `{"format": "bvh", "last_s": 5}`.
+    Object(SaveObject),
+}
+
+impl<'de> Deserialize<'de> for SaveCommand {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Save;
+        impl<'de> Visitor<'de> for Save {
+            type Value = SaveCommand;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("\"bvh\", \"csv\" or {\"format\", \"last_s\"}")
+            }
+            fn visit_str<E: serde::de::Error>(self, text: &str) -> Result<SaveCommand, E> {
+                SaveFormatName::deserialize(serde::de::value::StrDeserializer::<E>::new(text))
+                    .map(SaveCommand::Format)
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<SaveCommand, A::Error> {
+                SaveObject::deserialize(serde::de::value::MapAccessDeserializer::new(map))
+                    .map(SaveCommand::Object)
+            }
+        }
+        deserializer.deserialize_any(Save)
+    }
+}
+
+/// One `command(json)` object. Every key is optional; [`Lab::command`]
+/// applies them in the order of these fields. `null` counts as absent except
+/// for `compare` (leaves the comparison) and `narrow` (follow the width).
+#[derive(Clone, Debug, Default, PartialEq, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[cfg_attr(
+    feature = "schema",
+    schemars(
+        title = "gaitlab command",
+        description = "One window.gaitlab.command(json) object (docs/app.md)."
+    )
+)]
+#[serde(deny_unknown_fields)]
+pub struct Command {
+    /// `ik`, `poda` or `physics`: loads the matching creature.
+    pub engine: Option<EngineName>,
+    /// A bundled preset's name.
+    pub preset: Option<String>,
+    /// A whole preset file's text (gaitlab-preset/1).
+    pub preset_json: Option<String>,
+    /// The PODA or physics gait's name.
+    pub gait: Option<String>,
+    /// PODA cycle period P, seconds (each gait edit keeps eq. 7–8 true).
+    pub period_s: Option<f64>,
+    /// PODA duty factor β.
+    pub duty_factor: Option<f64>,
+    /// PODA body speed, or the physics controllers' desired speed, m/s.
+    pub speed_mps: Option<f64>,
+    /// PODA stroke, metres.
+    pub stroke_m: Option<f64>,
+    /// PODA leg force, newtons.
+    pub leg_force_n: Option<f64>,
+    /// The physics controllers' hop height, metres.
+    pub hop_height_m: Option<f64>,
+    /// One physics controller gain.
+    #[serde(default, deserialize_with = "object")]
+    pub gain: Option<GainCommand>,
+    /// Physics controller gains by name (applied in name order).
+    pub gains: Option<BTreeMap<String, f64>>,
+    /// PODA leg phases, one per leg, in cycles.
+    pub phases: Option<Vec<f64>>,
+    /// PODA step height, metres.
+    pub step_height_m: Option<f64>,
+    /// PODA transfer curve keys, `[[along, height], …]`.
+    pub transfer_keys: Option<Vec<[f64; 2]>>,
+    /// The PODA body path.
+    pub path: Option<gaitlab_core::preset::PathSpec>,
+    /// A PODA leg joint's eq. 6 center.
+    #[serde(default, deserialize_with = "object")]
+    pub center: Option<CenterCommand>,
+    /// The thesis script.
+    pub mode: Option<ModeName>,
+    /// The IK method.
+    pub method: Option<MethodName>,
+    /// The side-by-side IK comparison: an object starts or changes it, `false` leaves.
+    #[serde(default, deserialize_with = "present")]
+    pub compare: Option<CompareValue>,
+    /// Pause (true) or run.
+    pub paused: Option<bool>,
+    /// Same as `paused`.
+    pub pause: Option<bool>,
+    /// true: back to time 0.
+    pub reset: Option<bool>,
+    /// true: one frame forward.
+    pub step: Option<bool>,
+    /// DLS damping λ, [1e-6, 10].
+    pub lambda: Option<f64>,
+    /// SDLS γmax, radians, [1e-3, π].
+    pub gamma_max: Option<f64>,
+    /// Step clamp, radians, [1e-3, π].
+    pub max_step: Option<f64>,
+    /// Null-space gain, [0, 10].
+    pub null_space_gain: Option<f64>,
+    /// Keep joints inside their limits.
+    pub enforce_limits: Option<bool>,
+    /// The walking direction, degrees, [-180, 180].
+    pub heading_deg: Option<f64>,
+    /// Show the plots.
+    pub plots: Option<bool>,
+    /// The joints the plots show, by name.
+    pub plot_joints: Option<Vec<String>>,
+    /// Record the motion take (on/off).
+    pub record: Option<bool>,
+    /// Seconds the panel's saves write (0: all).
+    pub last_s: Option<f64>,
+    /// Download the take (or its last seconds).
+    pub save: Option<SaveCommand>,
+    /// The video recording's size.
+    pub video_size: Option<VideoSizeName>,
+    /// Record video (on/off).
+    pub record_video: Option<bool>,
+    /// The colours.
+    pub theme: Option<ThemeName>,
+    /// Force the phone layout on (true) or off (false); null follows the width.
+    #[serde(default, deserialize_with = "present")]
+    pub narrow: Option<Option<bool>>,
+    /// View flags.
+    #[serde(default, deserialize_with = "object")]
+    pub views: Option<ViewsCommand>,
+    /// The orbit camera.
+    #[serde(default, deserialize_with = "object")]
+    pub camera: Option<CameraCommand>,
+    /// Open or close the preset editor.
+    pub editor_open: Option<bool>,
+    /// The preset editor's text.
+    pub editor_text: Option<String>,
+    /// true: the editor's text back to the creature's preset.
+    pub editor_revert: Option<bool>,
+    /// true: load the editor's text (a bad preset is an error; the creature stays).
+    pub editor_apply: Option<bool>,
+    /// true: download the creature's preset file.
+    pub download_preset: Option<bool>,
+    /// Show the Share row's link field (as "Copy link", without the clipboard).
+    pub show_link: Option<bool>,
+}
+
+fn range(key: &str, x: f64, lo: f64, hi: f64) -> Result<f64, String> {
+    if !(lo..=hi).contains(&x) {
+        return Err(format!("{key}: {x} is outside [{lo}, {hi}]"));
+    }
+    Ok(x)
+}
+
+impl Command {
+    /// Reads a command from its JSON text, whole: a wrong type or an unknown
+    /// key anywhere refuses it before anything applies.
+    ///
+    /// # Errors
+    /// `key: reason`, e.g. `gain.value: expected a number`, `launch: unknown command`.
+    pub fn parse(json: &str) -> Result<Self, String> {
+        if json.len() > MAX_COMMAND_BYTES {
+            return Err(format!(
+                "command is larger than {} KiB",
+                MAX_COMMAND_BYTES / 1024
+            ));
+        }
+        let value: serde_json::Value =
+            serde_json::from_str(json).map_err(|e| format!("command is not JSON: {e}"))?;
+        if !value.is_object() {
+            return Err("command must be a JSON object".to_owned());
+        }
+        from_value("", value)
+    }
+}
+
+impl Lab {
+    /// Applies a JSON command object, e.g. `{"mode":"run","method":"dls"}`
+    /// (the keys are [`Command`]'s; docs/app.md lists them). The command is
+    /// read whole first: a wrong type or an unknown key refuses it and nothing
+    /// applies. Then keys apply in [`Command`]'s field order; the first value
+    /// out of range (or a name the creature lacks) stops the command with an
+    /// error naming its key, and what came before it stays applied.
+    ///
+    /// # Errors
+    /// A readable `key: reason` text.
+    pub fn command(&mut self, json: &str) -> Result<(), String> {
+        let command = Command::parse(json)?;
+        self.apply_command(&command)
+    }
+
+    /// Applies a typed command in [`Command`]'s field order (see [`Lab::command`]).
+    ///
+    /// # Errors
+    /// The first key whose value the lab refuses, as `key: reason`.
+    pub fn apply_command(&mut self, c: &Command) -> Result<(), String> {
+        if let Some(engine) = c.engine {
+            self.set_engine(engine.0)?;
+        }
+        if let Some(name) = &c.preset {
+            self.set_preset(name)?;
+        }
+        if let Some(json) = &c.preset_json {
+            self.set_custom_preset(json)?;
+        }
+        if let Some(name) = &c.gait {
+            self.set_gait(name)?;
+        }
+        for (key, value) in [
+            ("period_s", c.period_s),
+            ("duty_factor", c.duty_factor),
+            ("speed_mps", c.speed_mps),
+            ("stroke_m", c.stroke_m),
+            ("leg_force_n", c.leg_force_n),
+            ("hop_height_m", c.hop_height_m),
+        ] {
+            if let Some(value) = value {
+                self.edit_gait(key, value)?;
+            }
+        }
+        if let Some(gain) = &c.gain {
+            self.set_gain(&gain.name, gain.value)?;
+        }
+        for (name, &value) in c.gains.iter().flatten() {
+            self.set_gain(name, value)?;
+        }
+        for (leg, &phase) in c.phases.iter().flatten().enumerate() {
+            self.edit_gait_shape(GaitShapeEdit::Phase { leg, phase })?;
+        }
+        if let Some(height) = c.step_height_m {
+            self.edit_gait_shape(GaitShapeEdit::StepHeight(height))?;
+        }
+        if let Some(keys) = &c.transfer_keys {
+            self.edit_gait_shape(GaitShapeEdit::TransferKeys(keys))?;
+        }
+        if let Some(spec) = &c.path {
+            self.set_path(spec)?;
+        }
+        if let Some(center) = &c.center {
+            self.set_center(&center.joint, center.center, center.gain)?;
+        }
+        if let Some(mode) = c.mode {
+            self.set_mode(mode.0);
+        }
+        if let Some(method) = c.method {
+            self.set_method(method.0);
+        }
+        if let Some(compare) = &c.compare {
+            self.apply_compare_command(compare)?;
+        }
+        for paused in [c.paused, c.pause].into_iter().flatten() {
+            self.set_paused(paused);
+        }
+        if c.reset == Some(true) {
+            self.reset();
+        }
+        if c.step == Some(true) {
+            self.single_step();
+        }
+        self.apply_ik_command(c)?;
+        if let Some(x) = c.heading_deg {
+            self.set_heading_deg(range("heading_deg", x, -180.0, 180.0)?);
+        }
+        if let Some(plots) = c.plots {
+            self.session.settings.plots = plots;
+        }
+        if let Some(names) = &c.plot_joints {
+            self.set_plot_joints(names)?;
+        }
+        match c.record {
+            Some(true) => self.start_recording(),
+            Some(false) => self.stop_recording(),
+            None => {}
+        }
+        if let Some(x) = c.last_s {
+            self.session.settings.export_last_s =
+                range("last_s", x, 0.0, gaitlab_engine::MAX_TAKE_S)?;
+        }
+        match &c.save {
+            Some(SaveCommand::Format(format)) => self.save_take_as_set(format.0.name())?,
+            Some(SaveCommand::Object(save)) => {
+                let last_s = match save.last_s {
+                    Some(x) => Some(range("save.last_s", x, 0.0, gaitlab_engine::MAX_TAKE_S)?)
+                        .filter(|&s| s > 0.0),
+                    None => None,
+                };
+                self.save_take(save.format.0.name(), last_s)?;
+            }
+            None => {}
+        }
+        if let Some(size) = c.video_size {
+            self.session.settings.video_size = size.0;
+        }
+        if let Some(on) = c.record_video {
+            self.set_video_recording(on);
+        }
+        if let Some(theme) = c.theme {
+            self.session.settings.theme = theme.0;
+        }
+        if let Some(narrow) = c.narrow {
+            self.layout.narrow_override = narrow;
+        }
+        if let Some(views) = &c.views {
+            let view = &mut self.session.settings.view;
+            for (slot, value) in [
+                (&mut view.world_axes, views.world_axes),
+                (&mut view.joint_axes, views.joint_axes),
+                (&mut view.targets, views.targets),
+                (&mut view.perspective, views.perspective),
+                (&mut view.follow, views.follow),
+                (&mut view.grid, views.grid),
+                (&mut view.shadow, views.shadow),
+            ] {
+                if let Some(value) = value {
+                    *slot = value;
+                }
+            }
+        }
+        if let Some(camera) = &c.camera {
+            super::camera::apply_camera(&mut self.camera, &mut self.session.settings.view, camera)?;
+        }
+        if let Some(open) = c.editor_open {
+            self.set_editor_open(open);
+        }
+        if let Some(text) = &c.editor_text {
+            self.set_editor_text(text);
+        }
+        if c.editor_revert == Some(true) {
+            self.editor_revert();
+        }
+        if c.editor_apply == Some(true) {
+            self.editor_apply()?;
+        }
+        if c.download_preset == Some(true) {
+            self.download_preset();
+        }
+        if let Some(show) = c.show_link {
+            self.show_link(show)?;
+        }
+        Ok(())
+    }
+
+    /// The IK solver options of a command (`lambda` … `enforce_limits`),
+    /// applied to the solver once when any is set.
+    fn apply_ik_command(&mut self, c: &Command) -> Result<(), String> {
+        let mut changed = false;
+        for (key, value, lo, hi) in [
+            ("lambda", c.lambda, 1e-6, 10.0),
+            ("gamma_max", c.gamma_max, 1e-3, std::f64::consts::PI),
+            ("max_step", c.max_step, 1e-3, std::f64::consts::PI),
+            ("null_space_gain", c.null_space_gain, 0.0, 10.0),
+        ] {
+            let Some(x) = value else { continue };
+            let x = range(key, x, lo, hi)?;
+            let ik = &mut self.session.settings.ik;
+            match key {
+                "lambda" => ik.lambda = x,
+                "gamma_max" => ik.gamma_max = x,
+                "max_step" => ik.max_step = x,
+                _ => ik.null_space_gain = x,
+            }
+            changed = true;
+        }
+        if let Some(on) = c.enforce_limits {
+            self.session.settings.ik.enforce_limits = on;
+            changed = true;
+        }
+        if changed {
+            self.apply_ik_options();
+        }
+        Ok(())
+    }
+}

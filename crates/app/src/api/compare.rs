@@ -1,0 +1,185 @@
+//! The `compare` command's value: `false` (or `null`) leaves the side-by-side
+//! IK comparison, an object `{views, scenario, options}` starts or
+//! reconfigures it (see [`crate::compare`]). `metrics`, as `state().compare`
+//! writes it, is accepted and ignored, so a state's object can be sent back.
+
+use serde::Deserialize;
+use serde::de::{Deserializer, MapAccess, Visitor};
+
+use gaitlab_core::ik::IkOptions;
+
+use super::names::{CompareMethodName, ScenarioName};
+use crate::compare::{CompareConfig, CompareMethod, CompareScenario, DEFAULT_VIEWS, Parameter};
+
+/// One view's solver options (any subset; ranges as the panel's sliders).
+#[derive(Clone, Debug, Default, PartialEq, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct CompareOptions {
+    /// DLS damping λ, metres.
+    pub lambda: Option<f64>,
+    /// SDLS γmax, radians.
+    pub gamma_max: Option<f64>,
+    /// Step clamp α, radians per iteration.
+    pub max_step: Option<f64>,
+    /// Rank tolerance (relative to σmax).
+    pub rank_tolerance: Option<f64>,
+    /// Null-space gain k.
+    pub null_space_gain: Option<f64>,
+}
+
+impl CompareOptions {
+    /// The value set for the option named `key` ([`crate::compare::Parameter::key`]).
+    #[must_use]
+    pub fn get(&self, key: &str) -> Option<f64> {
+        match key {
+            "lambda" => self.lambda,
+            "gamma_max" => self.gamma_max,
+            "max_step" => self.max_step,
+            "rank_tolerance" => self.rank_tolerance,
+            "null_space_gain" => self.null_space_gain,
+            _ => None,
+        }
+    }
+}
+
+/// The `compare` object: what to change; what is left out stays (or takes
+/// its default when no comparison runs).
+#[derive(Clone, Debug, Default, PartialEq, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct CompareCommand {
+    /// The views' configurations, 2 or 4.
+    pub views: Option<Vec<CompareMethodName>>,
+    /// Where the targets come from.
+    pub scenario: Option<ScenarioName>,
+    /// Options per view, one object per view.
+    pub options: Option<Vec<CompareOptions>>,
+    /// `state().compare.metrics`, ignored.
+    #[cfg_attr(feature = "schema", schemars(with = "Option<serde_json::Value>"))]
+    pub metrics: Option<serde::de::IgnoredAny>,
+}
+
+/// The `compare` key's value.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[cfg_attr(feature = "schema", schemars(untagged))]
+pub enum CompareValue {
+    /// `false` or `null`: leave the comparison.
+    #[cfg_attr(feature = "schema", schemars(with = "Option<False>"))]
+    Off,
+    /// Start or reconfigure it.
+    On(CompareCommand),
+}
+
+/// The JSON value `false`, for the schema.
+#[cfg(feature = "schema")]
+struct False;
+
+#[cfg(feature = "schema")]
+impl schemars::JsonSchema for False {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "False".into()
+    }
+    fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        schemars::json_schema!({ "const": false })
+    }
+}
+
+impl<'de> Deserialize<'de> for CompareValue {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Value;
+        impl<'de> Visitor<'de> for Value {
+            type Value = CompareValue;
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("an object or false")
+            }
+            fn visit_bool<E: serde::de::Error>(self, on: bool) -> Result<CompareValue, E> {
+                if on {
+                    Err(E::invalid_type(serde::de::Unexpected::Bool(true), &self))
+                } else {
+                    Ok(CompareValue::Off)
+                }
+            }
+            fn visit_unit<E: serde::de::Error>(self) -> Result<CompareValue, E> {
+                Ok(CompareValue::Off)
+            }
+            fn visit_none<E: serde::de::Error>(self) -> Result<CompareValue, E> {
+                Ok(CompareValue::Off)
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<CompareValue, A::Error> {
+                CompareCommand::deserialize(serde::de::value::MapAccessDeserializer::new(map))
+                    .map(CompareValue::On)
+            }
+        }
+        deserializer.deserialize_any(Value)
+    }
+}
+
+/// The comparison a `compare` object asks for (see the module docs),
+/// taking defaults from `base` and from `current` where its views match.
+///
+/// # Errors
+/// `compare.…: reason` naming the bad field (a count or a range).
+pub fn config_from_command(
+    command: &CompareCommand,
+    base: &IkOptions,
+    current: Option<&CompareConfig>,
+) -> Result<CompareConfig, String> {
+    let views: Vec<CompareMethod> = match &command.views {
+        Some(list) => {
+            if list.len() != 2 && list.len() != 4 {
+                return Err(format!(
+                    "compare.views: expected 2 or 4 views, got {}",
+                    list.len()
+                ));
+            }
+            list.iter().map(|m| m.0).collect()
+        }
+        None => match current {
+            Some(current) => current.views.clone(),
+            None => DEFAULT_VIEWS.to_vec(),
+        },
+    };
+    let scenario = match command.scenario {
+        Some(scenario) => scenario.0,
+        None => current.map_or(CompareScenario::Script, |c| c.scenario),
+    };
+    let mut options: Vec<IkOptions> = views
+        .iter()
+        .enumerate()
+        .map(|(i, m)| match current {
+            Some(c) if c.views.get(i) == Some(m) => c.options[i].clone(),
+            _ => m.options(base),
+        })
+        .collect();
+    if let Some(list) = &command.options {
+        if list.len() != views.len() {
+            return Err(format!(
+                "compare.options: expected {} objects (one per view), got {}",
+                views.len(),
+                list.len()
+            ));
+        }
+        for (i, (item, slot)) in list.iter().zip(options.iter_mut()).enumerate() {
+            for parameter in Parameter::ALL {
+                let Some(x) = item.get(parameter.key()) else {
+                    continue;
+                };
+                let (lo, hi) = parameter.range();
+                if !(lo..=hi).contains(&x) {
+                    return Err(format!(
+                        "compare.options[{i}].{}: {x} is outside [{lo}, {hi}]",
+                        parameter.key()
+                    ));
+                }
+                *parameter.slot(slot) = x;
+            }
+        }
+    }
+    Ok(CompareConfig {
+        views,
+        options,
+        scenario,
+    })
+}

@@ -1,0 +1,128 @@
+//! The command API's named values (`mode`, `method`, `engine`, `theme`, …):
+//! strings in JSON, the app's enums once read, and an `enum` list in the
+//! schema. An unknown name reads `unknown mode "fly" (walk, run, …)`.
+
+use gaitlab_core::ik::Method;
+use gaitlab_core::preset::Engine;
+use gaitlab_core::preset::thesis::ThesisMode;
+use serde::de::{Deserialize, Deserializer, Error as _};
+
+use crate::compare::{CompareMethod, CompareScenario};
+use crate::settings::VideoSize;
+use crate::theme::Theme;
+
+/// A take's file format for `save`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SaveFormat {
+    /// Biovision hierarchy.
+    Bvh,
+    /// Joint angles per frame.
+    Csv,
+}
+
+impl SaveFormat {
+    /// The format's name (`bvh`, `csv`), as [`crate::Lab::save_take`] takes it.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            SaveFormat::Bvh => "bvh",
+            SaveFormat::Csv => "csv",
+        }
+    }
+
+    fn parse(name: &str) -> Option<Self> {
+        match name {
+            "bvh" => Some(SaveFormat::Bvh),
+            "csv" => Some(SaveFormat::Csv),
+            _ => None,
+        }
+    }
+}
+
+macro_rules! named {
+    ($(#[$doc:meta])* $name:ident($inner:ty), $what:literal, $parse:expr, [$($v:literal),+ $(,)?]) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        pub struct $name(pub $inner);
+
+        impl<'de> Deserialize<'de> for $name {
+            fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+                let text = String::deserialize(deserializer)?;
+                ($parse)(text.as_str()).map($name).ok_or_else(|| {
+                    D::Error::custom(format!(
+                        "unknown {} {text:?} ({})",
+                        $what,
+                        [$($v),+].join(", ")
+                    ))
+                })
+            }
+        }
+
+        #[cfg(feature = "schema")]
+        impl schemars::JsonSchema for $name {
+            fn schema_name() -> std::borrow::Cow<'static, str> {
+                stringify!($name).into()
+            }
+            fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+                schemars::json_schema!({ "type": "string", "enum": [$($v),+] })
+            }
+        }
+    };
+}
+
+named!(
+    /// `engine`: which engine's creature to load.
+    EngineName(Engine), "engine", Engine::parse, ["ik", "poda", "physics"]
+);
+named!(
+    /// `mode`: the thesis script.
+    ModeName(ThesisMode), "mode", ThesisMode::parse,
+    ["walk", "run", "wounded-walk", "wounded-run"]
+);
+named!(
+    /// `method`: the IK method.
+    MethodName(Method), "method", Method::parse, ["transpose", "pinv", "dls", "sdls", "ccd"]
+);
+named!(
+    /// `theme`: the colours.
+    ThemeName(Theme), "theme", Theme::parse, ["system", "light", "dark"]
+);
+named!(
+    /// `video_size`: the video recording's frame size.
+    VideoSizeName(VideoSize), "size", VideoSize::parse, ["view", "p360", "p720", "p1080"]
+);
+named!(
+    /// `save.format`: the take's file format.
+    SaveFormatName(SaveFormat), "format", SaveFormat::parse, ["bvh", "csv"]
+);
+named!(
+    /// `compare.views[i]`: one comparison view's configuration.
+    CompareMethodName(CompareMethod), "method", CompareMethod::parse,
+    ["transpose", "pinv", "dls", "sdls", "pinv-ns", "dls-ns", "ccd"]
+);
+named!(
+    /// `compare.scenario`: where the comparison's targets come from.
+    ScenarioName(CompareScenario), "scenario", CompareScenario::parse,
+    ["script", "singularity"]
+);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_name_lists_are_the_enums_names() {
+        for m in CompareMethod::ALL {
+            assert!(serde_json::from_value::<CompareMethodName>(m.name().into()).is_ok());
+        }
+        for name in ["walk", "run", "wounded-walk", "wounded-run"] {
+            assert!(ThesisMode::parse(name).is_some(), "{name}");
+        }
+        for name in ["transpose", "pinv", "dls", "sdls", "ccd"] {
+            assert!(Method::parse(name).is_some(), "{name}");
+        }
+        for name in ["view", "p360", "p720", "p1080"] {
+            assert!(VideoSize::parse(name).is_some(), "{name}");
+        }
+    }
+}

@@ -1,0 +1,468 @@
+//! The `state()` API (DESIGN.md "Browser", docs/app.md): the typed [`State`]
+//! — preset, engine, mode, gait, methods, engine figures, per-view errors and
+//! run metrics, settings, layout, recording, last error — and the one place
+//! that reads the lab's fields for it ([`State::of`]).
+
+use gaitlab_core::driver::Driver;
+use serde::Serialize;
+
+use super::camera::CameraState;
+use crate::lab::Lab;
+use crate::view::ViewOptions;
+
+/// One effector's IK error in `views[0].effectors`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct EffectorState {
+    /// The effector's name.
+    pub name: String,
+    /// This frame's distance from its target, metres.
+    pub error_m: Option<f64>,
+    /// Mean since the last reset, metres.
+    pub mean_error_m: Option<f64>,
+    /// Largest since the last reset, metres.
+    pub max_error_m: Option<f64>,
+}
+
+/// `views[0]`: the single view's method, errors, box on screen and run metrics.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct ViewState {
+    /// The IK method's name.
+    pub method: &'static str,
+    /// Per-effector errors.
+    pub effectors: Vec<EffectorState>,
+    /// The figure's projected box in the page, `[x, y, width, height]` px.
+    pub creature_box_px: Option<[f32; 4]>,
+    /// `gaitlab run --json`'s figures for the run since the last reset.
+    #[cfg_attr(feature = "schema", schemars(with = "serde_json::Value"))]
+    pub metrics: gaitlab_engine::RunMetrics,
+}
+
+/// `physics`: the Raibert & Hodgins controller's figures (physics engine only).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct PhysicsState {
+    /// The physical model's name.
+    pub model: &'static str,
+    /// The model's scale.
+    pub scale: f64,
+    /// The controller's phase.
+    pub phase: &'static str,
+    /// Desired speed, m/s.
+    pub speed_desired_mps: f64,
+    /// Hop height set, metres.
+    pub hop_height_m: Option<f64>,
+    /// Heading, degrees.
+    pub heading_deg: f64,
+    /// The path's current waypoint.
+    pub waypoint: usize,
+    /// Mean speed, m/s.
+    pub speed_mean_mps: f64,
+    /// Whether it fell.
+    pub fell: bool,
+    /// Times it was put back after a fall.
+    pub resets: u32,
+    /// Body height, metres.
+    pub height_m: f64,
+    /// Body pitch, degrees.
+    pub pitch_deg: f64,
+    /// Body roll, degrees.
+    pub roll_deg: f64,
+    /// Stride length, metres.
+    pub stride_length_m: f64,
+    /// Stride duration, seconds.
+    pub stride_duration_s: f64,
+    /// Flight duration, seconds.
+    pub flight_duration_s: f64,
+    /// Stance duration, seconds.
+    pub stance_duration_s: f64,
+    /// Highest friction coefficient needed.
+    pub friction_needed_max: f64,
+    /// Simulation steps taken.
+    pub steps: u64,
+    /// Controller gains by name.
+    pub gains: std::collections::BTreeMap<String, f64>,
+}
+
+/// `poda`: the PODA gait's values (PODA engine only).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct PodaState {
+    /// Cycle period P, seconds.
+    pub period_s: f64,
+    /// Duty factor β.
+    pub duty_factor: f64,
+    /// Body speed, m/s.
+    pub speed_mps: f64,
+    /// Stroke, metres.
+    pub stroke_m: f64,
+    /// Leg force, newtons.
+    pub leg_force_n: f64,
+    /// Support time, seconds.
+    pub support_s: f64,
+    /// Transfer time, seconds.
+    pub transfer_s: f64,
+    /// Leg phases, cycles.
+    pub phases: Vec<f64>,
+    /// Step height, metres.
+    pub step_height_m: f64,
+    /// Transfer curve keys, `[[along, height], …]`.
+    pub transfer_keys: Vec<[f64; 2]>,
+    /// The body path.
+    pub path: gaitlab_core::preset::PathSpec,
+    /// Whether the gait is blending into a new one.
+    pub blending: bool,
+    /// The legs' names.
+    pub legs: Vec<String>,
+    /// Largest foot slip in support, metres.
+    pub foot_slip_max_m: f64,
+    /// What the last gait edit derived.
+    pub derived: Vec<&'static str>,
+}
+
+/// `ik`: the solver options.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct IkState {
+    /// DLS damping λ.
+    pub lambda: f64,
+    /// SDLS γmax, radians.
+    pub gamma_max: f64,
+    /// Step clamp, radians.
+    pub max_step: f64,
+    /// Null-space gain.
+    pub null_space_gain: f64,
+    /// Joints kept inside their limits.
+    pub enforce_limits: bool,
+}
+
+/// `editor`: the preset editor.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct EditorState {
+    /// Whether it is open.
+    pub open: bool,
+    /// Whether its text differs from the creature's preset.
+    pub dirty: bool,
+    /// The last apply's error.
+    pub error: Option<String>,
+}
+
+/// `recording`: the motion take.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct RecordingState {
+    /// Whether it records.
+    pub active: bool,
+    /// Frames in the take.
+    pub frames: usize,
+    /// Seconds in the take.
+    pub seconds: f64,
+    /// Seconds the panel's saves write (0: all).
+    pub last_s: f64,
+}
+
+/// `layout`: the page layout.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct LayoutState {
+    /// The phone layout.
+    pub narrow: bool,
+    /// Whether the phone layout's controls are open.
+    pub controls_open: bool,
+    /// The controls button's rectangle, points.
+    pub controls_button_pt: [f32; 4],
+}
+
+/// `video`: the video recording.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct VideoState {
+    /// Whether it records.
+    pub recording: bool,
+    /// Frames encoded.
+    pub frames: u64,
+    /// The encoder's name.
+    pub encoder: &'static str,
+    /// Frames skipped.
+    pub skipped: u64,
+    /// Seconds recorded.
+    pub seconds: f64,
+    /// The frame size's name.
+    pub size: &'static str,
+}
+
+/// `state()`: the whole lab as one JSON object.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[cfg_attr(
+    feature = "schema",
+    schemars(
+        title = "gaitlab state",
+        description = "The object window.gaitlab.state() returns (docs/app.md)."
+    )
+)]
+pub struct State {
+    /// The creature's preset name.
+    pub preset: String,
+    /// Whether it came from a preset file rather than the bundled list.
+    pub custom_preset: bool,
+    /// `ik`, `poda` or `physics`.
+    pub engine: &'static str,
+    /// The thesis script.
+    pub mode: &'static str,
+    /// The PODA or physics gait.
+    pub gait: Option<String>,
+    /// The physics figures (physics engine).
+    pub physics: Option<PhysicsState>,
+    /// The PODA figures (PODA engine).
+    pub poda: Option<PodaState>,
+    /// The IK method.
+    pub method: &'static str,
+    /// The method of each view.
+    pub methods: Vec<&'static str>,
+    /// The comparison's configuration and metrics, or null.
+    #[cfg_attr(feature = "schema", schemars(with = "Option<serde_json::Value>"))]
+    pub compare: serde_json::Value,
+    /// Whether time stands still.
+    pub paused: bool,
+    /// Frames since the last reset.
+    pub frame: u64,
+    /// Simulated time, seconds.
+    pub time_s: f64,
+    /// Frames per second drawn.
+    pub fps: f64,
+    /// Simulation time per frame, µs.
+    pub sim_us_per_frame: f64,
+    /// The wasm memory's size (browser only).
+    pub wasm_memory_bytes: Option<f64>,
+    /// Live heap bytes (browser only).
+    pub wasm_heap_live_bytes: Option<usize>,
+    /// Peak heap bytes (browser only).
+    pub wasm_heap_peak_bytes: Option<usize>,
+    /// The 3-D view's rectangle, `[x, y, width, height]` px.
+    pub view_rect_px: [f32; 4],
+    /// The skeleton's joint count.
+    pub joints: usize,
+    /// The views (one; a comparison's are in `compare`).
+    pub views: [ViewState; 1],
+    /// View flags.
+    pub view_options: ViewOptions,
+    /// Solver options.
+    pub ik: IkState,
+    /// Whether the plots show.
+    pub plots: bool,
+    /// The preset editor.
+    pub editor: EditorState,
+    /// The walking direction, degrees.
+    pub heading_deg: f64,
+    /// The graphics backend.
+    pub backend: Option<String>,
+    /// The orbit camera.
+    pub camera: CameraState,
+    /// The plotted joints' names.
+    pub plot_joints: Vec<String>,
+    /// The motion take.
+    pub recording: RecordingState,
+    /// `system`, `light` or `dark`.
+    pub theme: &'static str,
+    /// Whether the dark colours show.
+    pub dark: bool,
+    /// The page layout.
+    pub layout: LayoutState,
+    /// The video recording.
+    pub video: VideoState,
+    /// The last error shown.
+    pub last_error: Option<String>,
+}
+
+impl State {
+    /// The lab's state (the one place that reads the lab's fields for `state()`).
+    #[must_use]
+    pub fn of(lab: &Lab) -> Self {
+        let skeleton = &lab.session.creature.skeleton;
+        let report = lab.stage.driver.ik_report();
+        let metrics = lab.stage.driver.ik_metrics();
+        let effectors = skeleton
+            .effectors()
+            .iter()
+            .enumerate()
+            .map(|(e, effector)| EffectorState {
+                name: effector.name.clone(),
+                error_m: report.and_then(|r| r.effector_error_m.get(e).copied()),
+                mean_error_m: metrics.and_then(|m| m.mean_error_m(e)),
+                max_error_m: metrics.and_then(|m| m.max_error_m(e)),
+            })
+            .collect();
+        let settings = &lab.session.settings;
+        Self {
+            preset: lab.session.creature.name.clone(),
+            custom_preset: lab.session.custom_preset.is_some(),
+            engine: lab.session.creature.scenario.engine.name(),
+            mode: settings.mode.name(),
+            gait: lab
+                .stage
+                .driver
+                .poda()
+                .map(|d| d.gait_name().to_owned())
+                .or_else(|| lab.stage.driver.physics().map(|d| d.gait().to_owned())),
+            physics: lab.stage.driver.physics().map(physics_state),
+            poda: lab.stage.driver.poda().map(|driver| {
+                let gait = driver.gait();
+                PodaState {
+                    period_s: gait.period_s(),
+                    duty_factor: gait.duty_factor(),
+                    speed_mps: gait.speed_mps(),
+                    stroke_m: gait.stroke_m(),
+                    leg_force_n: driver.leg_force_n(),
+                    support_s: gait.support_s(),
+                    transfer_s: gait.transfer_s(),
+                    phases: gait.phases().to_vec(),
+                    step_height_m: driver.params().step_height_m,
+                    transfer_keys: driver.params().transfer_keys.clone(),
+                    path: driver.path().to_spec(),
+                    blending: gait.is_blending(),
+                    legs: driver.leg_names().map(str::to_owned).collect(),
+                    foot_slip_max_m: driver.metrics().foot_slip_max_m(),
+                    derived: lab.gait_derived.clone(),
+                }
+            }),
+            method: settings.method.name(),
+            methods: lab.compare.as_ref().map_or_else(
+                || vec![settings.method.name()],
+                |c| c.config.views.iter().map(|m| m.name()).collect(),
+            ),
+            compare: lab.compare_state(),
+            paused: lab.playback.paused,
+            frame: lab.stage.frame,
+            time_s: lab.stage.driver.time(),
+            fps: lab.playback.fps,
+            sim_us_per_frame: lab.playback.sim_us_per_frame,
+            wasm_memory_bytes: crate::memory::wasm_memory_bytes(),
+            wasm_heap_live_bytes: crate::memory::wasm_heap_bytes().map(|(live, _)| live),
+            wasm_heap_peak_bytes: crate::memory::wasm_heap_bytes().map(|(_, peak)| peak),
+            view_rect_px: lab.layout.view_rect_px,
+            joints: skeleton.joint_count(),
+            views: [ViewState {
+                method: settings.method.name(),
+                effectors,
+                creature_box_px: crate::render::viewport::figure_box(
+                    &lab.stage.scene,
+                    &lab.camera,
+                    lab.layout.view_rect_px,
+                ),
+                metrics: run_metrics(lab),
+            }],
+            view_options: settings.view.clone(),
+            ik: IkState {
+                lambda: settings.ik.lambda,
+                gamma_max: settings.ik.gamma_max,
+                max_step: settings.ik.max_step,
+                null_space_gain: settings.ik.null_space_gain,
+                enforce_limits: settings.ik.enforce_limits,
+            },
+            plots: settings.plots,
+            editor: EditorState {
+                open: lab.editor.open,
+                dirty: lab.editor.dirty(),
+                error: lab.editor.error.clone(),
+            },
+            heading_deg: settings.heading_deg,
+            backend: lab.backend.clone(),
+            camera: CameraState::of(&lab.camera, &settings.view),
+            plot_joints: lab
+                .plots
+                .joints
+                .iter()
+                .map(|&j| skeleton.joints()[j].name.clone())
+                .collect(),
+            recording: RecordingState {
+                active: lab.take.recording(),
+                frames: lab.take.take().map_or(0, gaitlab_engine::Take::frames),
+                seconds: lab.take.take().map_or(0.0, gaitlab_engine::Take::seconds),
+                last_s: settings.export_last_s,
+            },
+            theme: settings.theme.name(),
+            dark: lab.layout.dark_mode,
+            layout: LayoutState {
+                narrow: lab.layout.narrow,
+                controls_open: lab.layout.controls_open,
+                controls_button_pt: lab.layout.controls_button_pt,
+            },
+            video: VideoState {
+                recording: lab.video.recording,
+                frames: lab.video.frames,
+                encoder: lab.video.encoder,
+                skipped: lab.video.skipped,
+                seconds: lab.video.seconds,
+                size: settings.video_size.name(),
+            },
+            last_error: lab.session.last_error.clone(),
+        }
+    }
+}
+
+fn physics_state(driver: &gaitlab_physics::PhysicsDriver) -> PhysicsState {
+    let s = driver.summary();
+    let probe = driver.probe();
+    PhysicsState {
+        model: driver.params().model.name(),
+        scale: driver.params().scale,
+        phase: driver.phase_name(),
+        speed_desired_mps: driver.params().speed_mps,
+        hop_height_m: driver.params().hop_height_m,
+        heading_deg: driver.heading().to_degrees(),
+        waypoint: driver.waypoint(),
+        speed_mean_mps: s.speed_mean_mps,
+        fell: s.fell,
+        resets: driver.resets(),
+        height_m: probe.height_m,
+        pitch_deg: probe.pitch_deg,
+        roll_deg: probe.roll_deg,
+        stride_length_m: s.stride_length_m,
+        stride_duration_s: s.stride_duration_s,
+        flight_duration_s: s.flight_duration_s,
+        stance_duration_s: s.stance_duration_s,
+        friction_needed_max: s.friction_needed_max,
+        steps: driver.sim().steps,
+        gains: driver
+            .gains()
+            .iter()
+            .map(|g| (g.name.to_owned(), g.value))
+            .collect(),
+    }
+}
+
+/// The figures `gaitlab run --json` prints, for the run since the last
+/// reset: the engine layer's one metrics type. Wall-time fields come from
+/// the page's smoothed time per frame; `within_limits` is the current pose's.
+fn run_metrics(lab: &Lab) -> gaitlab_engine::RunMetrics {
+    let frames = usize::try_from(lab.stage.frame).unwrap_or(usize::MAX);
+    let step_ms = lab.playback.sim_us_per_frame * lab.stage.frame as f64 / 1e3;
+    let within_limits = gaitlab_engine::metrics::pose_within_limits(
+        lab.stage.driver.skeleton(),
+        lab.stage.driver.pose(),
+    );
+    let timing = gaitlab_engine::Timing {
+        frames,
+        step_ms,
+        wall_ms: step_ms,
+        within_limits,
+    };
+    gaitlab_engine::RunMetrics::of(&lab.session.creature.name, &lab.stage.driver, &timing)
+        .with_fps(1.0 / lab.frame_seconds())
+}
+
+impl Lab {
+    /// The state as one JSON object ([`State`]).
+    #[must_use]
+    pub fn state_json(&self) -> String {
+        // Through `Value`, as the hand-built object was: f32 fields read back
+        // as the same f64 numbers.
+        serde_json::to_value(State::of(self)).map_or_else(
+            |e| format!("{{\"last_error\":\"state: {e}\"}}"),
+            |v| v.to_string(),
+        )
+    }
+}

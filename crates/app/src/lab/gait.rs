@@ -1,0 +1,159 @@
+//! The lab's gait controls: the PODA gait (Girard & Maciejewski 1985: gait
+//! name, eq. 7–8 gait values, eq. 9 phases, transfer trajectory, eq. 6
+//! centers, body path) and the physics controllers' desired speed, hop
+//! height and gains (Raibert & Hodgins 1991). Each edit goes to the engine
+//! layer's driver, which validates it; the lab only routes and words errors.
+
+use gaitlab_motion::poda::GaitError;
+
+use super::Lab;
+use super::gait_shape::GaitShapeEdit;
+use super::outbox::Effect;
+
+impl Lab {
+    /// Switches the PODA gait (blending over one cycle).
+    ///
+    /// # Errors
+    /// `gait: reason` when the engine has no gaits or the name is unknown for
+    /// the creature's leg count; nothing changes.
+    pub fn set_gait(&mut self, name: &str) -> Result<(), String> {
+        if let Some(driver) = self.stage.driver.physics_mut() {
+            driver
+                .set_gait(name)
+                .map_err(|e| format!("gait: {}", e.reason))?;
+            self.outbox.push(Effect::LinkChanged);
+            return Ok(());
+        }
+        let Some(driver) = self.stage.driver.poda_mut() else {
+            return Err(format!(
+                "gait: engine {} has no gaits (use mode)",
+                self.session.engine_name()
+            ));
+        };
+        driver.set_gait(name).map_err(|e| e.to_string())?;
+        self.outbox.push(Effect::LinkChanged);
+        Ok(())
+    }
+
+    /// Sets one PODA gait value (`period_s`, `duty_factor`, `speed_mps`,
+    /// `stroke_m`, or `leg_force_n`, each leg's upward force during support,
+    /// eq. 12–13); the gait model derives the others so that eq. 7–8 (and
+    /// eq. 13 for the force) stay true, and [`Lab::gait_derived`] names what it
+    /// derived.
+    ///
+    /// # Errors
+    /// `key: reason` when the engine has no gait, the key is unknown, or the
+    /// value (or a value derived from it) is out of range; nothing changes.
+    pub fn edit_gait(&mut self, key: &str, value: f64) -> Result<(), String> {
+        if let Some(driver) = self.stage.driver.physics_mut() {
+            return match key {
+                "speed_mps" => driver.set_speed(value).map_err(|e| e.to_string()),
+                "hop_height_m" => driver.set_hop_height(value).map_err(|e| e.to_string()),
+                _ => Err(format!(
+                    "{key}: engine physics has no such gait value (speed_mps, hop_height_m)"
+                )),
+            };
+        }
+        let Some(driver) = self.stage.driver.poda_mut() else {
+            return Err(format!(
+                "{key}: engine {} has no gait",
+                self.session.engine_name()
+            ));
+        };
+        if key == "leg_force_n" {
+            let derived = driver
+                .set_leg_force_n(value)
+                .map_err(|e| GaitError::new(key, e.reason).to_string())?;
+            self.gait_derived = derived.derived.to_vec();
+            return Ok(());
+        }
+        let gait = driver.gait_mut();
+        let derived = match key {
+            "period_s" => gait.set_period(value),
+            "duty_factor" => gait.set_duty_factor(value),
+            "speed_mps" => gait.set_speed(value),
+            "stroke_m" => gait.set_stroke(value),
+            _ => return Err(format!("{key}: not a gait value")),
+        }
+        .map_err(|e| e.to_string())?;
+        self.gait_derived = derived.derived.to_vec();
+        Ok(())
+    }
+
+    /// Sets a physics controller gain by name (the Gains sliders and the
+    /// `gain` command).
+    ///
+    /// # Errors
+    /// `gain: …` when the engine is not physics, `gain.NAME: reason` for an
+    /// unknown gain or a negative or non-finite value; nothing changes.
+    pub fn set_gain(&mut self, name: &str, value: f64) -> Result<(), String> {
+        let engine = self.session.engine_name();
+        let Some(driver) = self.stage.driver.physics_mut() else {
+            return Err(format!("gain: engine {engine} has no controller gains"));
+        };
+        driver.set_gain(name, value)
+    }
+
+    /// Sets leg `leg`'s relative phase (eq. 9), the step height or the
+    /// transfer key positions of the PODA gait.
+    ///
+    /// # Errors
+    /// `key: reason` when the engine has no gait or the value is out of
+    /// range; nothing changes.
+    pub fn edit_gait_shape(&mut self, edit: GaitShapeEdit<'_>) -> Result<(), String> {
+        let engine = self.session.engine_name();
+        let Some(driver) = self.stage.driver.poda_mut() else {
+            return Err(format!("gait: engine {engine} has no gait"));
+        };
+        match edit {
+            GaitShapeEdit::Phase { leg, phase } => driver
+                .gait_mut()
+                .set_phase(leg, phase)
+                .map(drop)
+                .map_err(|e| format!("phases[{leg}]: {}", e.reason)),
+            GaitShapeEdit::StepHeight(height) => {
+                driver.set_step_height(height).map_err(|e| e.to_string())
+            }
+            GaitShapeEdit::TransferKeys(keys) => {
+                driver.set_transfer_keys(keys).map_err(|e| e.to_string())
+            }
+        }
+    }
+
+    /// Sets a PODA leg joint's center angle (radians, or metres for prismatic
+    /// joints) and gain (eq. 6).
+    ///
+    /// # Errors
+    /// `center.…: reason`; nothing changes.
+    pub fn set_center(&mut self, joint: &str, center: f64, gain: f64) -> Result<(), String> {
+        let engine = self.session.engine_name();
+        let Some(driver) = self.stage.driver.poda_mut() else {
+            return Err(format!(
+                "center: engine {engine} sets centers in its IK panel"
+            ));
+        };
+        driver
+            .set_center(joint, center, gain)
+            .map_err(|e| e.to_string())
+    }
+
+    /// Replaces the PODA body path (the body joins it where it is closest).
+    ///
+    /// # Errors
+    /// `path.…: reason`; nothing changes.
+    pub fn set_path(&mut self, spec: &gaitlab_core::preset::PathSpec) -> Result<(), String> {
+        let engine = self.session.engine_name();
+        let Some(driver) = self.stage.driver.poda_mut() else {
+            return Err(format!("path: engine {engine} has no body path"));
+        };
+        driver.set_path(spec).map_err(|e| e.to_string())?;
+        self.refresh_scene();
+        Ok(())
+    }
+
+    /// What the last gait edit derived (e.g. `support_s`, `period_s`).
+    #[must_use]
+    pub fn gait_derived(&self) -> &[&'static str] {
+        &self.gait_derived
+    }
+}

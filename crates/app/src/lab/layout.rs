@@ -1,0 +1,34 @@
+//! The lab's layout as last drawn: wide or phone layout (and whether a test
+//! forced it), the phone drawer, the light or dark visuals and where the 3-D
+//! view lies on the canvas (`state().layout`, `view_rect_px`, `dark`).
+
+/// What the last frame's layout was.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Layout {
+    /// Forces the phone layout on or off (`None`: by the screen width).
+    pub narrow_override: Option<bool>,
+    /// Whether the last frame used the phone layout (controls in a drawer).
+    pub narrow: bool,
+    /// Whether the phone layout's controls drawer is open.
+    pub controls_open: bool,
+    /// The phone layout's "Controls" button, points (CSS pixels) `[x, y, w, h]`
+    /// (zeros in the wide layout), for tests that tap it.
+    pub controls_button_pt: [f32; 4],
+    /// Whether the last frame was drawn with dark visuals.
+    pub dark_mode: bool,
+    /// The 3-D view's rectangle on the canvas, physical pixels `[x, y, w, h]`.
+    pub view_rect_px: [f32; 4],
+}
+
+impl Default for Layout {
+    fn default() -> Self {
+        Self {
+            narrow_override: None,
+            narrow: false,
+            controls_open: false,
+            controls_button_pt: [0.0; 4],
+            dark_mode: true,
+            view_rect_px: [0.0; 4],
+        }
+    }
+}

@@ -1,0 +1,218 @@
+//! The lab's layout: controls on the left, live plots at the bottom, the 3-D
+//! view in the middle, an error banner on top when something went wrong, and
+//! the keyboard shortcuts (space pause, R reset, . single step). Below
+//! [`NARROW_WIDTH_PT`] (a phone, issue 6 "Comfort") the controls become a
+//! drawer toggled from a slim top bar and the plots are hidden, so the 3-D
+//! view keeps most of the screen.
+
+use crate::lab::Lab;
+use crate::render::viewport;
+
+pub mod panels;
+mod plots;
+
+/// Below this width (points, i.e. CSS pixels) the lab takes its phone layout:
+/// the 3-D view fills the screen under a slim bar, the controls open as a
+/// drawer over the lower part of the screen, and the plots are hidden.
+pub const NARROW_WIDTH_PT: f32 = 600.0;
+
+/// Share of the screen height the phone layout's controls drawer takes.
+const DRAWER_HEIGHT_FRACTION: f32 = 0.45;
+
+impl Lab {
+    /// Shows the whole lab in `ui` and advances the animation by the frame's time.
+    pub fn ui(&mut self, ui: &mut egui::Ui) {
+        self.apply_theme(ui);
+        let dt = ui.input(|i| f64::from(i.stable_dt));
+        self.note_frame_time(dt);
+        self.keyboard(ui);
+        #[cfg(not(target_arch = "wasm32"))]
+        self.take_dropped_file(ui);
+        self.advance(dt);
+
+        self.layout.narrow = self
+            .layout
+            .narrow_override
+            .unwrap_or(ui.available_width() < NARROW_WIDTH_PT);
+        if self.layout.narrow {
+            self.phone_layout(ui);
+        } else {
+            self.layout.controls_button_pt = [0.0; 4];
+            egui::Panel::left("gaitlab-controls")
+                .resizable(true)
+                .default_size(290.0)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical().show(ui, |ui| {
+                        ui.heading("gaitlab");
+                        self.controls(ui);
+                    });
+                });
+            if self.compare.is_some() {
+                egui::Panel::bottom("gaitlab-compare")
+                    .resizable(true)
+                    .default_size(330.0)
+                    .show(ui, |ui| panels::compare_cards(ui, self));
+            } else if self.session.settings.plots {
+                egui::Panel::bottom("gaitlab-plots")
+                    .resizable(true)
+                    .default_size(170.0)
+                    .show(ui, |ui| self.plots_ui(ui));
+            }
+        }
+        panels::editor_window(&ui.ctx().clone(), self);
+        egui::CentralPanel::default().show(ui, |ui| {
+            if let Some(error) = self.session.last_error.clone() {
+                ui.horizontal_wrapped(|ui| {
+                    ui.colored_label(
+                        egui::Color32::from_rgb(230, 90, 70),
+                        format!("Problem: {error}"),
+                    );
+                    if ui
+                        .small_button("Dismiss")
+                        .on_hover_text("Hide this message")
+                        .clicked()
+                    {
+                        self.clear_error();
+                    }
+                });
+            }
+            let rect = match &self.compare {
+                Some(compare) => {
+                    let labels: Vec<String> = compare
+                        .views()
+                        .iter()
+                        .enumerate()
+                        .map(|(i, v)| format!("{} · {}", i + 1, v.method.label()))
+                        .collect();
+                    let panes: Vec<_> = compare
+                        .views()
+                        .iter()
+                        .zip(&labels)
+                        .map(|(v, label)| (&v.stage.scene, label.as_str()))
+                        .collect();
+                    viewport::show_split(ui, &panes, &mut self.camera, &self.session.settings.view)
+                        .rect
+                }
+                None => {
+                    viewport::show(
+                        ui,
+                        &self.stage.scene,
+                        &mut self.camera,
+                        &self.session.settings.view,
+                    )
+                    .rect
+                }
+            };
+            let ppp = ui.ctx().pixels_per_point();
+            self.layout.view_rect_px = [
+                rect.min.x * ppp,
+                rect.min.y * ppp,
+                rect.width() * ppp,
+                rect.height() * ppp,
+            ];
+        });
+        if !self.playback.paused {
+            ui.ctx().request_repaint();
+        }
+    }
+
+    /// Every control panel of the registry that shows for the lab, top to
+    /// bottom (the wide layout's side panel and the phone layout's drawer).
+    fn controls(&mut self, ui: &mut egui::Ui) {
+        for panel in panels::REGISTRY {
+            if panel.shown_for(self) {
+                panel.ui(self, ui);
+            }
+        }
+    }
+
+    /// The phone layout: a slim bar (controls drawer toggle, Reset, Play,
+    /// Step) over a full-width 3-D view; the drawer, when open, takes the
+    /// lower [`DRAWER_HEIGHT_FRACTION`] of the screen with bigger touch targets.
+    fn phone_layout(&mut self, ui: &mut egui::Ui) {
+        egui::Panel::top("gaitlab-phone-bar").show(ui, |ui| {
+            ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
+            ui.horizontal_wrapped(|ui| {
+                let label = if self.layout.controls_open {
+                    "Hide controls"
+                } else {
+                    "Controls"
+                };
+                let toggle = ui
+                    .selectable_label(self.layout.controls_open, label)
+                    .on_hover_text(
+                        "Open or close the control panels over the lower part of the screen",
+                    );
+                let r = toggle.rect;
+                self.layout.controls_button_pt = [r.min.x, r.min.y, r.width(), r.height()];
+                if toggle.clicked() {
+                    self.layout.controls_open = !self.layout.controls_open;
+                }
+                panels::buttons(ui, self);
+            });
+        });
+        if !self.layout.controls_open {
+            return;
+        }
+        let height = (ui.available_height() * DRAWER_HEIGHT_FRACTION).max(160.0);
+        egui::Panel::bottom("gaitlab-phone-controls")
+            .resizable(false)
+            .exact_size(height)
+            .show(ui, |ui| {
+                let spacing = ui.spacing_mut();
+                spacing.button_padding = egui::vec2(10.0, 6.0);
+                spacing.interact_size.y = 30.0;
+                spacing.item_spacing.y = 8.0;
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    ui.set_width(ui.available_width());
+                    self.controls(ui);
+                });
+            });
+    }
+
+    /// Applies the chosen theme to egui (it takes effect from the next frame)
+    /// and notes whether this frame is dark.
+    fn apply_theme(&mut self, ui: &egui::Ui) {
+        let wanted = self.session.settings.theme.preference();
+        if ui.ctx().options(|o| o.theme_preference) != wanted {
+            ui.ctx().set_theme(wanted);
+            ui.ctx().request_repaint();
+        }
+        self.layout.dark_mode = ui.visuals().dark_mode;
+    }
+
+    /// Whether the last frame used the phone layout.
+    #[must_use]
+    pub fn narrow(&self) -> bool {
+        self.layout.narrow
+    }
+
+    /// Whether the phone layout's controls drawer is open.
+    #[must_use]
+    pub fn controls_open(&self) -> bool {
+        self.layout.controls_open
+    }
+
+    fn keyboard(&mut self, ui: &egui::Ui) {
+        if ui.ctx().egui_wants_keyboard_input() {
+            return;
+        }
+        let (space, reset, step) = ui.input(|i| {
+            (
+                i.key_pressed(egui::Key::Space),
+                i.key_pressed(egui::Key::R),
+                i.key_pressed(egui::Key::Period),
+            )
+        });
+        if space {
+            self.set_paused(!self.playback.paused);
+        }
+        if reset {
+            self.reset();
+        }
+        if step {
+            self.set_paused(true);
+            self.single_step();
+        }
+    }
+}

@@ -1,0 +1,88 @@
+//! The control panels and their registry: every panel is a type implementing
+//! [`Panel`], listed once in [`REGISTRY`] in the order they show; adding a
+//! panel touches its own file and one line here.
+
+mod buttons;
+mod compare;
+mod gait;
+mod ik;
+mod panel;
+mod path;
+mod physics;
+mod preset;
+mod readout;
+mod recording;
+mod separator;
+mod share;
+mod view;
+
+pub use buttons::buttons;
+pub use compare::cards as compare_cards;
+pub use panel::Panel;
+pub use share::editor_window;
+
+/// Every panel of the controls, top to bottom; each shows when its
+/// [`Panel::shown_for`] says so.
+pub static REGISTRY: &[&dyn Panel] = &[
+    &preset::EnginePanel,
+    &preset::PresetPanel,
+    &share::SharePanel,
+    &buttons::ButtonsPanel,
+    &separator::Separator,
+    &physics::PhysicsPanel,
+    &gait::GaitPanel,
+    &path::PathPanel,
+    &compare::SideBySidePanel,
+    &ik::MethodPanel,
+    &ik::MotionPanel,
+    &ik::SpeedAndTargetsPanel,
+    &view::ViewPanel,
+    &recording::RecordingPanel,
+    &separator::Separator,
+    &readout::ReadoutPanel,
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Lab, Settings};
+
+    /// Which panels show for a preset, by title.
+    fn shown(preset: &str) -> Vec<&'static str> {
+        let mut lab = Lab::new(Settings::default());
+        lab.set_preset(preset).expect("bundled");
+        REGISTRY
+            .iter()
+            .filter(|p| p.shown_for(&lab))
+            .map(|p| p.title())
+            .filter(|t| *t != "—")
+            .collect()
+    }
+
+    #[test]
+    fn each_engine_gets_its_panels_from_the_registry() {
+        let common = ["Engine", "Preset", "Share", "Reset / Pause / Step"];
+        let tail = ["View", "Recording", "Readout"];
+        let with = |middle: &[&'static str]| -> Vec<&'static str> {
+            common.iter().chain(middle).chain(&tail).copied().collect()
+        };
+        assert_eq!(
+            shown("human"),
+            with(&["Side by side", "Method", "Motion", "Speed"])
+        );
+        assert_eq!(
+            shown(gaitlab_engine::bundled_for_engine(
+                gaitlab_core::preset::Engine::Poda,
+                "human"
+            )),
+            with(&["Gait", "Path"])
+        );
+        assert_eq!(
+            shown(gaitlab_engine::bundled_for_engine(
+                gaitlab_core::preset::Engine::Physics,
+                "human"
+            )),
+            with(&["Physics"])
+        );
+    }
+}

@@ -1,0 +1,17 @@
+//! A separating line between groups of panels.
+
+use super::panel::Panel;
+use crate::lab::Lab;
+
+/// A horizontal line.
+pub struct Separator;
+
+impl Panel for Separator {
+    fn title(&self) -> &'static str {
+        "—"
+    }
+
+    fn ui(&self, _lab: &mut Lab, ui: &mut egui::Ui) {
+        ui.separator();
+    }
+}
