@@ -142,3 +142,25 @@ fn presets_switch_and_custom_presets_load() {
     assert_eq!(s["joints"], 20);
     assert_eq!(s["custom_preset"], true);
 }
+
+/// Saved settings that load a preset but cannot drive it fall back to the
+/// default preset and settings as one figure: the creature shown is the one
+/// the driver animates, and the reason is shown.
+#[test]
+fn settings_that_cannot_drive_fall_back_to_the_default_creature_and_driver() {
+    use gaitlab_core::driver::Driver;
+    let mut settings = Settings {
+        preset: "ik-quadruped".to_owned(),
+        ..Settings::default()
+    };
+    settings.ik.lambda = -1.0;
+    let lab = Lab::new(settings);
+    assert_eq!(lab.creature().name, gaitlab_core::preset::DEFAULT_PRESET);
+    assert_eq!(
+        lab.creature().skeleton.joint_count(),
+        lab.driver().skeleton().joint_count(),
+        "the creature and its driver are the same figure"
+    );
+    let error = lab.last_error().unwrap_or_default();
+    assert!(error.starts_with("settings.ik.lambda"), "{error}");
+}

@@ -2,25 +2,19 @@
 //! value went wrong (`gain.value`, `phases[2]`) and a short reason in the
 //! words the hand-written checks used before the types (`expected a number`).
 
+use gaitlab_core::preset::json_path;
 use serde::de::{Deserialize, Deserializer, MapAccess, Visitor};
-use serde_path_to_error::{Path, Segment};
+use serde_path_to_error::Path;
 
-/// Writes a serde path as `a.b[3].c` under `prefix` (empty for the command itself).
-fn json_path(prefix: &str, path: &Path) -> String {
-    let mut out = prefix.to_owned();
-    for segment in path.iter() {
-        match segment {
-            Segment::Seq { index } => out.push_str(&format!("[{index}]")),
-            Segment::Map { key } | Segment::Enum { variant: key } => {
-                if !out.is_empty() {
-                    out.push('.');
-                }
-                out.push_str(key);
-            }
-            Segment::Unknown => break,
-        }
+/// Writes a serde path as `a.b[3].c` under `prefix` (empty for the command
+/// itself), in the preset errors' notation (core's [`json_path`]).
+fn json_path_under(prefix: &str, path: &Path) -> String {
+    let inner = json_path(path);
+    if prefix.is_empty() || inner.is_empty() || inner.starts_with('[') {
+        format!("{prefix}{inner}")
+    } else {
+        format!("{prefix}.{inner}")
     }
-    out
 }
 
 /// What an unknown key is called under `path` (the command's own words).
@@ -50,7 +44,7 @@ pub(crate) fn describe(
     prefix: &str,
     error: &serde_path_to_error::Error<serde_json::Error>,
 ) -> String {
-    let path = json_path(prefix, error.path());
+    let path = json_path_under(prefix, error.path());
     let message = error.inner().to_string();
     let join = |field: &str| {
         if path.is_empty() {

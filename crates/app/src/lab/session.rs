@@ -71,7 +71,7 @@ impl Session {
     pub fn start(settings: Settings) -> (Self, AnyDriver) {
         let mut settings = settings;
         let mut last_error = None;
-        let creature = match bundled(&settings.preset) {
+        let mut creature = match bundled(&settings.preset) {
             Ok(creature) => creature,
             Err(error) => {
                 last_error = Some(error);
@@ -83,8 +83,11 @@ impl Session {
             Ok(driver) => driver,
             Err(error) => {
                 last_error = Some(error);
+                // Back to the default preset with default settings: the
+                // creature and its driver must stay one figure.
                 settings = Settings::default();
-                match driver_for(&default_creature(), &settings) {
+                creature = default_creature();
+                match driver_for(&creature, &settings) {
                     Ok(driver) => driver,
                     Err(error) => unreachable!("the default preset drives: {error}"),
                 }

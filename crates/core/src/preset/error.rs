@@ -73,7 +73,7 @@ impl PresetError {
 
 /// Writes a serde path as `a.b[3].c`, stopping at the first segment serde could
 /// not name (after the last key of an object, for example). Empty for the root.
-fn json_path(path: &serde_path_to_error::Path) -> String {
+pub fn json_path(path: &serde_path_to_error::Path) -> String {
     use serde_path_to_error::Segment;
     let mut out = String::new();
     for segment in path.iter() {

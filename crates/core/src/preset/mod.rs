@@ -28,7 +28,7 @@ mod validate;
 pub use build::Creature;
 pub use bundled::{DEFAULT_PRESET, bundled, bundled_json, bundled_names, load_bundled};
 pub use edit::{MAX_EDIT_PATH_CHARS, set_preset_value};
-pub use error::{PresetError, ROOT_PATH};
+pub use error::{PresetError, ROOT_PATH, json_path};
 #[cfg(feature = "schema")]
 pub use json_schema::{SCHEMA_ID, SCHEMA_TITLE, preset_schema, preset_schema_text};
 pub use limits::{MAX_EFFECTORS, MAX_JOINTS, MAX_LIMBS, MAX_NAME_CHARS, MAX_PRESET_BYTES};
