@@ -68,6 +68,21 @@ impl IkStage {
         iterations: usize,
         dt: f64,
     ) {
+        self.iterate(skeleton, root, values, iterations);
+        self.finish(skeleton, root, values, dt);
+    }
+
+    /// Runs `iterations` IK iterations on `values` toward the current targets
+    /// without measuring or recording; if the joint values go non-finite they
+    /// are restored to their starting values. Call [`IkStage::finish`] with the
+    /// pose the figure shows to close the frame.
+    pub(crate) fn iterate(
+        &mut self,
+        skeleton: &Skeleton,
+        root: &RootTransform,
+        values: &mut [f64],
+        iterations: usize,
+    ) {
         self.last_good.copy_from_slice(values);
         let mut clamped = 0;
         for _ in 0..iterations {
@@ -81,6 +96,17 @@ impl IkStage {
         self.report.iterations = iterations;
         self.report.clamped_joints = clamped;
         self.report.restored = restored;
+    }
+
+    /// Closes a frame of `dt` seconds: measures the shown pose `values` against
+    /// the targets and records the frame's figures.
+    pub(crate) fn finish(
+        &mut self,
+        skeleton: &Skeleton,
+        root: &RootTransform,
+        values: &[f64],
+        dt: f64,
+    ) {
         self.measure(skeleton, root, values);
         self.metrics.record(dt, &self.report);
     }
