@@ -44,6 +44,7 @@ fn every_bundled_preset_builds_and_is_named_after_itself() {
         names,
         [
             "human",
+            "she-2006",
             "ik-quadruped",
             "poda-quadruped",
             "poda-biped",

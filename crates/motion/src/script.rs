@@ -22,6 +22,12 @@
 //!
 //! The right limbs mirror x. The left limbs are given in [`CycleShape`].
 //!
+//! # The listing
+//! With `scenario.thesis.script` set to `listing`, the targets follow She
+//! 2006 §5.2.2's code instead ([`ListingParams`]): each target is
+//! `center + amplitude ⊙ sin(φ / ratio)` per axis, relative to the root, and
+//! the root stays at the cycle's height (no bounce, no foot lift).
+//!
 //! # Speed
 //! In the body frame the planted foot moves backward at `ω·|half.z|·|cos φ|`,
 //! fastest at mid-stance. The stride-matched speed is that peak,
@@ -34,7 +40,9 @@
 use gaitlab_core::portable::Portable;
 use std::f64::consts::{PI, TAU};
 
-use gaitlab_core::preset::thesis::{CycleShape, ThesisMode, ThesisParams};
+use gaitlab_core::preset::thesis::{
+    CycleShape, ListingCycle, ListingParams, TargetScript, ThesisMode, ThesisParams,
+};
 use glam::DVec3;
 
 /// The limbs the script moves, in [`ScriptSample::targets`] order.
@@ -131,8 +139,18 @@ impl<'a> ThesisScript<'a> {
         }
     }
 
-    /// Effective cycle frequency, `frequency_hz / slowdown`, hertz. A slowdown
-    /// that is not a positive finite number counts as 1.
+    /// The listing's cycle this mode uses (script `listing`).
+    #[must_use]
+    pub fn listing(&self) -> &'a ListingCycle {
+        if self.mode.running() {
+            &self.params.listing.run
+        } else {
+            &self.params.listing.walk
+        }
+    }
+
+    /// Effective cycle frequency, `frequency_hz / slowdown`, hertz, of the
+    /// script in use. A slowdown that is not a positive finite number counts as 1.
     #[must_use]
     pub fn frequency_hz(&self) -> f64 {
         let slowdown = self.params.slowdown;
@@ -141,7 +159,24 @@ impl<'a> ThesisScript<'a> {
         } else {
             1.0
         };
-        self.shape().frequency_hz / slowdown
+        let frequency = match self.params.script {
+            TargetScript::Lab => self.shape().frequency_hz,
+            TargetScript::Listing => self.listing().frequency_hz,
+        };
+        frequency / slowdown
+    }
+
+    /// The phase after which the script repeats, radians: 2π, or infinite when
+    /// the listing's axes have periods other than the cycle's (the driver then
+    /// keeps the phase unwrapped).
+    #[must_use]
+    pub fn phase_period(&self) -> f64 {
+        match self.params.script {
+            TargetScript::Listing if self.params.listing.axis_period_ratio != DVec3::ONE => {
+                f64::INFINITY
+            }
+            _ => TAU,
+        }
     }
 
     /// Angular frequency `ω = 2π·frequency_hz / slowdown`, radians per second.
@@ -160,8 +195,22 @@ impl<'a> ThesisScript<'a> {
     /// `ω·|front.z − back.z|/2`, metres per second (see the module docs).
     #[must_use]
     pub fn stride_matched_speed_mps(&self) -> f64 {
-        let shape = self.shape();
-        0.5 * self.angular_frequency() * (shape.front_foot.z - shape.back_foot.z).abs()
+        match self.params.script {
+            TargetScript::Lab => {
+                let shape = self.shape();
+                0.5 * self.angular_frequency() * (shape.front_foot.z - shape.back_foot.z).abs()
+            }
+            TargetScript::Listing => {
+                let cycle = self.listing();
+                let amplitude = cycle
+                    .left_foot
+                    .amplitude
+                    .z
+                    .abs()
+                    .max(cycle.right_foot.amplitude.z.abs());
+                self.angular_frequency() * amplitude / self.params.listing.axis_period_ratio.z
+            }
+        }
     }
 
     /// Forward speed of the root: 0 unless `moving_forward`, else `speed_mps`
@@ -179,6 +228,14 @@ impl<'a> ThesisScript<'a> {
     /// The targets and root height at left-limb phase `phase`, radians.
     #[must_use]
     pub fn at_phase(&self, phase: f64) -> ScriptSample {
+        match self.params.script {
+            TargetScript::Lab => self.lab_at_phase(phase),
+            TargetScript::Listing => listing_at_phase(self.listing(), &self.params.listing, phase),
+        }
+    }
+
+    /// gaitlab's own script at phase `phase` (see the module docs).
+    fn lab_at_phase(&self, phase: f64) -> ScriptSample {
         let shape = self.shape();
         let right_phase = phase - PI;
         let mirror = DVec3::new(-1.0, 1.0, 1.0);
@@ -200,6 +257,24 @@ impl<'a> ThesisScript<'a> {
     #[must_use]
     pub fn at_time(&self, t: f64) -> ScriptSample {
         self.at_phase(self.angular_frequency() * t)
+    }
+}
+
+/// The listing at phase `phase`: each target `center + amplitude ⊙ sin(φ/ratio)`
+/// raised by the root height (targets are relative to the root's ground projection).
+fn listing_at_phase(cycle: &ListingCycle, listing: &ListingParams, phase: f64) -> ScriptSample {
+    let ratio = listing.axis_period_ratio;
+    let wave = DVec3::new(
+        (phase / ratio.x).psin(),
+        (phase / ratio.y).psin(),
+        (phase / ratio.z).psin(),
+    );
+    let root = DVec3::new(0.0, cycle.root_height_m, 0.0);
+    ScriptSample {
+        targets: cycle
+            .targets()
+            .map(|target| root + target.center + target.amplitude * wave),
+        root_height_m: cycle.root_height_m,
     }
 }
 

@@ -2,14 +2,15 @@
 //! Each frame it advances the script (§5.2.2), moves the root forward
 //! ("moving forward", §6.2), places the four targets in the world, runs the
 //! chosen Jacobian IK method (§4.4, §5.3) and, in the wounded modes, applies the
-//! per-joint weights (§5.1.1, §5.2.3).
+//! per-joint weights (§5.1.1, §5.2.3): to the IK step (`wound_form` `step`) or
+//! to the angles mapped onto the body (`angle`, the IK keeping its own angles).
 
 use std::sync::Arc;
 
 use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
 use gaitlab_core::ik::{IkOptions, JointWeight, Method, Targets};
 use gaitlab_core::preset::Creature;
-use gaitlab_core::preset::thesis::{EffectorRoles, ThesisMode, ThesisParams};
+use gaitlab_core::preset::thesis::{EffectorRoles, ThesisMode, ThesisParams, WoundForm};
 use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
 
@@ -49,6 +50,9 @@ pub struct ThesisDriver {
     /// Rest orientation of every effector relative to the root.
     rest_rotation: Vec<DMat3>,
     stage: IkStage,
+    /// The IK's joint angles; the pose shows them, weighted in the wounded
+    /// modes when `wound_form` is `angle`.
+    ik_joints: Vec<f64>,
     pose: Pose,
     time: f64,
     phase: f64,
@@ -91,6 +95,7 @@ impl ThesisDriver {
                 root: RootTransform::default(),
                 joints: skeleton.rest_values(),
             },
+            ik_joints: skeleton.rest_values(),
             rest_offset: rest.effector_position.clone(),
             rest_rotation: rest.effector_rotation.clone(),
             skeleton,
@@ -305,10 +310,29 @@ impl ThesisDriver {
         }
     }
 
-    /// Sets the wounded weights in wounded modes and clears them otherwise.
+    /// Whether the wounded weights act on the shown angles this frame.
+    fn weights_on_angles(&self) -> bool {
+        self.mode.wounded() && self.params.wound_form == WoundForm::Angle
+    }
+
+    /// Maps the IK's angles onto the body: a copy, or in the wounded modes with
+    /// `wound_form` `angle`, `w·θ + add` for each wounded joint, within its limits.
+    fn show(&mut self) {
+        self.pose.joints.copy_from_slice(&self.ik_joints);
+        if self.weights_on_angles() {
+            let joints = self.skeleton.joints();
+            for &(j, weight) in &self.wounded {
+                self.pose.joints[j] =
+                    joints[j].clamp(weight.multiply * self.ik_joints[j] + weight.add);
+            }
+        }
+    }
+
+    /// Sets the wounded weights on the IK step in the wounded modes when
+    /// `wound_form` is `step`, and clears them otherwise.
     fn apply_weights(&mut self) {
         self.stage.solver.clear_weights();
-        if self.mode.wounded() {
+        if self.mode.wounded() && self.params.wound_form == WoundForm::Step {
             for &(joint, weight) in &self.wounded {
                 self.stage.solver.set_weight(joint, weight);
             }
@@ -323,21 +347,23 @@ impl Driver for ThesisDriver {
         }
         let (omega, speed) = self.rates();
         self.time += dt;
-        self.phase = (self.phase + omega * dt) % std::f64::consts::TAU;
+        self.phase = (self.phase + omega * dt) % self.script().phase_period();
         self.distance += speed * start_blend(self.time, self.params.start_ramp_s) * dt;
         self.place();
         IkStage::relax(
             &self.skeleton,
-            &mut self.pose.joints,
+            &mut self.ik_joints,
             self.params.posture_gain,
         );
-        self.stage.solve(
+        self.stage.iterate(
             &self.skeleton,
             &self.pose.root,
-            &mut self.pose.joints,
+            &mut self.ik_joints,
             self.params.iterations_per_frame,
-            dt,
         );
+        self.show();
+        self.stage
+            .finish(&self.skeleton, &self.pose.root, &self.pose.joints, dt);
     }
 
     fn time(&self) -> f64 {
@@ -351,9 +377,10 @@ impl Driver for ThesisDriver {
         // A run starts as a walk and breaks into the run after the start ramp.
         self.transition_from = walking(self.mode);
         self.transition_start = self.params.start_ramp_s;
-        for (value, joint) in self.pose.joints.iter_mut().zip(self.skeleton.joints()) {
+        for (value, joint) in self.ik_joints.iter_mut().zip(self.skeleton.joints()) {
             *value = joint.rest;
         }
+        self.show();
         self.place();
         self.stage.clear();
         self.stage

@@ -27,7 +27,7 @@ impl Lab {
     pub fn start_compare(&mut self, config: CompareConfig) -> Result<(), String> {
         let Some(template) = self.stage.driver.thesis() else {
             return Err(format!(
-                "compare: engine {} has no IK methods to compare (use the ik engine: human or ik-quadruped)",
+                "compare: engine {} has no IK methods to compare (use the ik engine: human, she-2006 or ik-quadruped)",
                 self.session.engine_name()
             ));
         };

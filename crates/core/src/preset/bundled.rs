@@ -9,6 +9,10 @@ use super::{Creature, PresetError};
 const BUNDLED: &[(&str, &str)] = &[
     ("human", include_str!("../../../../presets/human.json")),
     (
+        "she-2006",
+        include_str!("../../../../presets/she-2006.json"),
+    ),
+    (
         "ik-quadruped",
         include_str!("../../../../presets/ik-quadruped.json"),
     ),

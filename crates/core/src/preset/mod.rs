@@ -18,6 +18,7 @@ mod error;
 #[cfg(feature = "schema")]
 mod json_schema;
 mod limits;
+mod listing;
 pub mod physics;
 pub mod poda;
 mod scenario;

@@ -9,6 +9,8 @@
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
+pub use super::listing::{ListingCycle, ListingParams, ListingTarget, TargetScript, WoundForm};
+
 /// The four thesis motions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -151,10 +153,14 @@ impl Default for CycleShape {
 pub struct WoundedJoint {
     /// Joint name.
     pub joint: String,
-    /// Multiply form: the joint's step is scaled by this (0 freezes it). Default 1.
+    /// Multiply form, 0 to 10: with `wound_form` `step` the joint's IK step is
+    /// scaled by this (0 freezes it); with `angle` the angle shown on the body
+    /// is (θ_shown = w·θ). Default 1.
     #[serde(default = "one")]
     pub multiply: f64,
-    /// Add form: radians added to the joint's step each iteration. Default 0.
+    /// Add form, −0.5 to 0.5 radians: with `wound_form` `step` added to the
+    /// joint's step each iteration; with `angle` added to the angle shown
+    /// (θ_shown = θ + w). Default 0.
     #[serde(default)]
     pub add: f64,
 }
@@ -194,9 +200,17 @@ impl Default for EffectorRoles {
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(default, deny_unknown_fields)]
 pub struct ThesisParams {
-    /// Walking cycle.
+    /// Which script moves the targets: gaitlab's own (`lab`, default: the
+    /// `walk`/`run` cycle shapes) or She 2006 §5.2.2's listing (`listing`).
+    pub script: TargetScript,
+    /// The listing's targets (used when `script` is `listing`).
+    pub listing: ListingParams,
+    /// How the wounded weights act: on the IK step (`step`, default, the lab's
+    /// reading) or on the angle shown on the body (`angle`, She 2006 §5.1.1).
+    pub wound_form: WoundForm,
+    /// Walking cycle (script `lab`).
     pub walk: CycleShape,
-    /// Running cycle.
+    /// Running cycle (script `lab`).
     pub run: CycleShape,
     /// Time is divided by this (≥ 1 slows the motion down). Default 1.
     pub slowdown: f64,
@@ -235,6 +249,9 @@ pub struct ThesisParams {
 impl Default for ThesisParams {
     fn default() -> Self {
         Self {
+            script: TargetScript::Lab,
+            listing: ListingParams::default(),
+            wound_form: WoundForm::Step,
             walk: CycleShape::walk(),
             run: CycleShape::run(),
             slowdown: 1.0,

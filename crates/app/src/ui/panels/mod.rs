@@ -6,6 +6,7 @@ mod buttons;
 mod compare;
 mod gait;
 mod ik;
+mod motion;
 mod panel;
 mod path;
 mod physics;
@@ -34,8 +35,8 @@ pub static REGISTRY: &[&dyn Panel] = &[
     &path::PathPanel,
     &compare::SideBySidePanel,
     &ik::MethodPanel,
-    &ik::MotionPanel,
-    &ik::SpeedAndTargetsPanel,
+    &motion::MotionPanel,
+    &motion::SpeedAndTargetsPanel,
     &view::ViewPanel,
     &recording::RecordingPanel,
     &separator::Separator,

@@ -5,7 +5,7 @@
 use std::collections::HashMap;
 
 use crate::preset::PresetError;
-use crate::preset::thesis::{CycleShape, ThesisParams};
+use crate::preset::thesis::{CycleShape, ListingCycle, ListingParams, ThesisParams};
 
 use super::names::NamePlace;
 use super::values::check_vector;
@@ -24,6 +24,10 @@ pub const MAX_ITERATIONS_PER_FRAME: usize = 100;
 pub const MAX_WOUNDED_MULTIPLY: f64 = 10.0;
 /// Largest magnitude of a wounded `add` term, radians per iteration.
 pub const MAX_WOUNDED_ADD: f64 = 0.5;
+/// Largest listing coordinate or amplitude, metres.
+pub const MAX_LISTING_M: f64 = 10.0;
+/// Smallest and largest listing axis period ratio.
+pub const LISTING_PERIOD_RATIO: (f64, f64) = (0.1, 10.0);
 /// Longest thesis start ramp, seconds.
 pub const MAX_START_RAMP_S: f64 = 10.0;
 
@@ -59,6 +63,54 @@ fn check_cycle(prefix: &str, shape: &CycleShape) -> Result<(), PresetError> {
                 "must be a finite number of metres ≥ 0",
             ));
         }
+    }
+    Ok(())
+}
+
+fn check_listing_cycle(prefix: &str, cycle: &ListingCycle) -> Result<(), PresetError> {
+    let at = |field: &str| format!("{prefix}.{field}");
+    if !(cycle.frequency_hz > 0.0 && cycle.frequency_hz <= MAX_FREQUENCY_HZ) {
+        return Err(PresetError::new(
+            at("frequency_hz"),
+            format!("must be in (0, {MAX_FREQUENCY_HZ}] Hz"),
+        ));
+    }
+    if !(cycle.root_height_m > 0.0 && cycle.root_height_m <= MAX_LISTING_M) {
+        return Err(PresetError::new(
+            at("root_height_m"),
+            format!("must be in (0, {MAX_LISTING_M}] metres"),
+        ));
+    }
+    for (name, target) in [
+        ("left_foot", &cycle.left_foot),
+        ("right_foot", &cycle.right_foot),
+        ("right_hand", &cycle.right_hand),
+        ("left_hand", &cycle.left_hand),
+    ] {
+        for (field, v) in [("center", target.center), ("amplitude", target.amplitude)] {
+            let path = at(&format!("{name}.{field}"));
+            check_vector(&path, v)?;
+            if v.abs().max_element() > MAX_LISTING_M {
+                return Err(PresetError::new(
+                    path,
+                    format!("each coordinate must be within ±{MAX_LISTING_M} metres"),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+fn check_listing(prefix: &str, listing: &ListingParams) -> Result<(), PresetError> {
+    check_listing_cycle(&format!("{prefix}.walk"), &listing.walk)?;
+    check_listing_cycle(&format!("{prefix}.run"), &listing.run)?;
+    let (lo, hi) = LISTING_PERIOD_RATIO;
+    let ratio = listing.axis_period_ratio;
+    if !(ratio.is_finite() && ratio.min_element() >= lo && ratio.max_element() <= hi) {
+        return Err(PresetError::new(
+            format!("{prefix}.axis_period_ratio"),
+            format!("each ratio must be between {lo} and {hi}"),
+        ));
     }
     Ok(())
 }
@@ -109,6 +161,7 @@ pub fn check_thesis_values(prefix: &str, thesis: &ThesisParams) -> Result<(), Pr
     };
     check_cycle(&at("walk"), &thesis.walk)?;
     check_cycle(&at("run"), &thesis.run)?;
+    check_listing(&at("listing"), &thesis.listing)?;
     if !(MIN_SLOWDOWN..=MAX_SLOWDOWN).contains(&thesis.slowdown) {
         return Err(PresetError::new(
             at("slowdown"),
