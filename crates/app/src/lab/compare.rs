@@ -5,8 +5,11 @@
 use serde_json::Value;
 
 use crate::api::compare::{CompareValue, config_from_command};
-use crate::compare::{CompareConfig, Comparison};
+use crate::compare::{CompareConfig, CompareScenario, Comparison, DEFAULT_VIEWS};
 use crate::lab::{Effect, Lab};
+
+/// The bundled preset that runs She 2006 as written.
+pub const THESIS_PRESET: &str = "she-2006";
 
 impl Lab {
     /// The running comparison, if any.
@@ -41,6 +44,26 @@ impl Lab {
         self.stage.frame = 0;
         self.outbox.push(Effect::LinkChanged);
         Ok(())
+    }
+
+    /// She 2006 §5.3's comparison as the thesis runs it: opens the bundled
+    /// `she-2006` preset (the §5.2.2 listing, no posture pull) and starts the
+    /// four thesis methods side by side on the current motion.
+    ///
+    /// # Errors
+    /// As [`Lab::set_preset`] and [`Lab::start_compare`]; the lab keeps its
+    /// state where the preset cannot load.
+    pub fn compare_as_the_thesis(&mut self) -> Result<(), String> {
+        let mode = self.session.settings.mode;
+        self.set_preset(THESIS_PRESET)?;
+        self.set_mode(mode);
+        let mut base = self.session.settings.ik.clone();
+        base.method = self.session.settings.method;
+        self.start_compare(CompareConfig::new(
+            &DEFAULT_VIEWS,
+            CompareScenario::Script,
+            &base,
+        ))
     }
 
     /// Leaves the comparison (the single view carries on).
