@@ -2,7 +2,7 @@
 //! γmax and the step clamp), Motion and motion control (wounded, moving
 //! forward), Speed and Target positions.
 
-use gaitlab_core::ik::Method;
+use gaitlab_core::ik::{JacobianAt, Method};
 use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_motion::validate_params;
 
@@ -84,6 +84,26 @@ fn method_hint(method: Method) -> &'static str {
     }
 }
 
+/// Labels of She 2006 §3.2's two control ways.
+fn jacobian_at_label(way: JacobianAt) -> &'static str {
+    match way {
+        JacobianAt::Effectors => "Effectors to targets",
+        JacobianAt::Targets => "Targets to effectors",
+    }
+}
+
+/// What each control way does, for its tooltip.
+fn jacobian_at_hint(way: JacobianAt) -> &'static str {
+    match way {
+        JacobianAt::Effectors => {
+            "Jacobian at the end effectors, columns v × (s − p): the end effectors move towards the targets (the usual way)"
+        }
+        JacobianAt::Targets => {
+            "Jacobian at the targets, columns v × (t − p) (Buss's Jtarget): the targets move towards the end effectors; the error is still t − s"
+        }
+    }
+}
+
 fn mode_label(mode: ThesisMode) -> &'static str {
     match mode {
         ThesisMode::Walk => "Walking",
@@ -142,6 +162,14 @@ fn method(ui: &mut egui::Ui, lab: &mut Lab) {
             .checkbox(&mut ik.enforce_limits, "Joint limits")
             .on_hover_text("Clamp every joint to its limits after each IK iteration")
             .changed();
+        ui.label("She 2006 §3.2 control way:")
+            .on_hover_text("Where the Jacobian is taken (no effect on CCD)");
+        for way in JacobianAt::ALL {
+            changed |= ui
+                .radio_value(&mut ik.jacobian_at, way, jacobian_at_label(way))
+                .on_hover_text(jacobian_at_hint(way))
+                .changed();
+        }
         if changed {
             lab.apply_ik_options();
         }
