@@ -8,6 +8,7 @@ mod common;
 use common::{Rng, planar_arm, random_tree};
 use gaitlab_core::ik::{IkOptions, IkSolver, JacobianAt, Method, Targets};
 use gaitlab_core::jacobian::{fill_jacobian, fill_jacobian_at};
+use gaitlab_core::portable::Portable;
 use gaitlab_core::{JointKind, Kinematics, Pose, RootTransform, Skeleton};
 use glam::DVec3;
 use nalgebra::DMatrix;
@@ -224,7 +225,7 @@ fn both_ways_stretch_towards_an_unreachable_target() {
     let target = DVec3::new(2.0, 0.5, 0.0);
     let reach: f64 = LINKS.iter().sum();
     let gap = target.length() - reach;
-    let heading = target.y.atan2(target.x);
+    let heading = target.y.patan2(target.x);
     for method in [Method::Dls, Method::Sdls, Method::Pinv] {
         for way in JacobianAt::ALL {
             let r = run(method, way, target, 400);
