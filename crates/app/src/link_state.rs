@@ -39,6 +39,7 @@ pub const LINK_KEYS: &[(&str, &str)] = &[
     ("max_step", "/ik/max_step"),
     ("null_space_gain", "/ik/null_space_gain"),
     ("enforce_limits", "/ik/enforce_limits"),
+    ("jacobian_at", "/ik/jacobian_at"),
     ("heading_deg", "/heading_deg"),
     ("plots", "/plots"),
     ("plot_joints", "/plot_joints"),

@@ -11,7 +11,9 @@ use serde::de::{Deserializer, MapAccess, Visitor};
 use super::camera::CameraCommand;
 use super::compare::CompareValue;
 use super::error::{from_value, object, present};
-use super::names::{EngineName, MethodName, ModeName, SaveFormatName, ThemeName, VideoSizeName};
+use super::names::{
+    EngineName, JacobianAtName, MethodName, ModeName, SaveFormatName, ThemeName, VideoSizeName,
+};
 use crate::lab::{GaitShapeEdit, Lab};
 
 /// Longest command text accepted, bytes (a custom preset rides in `preset_json`).
@@ -180,6 +182,10 @@ pub struct Command {
     pub null_space_gain: Option<f64>,
     /// Keep joints inside their limits.
     pub enforce_limits: Option<bool>,
+    /// She 2006 §3.2's control way: `effectors` (the Jacobian at the end
+    /// effectors, which move towards the targets; the default) or `targets`
+    /// (the Jacobian at the targets: targets move towards the end effectors).
+    pub jacobian_at: Option<JacobianAtName>,
     /// The walking direction, degrees, [-180, 180].
     pub heading_deg: Option<f64>,
     /// Show the plots.
@@ -416,7 +422,7 @@ impl Lab {
         Ok(())
     }
 
-    /// The IK solver options of a command (`lambda` … `enforce_limits`),
+    /// The IK solver options of a command (`lambda` … `jacobian_at`),
     /// applied to the solver once when any is set.
     fn apply_ik_command(&mut self, c: &Command) -> Result<(), String> {
         let mut changed = false;
@@ -439,6 +445,10 @@ impl Lab {
         }
         if let Some(on) = c.enforce_limits {
             self.session.settings.ik.enforce_limits = on;
+            changed = true;
+        }
+        if let Some(way) = c.jacobian_at {
+            self.session.settings.ik.jacobian_at = way.0;
             changed = true;
         }
         if changed {

@@ -2,7 +2,7 @@
 //! strings in JSON, the app's enums once read, and an `enum` list in the
 //! schema. An unknown name reads `unknown mode "fly" (walk, run, …)`.
 
-use gaitlab_core::ik::Method;
+use gaitlab_core::ik::{JacobianAt, Method};
 use gaitlab_core::preset::Engine;
 use gaitlab_core::preset::thesis::ThesisMode;
 use serde::de::{Deserialize, Deserializer, Error as _};
@@ -84,6 +84,11 @@ named!(
     MethodName(Method), "method", Method::parse, ["transpose", "pinv", "dls", "sdls", "ccd"]
 );
 named!(
+    /// `jacobian_at`: She 2006 §3.2's control way — the Jacobian at the end
+    /// effectors (they move towards the targets) or at the targets.
+    JacobianAtName(JacobianAt), "jacobian_at", JacobianAt::parse, ["effectors", "targets"]
+);
+named!(
     /// `theme`: the colours.
     ThemeName(Theme), "theme", Theme::parse, ["system", "light", "dark"]
 );
@@ -120,6 +125,9 @@ mod tests {
         }
         for name in ["transpose", "pinv", "dls", "sdls", "ccd"] {
             assert!(Method::parse(name).is_some(), "{name}");
+        }
+        for way in JacobianAt::ALL {
+            assert!(serde_json::from_value::<JacobianAtName>(way.name().into()).is_ok());
         }
         for name in ["view", "p360", "p720", "p1080"] {
             assert!(VideoSize::parse(name).is_some(), "{name}");

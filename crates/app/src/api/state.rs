@@ -4,6 +4,7 @@
 //! that reads the lab's fields for it ([`State::of`]).
 
 use gaitlab_core::driver::Driver;
+use gaitlab_core::ik::JacobianAt;
 use serde::Serialize;
 
 use super::camera::CameraState;
@@ -135,6 +136,9 @@ pub struct IkState {
     pub null_space_gain: f64,
     /// Joints kept inside their limits.
     pub enforce_limits: bool,
+    /// She 2006 §3.2's control way: `effectors` or `targets` (where the
+    /// Jacobian is taken).
+    pub jacobian_at: JacobianAt,
 }
 
 /// `editor`: the preset editor.
@@ -361,6 +365,7 @@ impl State {
                 max_step: settings.ik.max_step,
                 null_space_gain: settings.ik.null_space_gain,
                 enforce_limits: settings.ik.enforce_limits,
+                jacobian_at: settings.ik.jacobian_at,
             },
             plots: settings.plots,
             editor: EditorState {

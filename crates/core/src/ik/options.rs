@@ -57,6 +57,59 @@ impl Method {
     }
 }
 
+/// Where the Jacobian's position columns are taken: She 2006 §3.2's "two ways to
+/// control the Jacobian formulation", read as the two Jacobians of Buss's IK code
+/// that the thesis started from (§6.1): `Jend`, columns `vⱼ × (sᵢ − pⱼ)` at the
+/// end effectors sᵢ, and `Jtarget`, columns `vⱼ × (tᵢ − pⱼ)` at the targets tᵢ.
+///
+/// In both ways the error stays e = t − s (Buss fills one dS = t − s for both
+/// Jacobians) and every method solves J Δθ ≈ e; only the lever arm changes.
+/// Prismatic columns (vⱼ) and orientation rows (vⱼ) do not depend on the point,
+/// so they are the same in both ways; CCD builds no Jacobian and ignores this.
+///
+/// Which of §3.2's sentences is which: the effectors way is the usual one
+/// ("usually … end effectors are tracking targets' positions"), so it is the
+/// second, "move end effectors towards the targets' positions". With the
+/// Jacobian at the targets, J Δθ = e asks the limb point now at tᵢ to move by
+/// eᵢ; seen from the limb, the (world-fixed) target then moves by −eᵢ = sᵢ − tᵢ,
+/// onto the effector — the first way, "move targets towards the end
+/// effectors". The thesis gives no formula for either, so this reading rests
+/// on the Buss code it names (docs/ik-control-ways.md).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(rename_all = "lowercase")]
+pub enum JacobianAt {
+    /// Columns vⱼ × (sᵢ − pⱼ) at the end effectors (Buss's `Jend`, his default):
+    /// end effectors move towards the targets. The default.
+    #[default]
+    Effectors,
+    /// Columns vⱼ × (tᵢ − pⱼ) at the targets (Buss's `Jtarget`): the thesis'
+    /// "move targets towards the end effectors".
+    Targets,
+}
+
+impl JacobianAt {
+    /// Both ways, the default first.
+    pub const ALL: [JacobianAt; 2] = [JacobianAt::Effectors, JacobianAt::Targets];
+
+    /// The name used in presets, commands, links and the CLI.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            JacobianAt::Effectors => "effectors",
+            JacobianAt::Targets => "targets",
+        }
+    }
+
+    /// Parses `effectors` or `targets` (any case).
+    #[must_use]
+    pub fn parse(name: &str) -> Option<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|way| way.name().eq_ignore_ascii_case(name))
+    }
+}
+
 /// How a joint's participation is weighted: She 2006 §5.1.1's "wounded" parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct JointWeight {
@@ -102,6 +155,10 @@ pub struct IkOptions {
     pub enforce_limits: bool,
     /// Most clamp-and-re-solve passes per iteration. Default 4.
     pub limit_passes: usize,
+    /// She 2006 §3.2's control way: the Jacobian at the end effectors (default;
+    /// effectors move towards the targets) or at the targets (Buss's `Jtarget`;
+    /// targets move towards the effectors). See [`JacobianAt`].
+    pub jacobian_at: JacobianAt,
 }
 
 impl Default for IkOptions {
@@ -115,6 +172,7 @@ impl Default for IkOptions {
             null_space_gain: 0.0,
             enforce_limits: true,
             limit_passes: 4,
+            jacobian_at: JacobianAt::Effectors,
         }
     }
 }

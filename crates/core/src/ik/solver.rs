@@ -9,6 +9,10 @@
 //! there instead of flip-flopping between "clamped" and "free" from one
 //! iteration to the next.
 //!
+//! Control way (She 2006 §3.2, [`JacobianAt`]): the Jacobian's revolute
+//! columns are taken at the effectors (default) or at the targets; the error
+//! is e = t − s either way.
+//!
 //! Weights: a multiply weight wⱼ scales column j (Δθ = W Δφ with Δφ solved for
 //! J W), so every method sees it; an add weight is added to the joint's step.
 
@@ -22,8 +26,8 @@ use super::pinv::{filtered_step, pinv_step};
 use super::sdls::{SdlsWorkspace, clamp_max_abs};
 use super::svd::ThinSvd;
 use super::transpose::transpose_step;
-use super::{IkOptions, IkStatus, JointWeight, Method, Targets};
-use crate::jacobian::fill_jacobian;
+use super::{IkOptions, IkStatus, JacobianAt, JointWeight, Method, Targets};
+use crate::jacobian::fill_jacobian_at;
 use crate::skeleton::TaskBlock;
 use crate::{Kinematics, RootTransform, Skeleton};
 
@@ -140,7 +144,8 @@ impl IkSolver {
         &self.step
     }
 
-    /// One iteration: forward kinematics at `values`, Jacobian, solve with the
+    /// One iteration: forward kinematics at `values`, Jacobian (at the effectors
+    /// or at the targets, [`IkOptions::jacobian_at`]), solve with the
     /// configured method, then `values += Δθ` within the joint limits.
     ///
     /// # Panics
@@ -178,7 +183,11 @@ impl IkSolver {
             }
             return status;
         }
-        fill_jacobian(skeleton, &self.kinematics, &mut self.jacobian);
+        let points = match self.options.jacobian_at {
+            JacobianAt::Effectors => &self.kinematics.effector_position,
+            JacobianAt::Targets => &targets.position,
+        };
+        fill_jacobian_at(skeleton, &self.kinematics, points, &mut self.jacobian);
         let mut status = self.task_error(skeleton, targets);
 
         let joints = skeleton.joints();

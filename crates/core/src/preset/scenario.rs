@@ -61,7 +61,7 @@ impl Engine {
 ///
 /// ```json
 /// {"engine": "ik", "mode": "walk", "method": "sdls", "fps": 60,
-///  "ik": {"lambda": 0.05, "limit_passes": 4},
+///  "ik": {"lambda": 0.05, "limit_passes": 4, "jacobian_at": "effectors"},
 ///  "thesis": {"iterations_per_frame": 4, "wounded": [{"joint": "left_knee", "multiply": 0.2}]}}
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -152,7 +152,7 @@ mod ik_section {
     use serde::de::Error as _;
     use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-    use crate::ik::IkOptions;
+    use crate::ik::{IkOptions, JacobianAt};
 
     /// A `method` key inside `scenario.ik`: always rejected, so that the method
     /// has one source (`scenario.method`).
@@ -184,6 +184,11 @@ mod ik_section {
         null_space_gain: f64,
         enforce_limits: bool,
         limit_passes: usize,
+        /// She 2006 §3.2's control way: `effectors` (default; the Jacobian at
+        /// the end effectors, which move towards the targets) or `targets`
+        /// (the Jacobian at the targets, Buss's `Jtarget`: targets move
+        /// towards the end effectors). The error is target − effector in both.
+        jacobian_at: JacobianAt,
     }
 
     impl Default for IkSection {
@@ -203,6 +208,7 @@ mod ik_section {
                 null_space_gain: ik.null_space_gain,
                 enforce_limits: ik.enforce_limits,
                 limit_passes: ik.limit_passes,
+                jacobian_at: ik.jacobian_at,
             }
         }
     }
@@ -217,6 +223,7 @@ mod ik_section {
                 null_space_gain: section.null_space_gain,
                 enforce_limits: section.enforce_limits,
                 limit_passes: section.limit_passes,
+                jacobian_at: section.jacobian_at,
                 ..IkOptions::default()
             }
         }
@@ -251,6 +258,7 @@ mod ik_section {
                 null_space_gain: 2.0,
                 enforce_limits: false,
                 limit_passes: 7,
+                jacobian_at: JacobianAt::Targets,
                 ..IkOptions::default()
             };
             let mut full = serde_json::to_value(&options).expect("IkOptions serialises");

@@ -1,7 +1,7 @@
 //! The IK engine's Method panel, after She 2006 §6.2's workbench: the four
 //! methods (and CCD) with λ, γmax and the step clamp.
 
-use gaitlab_core::ik::Method;
+use gaitlab_core::ik::{JacobianAt, Method};
 
 use super::panel::Panel;
 use crate::lab::Lab;
@@ -43,6 +43,26 @@ fn method_hint(method: Method) -> &'static str {
         Method::Sdls => "Selectively damped least squares: each singular direction clamped by γmax",
         Method::Ccd => {
             "Cyclic coordinate descent: turns one joint at a time to aim the effector at its target; no Jacobian"
+        }
+    }
+}
+
+/// Labels of She 2006 §3.2's two control ways.
+fn jacobian_at_label(way: JacobianAt) -> &'static str {
+    match way {
+        JacobianAt::Effectors => "Effectors to targets",
+        JacobianAt::Targets => "Targets to effectors",
+    }
+}
+
+/// What each control way does, for its tooltip.
+fn jacobian_at_hint(way: JacobianAt) -> &'static str {
+    match way {
+        JacobianAt::Effectors => {
+            "Jacobian at the end effectors, columns v × (s − p): the end effectors move towards the targets (the usual way)"
+        }
+        JacobianAt::Targets => {
+            "Jacobian at the targets, columns v × (t − p) (Buss's Jtarget): the targets move towards the end effectors; the error is still t − s"
         }
     }
 }
@@ -96,6 +116,14 @@ fn method(ui: &mut egui::Ui, lab: &mut Lab) {
             .checkbox(&mut ik.enforce_limits, "Joint limits")
             .on_hover_text("Clamp every joint to its limits after each IK iteration")
             .changed();
+        ui.label("She 2006 §3.2 control way:")
+            .on_hover_text("Where the Jacobian is taken (no effect on CCD)");
+        for way in JacobianAt::ALL {
+            changed |= ui
+                .radio_value(&mut ik.jacobian_at, way, jacobian_at_label(way))
+                .on_hover_text(jacobian_at_hint(way))
+                .changed();
+        }
         if changed {
             lab.apply_ik_options();
         }
