@@ -338,7 +338,11 @@ impl IkMetrics {
             .fold((0.0, 0_u64), |(sum, frames), m| {
                 (sum + m.jitter_sum, frames + m.jitter_frames)
             });
-        Some(if frames == 0 { 0.0 } else { sum / frames as f64 })
+        Some(if frames == 0 {
+            0.0
+        } else {
+            sum / frames as f64
+        })
     }
 }
 

@@ -15,8 +15,18 @@ fn the_human_limbs_start_below_the_shared_root_and_have_their_link_lengths() {
     for (effector, first, shared_root, length_m) in [
         ("left_foot", "left_hip_flex", None, leg_m),
         ("right_foot", "right_hip_flex", None, leg_m),
-        ("left_hand", "left_shoulder_flex", Some("thorax_twist"), 0.64),
-        ("right_hand", "right_shoulder_flex", Some("thorax_twist"), 0.64),
+        (
+            "left_hand",
+            "left_shoulder_flex",
+            Some("thorax_twist"),
+            0.64,
+        ),
+        (
+            "right_hand",
+            "right_shoulder_flex",
+            Some("thorax_twist"),
+            0.64,
+        ),
     ] {
         let e = skeleton.effector_index(effector).expect("effector exists");
         let limb = skeleton.limb(e);

@@ -39,7 +39,12 @@ pub struct Limb {
 
 impl Limb {
     /// The limb of effector `e`, given every effector's root-first chain.
-    pub(super) fn of(chains: &[Vec<usize>], joints: &[Joint], effectors: &[Effector], e: usize) -> Self {
+    pub(super) fn of(
+        chains: &[Vec<usize>],
+        joints: &[Joint],
+        effectors: &[Effector],
+        e: usize,
+    ) -> Self {
         let chain = &chains[e];
         // Chains are root-first ancestor paths, so two chains share a prefix.
         let shared = chains
@@ -51,7 +56,11 @@ impl Limb {
             .unwrap_or(0);
         let limb: Vec<usize> = chain[shared..].to_vec();
         let effector = &effectors[e];
-        let links: f64 = limb.iter().skip(1).map(|&j| joints[j].offset.length()).sum();
+        let links: f64 = limb
+            .iter()
+            .skip(1)
+            .map(|&j| joints[j].offset.length())
+            .sum();
         Self {
             shared_root: shared.checked_sub(1).map(|i| chain[i]),
             joints: limb,
