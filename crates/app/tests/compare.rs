@@ -220,3 +220,62 @@ fn picking_a_creature_of_another_engine_ends_the_comparison_quietly() {
         );
     }
 }
+
+#[test]
+fn the_views_report_reach_and_oscillation_per_effector() {
+    // She 2006 §5.3: the singularity scenario pulls every limb target to about
+    // its full reach and beyond, so some frames are out of reach; the views
+    // carry the split errors, the limbs' oscillation and the live distance
+    // beyond reach (docs/ik-metrics.md).
+    let mut lab = lab("human");
+    let command = r#"{"compare":{"views":["pinv","dls"],"scenario":"singularity"}}"#;
+    if let Err(error) = lab.command(command) {
+        panic!("{error}");
+    }
+    run(&mut lab, 4.0);
+    let state = state(&lab);
+    let Some(metrics) = state["compare"]["metrics"].as_array() else {
+        panic!("no metrics in {state}")
+    };
+    for view in metrics {
+        let method = view["method"].as_str().unwrap_or("?");
+        let Some(effectors) = view["effectors"].as_array() else {
+            panic!("{method}: no effectors in {view}")
+        };
+        assert_eq!(effectors.len(), 4, "{method}");
+        for effector in effectors {
+            let name = effector["name"].as_str().unwrap_or("?");
+            let reachable = effector["reachable"].as_f64().unwrap_or(f64::NAN);
+            let beyond_m = effector["out_of_reach_m"].as_f64().unwrap_or(f64::NAN);
+            let hz = effector["oscillation_hz"].as_f64().unwrap_or(f64::NAN);
+            println!(
+                "singularity {method:>4} {name:>10}: reachable {:.0} %, beyond reach now {:+.1} mm, \
+                 oscillation {hz:.2} Hz, error reachable {} / unreachable {} m",
+                reachable * 100.0,
+                beyond_m * 1e3,
+                effector["mean_error_reachable_m"],
+                effector["mean_error_unreachable_m"]
+            );
+            assert!(
+                (0.0..=1.0).contains(&reachable),
+                "{method} {name}: {reachable}"
+            );
+            assert!(beyond_m.abs() < 2.0, "{method} {name}: {beyond_m} m");
+            // At most one cycle per two frames at 60 fps.
+            assert!((0.0..=30.0).contains(&hz), "{method} {name}: {hz} Hz");
+        }
+        let reachable = view["reachable"].as_f64().unwrap_or(f64::NAN);
+        assert!(
+            reachable < 1.0,
+            "{method}: every frame reachable ({reachable})"
+        );
+        assert!(
+            view["mean_error_unreachable_m"].as_f64().is_some(),
+            "{method}: {view}"
+        );
+        assert!(
+            view["oscillation_hz"].as_f64().is_some(),
+            "{method}: {view}"
+        );
+    }
+}

@@ -101,15 +101,36 @@ impl RunMetrics {
     }
 }
 
-/// One effector's tracking error over a run (She 2006 §5.3's `d`), metres.
+/// One effector's tracking over a run (She 2006 §5.3's `d`, split into
+/// reachable and unreachable targets, and the oscillation §5.3 describes);
+/// docs/ik-metrics.md defines each figure.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct EffectorMetrics {
     /// Effector name.
     pub name: String,
-    /// Mean distance to its target over the finite frames.
+    /// Mean distance to its target over the finite frames, metres.
     pub mean_error_m: Option<f64>,
-    /// Largest distance to its target (infinite if a frame went non-finite).
+    /// Largest distance to its target, metres (infinite if a frame went non-finite).
     pub max_error_m: Option<f64>,
+    /// Length of the effector's limb (the joints below its chain's shared
+    /// root), metres: the reach its targets are measured against.
+    pub limb_length_m: f64,
+    /// Fraction of the frames whose target lay within the limb's length of the
+    /// limb's first joint (null before any frame).
+    pub reachable: Option<f64>,
+    /// Mean distance to its target over the frames it was reachable, metres
+    /// (null without such frames).
+    pub mean_error_reachable_m: Option<f64>,
+    /// Mean distance to its target over the frames it was out of reach, metres
+    /// (null without such frames).
+    pub mean_error_unreachable_m: Option<f64>,
+    /// Oscillation of the limb's joints, Hz: reversals of each joint's per-frame
+    /// Δθ (|Δθ| ≥ 1e-6 rad) per second, halved (two per cycle), averaged over
+    /// the joints (null for a limb without joints).
+    pub oscillation_hz: Option<f64>,
+    /// Jitter of the limb's joints: mean |Δ²θ|, radians per frame² (null for a
+    /// limb without joints).
+    pub jitter_rad: Option<f64>,
 }
 
 /// DESIGN.md's `always` and `IK` keys.
@@ -170,6 +191,12 @@ impl IkRunMetrics {
                         name: effector.name.clone(),
                         mean_error_m: metrics.mean_error_m(e),
                         max_error_m: metrics.max_error_m(e),
+                        limb_length_m: skeleton.limb(e).length_m,
+                        reachable: metrics.reachable(e),
+                        mean_error_reachable_m: metrics.mean_error_reachable_m(e),
+                        mean_error_unreachable_m: metrics.mean_error_unreachable_m(e),
+                        oscillation_hz: metrics.oscillation_hz(e),
+                        jitter_rad: metrics.jitter_rad(e),
                     })
                     .collect(),
                 metrics.sim_seconds,

@@ -1,7 +1,9 @@
 //! The IK stage shared by the IK drivers: run the frame's iterations of She
 //! 2006 §5.1.2's calculation module, then measure each effector's distance to
-//! its target (§5.3's `d`) and accumulate the metrics; plus a posture
-//! relaxation toward PODA's center angles. Allocation-free per frame.
+//! its target (§5.3's `d`) and how far the target lies beyond its limb's reach
+//! (§5.3's reachable / unreachable targets), and accumulate the metrics
+//! (docs/ik-metrics.md); plus a posture relaxation toward PODA's center angles.
+//! Allocation-free per frame.
 
 use gaitlab_core::driver::{IkFrameReport, IkMetrics};
 use gaitlab_core::ik::{IkOptions, IkSolver, Targets};
@@ -31,12 +33,14 @@ impl IkStage {
                 rotation: vec![DMat3::IDENTITY; k],
             },
             report: IkFrameReport::new(k),
-            metrics: IkMetrics::new(k),
+            metrics: IkMetrics::new(skeleton),
             last_good: vec![0.0; skeleton.joint_count()],
         }
     }
 
-    /// Forward kinematics for the current pose, then the report's errors.
+    /// Forward kinematics for the current pose, then the report's errors and
+    /// each target's distance beyond its limb's reach (from the limb's anchor
+    /// in this pose).
     pub(crate) fn measure(&mut self, skeleton: &Skeleton, root: &RootTransform, values: &[f64]) {
         self.kinematics.update(skeleton, root, values);
         let mut max = 0.0_f64;
@@ -55,6 +59,15 @@ impl IkStage {
             };
         }
         self.report.max_error_m = max;
+        for ((beyond, limb), target) in self
+            .report
+            .out_of_reach_m
+            .iter_mut()
+            .zip(skeleton.limbs())
+            .zip(&self.targets.position)
+        {
+            *beyond = limb.out_of_reach_m(&self.kinematics, *target);
+        }
     }
 
     /// Runs `iterations` IK iterations on `values` toward the current targets,
@@ -108,7 +121,7 @@ impl IkStage {
         dt: f64,
     ) {
         self.measure(skeleton, root, values);
-        self.metrics.record(dt, &self.report);
+        self.metrics.record(dt, &self.report, values);
     }
 
     /// Moves every joint toward its PODA center angle by

@@ -4,7 +4,9 @@
 //! configuration, on the same creature, mode and parameters, advanced in lock
 //! step (same `dt`, same frame), so every view sees the same targets. Per view:
 //! tracking error (She 2006 §5.3's `d`), wall time per IK iteration, joint
-//! velocity jitter and limit hits. The "singularity" scenario pulls every limb
+//! velocity jitter and limit hits; per effector, how far its target is out of
+//! its limb's reach, the errors over reachable and unreachable frames and the
+//! limb's oscillation (docs/ik-metrics.md). The "singularity" scenario pulls every limb
 //! target to about its full reach ([`gaitlab_motion::stretch`]). Each view is a
 //! [`Stage`] over its own driver, as the lab's single view is.
 //!
@@ -18,10 +20,11 @@
 //! `metrics` array (ignored by the command), so passing it back verbatim
 //! restores the configuration; it is `null` when no comparison runs.
 
-use gaitlab_core::driver::Driver;
+use gaitlab_core::driver::{Driver, IkMetrics};
 use gaitlab_core::ik::IkOptions;
 use gaitlab_motion::ThesisDriver;
 use gaitlab_motion::stretch::StretchOptions;
+use serde::Serialize;
 use serde_json::{Value, json};
 
 use crate::history::History;
@@ -84,6 +87,90 @@ impl CompareView {
             .filter_map(|e| m.max_error_m(e))
             .fold(0.0, f64::max)
     }
+
+    /// Mean over the effectors that have it of a per-effector figure of the
+    /// driver's IK metrics (`None` when none has it).
+    fn effector_mean(&self, figure: impl Fn(&IkMetrics, usize) -> Option<f64>) -> Option<f64> {
+        let m = self.stage.driver.ik_metrics()?;
+        let (sum, count) = (0..m.effector_count())
+            .filter_map(|e| figure(m, e))
+            .fold((0.0, 0_u32), |(sum, count), v| (sum + v, count + 1));
+        (count > 0).then(|| sum / f64::from(count))
+    }
+
+    /// Oscillation of the limbs' joints since the reset, Hz, averaged over the
+    /// effectors ([`IkMetrics::oscillation_hz`]).
+    #[must_use]
+    pub fn oscillation_hz(&self) -> Option<f64> {
+        self.effector_mean(IkMetrics::oscillation_hz)
+    }
+
+    /// Fraction of frames with the target within reach since the reset,
+    /// averaged over the effectors ([`IkMetrics::reachable`]).
+    #[must_use]
+    pub fn reachable(&self) -> Option<f64> {
+        self.effector_mean(IkMetrics::reachable)
+    }
+
+    /// Mean error over the frames each target was reachable, metres, averaged
+    /// over the effectors that had such frames.
+    #[must_use]
+    pub fn mean_error_reachable_m(&self) -> Option<f64> {
+        self.effector_mean(IkMetrics::mean_error_reachable_m)
+    }
+
+    /// Mean error over the frames each target was out of reach, metres,
+    /// averaged over the effectors that had such frames.
+    #[must_use]
+    pub fn mean_error_unreachable_m(&self) -> Option<f64> {
+        self.effector_mean(IkMetrics::mean_error_unreachable_m)
+    }
+
+    /// Each effector's reach and oscillation figures: name, how far its target
+    /// is out of reach this frame (metres, negative inside), and its figures
+    /// since the reset.
+    #[must_use]
+    pub fn effectors(&self) -> Vec<EffectorFigures> {
+        let driver = &self.stage.driver;
+        let metrics = driver.ik_metrics();
+        let report = driver.ik_report();
+        driver
+            .skeleton()
+            .effectors()
+            .iter()
+            .enumerate()
+            .map(|(e, effector)| EffectorFigures {
+                name: effector.name.clone(),
+                out_of_reach_m: report.and_then(|r| r.out_of_reach_m.get(e).copied()),
+                reachable: metrics.and_then(|m| m.reachable(e)),
+                mean_error_reachable_m: metrics.and_then(|m| m.mean_error_reachable_m(e)),
+                mean_error_unreachable_m: metrics.and_then(|m| m.mean_error_unreachable_m(e)),
+                oscillation_hz: metrics.and_then(|m| m.oscillation_hz(e)),
+                jitter_rad: metrics.and_then(|m| m.jitter_rad(e)),
+            })
+            .collect()
+    }
+}
+
+/// One effector's reach and oscillation figures in a comparison view
+/// (docs/ik-metrics.md; `state().compare.metrics[i].effectors`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct EffectorFigures {
+    /// Effector name.
+    pub name: String,
+    /// How far the target lies beyond the limb's reach this frame, metres
+    /// (negative: inside by that much).
+    pub out_of_reach_m: Option<f64>,
+    /// Fraction of frames with the target within reach since the reset.
+    pub reachable: Option<f64>,
+    /// Mean error over the reachable frames, metres.
+    pub mean_error_reachable_m: Option<f64>,
+    /// Mean error over the unreachable frames, metres.
+    pub mean_error_unreachable_m: Option<f64>,
+    /// Oscillation of the limb's joints, Hz.
+    pub oscillation_hz: Option<f64>,
+    /// Mean |Δ²θ| of the limb's joints since the reset, radians per frame².
+    pub jitter_rad: Option<f64>,
 }
 
 /// A running comparison.
@@ -200,6 +287,11 @@ impl Comparison {
                     "limit_hits": v.metrics.limit_hits,
                     "frame": v.metrics.frames,
                     "time_s": v.stage.driver.time(),
+                    "oscillation_hz": v.oscillation_hz(),
+                    "reachable": v.reachable(),
+                    "mean_error_reachable_m": v.mean_error_reachable_m(),
+                    "mean_error_unreachable_m": v.mean_error_unreachable_m(),
+                    "effectors": v.effectors(),
                 })
             })
             .collect();

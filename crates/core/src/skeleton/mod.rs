@@ -4,9 +4,11 @@
 mod dh;
 mod effector;
 mod joint;
+mod reach;
 mod tree;
 
 pub use dh::{DhJoint, DhLimb};
 pub use effector::Effector;
 pub use joint::{Joint, JointKind};
+pub use reach::Limb;
 pub use tree::{AxisKind, JointShape, Skeleton, SkeletonError, TaskBlock};

@@ -4,7 +4,7 @@
 
 use std::fmt;
 
-use super::{Effector, Joint, JointKind};
+use super::{Effector, Joint, JointKind, Limb};
 
 /// Most joints a skeleton may have (DESIGN.md input limits).
 pub const MAX_JOINTS: usize = 512;
@@ -112,6 +112,8 @@ pub struct Skeleton {
     children: Vec<Vec<usize>>,
     /// For each joint, the fast paths forward kinematics may take.
     shapes: Vec<JointShape>,
+    /// For each effector, its limb: the part of its chain no other effector shares.
+    limbs: Vec<Limb>,
 }
 
 impl Skeleton {
@@ -191,7 +193,7 @@ impl Skeleton {
                 children[p].push(i);
             }
         }
-        let chains = effectors
+        let chains: Vec<Vec<usize>> = effectors
             .iter()
             .map(|effector| {
                 let mut chain = Vec::new();
@@ -205,12 +207,16 @@ impl Skeleton {
             })
             .collect();
         let shapes = joints.iter().map(JointShape::of).collect();
+        let limbs = (0..effectors.len())
+            .map(|e| Limb::of(&chains, &joints, &effectors, e))
+            .collect();
         Ok(Self {
             joints,
             effectors,
             chains,
             children,
             shapes,
+            limbs,
         })
     }
 
@@ -242,6 +248,19 @@ impl Skeleton {
     #[must_use]
     pub fn chain(&self, e: usize) -> &[usize] {
         &self.chains[e]
+    }
+
+    /// Effector `e`'s limb: the joints below its chain's shared root and their
+    /// reach (She 2006 §5.3's reachable targets; see [`Limb`]).
+    #[must_use]
+    pub fn limb(&self, e: usize) -> &Limb {
+        &self.limbs[e]
+    }
+
+    /// Every effector's limb, in effector order.
+    #[must_use]
+    pub fn limbs(&self) -> &[Limb] {
+        &self.limbs
     }
 
     /// Fast-path facts about joint `j`'s geometry.

@@ -1,7 +1,8 @@
 //! The side-by-side panels ([`crate::compare`]): the "Side by side" controls
 //! (on/off, 2 or 4 views, each view's method, the scenario) and one card per
 //! view with the method's formula, its parameters as sliders, a table of its
-//! figures and a live error plot.
+//! figures (errors, timing, jitter, limit hits, She 2006 §5.3's oscillation and
+//! reachability; docs/ik-metrics.md), a per-effector table and a live error plot.
 
 use egui_plot::{Line, Plot, PlotPoints};
 
@@ -170,6 +171,10 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
                             ("µs / iteration", format!("{:.1}", m.us_per_iteration()), "Wall time per IK iteration (forward kinematics, Jacobian, solve)"),
                             ("jitter", format!("{:.2e} rad", m.jitter_rad()), "Joint-velocity jitter: mean |Δ²θ| over the joints and the last 4 s, radians per frame²"),
                             ("limit hits", m.limit_hits.to_string(), "Times a joint ran into one of its limits since the reset"),
+                            ("oscillation", optional(view.oscillation_hz(), 1.0, "Hz", 2), "Reversals of each limb joint's per-frame Δθ (|Δθ| ≥ 1e-6 rad) per second, halved (two per cycle), averaged over the limb's joints and the effectors since the reset (She 2006 §5.3's oscillation)"),
+                            ("reachable", optional(view.reachable(), 100.0, "%", 0), "Share of frames whose target lay within the limb's length of its first joint, averaged over the effectors (She 2006 §5.3's reachable targets)"),
+                            ("error, reachable", optional(view.mean_error_reachable_m(), 1e3, "mm", 2), "Mean effector error over the frames its target was within reach, averaged over the effectors"),
+                            ("error, unreachable", optional(view.mean_error_unreachable_m(), 1e3, "mm", 2), "Mean effector error over the frames its target was out of reach, averaged over the effectors"),
                         ];
                         for (name, value, tip) in rows {
                             ui.label(name).on_hover_text(tip);
@@ -177,6 +182,7 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
                             ui.end_row();
                         }
                     });
+                effector_table(ui, i, view);
                 let points: Vec<[f64; 2]> = view
                     .stage.history
                     .points(0)
@@ -200,6 +206,45 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
     for (i, options) in edits {
         compare.set_options(i, options);
     }
+}
+
+/// `value · scale` with `decimals` decimals and `unit`, or "–" when there is none.
+fn optional(value: Option<f64>, scale: f64, unit: &str, decimals: usize) -> String {
+    value.map_or_else(
+        || "–".to_owned(),
+        |v| format!("{:.decimals$} {unit}", v * scale),
+    )
+}
+
+/// Per effector: how far its target is out of reach now, the share of frames
+/// it was reachable and its limb's oscillation.
+fn effector_table(ui: &mut egui::Ui, index: usize, view: &crate::compare::CompareView) {
+    egui::CollapsingHeader::new("per effector")
+        .id_salt(("compare-effectors", index))
+        .default_open(false)
+        .show(ui, |ui| {
+            egui::Grid::new(("compare-effector-table", index))
+                .num_columns(4)
+                .striped(true)
+                .show(ui, |ui| {
+                    for (header, tip) in [
+                        ("effector", "The end effector"),
+                        ("beyond reach", "How far the target lies beyond the limb's reach this frame, mm (negative: inside)"),
+                        ("reachable", "Share of frames with the target within reach since the reset"),
+                        ("oscillation", "Oscillation of the limb's joints since the reset, Hz"),
+                    ] {
+                        ui.small(header).on_hover_text(tip);
+                    }
+                    ui.end_row();
+                    for effector in view.effectors() {
+                        ui.small(effector.name);
+                        ui.small(optional(effector.out_of_reach_m, 1e3, "mm", 0));
+                        ui.small(optional(effector.reachable, 100.0, "%", 0));
+                        ui.small(optional(effector.oscillation_hz, 1.0, "Hz", 2));
+                        ui.end_row();
+                    }
+                });
+        });
 }
 
 /// A slider for `parameter` of `options`; whether it changed.
