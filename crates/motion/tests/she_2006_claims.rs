@@ -1,0 +1,240 @@
+//! She 2006 §5.3's statements about the four methods, as measurements on the
+//! `she-2006` preset (the §5.2.2 listing, no posture pull): 10 s of walking
+//! and of running per method at 60 frames per second, 4 iterations per frame.
+//! Each statement is a test. Where gaitlab measures something other than the
+//! thesis says, the test is named `finding_…`, asserts what gaitlab measures,
+//! and docs/she-2006.md gives the numbers (`python3 tools/she2006_table.py`).
+
+use std::sync::OnceLock;
+
+use gaitlab_core::driver::{Driver, IkMetrics};
+use gaitlab_core::ik::Method;
+use gaitlab_core::preset::thesis::ThesisMode;
+use gaitlab_core::preset::{Creature, bundled_json};
+use gaitlab_motion::ThesisDriver;
+
+const FPS: f64 = 60.0;
+const SECONDS: f64 = 10.0;
+const METHODS: [Method; 4] = [Method::Transpose, Method::Pinv, Method::Dls, Method::Sdls];
+const FEET: [&str; 2] = ["left_foot", "right_foot"];
+const HANDS: [&str; 2] = ["left_hand", "right_hand"];
+
+/// One run's figures, averaged over a pair of effectors.
+#[derive(Clone, Copy, Debug)]
+struct Pair {
+    reachable: f64,
+    error_m: f64,
+    error_reachable_m: Option<f64>,
+    oscillation_hz: f64,
+    jitter_rad: f64,
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Run {
+    feet: Pair,
+    hands: Pair,
+}
+
+fn creature() -> Creature {
+    let Some(json) = bundled_json("she-2006") else {
+        panic!("she-2006 is bundled")
+    };
+    match Creature::from_json(json) {
+        Ok(creature) => creature,
+        Err(error) => panic!("she-2006: {error}"),
+    }
+}
+
+fn pair(creature: &Creature, metrics: &IkMetrics, names: [&str; 2]) -> Pair {
+    let e = names.map(|name| match creature.skeleton.effector_index(name) {
+        Some(e) => e,
+        None => panic!("no effector {name}"),
+    });
+    let mean = |f: &dyn Fn(usize) -> Option<f64>| -> f64 {
+        e.iter().map(|&e| f(e).unwrap_or(f64::NAN)).sum::<f64>() / 2.0
+    };
+    let reachable = e
+        .iter()
+        .map(|&e| metrics.mean_error_reachable_m(e))
+        .collect::<Option<Vec<f64>>>()
+        .map(|v| v.iter().sum::<f64>() / 2.0);
+    Pair {
+        reachable: mean(&|e| metrics.reachable(e)),
+        error_m: mean(&|e| metrics.mean_error_m(e)),
+        error_reachable_m: reachable,
+        oscillation_hz: mean(&|e| metrics.oscillation_hz(e)),
+        jitter_rad: mean(&|e| metrics.jitter_rad(e)),
+    }
+}
+
+fn run(creature: &Creature, mode: ThesisMode, method: Method) -> Run {
+    let mut creature = creature.clone();
+    creature.scenario.mode = mode;
+    creature.scenario.method = method;
+    let mut driver = match ThesisDriver::for_creature(&creature) {
+        Ok(driver) => driver,
+        Err(error) => panic!("driver: {error}"),
+    };
+    for _ in 0..(SECONDS * FPS).round() as usize {
+        driver.step(1.0 / FPS);
+    }
+    let Some(metrics) = driver.ik_metrics() else {
+        panic!("the thesis driver reports IK metrics")
+    };
+    Run {
+        feet: pair(&creature, metrics, FEET),
+        hands: pair(&creature, metrics, HANDS),
+    }
+}
+
+/// Every method's walk and run, computed once for all the tests.
+fn runs() -> &'static [(Method, Run, Run)] {
+    static RUNS: OnceLock<Vec<(Method, Run, Run)>> = OnceLock::new();
+    RUNS.get_or_init(|| {
+        let creature = creature();
+        METHODS
+            .iter()
+            .map(|&method| {
+                let walk = run(&creature, ThesisMode::Walk, method);
+                let run = run(&creature, ThesisMode::Run, method);
+                println!("{}: walk {walk:?}\n      run {run:?}", method.name());
+                (method, walk, run)
+            })
+            .collect()
+    })
+}
+
+fn walk(method: Method) -> Run {
+    match runs().iter().find(|(m, _, _)| *m == method) {
+        Some((_, walk, _)) => *walk,
+        None => panic!("{} was run", method.name()),
+    }
+}
+
+fn running(method: Method) -> Run {
+    match runs().iter().find(|(m, _, _)| *m == method) {
+        Some((_, _, run)) => *run,
+        None => panic!("{} was run", method.name()),
+    }
+}
+
+/// §5.3: "Two leg target positions in walking cycle are reachable, while others
+/// are not"; running, "four targets position were set to be unreachable".
+#[test]
+fn walking_feet_are_reachable_and_everything_else_is_not() {
+    for method in METHODS {
+        let (walk, run) = (walk(method), running(method));
+        let name = method.name();
+        assert_eq!(walk.feet.reachable, 1.0, "{name}: walking feet");
+        assert!(
+            walk.hands.reachable <= 0.05,
+            "{name}: walking hands {walk:?}"
+        );
+        assert_eq!(run.feet.reachable, 0.0, "{name}: running feet");
+        assert!(run.hands.reachable <= 0.05, "{name}: running hands {run:?}");
+    }
+}
+
+/// §5.3 SDLS: "the best performance for both reachable target positions";
+/// DLS: "did not have good performance when the target position was reachable"
+/// compared with SDLS.
+#[test]
+fn sdls_tracks_reachable_targets_best() {
+    let sdls = walk(Method::Sdls)
+        .feet
+        .error_reachable_m
+        .unwrap_or(f64::NAN);
+    assert!(sdls < 1e-3, "SDLS reachable feet error {sdls} m");
+    for method in [Method::Transpose, Method::Pinv, Method::Dls] {
+        let other = walk(method).feet.error_reachable_m.unwrap_or(f64::NAN);
+        assert!(
+            sdls <= other,
+            "SDLS {sdls} m against {} {other} m",
+            method.name()
+        );
+    }
+}
+
+/// §5.3 pinv: "the walking cycle had better performance" than running.
+#[test]
+fn pinv_walks_better_than_it_runs() {
+    let (walk, run) = (walk(Method::Pinv), running(Method::Pinv));
+    assert!(walk.feet.error_m < run.feet.error_m, "{walk:?} {run:?}");
+    assert!(walk.hands.error_m < run.hands.error_m, "{walk:?} {run:?}");
+    assert!(
+        walk.hands.jitter_rad < run.hands.jitter_rad,
+        "{walk:?} {run:?}"
+    );
+}
+
+/// §5.3 pinv: "the unreachable target positions caused the rigid body to
+/// oscillate" (and DLS/SDLS are smooth): on the walking hands pinv's jitter
+/// |Δ²θ| is at least 1.5 × that of DLS and of SDLS.
+#[test]
+fn pinv_shakes_on_unreachable_hands_more_than_dls_and_sdls() {
+    let pinv = walk(Method::Pinv).hands.jitter_rad;
+    for method in [Method::Dls, Method::Sdls] {
+        let other = walk(method).hands.jitter_rad;
+        assert!(
+            pinv >= 1.5 * other,
+            "pinv {pinv} rad against {} {other} rad",
+            method.name()
+        );
+    }
+}
+
+/// §5.3 DLS: "worked substantially better than either the Jacobian Transpose
+/// Method or the Pseudoinverse Method" — on the walking feet (reachable).
+#[test]
+fn dls_tracks_the_walking_feet_better_than_transpose_and_pinv() {
+    let dls = walk(Method::Dls).feet.error_m;
+    for method in [Method::Transpose, Method::Pinv] {
+        let other = walk(method).feet.error_m;
+        assert!(
+            2.0 * dls <= other,
+            "DLS {dls} m against {} {other} m",
+            method.name()
+        );
+    }
+}
+
+/// Issue 18 asks: transpose's and pinv's oscillation on the unreachable hands
+/// at least 1.5 × DLS's and SDLS's. gaitlab measures otherwise: counted as sign
+/// changes of Δθ per second (|Δθ| ≥ 1e-6 rad), SDLS's arm reverses most often,
+/// with the smallest amplitude (its jitter is the lowest); the 1.5 × ratio holds
+/// for pinv only in jitter (see `pinv_shakes_on_unreachable_hands_…`).
+#[test]
+fn finding_sdls_hands_reverse_most_often_but_with_the_least_jitter() {
+    let sdls = walk(Method::Sdls).hands;
+    for method in [Method::Transpose, Method::Pinv, Method::Dls] {
+        let other = walk(method).hands;
+        assert!(
+            sdls.oscillation_hz > other.oscillation_hz,
+            "SDLS {} Hz against {} {} Hz",
+            sdls.oscillation_hz,
+            method.name(),
+            other.oscillation_hz
+        );
+        assert!(
+            sdls.jitter_rad < other.jitter_rad,
+            "SDLS {} rad against {} {} rad",
+            sdls.jitter_rad,
+            method.name(),
+            other.jitter_rad
+        );
+    }
+}
+
+/// §5.3 pinv "performs a little bit better than Jacobian transpose method";
+/// gaitlab measures it much worse on the listing: the walking feet miss by
+/// more than 5 × transpose's error, though no joint is shared between legs and
+/// arms (a likely cause, not checked joint by joint: the 0.2 rad step clamp
+/// scales the whole Δθ down when the stretched arms ask for large steps).
+#[test]
+fn finding_pinv_tracks_worse_than_transpose() {
+    let (pinv, transpose) = (walk(Method::Pinv), walk(Method::Transpose));
+    assert!(
+        pinv.feet.error_m > 5.0 * transpose.feet.error_m,
+        "pinv {pinv:?} transpose {transpose:?}"
+    );
+}
