@@ -23,6 +23,9 @@ pub struct EffectorState {
     pub mean_error_m: Option<f64>,
     /// Largest since the last reset, metres.
     pub max_error_m: Option<f64>,
+    /// How far this frame's target lies beyond the limb's reach, metres
+    /// (negative: within reach; see docs/ik-metrics.md).
+    pub out_of_reach_m: Option<f64>,
 }
 
 /// `views[0]`: the single view's method, errors, box on screen and run metrics.
@@ -297,6 +300,7 @@ impl State {
                 error_m: report.and_then(|r| r.effector_error_m.get(e).copied()),
                 mean_error_m: metrics.and_then(|m| m.mean_error_m(e)),
                 max_error_m: metrics.and_then(|m| m.max_error_m(e)),
+                out_of_reach_m: report.and_then(|r| r.out_of_reach_m.get(e).copied()),
             })
             .collect();
         let settings = &lab.session.settings;

@@ -32,6 +32,18 @@ fn controls(ui: &mut egui::Ui, lab: &mut Lab) {
     egui::CollapsingHeader::new("Side by side")
         .default_open(false)
         .show(ui, |ui| {
+            if ui
+                .button("She 2006 as written: 4 methods")
+                .on_hover_text(
+                    "Open the she-2006 preset (the thesis' §5.2.2 targets, no posture pull) \
+                     and run transpose, pinv, DLS and SDLS side by side on the current motion \
+                     (She 2006 §5.3)",
+                )
+                .clicked()
+                && let Err(error) = lab.compare_as_the_thesis()
+            {
+                lab.report_error(error);
+            }
             let mut on = lab.comparison().is_some();
             if ui
                 .checkbox(&mut on, "Compare methods")
@@ -171,7 +183,8 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
                             ("µs / iteration", format!("{:.1}", m.us_per_iteration()), "Wall time per IK iteration (forward kinematics, Jacobian, solve)"),
                             ("jitter", format!("{:.2e} rad", m.jitter_rad()), "Joint-velocity jitter: mean |Δ²θ| over the joints and the last 4 s, radians per frame²"),
                             ("limit hits", m.limit_hits.to_string(), "Times a joint ran into one of its limits since the reset"),
-                            ("oscillation", optional(view.oscillation_hz(), 1.0, "Hz", 2), "Reversals of each limb joint's per-frame Δθ (|Δθ| ≥ 1e-6 rad) per second, halved (two per cycle), averaged over the limb's joints and the effectors since the reset (She 2006 §5.3's oscillation)"),
+                            ("posture pull", posture_pull(view), "The lab's addition, not in She 2006: before each frame's IK every joint moves this fraction of its joint gain toward its centre angle (Motion panel; the she-2006 preset has it off)"),
+                            ("oscillation", optional(view.oscillation_hz(), 1.0, "Hz", 2), "Sign changes of each limb joint's per-frame Δθ (|Δθ| ≥ 1e-6 rad) per second, averaged over the limb's joints and the effectors since the reset (She 2006 §5.3's oscillation; a smooth swing at the gait's f Hz gives 2f)"),
                             ("reachable", optional(view.reachable(), 100.0, "%", 0), "Share of frames whose target lay within the limb's length of its first joint, averaged over the effectors (She 2006 §5.3's reachable targets)"),
                             ("error, reachable", optional(view.mean_error_reachable_m(), 1e3, "mm", 2), "Mean effector error over the frames its target was within reach, averaged over the effectors"),
                             ("error, unreachable", optional(view.mean_error_unreachable_m(), 1e3, "mm", 2), "Mean effector error over the frames its target was out of reach, averaged over the effectors"),
@@ -205,6 +218,16 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
     });
     for (i, options) in edits {
         compare.set_options(i, options);
+    }
+}
+
+/// The view's posture pull (the lab's addition): its gain, or "off (thesis)".
+fn posture_pull(view: &crate::compare::CompareView) -> String {
+    let gain = view.driver().params().posture_gain;
+    if gain > 0.0 {
+        format!("{gain:.2} (lab)")
+    } else {
+        "off (thesis)".to_owned()
     }
 }
 

@@ -1,5 +1,6 @@
 //! The readout under the controls: frame, time, display rate, the simulation's
-//! cost per frame and each effector's current error.
+//! cost per frame and each effector's current error, and by how much its
+//! target is out of reach when it is (She 2006 §5.3).
 
 use gaitlab_core::driver::Driver;
 
@@ -42,14 +43,32 @@ fn readout(ui: &mut egui::Ui, lab: &Lab) {
         ));
     }
     if let Some(report) = lab.driver().ik_report() {
-        for (effector, error) in lab
+        for (e, (effector, error)) in lab
             .creature()
             .skeleton
             .effectors()
             .iter()
             .zip(&report.effector_error_m)
+            .enumerate()
         {
-            ui.label(format!("{}: {:.2} mm", effector.name, error * 1e3));
+            let beyond = report.out_of_reach_m.get(e).copied().unwrap_or(0.0);
+            if beyond > 0.0 {
+                ui.label(
+                    egui::RichText::new(format!(
+                        "{}: {:.2} mm · target out of reach by {:.0} mm",
+                        effector.name,
+                        error * 1e3,
+                        beyond * 1e3
+                    ))
+                    .color(egui::Color32::from_rgb(0xe0, 0x80, 0x40)),
+                )
+                .on_hover_text(
+                    "The target lies farther from the limb's first joint than the limb is \
+                     long: no pose reaches it (She 2006 §5.3's unreachable target)",
+                );
+            } else {
+                ui.label(format!("{}: {:.2} mm", effector.name, error * 1e3));
+            }
         }
     }
 }

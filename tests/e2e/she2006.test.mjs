@@ -1,0 +1,87 @@
+// Browser test of She 2006 as written (issue 18): the she-2006 preset walking, the four thesis
+// methods side by side. Each view carries the §5.3 measurements: per effector whether its target
+// is within reach (feet yes, hands no, walking) and by how much it is out of reach live, and the
+// oscillation and jitter of each limb. pinv shakes on the unreachable hands (hand jitter at least
+// 1.5 × DLS's and SDLS's). The oscillation figures are shown and logged; on the listing gaitlab
+// measures SDLS's hands reversing most often (docs/she-2006.md). Screenshots: the 4 views with
+// their cards, and the single view whose readout names the out-of-reach targets.
+
+import { after, before, describe, it } from 'node:test';
+import assert from 'node:assert/strict';
+import { command, launch, loadApp, serveDist, shootCanvas, state } from './harness.mjs';
+
+const T = { timeout: 300_000 };
+
+let server;
+before(async () => { server = await serveDist(); });
+after(async () => { await server?.close(); });
+
+const byName = (effectors) => Object.fromEntries(effectors.map((e) => [e.name, e]));
+
+describe('she-2006 side by side (WebGL2)', () => {
+  let browser;
+  before(async () => { browser = await launch('webgl2'); });
+  after(async () => { await browser?.close(); });
+
+  it('shows reachability and oscillation per method on the thesis walk', T, async () => {
+    const p = await loadApp(browser, server.url);
+    try {
+      const { page } = p;
+      assert.equal(await command(page, { preset: 'she-2006', mode: 'walk' }), 'ok');
+      let s = await state(page);
+      assert.equal(s.preset, 'she-2006');
+      // The single view names the out-of-reach targets live: the hands, not the feet.
+      await page.waitForFunction(() => JSON.parse(window.gaitlab.state()).frame >= 30, null, { timeout: 60_000 });
+      s = await state(page);
+      const single = byName(s.views[0].effectors);
+      assert.ok(single.left_hand.out_of_reach_m > 0.05, `left hand beyond reach ${single.left_hand.out_of_reach_m} m`);
+      assert.ok(single.right_hand.out_of_reach_m > 0.05, `right hand beyond reach ${single.right_hand.out_of_reach_m} m`);
+      assert.ok(single.left_foot.out_of_reach_m < 0, `left foot inside reach ${single.left_foot.out_of_reach_m} m`);
+      await shootCanvas(page, 'she-2006-walk-single.png');
+
+      const views = ['transpose', 'pinv', 'dls', 'sdls'];
+      assert.equal(await command(page, { compare: { views, scenario: 'script' } }), 'ok');
+      // 10 s of simulated time.
+      await page.waitForFunction(() => JSON.parse(window.gaitlab.state()).compare.metrics[0].frame >= 600,
+        null, { timeout: 240_000, polling: 250 });
+      s = await state(page);
+      const metrics = Object.fromEntries(s.compare.metrics.map((m) => [m.method, m]));
+      for (const method of views) {
+        const m = metrics[method];
+        const e = byName(m.effectors);
+        console.log(`# she-2006 walk ${method}: oscillation ${m.oscillation_hz.toFixed(2)} Hz `
+          + `(feet ${e.left_foot.oscillation_hz.toFixed(2)}, hands ${e.left_hand.oscillation_hz.toFixed(2)}), `
+          + `hand jitter ${(e.left_hand.jitter_rad * 1e3).toFixed(3)} mrad/frame², `
+          + `reachable feet ${(e.left_foot.reachable * 100).toFixed(0)} % hands ${(e.left_hand.reachable * 100).toFixed(0)} %, `
+          + `error reachable ${(m.mean_error_reachable_m * 1e3).toFixed(2)} mm unreachable ${(m.mean_error_unreachable_m * 1e3).toFixed(1)} mm`);
+        assert.ok(Number.isFinite(m.oscillation_hz) && m.oscillation_hz > 0, `${method} oscillation ${m.oscillation_hz}`);
+        for (const foot of ['left_foot', 'right_foot']) {
+          assert.equal(e[foot].reachable, 1, `${method} ${foot} reachable`);
+          assert.ok(e[foot].out_of_reach_m < 0, `${method} ${foot} inside reach now`);
+        }
+        for (const hand of ['left_hand', 'right_hand']) {
+          assert.ok(e[hand].reachable <= 0.05, `${method} ${hand} reachable ${e[hand].reachable}`);
+        }
+      }
+      // SDLS tracks the reachable feet best (§5.3).
+      for (const method of ['transpose', 'pinv', 'dls']) {
+        assert.ok(metrics.sdls.mean_error_reachable_m <= metrics[method].mean_error_reachable_m,
+          `sdls ${metrics.sdls.mean_error_reachable_m} m vs ${method} ${metrics[method].mean_error_reachable_m} m`);
+      }
+      // pinv shakes on the unreachable hands (§5.3): hand jitter ≥ 1.5 × DLS's and SDLS's.
+      const handJitter = (method) => {
+        const e = byName(metrics[method].effectors);
+        return (e.left_hand.jitter_rad + e.right_hand.jitter_rad) / 2;
+      };
+      for (const method of ['dls', 'sdls']) {
+        assert.ok(handJitter('pinv') >= 1.5 * handJitter(method),
+          `pinv hand jitter ${handJitter('pinv')} vs ${method} ${handJitter(method)}`);
+      }
+      assert.equal(await command(page, { paused: true }), 'ok');
+      await shootCanvas(page, 'she-2006-walk-4-views.png');
+      assert.deepEqual(p.problems, [], 'no console problems');
+    } finally {
+      await p.page.close().catch(() => {});
+    }
+  });
+});
