@@ -66,7 +66,11 @@ impl IkStage {
             .zip(skeleton.limbs())
             .zip(&self.targets.position)
         {
-            *beyond = limb.out_of_reach_m(&self.kinematics, *target);
+            *beyond = limb.out_of_reach_m(
+                &self.kinematics.joint_anchor,
+                &self.kinematics.joint_position,
+                *target,
+            );
         }
     }
 

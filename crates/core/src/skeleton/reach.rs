@@ -20,7 +20,6 @@
 use glam::DVec3;
 
 use super::{Effector, Joint};
-use crate::Kinematics;
 
 /// One effector's limb: the part of its chain no other effector depends on.
 #[derive(Clone, Debug, PartialEq)]
@@ -70,99 +69,28 @@ impl Limb {
     }
 
     /// World position the reach is measured from, metres: the first limb
-    /// joint's anchor in `kinematics`' pose (the effector joint's origin for a
-    /// limb without joints). Forward kinematics must have run for the pose.
+    /// joint's anchor (`joint_anchor`, as `Kinematics::joint_anchor`) or, for
+    /// a limb without joints, the effector joint's origin (`joint_position`).
+    /// Forward kinematics must have run for the pose.
     #[must_use]
-    pub fn anchor(&self, kinematics: &Kinematics) -> DVec3 {
+    pub fn anchor(&self, joint_anchor: &[DVec3], joint_position: &[DVec3]) -> DVec3 {
         match self.joints.first() {
-            Some(&first) => kinematics.joint_anchor[first],
-            None => kinematics.joint_position[self.effector_joint],
+            Some(&first) => joint_anchor[first],
+            None => joint_position[self.effector_joint],
         }
     }
 
-    /// How far `target` lies beyond the limb's reach in `kinematics`' pose,
-    /// metres: |target − anchor| − length. Zero or negative means reachable
-    /// (She 2006 §5.3's `d ≤ 0`); NaN for a non-finite target.
+    /// How far `target` lies beyond the limb's reach in the pose whose joint
+    /// anchors and positions are given, metres: |target − anchor| − length.
+    /// Zero or negative means reachable (She 2006 §5.3's `d ≤ 0`); NaN for a
+    /// non-finite target.
     #[must_use]
-    pub fn out_of_reach_m(&self, kinematics: &Kinematics, target: DVec3) -> f64 {
-        target.distance(self.anchor(kinematics)) - self.length_m
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use glam::DVec3;
-
-    use crate::{Effector, Joint, Kinematics, RootTransform, Skeleton};
-
-    fn effector(name: &str, joint: usize, offset: DVec3) -> Effector {
-        Effector {
-            name: name.to_owned(),
-            joint,
-            offset,
-            orientation: false,
-        }
-    }
-
-    /// A 2-link planar arm hanging from the root at (0, 1, 0): links 0.5 m and
-    /// 0.3 m, reach 0.8 m from the shoulder.
-    fn two_link() -> Skeleton {
-        let joints = vec![
-            Joint::revolute("shoulder", None, DVec3::new(0.0, 1.0, 0.0), DVec3::Z),
-            Joint::revolute("elbow", Some(0), DVec3::new(0.5, 0.0, 0.0), DVec3::Z),
-        ];
-        Skeleton::new(joints, vec![effector("hand", 1, DVec3::new(0.3, 0.0, 0.0))])
-            .unwrap_or_else(|e| panic!("{e}"))
-    }
-
-    #[test]
-    fn a_two_link_arm_reaches_the_sum_of_its_links() {
-        let skeleton = two_link();
-        let limb = skeleton.limb(0);
-        assert_eq!(limb.shared_root, None);
-        assert_eq!(limb.joints, vec![0, 1]);
-        assert!((limb.length_m - 0.8).abs() < 1e-12);
-        let mut kinematics = Kinematics::new(&skeleton);
-        kinematics.update(&skeleton, &RootTransform::default(), &[0.7, -1.2]);
-        let anchor = limb.anchor(&kinematics);
-        assert!(anchor.distance(DVec3::new(0.0, 1.0, 0.0)) < 1e-12);
-        // 1 m to the right of the shoulder: 0.2 m out of reach, whatever the pose.
-        let beyond = limb.out_of_reach_m(&kinematics, DVec3::new(1.0, 1.0, 0.0));
-        assert!((beyond - 0.2).abs() < 1e-12);
-        // 0.6 m below it: 0.2 m inside.
-        let inside = limb.out_of_reach_m(&kinematics, DVec3::new(0.0, 0.4, 0.0));
-        assert!((inside + 0.2).abs() < 1e-12);
-    }
-
-    #[test]
-    fn a_shared_trunk_is_not_part_of_either_limb() {
-        // trunk → two arms of 0.4 + 0.1 m; a third effector on the trunk itself.
-        let joints = vec![
-            Joint::revolute("trunk", None, DVec3::ZERO, DVec3::Y),
-            Joint::revolute("left", Some(0), DVec3::new(0.2, 0.5, 0.0), DVec3::X),
-            Joint::revolute("left_elbow", Some(1), DVec3::new(0.0, -0.4, 0.0), DVec3::X),
-            Joint::revolute("right", Some(0), DVec3::new(-0.2, 0.5, 0.0), DVec3::X),
-        ];
-        let effectors = vec![
-            effector("left_hand", 2, DVec3::new(0.0, -0.1, 0.0)),
-            effector("right_hand", 3, DVec3::new(0.0, -0.3, 0.0)),
-            effector("head", 0, DVec3::new(0.0, 0.7, 0.0)),
-        ];
-        let skeleton = Skeleton::new(joints, effectors).unwrap_or_else(|e| panic!("{e}"));
-        let left = skeleton.limb(0);
-        assert_eq!(left.shared_root, Some(0));
-        assert_eq!(left.joints, vec![1, 2]);
-        assert!((left.length_m - 0.5).abs() < 1e-12);
-        let right = skeleton.limb(1);
-        assert_eq!(right.joints, vec![3]);
-        assert!((right.length_m - 0.3).abs() < 1e-12);
-        // The head's joint is shared: no limb joints, measured from the trunk's origin.
-        let head = skeleton.limb(2);
-        assert_eq!(head.shared_root, Some(0));
-        assert!(head.joints.is_empty());
-        assert!((head.length_m - 0.7).abs() < 1e-12);
-        let mut kinematics = Kinematics::new(&skeleton);
-        kinematics.update(&skeleton, &RootTransform::default(), &[0.3, 0.0, 0.0, 0.0]);
-        assert!(head.anchor(&kinematics).length() < 1e-12);
+    pub fn out_of_reach_m(
+        &self,
+        joint_anchor: &[DVec3],
+        joint_position: &[DVec3],
+        target: DVec3,
+    ) -> f64 {
+        target.distance(self.anchor(joint_anchor, joint_position)) - self.length_m
     }
 }

@@ -5,7 +5,8 @@
 use std::collections::HashMap;
 
 use crate::preset::PresetError;
-use crate::preset::thesis::{CycleShape, ListingCycle, ListingParams, ThesisParams};
+use crate::preset::listing::{ListingCycle, ListingParams};
+use crate::preset::thesis::{CycleShape, ThesisParams};
 
 use super::names::NamePlace;
 use super::values::check_vector;
