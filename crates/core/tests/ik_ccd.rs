@@ -4,21 +4,10 @@
 
 mod common;
 
-use common::planar_arm;
+use common::{planar_arm, tip};
 use gaitlab_core::ik::{IkOptions, IkSolver, JointWeight, Method, Targets};
-use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
+use gaitlab_core::{RootTransform, Skeleton};
 use glam::DVec3;
-
-fn tip(skeleton: &Skeleton, values: &[f64]) -> DVec3 {
-    Kinematics::of(
-        skeleton,
-        &Pose {
-            root: RootTransform::default(),
-            joints: values.to_vec(),
-        },
-    )
-    .effector_position[0]
-}
 
 fn ccd() -> IkOptions {
     IkOptions {

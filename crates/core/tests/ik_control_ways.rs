@@ -5,11 +5,11 @@
 
 mod common;
 
-use common::{Rng, planar_arm, random_tree};
+use common::{Rng, planar_arm, random_tree, tip};
 use gaitlab_core::ik::{IkOptions, IkSolver, JacobianAt, Method, Targets};
 use gaitlab_core::jacobian::{fill_jacobian, fill_jacobian_at};
 use gaitlab_core::portable::Portable;
-use gaitlab_core::{JointKind, Kinematics, Pose, RootTransform, Skeleton};
+use gaitlab_core::{JointKind, Kinematics, Pose, RootTransform};
 use glam::DVec3;
 use nalgebra::DMatrix;
 
@@ -25,17 +25,6 @@ fn options(method: Method, jacobian_at: JacobianAt) -> IkOptions {
         enforce_limits: false,
         ..IkOptions::default()
     }
-}
-
-fn effector(skeleton: &Skeleton, values: &[f64]) -> DVec3 {
-    Kinematics::of(
-        skeleton,
-        &Pose {
-            root: RootTransform::default(),
-            joints: values.to_vec(),
-        },
-    )
-    .effector_position[0]
 }
 
 fn one_target(position: DVec3) -> Targets {
@@ -76,12 +65,12 @@ fn run(method: Method, way: JacobianAt, target: DVec3, iterations: usize) -> Run
             .last_step()
             .iter()
             .fold(0.0_f64, |m, x| m.max(x.abs()));
-        if under_1mm_at.is_none() && (effector(&skeleton, &values) - target).length() < 1e-3 {
+        if under_1mm_at.is_none() && (tip(&skeleton, &values) - target).length() < 1e-3 {
             under_1mm_at = Some(i + 1);
         }
     }
     Run {
-        final_error_m: (effector(&skeleton, &values) - target).length(),
+        final_error_m: (tip(&skeleton, &values) - target).length(),
         under_1mm_at,
         path,
         last_step_rad,
@@ -148,7 +137,7 @@ fn target_jacobian_columns_are_v_cross_t_minus_p() {
 #[test]
 fn target_on_the_effector_gives_no_step_either_way() {
     let skeleton = planar_arm(&LINKS);
-    let here = effector(&skeleton, &START);
+    let here = tip(&skeleton, &START);
     for method in JACOBIAN_METHODS {
         for way in JacobianAt::ALL {
             let mut solver = IkSolver::new(&skeleton, options(method, way));
@@ -170,13 +159,13 @@ fn target_on_the_effector_gives_no_step_either_way() {
 
 /// A reachable target: the pose (1.3, −0.9, 1.1) rad puts the tip there.
 fn reachable_target() -> DVec3 {
-    effector(&planar_arm(&LINKS), &[1.3, -0.9, 1.1])
+    tip(&planar_arm(&LINKS), &[1.3, -0.9, 1.1])
 }
 
 #[test]
 fn both_ways_reach_a_reachable_target_within_1_mm() {
     let target = reachable_target();
-    let start = effector(&planar_arm(&LINKS), &START);
+    let start = tip(&planar_arm(&LINKS), &START);
     eprintln!(
         "reachable target {target:.3} m, start error {:.3} m",
         (target - start).length()

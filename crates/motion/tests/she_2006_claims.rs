@@ -5,12 +5,14 @@
 //! thesis says, the test is named `finding_…`, asserts what gaitlab measures,
 //! and docs/she-2006.md gives the numbers (`python3 tools/she2006_table.py`).
 
+mod common;
+
 use std::sync::OnceLock;
 
 use gaitlab_core::driver::{Driver, IkMetrics};
 use gaitlab_core::ik::Method;
+use gaitlab_core::preset::Creature;
 use gaitlab_core::preset::thesis::ThesisMode;
-use gaitlab_core::preset::{Creature, bundled_json};
 use gaitlab_motion::ThesisDriver;
 
 const FPS: f64 = 60.0;
@@ -33,16 +35,6 @@ struct Pair {
 struct Run {
     feet: Pair,
     hands: Pair,
-}
-
-fn creature() -> Creature {
-    let Some(json) = bundled_json("she-2006") else {
-        panic!("she-2006 is bundled")
-    };
-    match Creature::from_json(json) {
-        Ok(creature) => creature,
-        Err(error) => panic!("she-2006: {error}"),
-    }
 }
 
 fn pair(creature: &Creature, metrics: &IkMetrics, names: [&str; 2]) -> Pair {
@@ -91,7 +83,7 @@ fn run(creature: &Creature, mode: ThesisMode, method: Method) -> Run {
 fn runs() -> &'static [(Method, Run, Run)] {
     static RUNS: OnceLock<Vec<(Method, Run, Run)>> = OnceLock::new();
     RUNS.get_or_init(|| {
-        let creature = creature();
+        let creature = common::she_2006();
         METHODS
             .iter()
             .map(|&method| {

@@ -5,10 +5,12 @@
 //!
 //! Figures: `cargo test -p gaitlab-motion --test she_2006_wounds -- --nocapture`.
 
+mod common;
+
 use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::Method;
+use gaitlab_core::preset::Creature;
 use gaitlab_core::preset::thesis::{ThesisMode, WoundForm};
-use gaitlab_core::preset::{Creature, bundled_json};
 use gaitlab_motion::ThesisDriver;
 
 const FPS: f64 = 60.0;
@@ -16,16 +18,6 @@ const FPS: f64 = 60.0;
 const SETTLE_S: f64 = 2.0;
 /// Seconds measured.
 const MEASURE_S: f64 = 8.0;
-
-fn creature() -> Creature {
-    let Some(json) = bundled_json("she-2006") else {
-        panic!("she-2006 is bundled")
-    };
-    match Creature::from_json(json) {
-        Ok(creature) => creature,
-        Err(error) => panic!("she-2006: {error}"),
-    }
-}
 
 /// Range (max − min) of each of `joints` over the measured seconds, radians.
 fn ranges(
@@ -62,7 +54,7 @@ fn ranges(
 
 #[test]
 fn thesis_angle_form_leaves_the_weight_times_the_range() {
-    let creature = creature();
+    let creature = common::she_2006();
     let wounded: Vec<(usize, f64, String)> = creature
         .scenario
         .thesis

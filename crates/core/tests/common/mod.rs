@@ -2,7 +2,7 @@
 //! source and small skeletons with known geometry.
 #![allow(dead_code)]
 
-use gaitlab_core::{Effector, Joint, Skeleton};
+use gaitlab_core::{Effector, Joint, Kinematics, Pose, RootTransform, Skeleton};
 use glam::DVec3;
 
 /// A small deterministic random generator (PCG-style LCG), so tests are repeatable.
@@ -97,4 +97,16 @@ pub fn random_tree(
         })
         .collect();
     Skeleton::new(joints, effectors).expect("valid random tree")
+}
+
+/// Position of effector 0 of `skeleton` at joint `values`, root at the origin, metres.
+pub fn tip(skeleton: &Skeleton, values: &[f64]) -> DVec3 {
+    Kinematics::of(
+        skeleton,
+        &Pose {
+            root: RootTransform::default(),
+            joints: values.to_vec(),
+        },
+    )
+    .effector_position[0]
 }

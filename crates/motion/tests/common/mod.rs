@@ -1,4 +1,5 @@
-//! Shared test fixtures: the bundled human preset the thesis drivers are tuned on.
+//! Shared test fixtures: the bundled human preset the thesis drivers are tuned
+//! on, and `she-2006`.
 
 #![allow(dead_code)]
 
@@ -12,6 +13,15 @@ pub fn creature() -> Creature {
         Some(Ok(creature)) => creature,
         Some(Err(error)) => panic!("human preset: {error}"),
         None => panic!("no bundled human preset"),
+    }
+}
+
+/// The bundled `she-2006` preset: the human driven as She 2006 is written.
+pub fn she_2006() -> Creature {
+    match load_bundled("she-2006") {
+        Some(Ok(creature)) => creature,
+        Some(Err(error)) => panic!("she-2006 preset: {error}"),
+        None => panic!("no bundled she-2006 preset"),
     }
 }
 
