@@ -24,7 +24,10 @@
 //!   above the ground being chosen per motion so that §5.3's reachability holds:
 //!   walking, the foot targets lie within the legs' reach and the hands' do not;
 //!   running, none do;
-//! - `back_y_hand = front_y_hand = 0`, the running listing's hand height.
+//! - walking, `back_y_hand = front_y_hand = −0.2` (20 cm below the hip), so that
+//!   the hand targets stay beyond the arms' reach even when a method bends the
+//!   spine fully sideways toward them (at hip height, y = 0, pinv does reach
+//!   them in up to 8 % of the frames); running, the listing's y = 0.
 //!
 //! §5.2 and §5.3 also say that "each component [moves] with its own period":
 //! [`ListingParams::axis_period_ratio`] sets each axis' period as a fraction of
@@ -87,8 +90,9 @@ pub struct ListingCycle {
 impl ListingCycle {
     /// The walking listing. Feet on the ground with the root 0.90 m up and a
     /// 0.3 m stroke amplitude: the farthest foot target is 0.94 m from its hip
-    /// joint, inside the leg's 0.987 m reach. Hands at hip height, 0.8 m out:
-    /// 0.78 m or more from the shoulder, beyond the arm's 0.64 m reach.
+    /// joint, inside the leg's 0.987 m reach. Hands 0.8 m out and 0.2 m below
+    /// the hip: 0.91 m or more from the upright shoulder and still about 0.71 m
+    /// with the spine bent fully sideways, beyond the arm's 0.64 m reach.
     /// 0.9 cycles per second (gaitlab's walking frequency; the thesis leaves
     /// `walk_speed` to the user).
     #[must_use]
@@ -100,8 +104,8 @@ impl ListingCycle {
             root_height_m: height,
             left_foot: ListingTarget::new([0.35, -height, 0.0], -foot_z),
             right_foot: ListingTarget::new([-0.35, -height, 0.0], foot_z),
-            right_hand: ListingTarget::new([-0.8, 0.0, 0.0], -0.3),
-            left_hand: ListingTarget::new([0.8, 0.0, 0.0], 0.3),
+            right_hand: ListingTarget::new([-0.8, -0.2, 0.0], -0.3),
+            left_hand: ListingTarget::new([0.8, -0.2, 0.0], 0.3),
         }
     }
 
