@@ -279,3 +279,39 @@ fn the_views_report_reach_and_oscillation_per_effector() {
         );
     }
 }
+
+#[test]
+fn she_2006_as_written_opens_the_thesis_preset_with_the_four_methods() {
+    let mut lab = lab("human");
+    if let Err(error) = lab.command(r#"{"mode":"run"}"#) {
+        panic!("{error}");
+    }
+    if let Err(error) = lab.compare_as_the_thesis() {
+        panic!("{error}");
+    }
+    let before = state(&lab);
+    assert_eq!(before["preset"], "she-2006");
+    assert_eq!(before["mode"], "run", "the motion carries over");
+    let views: Vec<&str> = before["compare"]["views"]
+        .as_array()
+        .map(|v| v.iter().filter_map(Value::as_str).collect())
+        .unwrap_or_default();
+    assert_eq!(views, ["transpose", "pinv", "dls", "sdls"]);
+    let Some(compare) = lab.comparison() else {
+        panic!("comparing")
+    };
+    for view in compare.views() {
+        let params = view.driver().params();
+        assert_eq!(params.posture_gain, 0.0, "no posture pull");
+        assert_eq!(params.script.name(), "listing");
+    }
+    // Running, no target is within reach: every view's feet and hands say so.
+    run(&mut lab, 1.0);
+    let after = state(&lab);
+    let Some(metrics) = after["compare"]["metrics"].as_array() else {
+        panic!("no metrics in {after}")
+    };
+    for m in metrics {
+        assert_eq!(m["reachable"].as_f64(), Some(0.0), "{}", m["method"]);
+    }
+}
