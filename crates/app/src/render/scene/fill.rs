@@ -166,6 +166,9 @@ impl Scene {
                 frame
                     .spheres
                     .push(Sphere::new(f32_point(target), radius, TARGET_COLOR));
+                // A drawn target is part of what framing must show: an
+                // unreachable one (she-2006's hands) lies outside the figure.
+                frame.include(target);
                 if let Some(&at) = kin.effector_position.get(e)
                     && at.is_finite()
                     && at.distance(target) > 1e-4
