@@ -482,7 +482,7 @@ fn set_changes_preset_values_and_gains() {
         ),
         (
             "scenario.nope.x=1",
-            "error: --set scenario.nope.x: scenario.nope is not in the preset",
+            "error: scenario.nope: unknown field `nope`",
         ),
         (
             "no_such_gain=1",

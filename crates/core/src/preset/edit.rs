@@ -51,8 +51,10 @@ fn steps(path: &str) -> Result<Vec<Step<'_>>, PresetError> {
 }
 
 /// Sets the value at `path` in `preset` (a parsed preset file) to `value`.
-/// The last key may be new (an optional field the file left out); every
-/// object and array before it must exist.
+/// The last key may be new (an optional field the file left out), and so may
+/// an object on the way (an optional section, e.g. `scenario.ik` in
+/// `scenario.ik.lambda`: created empty, so its other fields take their
+/// defaults); a list on the way must exist.
 ///
 /// # Errors
 /// `path: reason` for a malformed path, a missing parent, or an index past
@@ -81,6 +83,9 @@ pub fn set_preset_value(preset: &mut Value, path: &str, value: Value) -> Result<
                 if i == last {
                     map.insert((*key).to_owned(), value);
                     return Ok(());
+                }
+                if !map.contains_key(*key) && matches!(steps[i + 1], Step::Key(_)) {
+                    map.insert((*key).to_owned(), Value::Object(serde_json::Map::new()));
                 }
                 at = map.get_mut(*key).ok_or_else(|| {
                     PresetError::new(path, format!("{walked} is not in the preset"))
@@ -121,6 +126,10 @@ mod tests {
         assert_eq!(preset["scenario"]["physics"]["speed_mps"], json!(2.5));
         assert_eq!(preset["scenario"]["physics"]["hop_height_m"], json!(0.2));
         assert_eq!(preset["legs"][1]["x"], json!(7));
+        // A missing section on the way is created empty.
+        set_preset_value(&mut preset, "scenario.ik.jacobian_at", json!("targets"))
+            .expect("section");
+        assert_eq!(preset["scenario"]["ik"], json!({"jacobian_at": "targets"}));
     }
 
     #[test]
@@ -132,8 +141,8 @@ mod tests {
                 .unwrap_or_else(|e| e.to_string())
         };
         assert_eq!(
-            reason("scenario.poda.gait", &mut preset),
-            "scenario.poda.gait: scenario.poda is not in the preset"
+            reason("legs2[0].x", &mut preset),
+            "legs2[0].x: legs2 is not in the preset"
         );
         assert_eq!(
             reason("legs[3].x", &mut preset),
