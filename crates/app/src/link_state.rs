@@ -39,6 +39,7 @@ pub const LINK_KEYS: &[(&str, &str)] = &[
     ("max_step", "/ik/max_step"),
     ("null_space_gain", "/ik/null_space_gain"),
     ("enforce_limits", "/ik/enforce_limits"),
+    ("limit_passes", "/ik/limit_passes"),
     ("jacobian_at", "/ik/jacobian_at"),
     ("heading_deg", "/heading_deg"),
     ("plots", "/plots"),
@@ -50,6 +51,9 @@ pub const LINK_KEYS: &[(&str, &str)] = &[
     ("paused", "/paused"),
     ("editor_open", "/editor/open"),
 ];
+
+/// The limit passes every link ran with before links carried them.
+const LEGACY_LIMIT_PASSES: usize = 4;
 
 /// The first non-null value `state` holds for command `key`.
 fn current<'a>(state: &'a Value, key: &str) -> Option<&'a Value> {
@@ -136,6 +140,12 @@ impl Lab {
             if !LINK_KEYS.iter().any(|(k, _)| k == key) {
                 errors.push(format!("link: state.{key}: not a setting links carry"));
             }
+        }
+        // Links made before `limit_passes` was a setting (2026-12-02) ran
+        // with the re-solve's 4 passes whatever their preset said.
+        if !full.state.is_empty() && !full.state.contains_key("limit_passes") {
+            self.session.settings.ik.limit_passes = LEGACY_LIMIT_PASSES;
+            self.apply_ik_options();
         }
         let mut done: Vec<&str> = Vec::with_capacity(LINK_KEYS.len());
         for (key, _) in LINK_KEYS {

@@ -305,13 +305,52 @@ fn she_2006_as_written_opens_the_thesis_preset_with_the_four_methods() {
         assert_eq!(params.posture_gain, 0.0, "no posture pull");
         assert_eq!(params.script.name(), "listing");
     }
-    // Running, no target is within reach: every view's feet and hands say so.
+    // As written: clamp-only joint limits, whatever the panel held.
+    assert_eq!(before["ik"]["limit_passes"], 1, "{}", before["ik"]);
+    // Running, no target is within reach (pinv, bending the spine, brings
+    // the left hand's within reach in one frame of the 60: ≤ 5 % of the
+    // frames allowed, as in the motion crate's she_2006_claims; the figure
+    // here is the mean over the four effectors).
     run(&mut lab, 1.0);
     let after = state(&lab);
     let Some(metrics) = after["compare"]["metrics"].as_array() else {
         panic!("no metrics in {after}")
     };
     for m in metrics {
-        assert_eq!(m["reachable"].as_f64(), Some(0.0), "{}", m["method"]);
+        let reachable = m["reachable"].as_f64().unwrap_or(f64::NAN);
+        assert!(reachable <= 0.05, "{}: {reachable}", m["method"]);
     }
+}
+
+#[test]
+fn a_preset_with_its_own_ik_options_runs_with_them_and_the_panel_keeps_its_own_otherwise() {
+    let mut lab = lab("human");
+    if let Err(error) = lab.command(r#"{"lambda":0.2}"#) {
+        panic!("{error}");
+    }
+    // human → ik-quadruped: both leave scenario.ik at the defaults, λ stays.
+    if let Err(error) = lab.set_preset("ik-quadruped") {
+        panic!("{error}");
+    }
+    assert_eq!(state(&lab)["ik"]["lambda"], 0.2);
+    assert_eq!(state(&lab)["ik"]["limit_passes"], 4);
+    // she-2006 has its own: clamp-only limits, λ back to its 0.05 m.
+    if let Err(error) = lab.set_preset("she-2006") {
+        panic!("{error}");
+    }
+    assert_eq!(state(&lab)["ik"]["limit_passes"], 1);
+    assert_eq!(state(&lab)["ik"]["lambda"], 0.05);
+    // The command key, checked in core's one range.
+    let error = lab
+        .command(r#"{"limit_passes":0}"#)
+        .err()
+        .unwrap_or_default();
+    assert_eq!(error, "limit_passes: 0: must be between 1 and 16");
+    assert_eq!(state(&lab)["ik"]["limit_passes"], 1, "nothing changed");
+    if let Err(error) = lab.command(r#"{"limit_passes":3}"#) {
+        panic!("{error}");
+    }
+    assert_eq!(state(&lab)["ik"]["limit_passes"], 3);
+    // A link carries it.
+    assert_eq!(lab.link_state()["limit_passes"], 3);
 }

@@ -49,3 +49,59 @@ fn a_link_made_before_the_listing_and_wound_forms_replays_as_before() {
         "Σ|θ| after 2 s: {sum} rad, recorded {LINK_V1_JOINT_SUM_RAD} rad"
     );
 }
+
+/// The bundled `she-2006` preset as it was on 2026-12-01, before it set
+/// `scenario.ik.limit_passes: 1` (the thesis' clamp-only joint limits).
+const SHE_2006_2026_12_01: &str = include_str!("fixtures/preset_she_2006_2026_12_01.json");
+
+/// A link of that day's she-2006, walking with DLS: before `limit_passes`
+/// was a setting links carry, so the state has none.
+fn she_2006_link_2026_12_01() -> String {
+    let state = serde_json::json!({
+        "mode": "walk", "method": "dls", "lambda": 0.05, "gamma_max": std::f64::consts::FRAC_PI_4,
+        "max_step": 0.2, "null_space_gain": 0.0, "enforce_limits": true, "jacobian_at": "effectors",
+    });
+    let Some(state) = state.as_object().cloned() else {
+        panic!("an object")
+    };
+    let link = gaitlab_app::link::FullLink {
+        preset_json: SHE_2006_2026_12_01.to_owned(),
+        bundled: Some("she-2006".to_owned()),
+        state,
+    };
+    match gaitlab_app::link::encode_full(&link) {
+        Ok(payload) => format!("https://example.org/#p={payload}"),
+        Err(error) => panic!("{error}"),
+    }
+}
+
+#[test]
+fn a_she_2006_link_made_before_limit_passes_replays_with_the_re_solve() {
+    // Even where the person's stored settings clamp alone.
+    let mut settings = Settings::default();
+    settings.ik.limit_passes = 1;
+    let mut lab = Lab::new(settings);
+    let link = she_2006_link_2026_12_01();
+    lab.open_link("", &link[link.find('#').expect("a fragment")..]);
+    assert_eq!(lab.last_error(), None);
+    let Some(thesis) = lab.driver().thesis() else {
+        panic!("the link opens on the IK engine")
+    };
+    assert_eq!(thesis.options().limit_passes, 4, "the re-solve it ran with");
+    // The same run through the engine on that day's preset (no scenario.ik:
+    // the defaults, 4 passes) gives the same angles, bit for bit.
+    let creature = match gaitlab_core::preset::Creature::from_json(SHE_2006_2026_12_01) {
+        Ok(creature) => creature,
+        Err(error) => panic!("{error}"),
+    };
+    let mut reference = match gaitlab_motion::ThesisDriver::for_creature(&creature) {
+        Ok(driver) => driver,
+        Err(error) => panic!("{error}"),
+    };
+    reference.set_method(gaitlab_core::ik::Method::Dls);
+    for _ in 0..120 {
+        lab.advance(lab.frame_seconds());
+        reference.step(lab.frame_seconds());
+    }
+    assert_eq!(lab.driver().pose().joints, reference.pose().joints);
+}

@@ -182,6 +182,10 @@ pub struct Command {
     pub null_space_gain: Option<f64>,
     /// Keep joints inside their limits.
     pub enforce_limits: Option<bool>,
+    /// Solves per IK iteration while joints hit their limits, 1 to 16: 1
+    /// clamps each joint to its limits (She 2006 §6.1.1.1); more re-solve
+    /// without the clamped joints (the lab's addition).
+    pub limit_passes: Option<usize>,
     /// She 2006 §3.2's control way: `effectors` (the Jacobian at the end
     /// effectors, which move towards the targets; the default) or `targets`
     /// (the Jacobian at the targets: targets move towards the end effectors).
@@ -445,6 +449,14 @@ impl Lab {
         }
         if let Some(on) = c.enforce_limits {
             self.session.settings.ik.enforce_limits = on;
+            changed = true;
+        }
+        if let Some(passes) = c.limit_passes {
+            let mut ik = self.session.settings.ik.clone();
+            ik.limit_passes = passes;
+            gaitlab_core::preset::check_ik_options("ik", &ik)
+                .map_err(|e| format!("limit_passes: {passes}: {}", e.reason))?;
+            self.session.settings.ik = ik;
             changed = true;
         }
         if let Some(way) = c.jacobian_at {

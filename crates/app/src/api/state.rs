@@ -139,6 +139,9 @@ pub struct IkState {
     pub null_space_gain: f64,
     /// Joints kept inside their limits.
     pub enforce_limits: bool,
+    /// Solves per IK iteration while joints hit their limits: 1 clamps (She
+    /// 2006 §6.1.1.1), more re-solve without the clamped joints (the lab's).
+    pub limit_passes: usize,
     /// She 2006 §3.2's control way: `effectors` or `targets` (where the
     /// Jacobian is taken).
     pub jacobian_at: JacobianAt,
@@ -369,6 +372,7 @@ impl State {
                 max_step: settings.ik.max_step,
                 null_space_gain: settings.ik.null_space_gain,
                 enforce_limits: settings.ik.enforce_limits,
+                limit_passes: settings.ik.limit_passes,
                 jacobian_at: settings.ik.jacobian_at,
             },
             plots: settings.plots,

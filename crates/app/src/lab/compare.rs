@@ -57,6 +57,10 @@ impl Lab {
         let mode = self.session.settings.mode;
         self.set_preset(THESIS_PRESET)?;
         self.set_mode(mode);
+        // As written: the preset's own IK options (clamp-only joint limits),
+        // whatever the panel held.
+        self.session.settings.ik = self.session.creature.scenario.ik.clone();
+        self.apply_ik_options();
         let mut base = self.session.settings.ik.clone();
         base.method = self.session.settings.method;
         self.start_compare(CompareConfig::new(

@@ -8,7 +8,7 @@
 
 use gaitlab_core::RootTransform;
 use gaitlab_core::driver::Driver;
-use gaitlab_core::ik::Method;
+use gaitlab_core::ik::{IkOptions, Method};
 use gaitlab_core::preset::Creature;
 use gaitlab_core::preset::Engine;
 use gaitlab_core::preset::thesis::ThesisMode;
@@ -203,8 +203,20 @@ impl Lab {
         self.install(creature, Some(json.to_owned()))
     }
 
+    /// Runs `creature`. Where its IK options (`scenario.ik`) differ from the
+    /// running preset's, it runs with its own, as the CLI does (she-2006's
+    /// clamp-only joint limits); otherwise the person's options stay (an
+    /// editor apply keeps a λ set in the panel). The method stays either way.
     fn install(&mut self, creature: Creature, custom: Option<String>) -> Result<(), String> {
-        let driver = session::driver_for(&creature, &self.session.settings)?;
+        let mut settings = self.session.settings.clone();
+        if creature.scenario.ik != self.session.creature.scenario.ik {
+            settings.ik = IkOptions {
+                method: settings.method,
+                ..creature.scenario.ik.clone()
+            };
+        }
+        let driver = session::driver_for(&creature, &settings)?;
+        self.session.settings.ik = settings.ik;
         self.stage = Stage::new(driver, History::default());
         self.session.creature = creature;
         self.session.custom_preset = custom;

@@ -184,6 +184,7 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
                             ("jitter", format!("{:.2e} rad", m.jitter_rad()), "Joint-velocity jitter: mean |Δ²θ| over the joints and the last 4 s, radians per frame²"),
                             ("limit hits", m.limit_hits.to_string(), "Times a joint ran into one of its limits since the reset"),
                             ("posture pull", posture_pull(view), "The lab's addition, not in She 2006: before each frame's IK every joint moves this fraction of its joint gain toward its centre angle (Motion panel; the she-2006 preset has it off)"),
+                            ("joint limits", limit_rule(&compare.config.options[i]), "How a joint past its limit is handled: clamped to the limit (She 2006 §6.1.1.1), or clamped and the IK solved again without it (the lab's addition; Method panel, Limit passes)"),
                             ("oscillation", optional(view.oscillation_hz(), 1.0, "Hz", 2), "Sign changes of each limb joint's per-frame Δθ (|Δθ| ≥ 1e-6 rad) per second, averaged over the limb's joints and the effectors since the reset (She 2006 §5.3's oscillation; a smooth swing at the gait's f Hz gives 2f)"),
                             ("reachable", optional(view.reachable(), 100.0, "%", 0), "Share of frames whose target lay within the limb's length of its first joint, averaged over the effectors (She 2006 §5.3's reachable targets)"),
                             ("error, reachable", optional(view.mean_error_reachable_m(), 1e3, "mm", 2), "Mean effector error over the frames its target was within reach, averaged over the effectors"),
@@ -228,6 +229,16 @@ fn posture_pull(view: &crate::compare::CompareView) -> String {
         format!("{gain:.2} (lab)")
     } else {
         "off (thesis)".to_owned()
+    }
+}
+
+/// The view's joint-limit handling: "clamp (thesis)", "clamp + re-solve ×N
+/// (lab)" or "off".
+fn limit_rule(options: &gaitlab_core::ik::IkOptions) -> String {
+    match (options.enforce_limits, options.limit_passes) {
+        (false, _) => "off".to_owned(),
+        (true, 0 | 1) => "clamp (thesis)".to_owned(),
+        (true, passes) => format!("clamp + {} re-solves (lab)", passes - 1),
     }
 }
 

@@ -116,6 +116,17 @@ fn method(ui: &mut egui::Ui, lab: &mut Lab) {
             .checkbox(&mut ik.enforce_limits, "Joint limits")
             .on_hover_text("Clamp every joint to its limits after each IK iteration")
             .changed();
+        changed |= ui
+            .add_enabled(
+                ik.enforce_limits,
+                egui::Slider::new(&mut ik.limit_passes, 1..=16).text("Limit passes"),
+            )
+            .on_hover_text(
+                "1: a joint past its limit takes the limit value, as She 2006 §6.1.1.1 does. \
+                 More (the lab's addition): solve again without the clamped joints, up to this \
+                 many solves per iteration, so the free joints make up the difference",
+            )
+            .changed();
         ui.label("She 2006 §3.2 control way:")
             .on_hover_text("Where the Jacobian is taken (no effect on CCD)");
         for way in JacobianAt::ALL {
