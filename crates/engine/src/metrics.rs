@@ -8,7 +8,7 @@
 //! The engine layer reads no clocks: wall-time figures come in a [`Timing`]
 //! measured by the caller around [`gaitlab_core::driver::Driver::step`].
 
-use gaitlab_core::driver::Driver;
+use gaitlab_core::driver::{Driver, IkMetrics};
 use gaitlab_core::{Pose, Skeleton};
 use gaitlab_motion::PodaDriver;
 use gaitlab_physics::PhysicsDriver;
@@ -125,12 +125,34 @@ pub struct EffectorMetrics {
     /// (null without such frames).
     pub mean_error_unreachable_m: Option<f64>,
     /// Oscillation of the limb's joints, Hz: reversals of each joint's per-frame
-    /// Δθ (|Δθ| ≥ 1e-6 rad) per second, halved (two per cycle), averaged over
-    /// the joints (null for a limb without joints).
+    /// Δθ (|Δθ| ≥ 1e-6 rad) per second, averaged over the joints (a smooth
+    /// swing at f Hz gives 2f; null for a limb without joints).
     pub oscillation_hz: Option<f64>,
     /// Jitter of the limb's joints: mean |Δ²θ|, radians per frame² (null for a
     /// limb without joints).
     pub jitter_rad: Option<f64>,
+}
+
+impl EffectorMetrics {
+    /// Effector `e`'s figures since the reset (the one place they are
+    /// gathered: `--json`, `state()` and the side-by-side cards).
+    #[must_use]
+    pub fn of(skeleton: &Skeleton, metrics: &IkMetrics, e: usize) -> Self {
+        Self {
+            name: skeleton
+                .effectors()
+                .get(e)
+                .map_or_else(String::new, |effector| effector.name.clone()),
+            mean_error_m: metrics.mean_error_m(e),
+            max_error_m: metrics.max_error_m(e),
+            limb_length_m: skeleton.limbs().get(e).map_or(0.0, |limb| limb.length_m),
+            reachable: metrics.reachable(e),
+            mean_error_reachable_m: metrics.mean_error_reachable_m(e),
+            mean_error_unreachable_m: metrics.mean_error_unreachable_m(e),
+            oscillation_hz: metrics.oscillation_hz(e),
+            jitter_rad: metrics.jitter_rad(e),
+        }
+    }
 }
 
 /// DESIGN.md's `always` and `IK` keys.
@@ -183,21 +205,8 @@ impl IkRunMetrics {
         let (iterations, effectors, sim_seconds, restored_frames) = match driver.ik_metrics() {
             Some(metrics) => (
                 metrics.iterations,
-                skeleton
-                    .effectors()
-                    .iter()
-                    .enumerate()
-                    .map(|(e, effector)| EffectorMetrics {
-                        name: effector.name.clone(),
-                        mean_error_m: metrics.mean_error_m(e),
-                        max_error_m: metrics.max_error_m(e),
-                        limb_length_m: skeleton.limb(e).length_m,
-                        reachable: metrics.reachable(e),
-                        mean_error_reachable_m: metrics.mean_error_reachable_m(e),
-                        mean_error_unreachable_m: metrics.mean_error_unreachable_m(e),
-                        oscillation_hz: metrics.oscillation_hz(e),
-                        jitter_rad: metrics.jitter_rad(e),
-                    })
+                (0..skeleton.effector_count())
+                    .map(|e| EffectorMetrics::of(skeleton, metrics, e))
                     .collect(),
                 metrics.sim_seconds,
                 metrics.restored_frames,

@@ -22,6 +22,7 @@
 
 use gaitlab_core::driver::{Driver, IkMetrics};
 use gaitlab_core::ik::IkOptions;
+use gaitlab_engine::metrics::EffectorMetrics;
 use gaitlab_motion::ThesisDriver;
 use gaitlab_motion::stretch::StretchOptions;
 use serde::Serialize;
@@ -132,45 +133,31 @@ impl CompareView {
     #[must_use]
     pub fn effectors(&self) -> Vec<EffectorFigures> {
         let driver = &self.stage.driver;
-        let metrics = driver.ik_metrics();
-        let report = driver.ik_report();
-        driver
-            .skeleton()
-            .effectors()
-            .iter()
-            .enumerate()
-            .map(|(e, effector)| EffectorFigures {
-                name: effector.name.clone(),
-                out_of_reach_m: report.and_then(|r| r.out_of_reach_m.get(e).copied()),
-                reachable: metrics.and_then(|m| m.reachable(e)),
-                mean_error_reachable_m: metrics.and_then(|m| m.mean_error_reachable_m(e)),
-                mean_error_unreachable_m: metrics.and_then(|m| m.mean_error_unreachable_m(e)),
-                oscillation_hz: metrics.and_then(|m| m.oscillation_hz(e)),
-                jitter_rad: metrics.and_then(|m| m.jitter_rad(e)),
+        let (Some(metrics), Some(report)) = (driver.ik_metrics(), driver.ik_report()) else {
+            return Vec::new();
+        };
+        let skeleton = driver.skeleton();
+        (0..skeleton.effector_count())
+            .map(|e| EffectorFigures {
+                metrics: EffectorMetrics::of(skeleton, metrics, e),
+                out_of_reach_m: report.out_of_reach_m.get(e).copied(),
             })
             .collect()
     }
 }
 
-/// One effector's reach and oscillation figures in a comparison view
-/// (docs/ik-metrics.md; `state().compare.metrics[i].effectors`).
+/// One effector's figures in a comparison view
+/// (`state().compare.metrics[i].effectors`): the run's figures since the
+/// reset, as `gaitlab run --json` prints them (docs/ik-metrics.md), and how
+/// far its target is out of reach this frame.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct EffectorFigures {
-    /// Effector name.
-    pub name: String,
+    /// Name, errors, reach, oscillation and jitter since the reset.
+    #[serde(flatten)]
+    pub metrics: EffectorMetrics,
     /// How far the target lies beyond the limb's reach this frame, metres
     /// (negative: inside by that much).
     pub out_of_reach_m: Option<f64>,
-    /// Fraction of frames with the target within reach since the reset.
-    pub reachable: Option<f64>,
-    /// Mean error over the reachable frames, metres.
-    pub mean_error_reachable_m: Option<f64>,
-    /// Mean error over the unreachable frames, metres.
-    pub mean_error_unreachable_m: Option<f64>,
-    /// Oscillation of the limb's joints, Hz.
-    pub oscillation_hz: Option<f64>,
-    /// Mean |Δ²θ| of the limb's joints since the reset, radians per frame².
-    pub jitter_rad: Option<f64>,
 }
 
 /// A running comparison.

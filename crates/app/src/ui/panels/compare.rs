@@ -271,10 +271,10 @@ fn effector_table(ui: &mut egui::Ui, index: usize, view: &crate::compare::Compar
                     }
                     ui.end_row();
                     for effector in view.effectors() {
-                        ui.small(effector.name);
+                        ui.small(effector.metrics.name);
                         ui.small(optional(effector.out_of_reach_m, 1e3, "mm", 0));
-                        ui.small(optional(effector.reachable, 100.0, "%", 0));
-                        ui.small(optional(effector.oscillation_hz, 1.0, "Hz", 2));
+                        ui.small(optional(effector.metrics.reachable, 100.0, "%", 0));
+                        ui.small(optional(effector.metrics.oscillation_hz, 1.0, "Hz", 2));
                         ui.end_row();
                     }
                 });
