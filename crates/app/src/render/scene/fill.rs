@@ -10,7 +10,7 @@ use glam::{DVec3, Vec3};
 use super::frame::Scene;
 use super::palette::{
     CENTRE_COLOR, EFFECTOR_COLOR, ERROR_COLOR, PRISMATIC_AXIS_COLOR, REVOLUTE_AXIS_COLOR,
-    TARGET_COLOR, WORLD_AXIS_COLORS, shade, side_color,
+    TARGET_COLOR, TARGET_OUT_OF_REACH_COLOR, WORLD_AXIS_COLORS, shade, side_color,
 };
 use super::primitives::{Capsule, GroundMark, Segment, Sphere};
 use super::sizes::{
@@ -163,9 +163,17 @@ impl Scene {
                     .get(effector.joint)
                     .map_or(0.0, |joint| joint.size as f32);
                 let radius = (size * 0.75).clamp(0.012, 0.04);
+                let beyond = skeleton.limbs().get(e).map_or(0.0, |limb| {
+                    limb.out_of_reach_m(&kin.joint_anchor, &kin.joint_position, target)
+                });
+                let color = if beyond > 0.0 {
+                    TARGET_OUT_OF_REACH_COLOR
+                } else {
+                    TARGET_COLOR
+                };
                 frame
                     .spheres
-                    .push(Sphere::new(f32_point(target), radius, TARGET_COLOR));
+                    .push(Sphere::new(f32_point(target), radius, color));
                 // A drawn target is part of what framing must show: an
                 // unreachable one (she-2006's hands) lies outside the figure.
                 frame.include(target);
@@ -336,6 +344,16 @@ mod tests {
         let error = &scene.segments()[0];
         assert!(close(v(error.a), kin.effector_position[1]));
         assert!(close(v(error.b), targets.position[1]));
+        // A target beyond the limb's reach (the leg: hip joint to foot) is
+        // drawn in the out-of-reach colour; the reachable one stays red.
+        targets.position[1] = kin.joint_anchor[2] + DVec3::new(0.0, -5.0, 0.0);
+        scene.fill(&skeleton, &kin, root, Some(&targets), &view);
+        let far = scene.spheres().last().expect("target sphere");
+        assert_eq!(far.color, TARGET_OUT_OF_REACH_COLOR);
+        assert_eq!(
+            scene.spheres()[scene.spheres().len() - 2].color,
+            TARGET_COLOR
+        );
         // The bounds hold the root and the feet.
         let bounds = scene.bounds().expect("bounds");
         for p in kin.effector_position.iter().chain([&root]) {

@@ -36,7 +36,7 @@ pub use bounds::Bounds;
 pub use frame::{Scene, SceneFrame};
 pub use palette::{
     CENTRE_COLOR, EFFECTOR_COLOR, ERROR_COLOR, LEFT_COLOR, PRISMATIC_AXIS_COLOR,
-    REVOLUTE_AXIS_COLOR, RIGHT_COLOR, TARGET_COLOR, WORLD_AXIS_COLORS,
+    REVOLUTE_AXIS_COLOR, RIGHT_COLOR, TARGET_COLOR, TARGET_OUT_OF_REACH_COLOR, WORLD_AXIS_COLORS,
 };
 pub use primitives::{Capsule, GroundMark, Segment, Sphere};
 pub use sizes::{

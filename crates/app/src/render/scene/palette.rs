@@ -12,6 +12,9 @@ pub const RIGHT_COLOR: [f32; 4] = [0.96, 0.52, 0.34, 1.0];
 pub const EFFECTOR_COLOR: [f32; 4] = [0.98, 0.80, 0.26, 1.0];
 /// Colour of IK targets (sRGB).
 pub const TARGET_COLOR: [f32; 4] = [0.93, 0.16, 0.14, 1.0];
+/// Colour of an IK target beyond its limb's reach (sRGB): the orange of the
+/// readout's "target out of reach by N mm" (She 2006 §5.3's `d > 0`).
+pub const TARGET_OUT_OF_REACH_COLOR: [f32; 4] = [0.88, 0.50, 0.25, 1.0];
 /// Colour of the segment from an effector to its target (sRGB).
 pub const ERROR_COLOR: [f32; 4] = [1.0, 0.33, 0.28, 1.0];
 /// Colour of a revolute joint's rotation axis (sRGB).

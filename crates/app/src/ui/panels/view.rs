@@ -30,7 +30,8 @@ fn view(ui: &mut egui::Ui, lab: &mut Lab) {
             .on_hover_text("Each joint's rotation axis as a short segment");
         ui.checkbox(&mut view.targets, "Draw targets")
             .on_hover_text(
-                "Targets, footholds and the error segment from each effector to its target",
+                "Targets (red; orange when beyond the limb's reach), footholds and the error \
+                 segment from each effector to its target",
             );
         ui.checkbox(&mut view.grid, "Ground grid")
             .on_hover_text("Ground grid lines, 1 m apart");
