@@ -13,6 +13,7 @@ use gaitlab_engine::{AnyDriver, FrameWriter, StepTrace, Timing};
 
 use crate::fail::Failure;
 use crate::options::written_frames;
+use crate::schedule::Schedule;
 use crate::sink::FileSink;
 
 /// Output options shared by `run` and `track`.
@@ -52,16 +53,18 @@ impl<'a> Stream<'a> {
     }
 }
 
-/// Steps `driver` `frames` times at `1/fps`, writing every frame to the
-/// requested outputs (only the last `--last` seconds of them, if asked) and
-/// every simulation step to the `trace` file, if any (the caller has checked
-/// that the engine has one).
+/// Steps `driver` `frames` times at `1/fps`, applying the `schedule`'s live
+/// changes as their times come, writing every frame to the requested outputs
+/// (only the last `--last` seconds of them, if asked) and every simulation
+/// step to the `trace` file, if any (the caller has checked that the engine
+/// has one).
 pub fn drive(
     driver: &mut AnyDriver,
     frames: usize,
     fps: f64,
     outputs: &Outputs,
     trace: Option<&str>,
+    schedule: &mut Schedule,
 ) -> Result<Timing, Failure> {
     let dt = 1.0 / fps;
     let written = written_frames(outputs.last, frames, fps)?;
@@ -98,6 +101,7 @@ pub fn drive(
     let mut step_seconds = 0.0;
     let mut within_limits = true;
     for frame in 0..frames {
+        schedule.apply_due(driver, driver.time(), dt);
         let before = Instant::now();
         match &mut trace {
             None => driver.step(dt),

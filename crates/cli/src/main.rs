@@ -10,6 +10,7 @@ mod load;
 mod options;
 mod print;
 mod run;
+mod schedule;
 mod sink;
 mod stdout;
 mod track;

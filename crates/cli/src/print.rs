@@ -1,14 +1,22 @@
 //! Printing a run's [`RunMetrics`]: one JSON line (`--json`), or a short
 //! human-readable summary per engine.
 
+use crate::schedule::Outcome;
 use crate::stdout::outln;
 use gaitlab_engine::RunMetrics;
 use gaitlab_engine::metrics::{GaitRunMetrics, IkRunMetrics, PhysicsRunMetrics};
 
-/// Prints `metrics` as one JSON line, or as a short table.
-pub fn print(metrics: &RunMetrics, as_json: bool) {
+/// Prints `metrics` as one JSON line (with the live `changes`, if any, under
+/// `changes`), or as a short table.
+pub fn print(metrics: &RunMetrics, changes: &[Outcome], as_json: bool) {
     if as_json {
-        match serde_json::to_string(metrics) {
+        let line = serde_json::to_value(metrics).and_then(|mut value| {
+            if let (false, Some(map)) = (changes.is_empty(), value.as_object_mut()) {
+                map.insert("changes".to_owned(), serde_json::to_value(changes)?);
+            }
+            serde_json::to_string(&value)
+        });
+        match line {
             Ok(line) => outln!("{line}"),
             // Plain structs of numbers and strings always serialize.
             Err(error) => eprintln!("error: metrics: {error}"),
@@ -19,6 +27,25 @@ pub fn print(metrics: &RunMetrics, as_json: bool) {
         RunMetrics::Ik(ik) => print_ik(ik),
         RunMetrics::Gait(gait) => print_gait(gait),
         RunMetrics::Physics(physics) => print_physics(physics),
+    }
+    for outcome in changes {
+        match &outcome.refused {
+            None => outln!(
+                "  change {} at {:.3} s{}",
+                outcome.change,
+                outcome.applied_at_s,
+                if outcome.derived.is_empty() {
+                    String::new()
+                } else {
+                    format!(" (derived {})", outcome.derived.join(", "))
+                }
+            ),
+            Some(reason) => outln!(
+                "  change {} at {:.3} s refused: {reason}",
+                outcome.change,
+                outcome.applied_at_s
+            ),
+        }
     }
 }
 

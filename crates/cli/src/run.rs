@@ -1,5 +1,6 @@
 //! `gaitlab run PRESET_OR_FILE [--mode M] [--method K] [--gait G] [--path FILE]
-//! [--speed V] [--seconds S] [--fps N] [--set KEY=VALUE] [--trace FILE] [--bvh FILE]
+//! [--speed V] [--seconds S] [--fps N] [--set KEY=VALUE] [--switch T:GAIT]
+//! [--edit T:KEY=VALUE] [--trace FILE] [--bvh FILE]
 //! [--csv FILE] [--last S] [--json]`: any preset headless. The options each engine
 //! takes are checked here; the driver comes from the engine layer's `driver_for`.
 
@@ -14,6 +15,7 @@ use crate::fail::Failure;
 use crate::load;
 use crate::options::{method, timing};
 use crate::print::print;
+use crate::schedule::Schedule;
 
 /// Arguments of `gaitlab run`.
 #[derive(Args, Debug)]
@@ -51,6 +53,19 @@ pub struct RunArgs {
     /// parameter, `scenario.physics.controller={"thrust_m": 0.05}` (docs/physics.md).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
+    /// Switch gait at T simulated seconds, repeatable: `--switch 3:trot`
+    /// (engines poda and physics). Applied before the first frame at or
+    /// after T; `--json` lists each under `changes`.
+    #[arg(long = "switch", value_name = "T:GAIT")]
+    pub switch: Vec<String>,
+    /// Change a gait value at T simulated seconds, repeatable, as the page's
+    /// commands do: `--edit 5:period_s=0.8`; keys period_s, duty_factor,
+    /// speed_mps, stroke_m, leg_force_n (poda; the gait model derives the
+    /// others, eq. 7–8, 13), speed_mps, hop_height_m (physics). A value the
+    /// engine refuses leaves the run unchanged and is listed in `changes`
+    /// with the reason.
+    #[arg(long = "edit", value_name = "T:KEY=VALUE")]
+    pub edit: Vec<String>,
     /// Write the simulation's state after every integration step (0.4 ms at
     /// scale 1) as CSV to this file: time, the state machine's state, trunk and
     /// centre of mass, attitude, per leg its length, spring rest, contact and
@@ -83,15 +98,22 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
         )));
     }
     let (fps, frames) = timing(args.fps, creature.scenario.fps, args.seconds)?;
+    let mut schedule = Schedule::parse(&args.switch, &args.edit)?;
+    if !schedule.is_empty() && creature.scenario.engine == Engine::Ik {
+        return Err(Failure::input(
+            "--switch and --edit change gaits: engine ik has none (its motion is --mode)",
+        ));
+    }
     let measured = drive(
         &mut driver,
         frames,
         fps,
         &args.outputs,
         args.trace.as_deref(),
+        &mut schedule,
     )?;
     let metrics = RunMetrics::of(&creature.name, &driver, &measured).with_fps(fps);
-    print(&metrics, args.outputs.json);
+    print(&metrics, &schedule.outcomes, args.outputs.json);
     Ok(())
 }
 

@@ -13,6 +13,7 @@ use crate::fail::Failure;
 use crate::load;
 use crate::options::{method, timing};
 use crate::print::print;
+use crate::schedule::Schedule;
 
 /// Arguments of `gaitlab track`.
 #[derive(Args, Debug)]
@@ -59,11 +60,18 @@ pub fn track(args: &TrackArgs) -> Result<(), Failure> {
     };
     let mut driver =
         driver_for(&creature, &overrides).map_err(|e| Failure::input(format!("--{e}")))?;
-    let measured = drive(&mut driver, frames, fps, &args.outputs, None)?;
+    let measured = drive(
+        &mut driver,
+        frames,
+        fps,
+        &args.outputs,
+        None,
+        &mut Schedule::default(),
+    )?;
     let mut metrics = RunMetrics::of(&creature.name, &driver, &measured).with_fps(fps);
     if let RunMetrics::Ik(ik) = &mut metrics {
         ik.targets_file = Some(args.targets.clone());
     }
-    print(&metrics, args.outputs.json);
+    print(&metrics, &[], args.outputs.json);
     Ok(())
 }

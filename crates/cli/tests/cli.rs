@@ -528,3 +528,62 @@ fn a_closed_stdout_pipe_ends_quietly() {
         assert!(stderr.is_empty(), "{args:?}: {stderr}");
     }
 }
+
+/// `--switch T:GAIT` and `--edit T:KEY=VALUE` change a running gait as the
+/// page's commands do; a change the engine refuses is listed with its reason
+/// and the run goes on; a malformed one, or one for engine ik, exits 2.
+#[test]
+fn switch_and_edit_change_the_gait_during_a_run() {
+    let metrics = json_of(&gaitlab(&[
+        "run",
+        "poda-quadruped",
+        "--seconds",
+        "6",
+        "--switch",
+        "2:trot",
+        "--edit",
+        "4:period_s=0.8",
+        "--edit",
+        "5:period_s=-1",
+        "--json",
+    ]));
+    assert_eq!(metrics["gait"], "trot", "{metrics}");
+    let changes = metrics["changes"].as_array().expect("changes");
+    assert_eq!(changes.len(), 3, "{metrics}");
+    assert_eq!(changes[0]["change"], "2:trot");
+    // Applied on the frame that starts at 2 s (60 fps: frame 120).
+    let at = changes[0]["applied_at_s"].as_f64().unwrap_or(f64::NAN);
+    assert!((at - 2.0).abs() < 1e-9, "{at}");
+    assert_eq!(changes[1]["change"], "4:period_s=0.8");
+    assert!(changes[1]["refused"].is_null(), "{}", changes[1]);
+    assert!(
+        changes[1]["derived"]
+            .as_array()
+            .is_some_and(|d| d.iter().any(|x| x == "stroke_m")),
+        "a period edit keeps the speed and derives the stroke: {}",
+        changes[1]
+    );
+    assert_eq!(changes[2]["refused"], "period_s: -1 is outside 0.1..=10");
+    // The gait ends the run at the edited period; the refused edit changed nothing.
+    assert_eq!(metrics["period_s_set"].as_f64(), Some(0.8), "{metrics}");
+
+    for (args, expected) in [
+        (
+            &["run", "poda-quadruped", "--switch", "trot"][..],
+            "error: --switch \"trot\": expected T:GAIT",
+        ),
+        (
+            &["run", "poda-quadruped", "--edit", "1:colour=2"][..],
+            "error: --edit \"1:colour=2\": \"colour\" is not a gait value",
+        ),
+        (
+            &["run", "human", "--switch", "1:trot"][..],
+            "error: --switch and --edit change gaits: engine ik has none",
+        ),
+    ] {
+        let output = gaitlab(args);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.starts_with(expected), "{args:?}: {stderr}");
+    }
+}

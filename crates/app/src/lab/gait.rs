@@ -4,79 +4,37 @@
 //! height and gains (Raibert & Hodgins 1991). Each edit goes to the engine
 //! layer's driver, which validates it; the lab only routes and words errors.
 
-use gaitlab_motion::poda::GaitError;
-
 use super::Lab;
 use super::gait_shape::GaitShapeEdit;
 use super::outbox::Effect;
 
 impl Lab {
-    /// Switches the PODA gait (blending over one cycle).
+    /// Switches the PODA or physics gait (the engine layer's
+    /// [`gaitlab_engine::switch_gait`], shared with the CLI's `--switch`).
     ///
     /// # Errors
     /// `gait: reason` when the engine has no gaits or the name is unknown for
     /// the creature's leg count; nothing changes.
     pub fn set_gait(&mut self, name: &str) -> Result<(), String> {
-        if let Some(driver) = self.stage.driver.physics_mut() {
-            driver
-                .set_gait(name)
-                .map_err(|e| format!("gait: {}", e.reason))?;
-            self.outbox.push(Effect::LinkChanged);
-            return Ok(());
-        }
-        let Some(driver) = self.stage.driver.poda_mut() else {
-            return Err(format!(
-                "gait: engine {} has no gaits (use mode)",
-                self.session.engine_name()
-            ));
-        };
-        driver.set_gait(name).map_err(|e| e.to_string())?;
+        gaitlab_engine::switch_gait(&mut self.stage.driver, name)?;
         self.outbox.push(Effect::LinkChanged);
         Ok(())
     }
 
-    /// Sets one PODA gait value (`period_s`, `duty_factor`, `speed_mps`,
-    /// `stroke_m`, or `leg_force_n`, each leg's upward force during support,
-    /// eq. 12–13); the gait model derives the others so that eq. 7–8 (and
-    /// eq. 13 for the force) stay true, and [`Lab::gait_derived`] names what it
-    /// derived.
+    /// Sets one gait value (`period_s`, `duty_factor`, `speed_mps`,
+    /// `stroke_m`, `leg_force_n`, `hop_height_m`) through the engine layer's
+    /// [`gaitlab_engine::edit_value`], shared with the CLI's `--edit`; the
+    /// gait model derives the others so that eq. 7–8 (and eq. 13 for the
+    /// force) stay true, and [`Lab::gait_derived`] names what it derived.
     ///
     /// # Errors
     /// `key: reason` when the engine has no gait, the key is unknown, or the
     /// value (or a value derived from it) is out of range; nothing changes.
     pub fn edit_gait(&mut self, key: &str, value: f64) -> Result<(), String> {
-        if let Some(driver) = self.stage.driver.physics_mut() {
-            return match key {
-                "speed_mps" => driver.set_speed(value).map_err(|e| e.to_string()),
-                "hop_height_m" => driver.set_hop_height(value).map_err(|e| e.to_string()),
-                _ => Err(format!(
-                    "{key}: engine physics has no such gait value (speed_mps, hop_height_m)"
-                )),
-            };
+        let derived = gaitlab_engine::edit_value(&mut self.stage.driver, key, value)?;
+        if self.stage.driver.poda().is_some() {
+            self.gait_derived = derived;
         }
-        let Some(driver) = self.stage.driver.poda_mut() else {
-            return Err(format!(
-                "{key}: engine {} has no gait",
-                self.session.engine_name()
-            ));
-        };
-        if key == "leg_force_n" {
-            let derived = driver
-                .set_leg_force_n(value)
-                .map_err(|e| GaitError::new(key, e.reason).to_string())?;
-            self.gait_derived = derived.derived.to_vec();
-            return Ok(());
-        }
-        let gait = driver.gait_mut();
-        let derived = match key {
-            "period_s" => gait.set_period(value),
-            "duty_factor" => gait.set_duty_factor(value),
-            "speed_mps" => gait.set_speed(value),
-            "stroke_m" => gait.set_stroke(value),
-            _ => return Err(format!("{key}: not a gait value")),
-        }
-        .map_err(|e| e.to_string())?;
-        self.gait_derived = derived.derived.to_vec();
         Ok(())
     }
 
