@@ -298,6 +298,10 @@ pub struct GaitRunMetrics {
     pub speed_mps_set: f64,
     /// The gait's stroke, metres.
     pub stroke_m: f64,
+    /// The gait's duty factor β.
+    pub duty_factor_set: f64,
+    /// Each leg's upward force during support, newtons (eq. 12–13).
+    pub leg_force_n_set: f64,
     /// Lowest and highest body height, metres.
     pub body_height_range_m: [f64; 2],
     /// Longest time with no foot planted, seconds.
@@ -346,6 +350,8 @@ impl GaitRunMetrics {
             body_speed_mps: speed,
             speed_mps_set: gait.speed_mps(),
             stroke_m: gait.stroke_m(),
+            duty_factor_set: gait.duty_factor(),
+            leg_force_n_set: driver.leg_force_n(),
             body_height_range_m: [low, high],
             flight_duration_max_s: metrics.flight_max_s,
             within_limits: timing.within_limits,
