@@ -105,3 +105,31 @@ fn a_she_2006_link_made_before_limit_passes_replays_with_the_re_solve() {
     }
     assert_eq!(lab.driver().pose().joints, reference.pose().joints);
 }
+
+/// A link to the hexapod preset as it was on 2026-12-01 (its `vertical_gain`
+/// 0.3, deprecated since): it runs with the gain, and the page says so.
+#[test]
+fn a_link_with_the_deprecated_vertical_gain_runs_with_it_and_says_so() {
+    let preset = include_str!("../../cli/tests/fixtures/hexapod_2026_12_01.json");
+    let mut lab = Lab::new(Settings::default());
+    let fragment = format!("#p={}", gaitlab_app::link::encode_preset(preset));
+    lab.open_link("", &fragment);
+    assert_eq!(lab.last_error(), None);
+    let Some(poda) = lab.driver().poda() else {
+        panic!("the link opens on the PODA engine")
+    };
+    assert_eq!(poda.params().vertical_gain, 0.3);
+    let notice = lab.notice().unwrap_or_default();
+    assert!(
+        notice.starts_with("scenario.poda.vertical_gain: 0.3 is deprecated"),
+        "{notice}"
+    );
+    let state: serde_json::Value =
+        serde_json::from_str(&lab.state_json()).unwrap_or(serde_json::Value::Null);
+    assert_eq!(state["notice"].as_str(), Some(notice));
+    // The bundled hexapod no longer uses it: no note.
+    if let Err(error) = lab.command(r#"{"preset":"hexapod"}"#) {
+        panic!("{error}");
+    }
+    assert_eq!(lab.notice(), None);
+}

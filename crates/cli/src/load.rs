@@ -64,13 +64,17 @@ pub fn creature_with(
         }
         preset.to_string()
     };
-    Creature::from_json_for(&text, purpose).map_err(|e: PresetError| {
+    let creature = Creature::from_json_for(&text, purpose).map_err(|e: PresetError| {
         if bundled_name && edits.is_empty() {
             Failure::input(format!("bundled preset {name_or_path}: {e}"))
         } else {
             Failure::input(e)
         }
-    })
+    })?;
+    for deprecation in creature.deprecations() {
+        eprintln!("warning: {deprecation}");
+    }
+    Ok(creature)
 }
 
 /// The text of preset file `name_or_path`; a name that is no file is an

@@ -59,6 +59,38 @@ fn every_bundled_preset_runs_as_recorded() {
     );
 }
 
+/// DESIGN.md "Versions": the hexapod preset as it was on 2026-12-01, with
+/// its `vertical_gain` 0.3 (deprecated on 2026-12-02: eq. 12–13 have no
+/// gain), runs exactly as recorded then, and says the value is deprecated.
+#[test]
+fn a_preset_with_the_deprecated_vertical_gain_runs_as_it_was_made() {
+    let fixtures: PathBuf = [env!("CARGO_MANIFEST_DIR"), "tests", "fixtures"]
+        .iter()
+        .collect();
+    let preset = fixtures.join("hexapod_2026_12_01.json");
+    let output = gaitlab_ok(&[
+        "run",
+        preset.to_str().expect("utf-8 path"),
+        "--seconds",
+        "10",
+        "--json",
+    ]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.starts_with("warning: scenario.poda.vertical_gain: 0.3 is deprecated"),
+        "{stderr}"
+    );
+    let mut got = without_timing(serde_json::from_slice(&output.stdout).expect("JSON"));
+    let text = std::fs::read_to_string(fixtures.join("hexapod_2026_12_01.run-10s.json"))
+        .expect("recorded figures");
+    let mut want: Value = serde_json::from_str(&text).expect("JSON");
+    // The gait list grows with new gaits; the motion is what must not move.
+    for figures in [&mut got, &mut want] {
+        figures.as_object_mut().map(|o| o.remove("gaits_available"));
+    }
+    assert_eq!(got, want);
+}
+
 fn cli_metrics(preset: &str, seconds: &str) -> Value {
     run_json(preset, seconds, &[])
 }

@@ -285,6 +285,9 @@ pub struct State {
     pub video: VideoState,
     /// The last error shown.
     pub last_error: Option<String>,
+    /// The note shown about the running preset: the deprecated values it
+    /// uses, which still run as it was made.
+    pub notice: Option<String>,
 }
 
 impl State {
@@ -412,6 +415,7 @@ impl State {
                 size: settings.video_size.name(),
             },
             last_error: lab.session.last_error.clone(),
+            notice: lab.session.notice.clone(),
         }
     }
 }

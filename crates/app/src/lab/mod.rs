@@ -161,6 +161,17 @@ impl Lab {
         self.session.last_error.as_deref()
     }
 
+    /// The note about the running preset (its deprecated values), if any.
+    #[must_use]
+    pub fn notice(&self) -> Option<&str> {
+        self.session.notice.as_deref()
+    }
+
+    /// Hides the note about the running preset.
+    pub fn clear_notice(&mut self) {
+        self.session.notice = None;
+    }
+
     /// Records a problem to show.
     pub fn report_error(&mut self, message: impl Into<String>) {
         self.session.last_error = Some(message.into());
@@ -217,6 +228,12 @@ impl Lab {
         }
         let driver = session::driver_for(&creature, &settings)?;
         self.session.settings.ik = settings.ik;
+        let deprecations: Vec<String> = creature
+            .deprecations()
+            .iter()
+            .map(ToString::to_string)
+            .collect();
+        self.session.notice = (!deprecations.is_empty()).then(|| deprecations.join("; "));
         self.stage = Stage::new(driver, History::default());
         self.session.creature = creature;
         self.session.custom_preset = custom;

@@ -18,6 +18,9 @@ pub struct Session {
     pub custom_preset: Option<String>,
     /// The last problem to show (bad link, bad command, bad preset).
     pub last_error: Option<String>,
+    /// A note about the running preset: the deprecated values it uses
+    /// ([`Creature::deprecations`]), which still run as the preset was made.
+    pub notice: Option<String>,
 }
 
 /// The bundled preset `name`.
@@ -98,6 +101,7 @@ impl Session {
             creature,
             custom_preset: None,
             last_error,
+            notice: None,
         };
         (session, driver)
     }

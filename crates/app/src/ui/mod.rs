@@ -61,6 +61,18 @@ impl Lab {
         }
         panels::editor_window(&ui.ctx().clone(), self);
         egui::CentralPanel::default().show(ui, |ui| {
+            if let Some(notice) = self.session.notice.clone() {
+                ui.horizontal_wrapped(|ui| {
+                    ui.label(format!("Note: {notice}"));
+                    if ui
+                        .small_button("Dismiss")
+                        .on_hover_text("Hide this note")
+                        .clicked()
+                    {
+                        self.clear_notice();
+                    }
+                });
+            }
             if let Some(error) = self.session.last_error.clone() {
                 ui.horizontal_wrapped(|ui| {
                     ui.colored_label(

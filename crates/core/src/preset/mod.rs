@@ -13,6 +13,7 @@
 
 mod build;
 mod bundled;
+mod deprecated;
 mod edit;
 mod error;
 #[cfg(feature = "schema")]
@@ -28,6 +29,7 @@ mod validate;
 
 pub use build::Creature;
 pub use bundled::{DEFAULT_PRESET, bundled, bundled_json, bundled_names, load_bundled};
+pub use deprecated::Deprecation;
 pub use edit::{MAX_EDIT_PATH_CHARS, set_preset_value};
 pub use error::{PresetError, ROOT_PATH, json_path};
 #[cfg(feature = "schema")]

@@ -120,8 +120,11 @@ pub struct PodaParams {
     /// Default: the body's weight.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_leg_force_n: Option<f64>,
-    /// Scale of the vertical leg-force superposition (eq. 12–13): 0 keeps the
-    /// body level, 1 is the full ballistic model. Default 1.
+    /// Deprecated: a scale of the vertical leg-force superposition that eq.
+    /// 12–13 do not have (0 keeps the body level, 1 is the paper's ballistic
+    /// model). Read so that presets made before 2026-12-02 run as they were
+    /// made, with a warning ([`crate::preset::Creature::deprecations`]).
+    /// Default 1.
     pub vertical_gain: f64,
     /// Largest IK iterations per leg per frame. Default 12.
     pub iterations_per_frame: usize,
