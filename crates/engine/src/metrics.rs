@@ -304,6 +304,8 @@ pub struct GaitRunMetrics {
     pub leg_force_n_set: f64,
     /// Lowest and highest body height, metres.
     pub body_height_range_m: [f64; 2],
+    /// Lowest and highest body pitch, degrees (positive: nose up; Figure 2).
+    pub body_pitch_range_deg: [f64; 2],
     /// Longest time with no foot planted, seconds.
     pub flight_duration_max_s: f64,
     /// Whether every joint value stayed finite and within its limits.
@@ -353,6 +355,10 @@ impl GaitRunMetrics {
             duty_factor_set: gait.duty_factor(),
             leg_force_n_set: driver.leg_force_n(),
             body_height_range_m: [low, high],
+            body_pitch_range_deg: [
+                metrics.body_pitch_range_rad.0.to_degrees(),
+                metrics.body_pitch_range_rad.1.to_degrees(),
+            ],
             flight_duration_max_s: metrics.flight_max_s,
             within_limits: timing.within_limits,
             fps: None,

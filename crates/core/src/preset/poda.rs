@@ -126,6 +126,15 @@ pub struct PodaParams {
     /// made, with a warning ([`crate::preset::Creature::deprecations`]).
     /// Default 1.
     pub vertical_gain: f64,
+    /// Pitch the body by the difference of its front and rear legs' vertical
+    /// motion (Girard & Maciejewski 1985, Figure 2 and "Rotational Control":
+    /// the pitch "is due to the separation of the application of vertical
+    /// acceleration between the front and rear sections of the body").
+    /// Default off, as every preset ran before 2026-12-02: with the gait
+    /// switch's one-period blend a pitching quadruped's planted feet slip up to
+    /// 1.3 mm (docs/poda.md), so it turns on with issue 19's leg-by-leg gait
+    /// changes.
+    pub body_pitch: bool,
     /// Largest IK iterations per leg per frame. Default 12.
     pub iterations_per_frame: usize,
     /// Stop iterating a leg once its foot is this close to its target, metres. Default 1e-6.
@@ -150,6 +159,7 @@ impl Default for PodaParams {
             body_mass_kg: 30.0,
             max_leg_force_n: None,
             vertical_gain: 1.0,
+            body_pitch: false,
             iterations_per_frame: 12,
             tolerance_m: 1e-6,
             center_gain: 0.5,

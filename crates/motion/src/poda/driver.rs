@@ -23,7 +23,7 @@ use gaitlab_core::driver::{Driver, IkFrameReport};
 use gaitlab_core::ik::Targets;
 use gaitlab_core::preset::{Creature, PathSpec, PodaParams, check_transfer_keys};
 use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
-use glam::{DVec2, DVec3};
+use glam::{DMat3, DVec2, DVec3};
 
 use super::body_track::{BodyDynamics, BodyTrack};
 use super::gait::{Derived, GaitError, GaitParams, LegPhase};
@@ -100,6 +100,40 @@ pub struct PodaDriver {
     track: BodyTrack,
     /// Speed, period and duty factor the plan was made with.
     track_key: [f64; 3],
+    /// Per leg, the weight of its vertical contribution in the body's pitch
+    /// slope ([`pitch_weights`]); all 0 when `body_pitch` is off.
+    pitch_weights: Vec<f64>,
+    /// Mean fore-aft position of the legs' reference feet, body frame, metres.
+    legs_mean_z_m: f64,
+    /// This frame's body pitch, radians (positive: nose up).
+    pitch_rad: f64,
+}
+
+/// The body's pitch from its legs' vertical motion (Figure 2; "Rotational
+/// Control": the pitch "is due to the separation of the application of
+/// vertical acceleration between the front and rear sections of the body").
+/// Leg `i`, a one-legged hopper carrying `1/n` of the weight, moves the whole
+/// body by `y_i` (eq. 12–13 with `g_n = g/n`); the section of the body above
+/// it, carried by that leg alone, would move `n·y_i`. The body is the
+/// least-squares line through the points `(z_i, n·y_i)` at the legs'
+/// fore-aft positions `z_i`: its height at the legs' mean `z̄` is `Σ y_i`
+/// (the superposition) and its slope is `Σ w_i·y_i` with
+/// `w_i = n·(z_i − z̄) / Σ_j (z_j − z̄)²`. Legs all at one `z` (a biped) give
+/// no pitch: every weight 0.
+fn pitch_weights(z_m: &[f64], out: &mut Vec<f64>) -> f64 {
+    #[expect(clippy::cast_precision_loss, reason = "leg count ≤ 32")]
+    let n = z_m.len() as f64;
+    let mean = z_m.iter().sum::<f64>() / n.max(1.0);
+    let spread: f64 = z_m.iter().map(|z| (z - mean) * (z - mean)).sum();
+    out.clear();
+    out.extend(z_m.iter().map(|z| {
+        if spread > 1e-12 {
+            n * (z - mean) / spread
+        } else {
+            0.0
+        }
+    }));
+    mean
 }
 
 /// The transfer spline's control points: lift-off `(0, 0)`, the key leg
@@ -230,7 +264,15 @@ impl PodaDriver {
             report: IkFrameReport::new(creature.skeleton.effector_count()),
             track: BodyTrack::new(creature.scenario.frame_seconds(), dynamics),
             track_key: [f64::NAN; 3],
+            pitch_weights: Vec::with_capacity(n),
+            legs_mean_z_m: 0.0,
+            pitch_rad: 0.0,
         };
+        let z: Vec<f64> = driver.legs.iter().map(|l| l.reference_body.z).collect();
+        driver.legs_mean_z_m = pitch_weights(&z, &mut driver.pitch_weights);
+        if !driver.params.body_pitch {
+            driver.pitch_weights.fill(0.0);
+        }
         driver.reset();
         Ok(driver)
     }
@@ -462,11 +504,23 @@ impl PodaDriver {
         self.centre_m
     }
 
-    fn body_height(&mut self, t_s: f64) -> f64 {
+    /// The root's height and the body's pitch slope (dy/dz, body frame) at
+    /// `t_s`: eq. 12–13's superposition, centred, and the least-squares line
+    /// of [`pitch_weights`] through the legs' sections, taken at the root.
+    fn body_height_and_slope(&mut self, t_s: f64) -> (f64, f64) {
         let centre = self.vertical_centre_m(t_s);
-        self.stand_height_m
-            + self.params.vertical_gain
-                * (self.gait.vertical_superposition_m(t_s, GRAVITY_MPS2) - centre)
+        let gain = self.params.vertical_gain;
+        let slope = if self.params.body_pitch {
+            gain * self
+                .gait
+                .vertical_weighted_m(t_s, GRAVITY_MPS2, &self.pitch_weights)
+        } else {
+            0.0
+        };
+        let height = self.stand_height_m
+            + gain * (self.gait.vertical_superposition_m(t_s, GRAVITY_MPS2) - centre)
+            - slope * self.legs_mean_z_m;
+        (height, slope)
     }
 
     /// Eq. 11: the foothold of leg `i` for a lift-off at `t_lo`.
@@ -580,10 +634,12 @@ impl PodaDriver {
 
     fn place_body(&mut self, t: f64) {
         let ground = self.ground_pose(t);
-        let height = self.body_height(t);
+        let (height, slope) = self.body_height_and_slope(t);
+        // Nose up (the front higher, slope > 0) turns +z toward +y: about −x.
+        self.pitch_rad = slope.atan();
         self.pose.root = RootTransform {
             position: DVec3::new(ground.position.x, height, ground.position.y),
-            rotation: ground.rotation(),
+            rotation: ground.rotation() * DMat3::from_rotation_x(-self.pitch_rad),
         };
     }
 
@@ -599,7 +655,7 @@ impl PodaDriver {
             self.metrics = GaitMetrics::new(legs.iter().map(|l| l.name.as_str()));
         }
         self.metrics
-            .record(t_prev, t, feet, self.pose.root.position);
+            .record(t_prev, t, feet, self.pose.root.position, self.pitch_rad);
     }
 }
 

@@ -443,6 +443,21 @@ impl GaitParams {
             .sum()
     }
 
+    /// `Σ_i w_i · y_i(t)`: the legs' ballistic contributions (as in
+    /// [`vertical_superposition_m`](Self::vertical_superposition_m)) weighted
+    /// per leg; with the weights of the body's least-squares line through the
+    /// legs' positions it is the body's pitch slope (no allocation).
+    #[must_use]
+    pub fn vertical_weighted_m(&self, t_s: f64, g_mps2: f64, weights: &[f64]) -> f64 {
+        let (support, transfer) = (self.support_s(), self.transfer_s());
+        let g_n = self.gravity_share_mps2(g_mps2);
+        (0..self.leg_count())
+            .zip(weights)
+            .filter_map(|(leg, w)| self.leg_phase(leg, t_s).map(|p| (p, w)))
+            .map(|(p, w)| w * vertical_offset_m(support, transfer, g_n, p.state_s - 0.5 * support))
+            .sum()
+    }
+
     /// Starts switching to `target_phases`/`target_duty` at `t_now_s`: over exactly one period
     /// each phase moves the shorter way round the circle and `β` moves to its target, both eased
     /// by smoothstep; `P` and speed stay fixed (support and stroke derived). Drive with

@@ -140,6 +140,8 @@ pub struct GaitMetrics {
     pub body_distance_m: f64,
     /// Highest and lowest root height seen, metres.
     pub body_height_range_m: (f64, f64),
+    /// Lowest and highest body pitch seen, radians (positive: nose up).
+    pub body_pitch_range_rad: (f64, f64),
     /// Longest time with no foot in contact, seconds (a flight phase).
     pub flight_max_s: f64,
     flight_start_s: Option<f64>,
@@ -153,13 +155,14 @@ impl GaitMetrics {
         Self {
             legs: names.into_iter().map(LegMetrics::new).collect(),
             body_height_range_m: (f64::INFINITY, f64::NEG_INFINITY),
+            body_pitch_range_rad: (f64::INFINITY, f64::NEG_INFINITY),
             ..Self::default()
         }
     }
 
     /// Records the frame ending at `t` (the previous one ended at `t_prev`):
-    /// each leg's foot position and whether the gait has it in support, and
-    /// the root position. The first call after [`GaitMetrics::new`] only sets
+    /// each leg's foot position and whether the gait has it in support, the
+    /// root position and the body's pitch (radians). The first call after [`GaitMetrics::new`] only sets
     /// the starting state.
     pub fn record(
         &mut self,
@@ -167,6 +170,7 @@ impl GaitMetrics {
         t: f64,
         feet: impl Iterator<Item = (DVec3, bool)>,
         root: DVec3,
+        pitch_rad: f64,
     ) {
         let first = self.last_body.is_none();
         let mut any_contact = false;
@@ -183,6 +187,8 @@ impl GaitMetrics {
         self.last_body = Some(body);
         let (low, high) = self.body_height_range_m;
         self.body_height_range_m = (low.min(root.y), high.max(root.y));
+        let (low, high) = self.body_pitch_range_rad;
+        self.body_pitch_range_rad = (low.min(pitch_rad), high.max(pitch_rad));
         if any_contact {
             self.flight_start_s = None;
         } else {
@@ -246,6 +252,7 @@ mod tests {
                 t,
                 std::iter::once((DVec3::new(0.0, height(t), 0.0), support)),
                 DVec3::ZERO,
+                0.0,
             );
             t_prev = t;
         }
