@@ -21,6 +21,7 @@ use std::sync::Arc;
 
 use gaitlab_core::driver::{Driver, IkFrameReport};
 use gaitlab_core::ik::Targets;
+use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::{Creature, PathSpec, PodaParams, check_transfer_keys};
 use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec2, DVec3};
@@ -636,7 +637,7 @@ impl PodaDriver {
         let ground = self.ground_pose(t);
         let (height, slope) = self.body_height_and_slope(t);
         // Nose up (the front higher, slope > 0) turns +z toward +y: about −x.
-        self.pitch_rad = slope.atan();
+        self.pitch_rad = slope.patan2(1.0);
         self.pose.root = RootTransform {
             position: DVec3::new(ground.position.x, height, ground.position.y),
             rotation: ground.rotation() * DMat3::from_rotation_x(-self.pitch_rad),
