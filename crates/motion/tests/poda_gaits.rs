@@ -105,8 +105,9 @@ fn every_gait_of_every_creature_keeps_feet_planted_and_its_timing() {
             }
         }
     }
-    // 9 quadruped gaits (with the 4-leg wave), 2 biped, 3 hexapod, 1 insect; two paths each.
-    assert_eq!(checked, 30);
+    // 10 quadruped gaits (with the 4-leg wave and alternating), 2 biped, 4 hexapod (with the
+    // 6-leg alternating), 3 insect (wave, alternating, ripple); two paths each.
+    assert_eq!(checked, 38);
 }
 
 /// Root heights sampled every frame for `seconds` after `settle` seconds.
