@@ -4,6 +4,8 @@
 //! curved body path; the body's vertical motion repeats with the gait period
 //! and a strong pronk leaves the ground.
 
+mod common;
+
 use gaitlab_core::driver::Driver;
 use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::{Creature, PathSpec, PodaParams, load_bundled};
@@ -45,11 +47,6 @@ fn run(creature: &Creature, params: PodaParams, seconds: f64) -> PodaDriver {
 }
 
 /// Circular distance between two phases (fractions of a cycle).
-fn phase_distance(a: f64, b: f64) -> f64 {
-    let d = (a - b).rem_euclid(1.0);
-    d.min(1.0 - d)
-}
-
 #[test]
 fn every_gait_of_every_creature_keeps_feet_planted_and_its_timing() {
     let mut checked = 0;
@@ -72,27 +69,7 @@ fn every_gait_of_every_creature_keeps_feet_planted_and_its_timing() {
                 );
                 let slip = metrics.foot_slip_max_m();
                 assert!(slip <= 0.001, "{label}: foot slip {:.3} mm", slip * 1e3);
-                let gait_params = driver.gait();
-                let period = metrics.period_s().expect("touchdowns measured");
-                assert!(
-                    (period - gait_params.period_s()).abs() < 0.005,
-                    "{label}: period {period} s"
-                );
-                for (leg, &phase) in metrics.legs.iter().zip(gait_params.phases()) {
-                    let duty = leg.duty_factor().expect("duty measured");
-                    assert!(
-                        (duty - gait_params.duty_factor()).abs() <= 0.02,
-                        "{label} {}: duty {duty} vs {}",
-                        leg.name,
-                        gait_params.duty_factor()
-                    );
-                    let measured = leg.relative_phase(period).expect("phase measured");
-                    assert!(
-                        phase_distance(measured, phase) <= 0.02,
-                        "{label} {}: phase {measured} vs {phase}",
-                        leg.name
-                    );
-                }
+                common::assert_gait_measured_as_set(&label, &driver);
                 if curved {
                     let end = driver.pose().root.position;
                     assert!(

@@ -5,6 +5,8 @@
 //! advances at the commanded speed, and each leg's measured duty factor and
 //! relative phase are the gait's.
 
+mod common;
+
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::{Creature, bundled_json};
 use gaitlab_motion::PodaDriver;
@@ -51,11 +53,6 @@ fn hexapod_with_extra_pairs(extra: usize) -> Creature {
 }
 
 /// Circular distance between two phases (fractions of a cycle).
-fn phase_distance(a: f64, b: f64) -> f64 {
-    let d = (a - b).rem_euclid(1.0);
-    d.min(1.0 - d)
-}
-
 #[test]
 fn the_hexapod_preset_with_added_pairs_has_the_added_legs() {
     for (extra, legs) in [(1, 8), (2, 10)] {
@@ -131,27 +128,7 @@ fn eight_and_ten_legs_walk_straight_in_every_named_gait_without_slipping() {
             let (driver, _) = walk(&creature, gait, 4.0 * FPS);
             let metrics = driver.metrics();
             assert!(metrics.foot_slip_max_m() <= 0.001, "{label} at 240 fps");
-            let gait_params = driver.gait();
-            let period = metrics.period_s().expect("touchdowns measured");
-            assert!(
-                (period - gait_params.period_s()).abs() < 0.005,
-                "{label}: period {period} s"
-            );
-            for (leg, &phase) in metrics.legs.iter().zip(gait_params.phases()) {
-                let duty = leg.duty_factor().expect("duty measured");
-                assert!(
-                    (duty - gait_params.duty_factor()).abs() <= 0.02,
-                    "{label} {}: duty {duty} vs {}",
-                    leg.name,
-                    gait_params.duty_factor()
-                );
-                let measured = leg.relative_phase(period).expect("phase measured");
-                assert!(
-                    phase_distance(measured, phase) <= 0.02,
-                    "{label} {}: phase {measured} vs {phase}",
-                    leg.name
-                );
-            }
+            common::assert_gait_measured_as_set(&label, &driver);
         }
     }
     println!("{}", report.join("\n"));

@@ -57,3 +57,37 @@ pub fn human_bent_knees() -> Skeleton {
         Err(error) => panic!("bent-knee human: {error}"),
     }
 }
+
+/// Distance between two cycle fractions on the circle, in [0, 0.5].
+pub fn phase_distance(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(1.0);
+    d.min(1.0 - d)
+}
+
+/// The gait a PODA driver ran, as measured from its feet, is the gait it was
+/// set: period within 5 ms, every leg's duty factor and relative phase within
+/// 0.02 of the set values.
+pub fn assert_gait_measured_as_set(label: &str, driver: &gaitlab_motion::PodaDriver) {
+    let metrics = driver.metrics();
+    let gait = driver.gait();
+    let period = metrics.period_s().expect("touchdowns measured");
+    assert!(
+        (period - gait.period_s()).abs() < 0.005,
+        "{label}: period {period} s"
+    );
+    for (leg, &phase) in metrics.legs.iter().zip(gait.phases()) {
+        let duty = leg.duty_factor().expect("duty measured");
+        assert!(
+            (duty - gait.duty_factor()).abs() <= 0.02,
+            "{label} {}: duty {duty} vs {}",
+            leg.name,
+            gait.duty_factor()
+        );
+        let measured = leg.relative_phase(period).expect("phase measured");
+        assert!(
+            phase_distance(measured, phase) <= 0.02,
+            "{label} {}: phase {measured} vs {phase}",
+            leg.name
+        );
+    }
+}
