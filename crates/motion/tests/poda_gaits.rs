@@ -46,7 +46,6 @@ fn run(creature: &Creature, params: PodaParams, seconds: f64) -> PodaDriver {
     driver
 }
 
-/// Circular distance between two phases (fractions of a cycle).
 #[test]
 fn every_gait_of_every_creature_keeps_feet_planted_and_its_timing() {
     let mut checked = 0;

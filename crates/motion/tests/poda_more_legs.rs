@@ -52,7 +52,6 @@ fn hexapod_with_extra_pairs(extra: usize) -> Creature {
     Creature::from_json(&preset.to_string()).expect("valid preset")
 }
 
-/// Circular distance between two phases (fractions of a cycle).
 #[test]
 fn the_hexapod_preset_with_added_pairs_has_the_added_legs() {
     for (extra, legs) in [(1, 8), (2, 10)] {
