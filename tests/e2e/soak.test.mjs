@@ -30,10 +30,11 @@ const PRESETS = ['human', 'ik-quadruped'];
 const MODES = ['walk', 'run', 'wounded-walk', 'wounded-run'];
 const METHODS = ['transpose', 'pinv', 'dls', 'sdls'];
 const PODA_GAITS = {
-  'poda-quadruped': ['walk', 'trot', 'pace', 'canter', 'transverse_gallop', 'rotary_gallop', 'bound', 'pronk'],
+  'poda-quadruped': ['walk', 'trot', 'pace', 'canter', 'transverse_gallop', 'rotary_gallop', 'bound', 'pronk',
+    'wave', 'alternating'],
   'poda-biped': ['walk', 'run'],
-  hexapod: ['tripod', 'ripple', 'wave'],
-  'insect-14': ['wave'],
+  hexapod: ['tripod', 'ripple', 'wave', 'alternating'],
+  'insect-14': ['wave', 'alternating', 'ripple'],
 };
 const PHYSICS_GAITS = {
   'raibert-biped': ['run', 'gallop', 'gallop_alternate'],

@@ -6,34 +6,15 @@
 mod common;
 
 use common::{bundled_preset, gaitlab, json_of, scratch_arg};
-use serde_json::Value;
 
 /// The bundled hexapod with a fourth pair of legs, as a user adds it: copies
 /// of the `L3`/`R3` limbs renamed `L4`/`R4` and moved 0.2 m back (the pair
 /// spacing), appended to `skeleton.limbs`. Written to a scratch file; its path.
 fn octopod_file() -> String {
-    let mut preset = bundled_preset("hexapod");
-    let limbs = preset["skeleton"]["limbs"]
-        .as_array_mut()
-        .expect("skeleton.limbs");
-    let added: Vec<Value> = limbs
-        .iter()
-        .filter(|l| l["name"] == "L3" || l["name"] == "R3")
-        .map(|limb| {
-            let side = &limb["name"].as_str().expect("limb name")[..1];
-            let text = limb
-                .to_string()
-                .replace(&format!("\"{side}3"), &format!("\"{side}4"));
-            let mut limb: Value = serde_json::from_str(&text).expect("limb JSON");
-            let z = limb["base_offset"][2].as_f64().expect("base offset z");
-            limb["base_offset"][2] = Value::from(z - 0.2);
-            limb
-        })
-        .collect();
-    assert_eq!(added.len(), 2, "the hexapod's last pair");
-    limbs.extend(added);
+    let hexapod = bundled_preset("hexapod").to_string();
     let path = scratch_arg("hexapod-8-legs.json");
-    std::fs::write(&path, preset.to_string()).expect("scratch file");
+    let octopod = gaitlab_testkit::with_extra_leg_pairs(&hexapod, 3, 1, 0.2);
+    std::fs::write(&path, octopod).expect("scratch file");
     path
 }
 

@@ -284,6 +284,8 @@ pub struct GaitRunMetrics {
     pub gaits_available: Vec<&'static str>,
     /// Largest horizontal drift of any planted foot during support, metres.
     pub foot_slip_max_m: f64,
+    /// Largest distance of the body from its path, metres (corners it cut).
+    pub path_error_max_m: f64,
     /// Each leg's figures.
     pub legs: Vec<GaitLegMetrics>,
     /// Measured period, seconds.
@@ -345,6 +347,7 @@ impl GaitRunMetrics {
             gait: driver.gait_name().to_owned(),
             gaits_available: gaitlab_motion::poda::gait_names(gait.leg_count()).collect(),
             foot_slip_max_m: metrics.foot_slip_max_m(),
+            path_error_max_m: driver.path_error_max_m(),
             legs,
             period_s: period,
             period_s_set: gait.period_s(),

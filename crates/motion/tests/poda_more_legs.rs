@@ -11,7 +11,6 @@ use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::{Creature, bundled_json};
 use gaitlab_motion::PodaDriver;
 use gaitlab_motion::poda::gait_names;
-use serde_json::Value;
 
 const FPS: f64 = 60.0;
 /// Seconds walked, and seconds left out of the speed measurement while the body gets going.
@@ -26,30 +25,9 @@ const PAIR_SPACING_M: f64 = 0.2;
 /// `skeleton.limbs` (the legs default to the limbs in order, pairs front to
 /// back, left then right).
 fn hexapod_with_extra_pairs(extra: usize) -> Creature {
-    let text = bundled_json("hexapod").expect("bundled hexapod");
-    let mut preset: Value = serde_json::from_str(text).expect("preset JSON");
-    let limbs = preset["skeleton"]["limbs"]
-        .as_array_mut()
-        .expect("skeleton.limbs");
-    let last: Vec<Value> = limbs
-        .iter()
-        .filter(|l| l["name"] == "L3" || l["name"] == "R3")
-        .cloned()
-        .collect();
-    assert_eq!(last.len(), 2, "the hexapod's last pair");
-    for pair in 4..4 + extra {
-        for limb in &last {
-            let side = &limb["name"].as_str().expect("limb name")[..1];
-            let text = limb
-                .to_string()
-                .replace(&format!("\"{side}3"), &format!("\"{side}{pair}"));
-            let mut limb: Value = serde_json::from_str(&text).expect("limb JSON");
-            let z = limb["base_offset"][2].as_f64().expect("base offset z");
-            limb["base_offset"][2] = Value::from(z - PAIR_SPACING_M * (pair - 3) as f64);
-            limbs.push(limb);
-        }
-    }
-    Creature::from_json(&preset.to_string()).expect("valid preset")
+    let hexapod = bundled_json("hexapod").expect("bundled hexapod");
+    let text = gaitlab_testkit::with_extra_leg_pairs(hexapod, 3, extra, PAIR_SPACING_M);
+    Creature::from_json(&text).expect("valid preset")
 }
 
 #[test]

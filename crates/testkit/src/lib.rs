@@ -1,5 +1,11 @@
-//! Helpers shared by the test suites of `gaitlab-core`, `gaitlab-motion` and
-//! `gaitlab-physics` (a dev-dependency only; see `docs/property-tests.md`).
+//! Helpers shared by the test suites of `gaitlab-core`, `gaitlab-motion`,
+//! `gaitlab-physics` and `gaitlab-cli` (a dev-dependency only; see
+//! `docs/property-tests.md`): the property tests' configuration and a
+//! preset with more leg pairs.
+
+mod more_legs;
+
+pub use more_legs::with_extra_leg_pairs;
 
 use proptest::test_runner::{Config, RngSeed};
 

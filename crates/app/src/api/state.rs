@@ -121,6 +121,8 @@ pub struct PodaState {
     pub legs: Vec<String>,
     /// Largest foot slip in support, metres.
     pub foot_slip_max_m: f64,
+    /// Largest distance of the body from its path, metres (corners it cut).
+    pub path_error_max_m: f64,
     /// What the last gait edit derived.
     pub derived: Vec<&'static str>,
 }
@@ -339,6 +341,7 @@ impl State {
                     blending: gait.is_blending(),
                     legs: driver.leg_names().map(str::to_owned).collect(),
                     foot_slip_max_m: driver.metrics().foot_slip_max_m(),
+                    path_error_max_m: driver.path_error_max_m(),
                     derived: lab.gait_derived.clone(),
                 }
             }),

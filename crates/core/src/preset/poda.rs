@@ -135,6 +135,18 @@ pub struct PodaParams {
     /// 1.3 mm (docs/poda.md), so it turns on with issue 19's leg-by-leg gait
     /// changes.
     pub body_pitch: bool,
+    /// Follow the body path only as tightly as the legs reach (the lab's
+    /// reading of "Horizontal Control": the body's turning and speeding up
+    /// "must be coherent with its leg support duration pattern"): the
+    /// direction of travel turns on a radius no tighter than the farthest
+    /// reference foot's distance from the body's centre (a planted foot then
+    /// sweeps sideways no more than half a stroke in half a support), the
+    /// body never runs faster than the gait, and the desired point on the
+    /// path waits for the body, at most one stroke ahead. The body cuts a
+    /// corner the legs cannot take; `path_error_max_m` reports by how much.
+    /// Default off, as presets ran before 2026-12-02 (eq. 14–15's force
+    /// bound only); the bundled PODA presets turn it on.
+    pub turn_within_reach: bool,
     /// Largest IK iterations per leg per frame. Default 12.
     pub iterations_per_frame: usize,
     /// Stop iterating a leg once its foot is this close to its target, metres. Default 1e-6.
@@ -160,6 +172,7 @@ impl Default for PodaParams {
             max_leg_force_n: None,
             vertical_gain: 1.0,
             body_pitch: false,
+            turn_within_reach: false,
             iterations_per_frame: 12,
             tolerance_m: 1e-6,
             center_gain: 0.5,

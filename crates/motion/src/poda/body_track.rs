@@ -14,6 +14,14 @@
 //!    of the change in the direction of travel between the two mid-stances; the
 //!    legs' contributions add up.
 //!
+//! With `turn_within_reach` (the lab's reading of the paper's "coherent with
+//! its leg support duration pattern" for the legs' reach) the direction of
+//! travel also turns at most `v / r` (gait speed over the farthest foot's
+//! distance from the centre), the body never outruns the gait and slows for
+//! a sharp turn, and the desired point waits at most one stroke ahead: the
+//! body cuts corners its legs cannot take (`BodyDynamics::min_turn_radius_m`,
+//! `max_lead_strokes`).
+//!
 //! Translation is planned one gait period further ahead than yaw, because a
 //! leg's yaw target lies one period after its mid-stance.
 
@@ -26,6 +34,11 @@ use super::gait::GaitParams;
 use super::ground_pose::GroundPose;
 use super::path::BodyPath;
 
+/// The least fraction of the gait's speed the body keeps while turning
+/// toward a direction far off its own (with `min_turn_radius_m`): slow enough
+/// to turn inside its turning circle, never stopped.
+const MIN_TURN_SPEED_FRACTION: f64 = 0.25;
+
 /// Options of the horizontal and yaw dynamics.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BodyDynamics {
@@ -35,6 +48,14 @@ pub struct BodyDynamics {
     pub max_leg_force_n: f64,
     /// Pull of the desired velocity toward the desired point on the path, 1/s.
     pub path_gain_per_s: f64,
+    /// Tightest radius the body turns on, metres (0: no limit): its direction
+    /// of travel turns at most `speed / radius` rad/s, so the body cuts a
+    /// tighter corner of the path instead of dragging its planted feet.
+    pub min_turn_radius_m: f64,
+    /// Farthest the desired point runs ahead of the body, in strokes of the
+    /// gait (0: no limit); with a limit the body also never runs faster than
+    /// the gait.
+    pub max_lead_strokes: f64,
 }
 
 impl Default for BodyDynamics {
@@ -43,6 +64,8 @@ impl Default for BodyDynamics {
             mass_kg: 30.0,
             max_leg_force_n: 30.0 * 9.81,
             path_gain_per_s: 2.0,
+            min_turn_radius_m: 0.0,
+            max_lead_strokes: 0.0,
         }
     }
 }
@@ -233,12 +256,46 @@ impl BodyTrack {
         };
         let h = self.step_s;
         let t = last.t_s + h;
-        let desired_m = last.desired_m + gait.speed_mps() * h;
         // Velocity feedback (eq. 15) toward the path's velocity at the desired
         // point, pulled toward where that point is now.
         let now = path.sample(last.desired_m);
-        let wanted = now.tangent * gait.speed_mps()
+        let gap = (now.position - last.position).length();
+        let lead = self.dynamics.max_lead_strokes * gait.stroke_m();
+        let wait = if lead > 0.0 {
+            (1.0 - gap / lead).clamp(0.0, 1.0)
+        } else {
+            1.0
+        };
+        let mut desired_m = last.desired_m + gait.speed_mps() * h * wait;
+        if lead > 0.0 {
+            // The desired point never stays behind the body's own place on
+            // the path: a body that cut a corner goes on from where it is.
+            let ahead = path.closest_distance(last.position) - desired_m;
+            let ahead = if path.is_closed() {
+                let length = path.length_m();
+                (ahead + 0.5 * length).rem_euclid(length) - 0.5 * length
+            } else {
+                ahead
+            };
+            if ahead > 0.0 {
+                desired_m += ahead;
+            }
+        }
+        let mut wanted = now.tangent * gait.speed_mps()
             + (now.position - last.position) * self.dynamics.path_gain_per_s;
+        if lead > 0.0 && wanted.length() > gait.speed_mps() {
+            wanted *= gait.speed_mps() / wanted.length();
+        }
+        if self.dynamics.min_turn_radius_m > 0.0 {
+            // Slow down for a turn ahead (the cosine of the heading error):
+            // at a bounded turn rate, a target inside the turning circle is
+            // reached only by slowing, never by orbiting it.
+            let (speed, want) = (last.velocity.length(), wanted.length());
+            if speed > 1e-9 && want > 1e-9 {
+                let cos = last.velocity.dot(wanted) / (speed * want);
+                wanted *= cos.max(MIN_TURN_SPEED_FRACTION);
+            }
+        }
         let supporting = (0..gait.leg_count())
             .filter(|&i| gait.leg_phase(i, last.t_s).is_some_and(|p| p.support))
             .count();
@@ -251,7 +308,8 @@ impl BodyTrack {
         } else {
             error / h
         };
-        let velocity = last.velocity + accel * h;
+        let velocity =
+            self.turn_limited(last.velocity, last.velocity + accel * h, gait.speed_mps());
         self.states.push_back(BodyState {
             t_s: t,
             position: last.position + velocity * h,
@@ -260,6 +318,26 @@ impl BodyTrack {
             yaw_rate: last.yaw_rate,
             desired_m,
         });
+    }
+
+    /// `next` with its direction turned at most `speed / min_turn_radius_m ·
+    /// step` away from `last`'s (its length kept): in half a support of `S`
+    /// seconds a planted foot `r` from the centre sweeps sideways `r·ω·S/2`,
+    /// at most the half stroke `v·S/2` when `ω ≤ v / r`.
+    fn turn_limited(&self, last: DVec2, next: DVec2, gait_speed_mps: f64) -> DVec2 {
+        let radius = self.dynamics.min_turn_radius_m;
+        let speed = next.length();
+        if radius <= 0.0 || speed < 1e-9 || last.length_squared() < 1e-18 {
+            return next;
+        }
+        let max_turn = gait_speed_mps / radius * self.step_s;
+        let turn = wrap(next.x.patan2(next.y) - last.x.patan2(last.y));
+        if turn.abs() <= max_turn {
+            return next;
+        }
+        let heading = last.x.patan2(last.y) + max_turn.copysign(turn);
+        let (sin, cos) = heading.psin_cos();
+        DVec2::new(sin, cos) * speed
     }
 
     /// Starts a new yaw cycle for every leg whose latest mid-stance (leg
@@ -415,6 +493,8 @@ mod tests {
             mass_kg: 40.0,
             max_leg_force_n: 20.0,
             path_gain_per_s: 0.0,
+            min_turn_radius_m: 0.0,
+            max_lead_strokes: 0.0,
         };
         let mut track = BodyTrack::new(H, dynamics);
         track.reset(&path, &gait);

@@ -108,6 +108,8 @@ pub struct PodaDriver {
     legs_mean_z_m: f64,
     /// This frame's body pitch, radians (positive: nose up).
     pitch_rad: f64,
+    /// Largest distance of the body from its path since the last reset, metres.
+    path_error_max_m: f64,
 }
 
 /// The body's pitch from its legs' vertical motion (Figure 2; "Rotational
@@ -236,6 +238,14 @@ impl PodaDriver {
             max_leg_force_n: params
                 .max_leg_force_n
                 .unwrap_or(params.body_mass_kg * GRAVITY_MPS2),
+            min_turn_radius_m: if params.turn_within_reach {
+                legs.iter()
+                    .map(|l| DVec2::new(l.reference_body.x, l.reference_body.z).length())
+                    .fold(0.0, f64::max)
+            } else {
+                0.0
+            },
+            max_lead_strokes: if params.turn_within_reach { 1.0 } else { 0.0 },
             ..BodyDynamics::default()
         };
         let mut driver = Self {
@@ -268,6 +278,7 @@ impl PodaDriver {
             pitch_weights: Vec::with_capacity(n),
             legs_mean_z_m: 0.0,
             pitch_rad: 0.0,
+            path_error_max_m: 0.0,
         };
         let z: Vec<f64> = driver.legs.iter().map(|l| l.reference_body.z).collect();
         driver.legs_mean_z_m = pitch_weights(&z, &mut driver.pitch_weights);
@@ -452,6 +463,22 @@ impl PodaDriver {
             .iter()
             .filter(|r| !r.support)
             .map(|r| r.foothold_world)
+    }
+
+    /// Largest distance of the body's ground position from its path since
+    /// the last reset, metres: how far it cut corners its legs could not
+    /// take (`turn_within_reach`) or lagged behind the path.
+    #[must_use]
+    pub fn path_error_max_m(&self) -> f64 {
+        self.path_error_max_m
+    }
+
+    /// This frame's distance of the body's ground position from its path, metres.
+    #[must_use]
+    pub fn path_error_m(&self) -> f64 {
+        let position = self.track.interpolate(self.time).position;
+        let closest = self.path.sample(self.path.closest_distance(position));
+        (closest.position - position).length()
     }
 
     /// Arc length of the desired point on the body path now, metres.
@@ -689,6 +716,7 @@ impl Driver for PodaDriver {
         self.place_body(t);
         self.solve(self.params.iterations_per_frame);
         self.record_metrics(t_prev, t, false);
+        self.path_error_max_m = self.path_error_max_m.max(self.path_error_m());
     }
 
     fn time(&self) -> f64 {
@@ -722,6 +750,7 @@ impl Driver for PodaDriver {
                 self.runs[i].target = self.transfer_target(i, 0.0, phase.fraction);
             }
         }
+        self.path_error_max_m = 0.0;
         self.place_body(0.0);
         self.solve(RESET_ITERATIONS);
         self.record_metrics(0.0, 0.0, true);

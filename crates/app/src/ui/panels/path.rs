@@ -104,7 +104,22 @@ fn path(ui: &mut egui::Ui, lab: &mut Lab) {
                 .on_hover_text("Smoother spline near (not through) the control points")
                 .changed();
         });
-        changed |= top_down(ui, &mut spec, &samples, body);
+        let closest = path.sample(path.closest_distance(body)).position;
+        changed |= top_down(ui, &mut spec, &samples, (body, closest));
+        let (now, most) = (driver.path_error_m(), driver.path_error_max_m());
+        ui.label(format!(
+            "Body off its path: {:.0} mm now, {:.0} mm at most",
+            now * 1e3,
+            most * 1e3
+        ))
+        .on_hover_text(if driver.params().turn_within_reach {
+            "The body turns no tighter than its legs reach and waits for nothing: on a \
+             bend its legs cannot take it cuts the corner (the lab's reading of the \
+             paper's horizontal control, scenario.poda.turn_within_reach), and the feet stay planted."
+        } else {
+            "turn_within_reach is off: the body follows the path as eq. 14–15's leg forces \
+             allow, and on bends tighter than the legs reach the planted feet are dragged."
+        });
         ui.weak("Drag the control points; the body joins the new path where it is closest.");
         if changed {
             edited = Some(spec);
@@ -119,7 +134,13 @@ fn path(ui: &mut egui::Ui, lab: &mut Lab) {
 
 /// Draws the path from above and lets the control points be dragged; true
 /// when a point moved.
-fn top_down(ui: &mut egui::Ui, spec: &mut PathSpec, samples: &[DVec2], body: DVec2) -> bool {
+/// `body` is the body's ground position and the path point closest to it.
+fn top_down(
+    ui: &mut egui::Ui,
+    spec: &mut PathSpec,
+    samples: &[DVec2],
+    (body, closest): (DVec2, DVec2),
+) -> bool {
     let (rect, _) = ui.allocate_exact_size(egui::vec2(VIEW_SIZE, VIEW_SIZE), egui::Sense::hover());
     let painter = ui.painter_at(rect);
     let visuals = ui.visuals();
@@ -150,6 +171,13 @@ fn top_down(ui: &mut egui::Ui, spec: &mut PathSpec, samples: &[DVec2], body: DVe
         line,
         egui::Stroke::new(2.0, visuals.selection.bg_fill),
     ));
+    if (closest - body).length() > 0.01 {
+        // How far the body is off its path: a line to the closest point.
+        painter.line_segment(
+            [to_screen(body), to_screen(closest)],
+            egui::Stroke::new(1.5, visuals.warn_fg_color),
+        );
+    }
     painter.circle_filled(to_screen(body), 4.0, visuals.warn_fg_color);
     let mut moved = false;
     for (k, point) in spec.points.iter_mut().enumerate() {
