@@ -22,8 +22,9 @@ Usage: python3 tools/poda_change_sweep.py [--presets P,...] [--frames N]
 import argparse
 import concurrent.futures
 import json
-import subprocess
 import sys
+
+from gaitlab_run import run
 
 WARMUP_S = 2.0
 AFTER_S = 3.0
@@ -36,14 +37,6 @@ EDIT_KEYS = {
     "leg_force_n": "leg_force_n_set",
 }
 LIMIT_M = 1e-3
-
-
-def run(gaitlab, preset, args):
-    out = subprocess.run([gaitlab, "run", preset, "--json", *args],
-                         capture_output=True, text=True)
-    if out.returncode != 0:
-        return {"error": out.stderr.strip()}
-    return json.loads(out.stdout)
 
 
 def cases(gaitlab, preset, frames, only):

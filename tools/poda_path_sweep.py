@@ -25,8 +25,9 @@ import json
 import math
 import os
 import random
-import subprocess
 import tempfile
+
+from gaitlab_run import run
 
 LIMIT_M = 1e-3
 TIGHT = [[0, 0], [1, 0.5], [2, -0.5], [3, 1], [2, 2], [0, 1.5]]
@@ -49,14 +50,6 @@ def paths(count, seed):
             points.append([round(r * math.cos(a), 4), round(r * math.sin(a), 4)])
         out.append((f"random {k} (n {n}, r {radius:.2f})", points, True))
     return out
-
-
-def run(gaitlab, preset, args):
-    out = subprocess.run([gaitlab, "run", preset, "--json", *args],
-                         capture_output=True, text=True)
-    if out.returncode != 0:
-        return {"error": out.stderr.strip()}
-    return json.loads(out.stdout)
 
 
 def main():
