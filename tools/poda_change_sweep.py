@@ -21,7 +21,6 @@ Usage: python3 tools/poda_change_sweep.py [--presets P,...] [--frames N]
 `cargo build --release -p gaitlab-cli`.)"""
 import argparse
 import concurrent.futures
-import json
 import sys
 
 from gaitlab_run import run

@@ -3,7 +3,7 @@
 //! recording panel records and saves a take.
 
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT, Queryable};
 use gaitlab_app::{Lab, Settings};
 
 fn harness() -> Harness<'static, Lab> {
@@ -169,6 +169,47 @@ fn the_body_path_panel_swaps_in_a_circle() {
         .poda()
         .map(|d| d.path().is_closed());
     assert_eq!(closed, Some(true));
+}
+
+#[test]
+fn the_body_path_panel_says_how_far_the_body_is_off_its_path() {
+    let mut harness = poda_harness("hexapod", 1400.0);
+    harness.run();
+    harness.get_by_label("Body path").click();
+    harness.run();
+    // The issue's tight closed path, scaled to the hexapod: it cuts corners.
+    harness
+        .state_mut()
+        .command(
+            r#"{"path":{"kind":"catmull_rom","closed":true,"points":[[0,0],[0.3,0.15],[0.6,-0.15],[0.9,0.3],[0.6,0.6],[0,0.45]]}}"#,
+        )
+        .expect("valid path");
+    harness.state_mut().set_paused(false);
+    for _ in 0..600 {
+        harness.state_mut().advance(1.0 / 60.0);
+    }
+    harness.state_mut().set_paused(true);
+    // The path view was redrawn for the moved body: let the frames settle.
+    harness.run_steps(40);
+    let most = harness
+        .state()
+        .driver()
+        .poda()
+        .map(|d| d.path_error_max_m())
+        .expect("PODA");
+    assert!(most > 0.01, "{most} m");
+    let label = harness
+        .query_all_by_label_contains("Body off its path")
+        .next()
+        .map(|node| {
+            let node = node.accesskit_node();
+            node.value().or_else(|| node.label()).unwrap_or_default()
+        })
+        .expect("the line under the path view");
+    assert!(
+        label.ends_with(&format!("{:.0} mm at most", most * 1e3)),
+        "{label} (at most {most} m)"
+    );
 }
 
 #[test]
