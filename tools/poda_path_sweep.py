@@ -11,9 +11,11 @@ Paths (x, z in metres):
   any preset's legs can take.
 
 Each case is `gaitlab run PRESET --gait G --path FILE --seconds S --json`,
-with `turn_within_reach` as the preset sets it (on, for the bundled PODA
-presets) and, with --both, again with `--set
-scenario.poda.turn_within_reach=false`. Prints per preset and setting the
+with `turn_within_reach` and `yaw_toward_actual` as the preset sets them
+(on, for the bundled PODA presets) and, with --both, again with both off
+(`--set scenario.poda.turn_within_reach=false --set
+scenario.poda.yaw_toward_actual=false`: how the presets ran before
+2026-12-02). Prints per preset and setting the
 cases, how many slip more than 1 mm, the worst slip and the largest
 `path_error_max_m`.
 
@@ -71,7 +73,9 @@ def main():
         files.append((name, file))
     settings = [("on", [])]
     if args.both:
-        settings.append(("off", ["--set", "scenario.poda.turn_within_reach=false"]))
+        settings.append(("off, as before 2026-12-02", [
+            "--set", "scenario.poda.turn_within_reach=false",
+            "--set", "scenario.poda.yaw_toward_actual=false"]))
     for preset in args.presets.split(","):
         gaits = run(args.gaitlab, preset, ["--seconds", "0.1"])["gaits_available"]
         for label, extra in settings:

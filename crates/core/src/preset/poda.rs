@@ -147,6 +147,14 @@ pub struct PodaParams {
     /// Default off, as presets ran before 2026-12-02 (eq. 14–15's force
     /// bound only); the bundled PODA presets turn it on.
     pub turn_within_reach: bool,
+    /// Read "Rotational Control"'s `σ_{midStance+P} − σ_{midStance}` with the
+    /// body's actual yaw at the leg's mid-stance, so that each leg turns the
+    /// body from where it faces to the direction of travel one period later
+    /// and a yaw error left over is corrected. Off, each leg adds only the
+    /// change of the direction of travel between its mid-stances, and a yaw
+    /// error stays (how every preset ran before 2026-12-02); the bundled PODA
+    /// presets turn it on.
+    pub yaw_toward_actual: bool,
     /// Largest IK iterations per leg per frame. Default 12.
     pub iterations_per_frame: usize,
     /// Stop iterating a leg once its foot is this close to its target, metres. Default 1e-6.
@@ -173,6 +181,7 @@ impl Default for PodaParams {
             vertical_gain: 1.0,
             body_pitch: false,
             turn_within_reach: false,
+            yaw_toward_actual: false,
             iterations_per_frame: 12,
             tolerance_m: 1e-6,
             center_gain: 0.5,

@@ -11,8 +11,12 @@
 //! 3. **yaw** ("Rotational Control"): each leg, from one mid-stance to the
 //!    next, pushes with `σ̈ = Δσ / (push·(push + fall))` during its push, coasts
 //!    through its fall and restores with `−σ̈`, where `Δσ` is its share (1/n)
-//!    of the change in the direction of travel between the two mid-stances; the
-//!    legs' contributions add up.
+//!    of the turn from the body's yaw at the mid-stance to the direction of
+//!    travel at the next (the paper's `σ_{midStance+P} − σ_{midStance}`, read
+//!    with the actual yaw at mid-stance, so a yaw error left over is corrected
+//!    too; `yaw_toward_actual` off, as before 2026-12-02: the change of the
+//!    direction of travel between the mid-stances); the legs' contributions
+//!    add up.
 //!
 //! With `turn_within_reach` (the lab's reading of the paper's "coherent with
 //! its leg support duration pattern" for the legs' reach) the direction of
@@ -56,6 +60,9 @@ pub struct BodyDynamics {
     /// gait (0: no limit); with a limit the body also never runs faster than
     /// the gait.
     pub max_lead_strokes: f64,
+    /// Turn each leg's yaw cycle from the body's actual yaw at its mid-stance
+    /// (`yaw_toward_actual`), not from the direction of travel there.
+    pub yaw_toward_actual: bool,
 }
 
 impl Default for BodyDynamics {
@@ -66,6 +73,7 @@ impl Default for BodyDynamics {
             path_gain_per_s: 2.0,
             min_turn_radius_m: 0.0,
             max_lead_strokes: 0.0,
+            yaw_toward_actual: true,
         }
     }
 }
@@ -354,7 +362,16 @@ impl BodyTrack {
             // A later mid-stance starts the next cycle (rounding at the
             // boundary may put `mid` a whole period back: keep the cycle then).
             if cycle.push_s == 0.0 || mid > cycle.start_s + 0.5 * period {
-                let change = wrap(self.travel_heading(mid + period) - self.travel_heading(mid));
+                // From the body's yaw at the mid-stance to the direction of
+                // travel one period later ("Rotational Control": σ at
+                // mid-stance + P minus σ at mid-stance), so that a yaw
+                // error left over is corrected, not only the heading's change.
+                let from = if self.dynamics.yaw_toward_actual {
+                    self.interpolate(mid).yaw_rad
+                } else {
+                    self.travel_heading(mid)
+                };
+                let change = wrap(self.travel_heading(mid + period) - from);
                 let push = 0.5 * support;
                 self.cycles[i] = YawCycle {
                     start_s: mid,
@@ -495,6 +512,7 @@ mod tests {
             path_gain_per_s: 0.0,
             min_turn_radius_m: 0.0,
             max_lead_strokes: 0.0,
+            yaw_toward_actual: true,
         };
         let mut track = BodyTrack::new(H, dynamics);
         track.reset(&path, &gait);
@@ -521,6 +539,48 @@ mod tests {
         // 1 m/s of speed at 1 m/s² (a trot always has two legs down), from t = 1 s.
         let reached = reached.expect("reaches the new speed");
         assert!((reached - 2.0).abs() < 0.05, "reached at {reached} s");
+    }
+
+    #[test]
+    fn a_yaw_left_off_the_direction_of_travel_is_turned_back() {
+        // Walking straight ahead (+z) but facing 0.3 rad off: each leg turns
+        // the body from its yaw at mid-stance toward the direction of travel.
+        let path = BodyPath::straight(DVec2::ZERO, 0.0, 100.0).expect("path");
+        let gait = trot(0.8);
+        let mut track = BodyTrack::new(H, BodyDynamics::default());
+        track.reset(&path, &gait);
+        for state in &mut track.states {
+            state.yaw_rad = 0.3;
+        }
+        track.yaw_planned = 1;
+        track.cycles.fill(YawCycle::default());
+        let states = run(&mut track, &path, &gait, 6.0);
+        let lowest = states
+            .iter()
+            .map(|s| s.yaw_rad)
+            .fold(f64::INFINITY, f64::min);
+        let last = states.last().expect("states").yaw_rad;
+        assert!(last.abs() < 0.01, "still {last} rad off after 6 s");
+        assert!(lowest > -0.1, "overshot to {lowest} rad");
+        // Two periods in, most of the error is gone.
+        let early = states[(1.2 / H) as usize].yaw_rad;
+        assert!(early.abs() < 0.15, "{early} rad at 1.2 s");
+        // As before 2026-12-02 (`yaw_toward_actual` off): the legs add only the
+        // change of the direction of travel, and the error stays.
+        let dynamics = BodyDynamics {
+            yaw_toward_actual: false,
+            ..BodyDynamics::default()
+        };
+        let mut track = BodyTrack::new(H, dynamics);
+        track.reset(&path, &gait);
+        for state in &mut track.states {
+            state.yaw_rad = 0.3;
+        }
+        track.yaw_planned = 1;
+        track.cycles.fill(YawCycle::default());
+        let states = run(&mut track, &path, &gait, 6.0);
+        let last = states.last().expect("states").yaw_rad;
+        assert!((last - 0.3).abs() < 1e-9, "{last} rad");
     }
 
     #[test]

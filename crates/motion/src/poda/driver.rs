@@ -246,6 +246,7 @@ impl PodaDriver {
                 0.0
             },
             max_lead_strokes: if params.turn_within_reach { 1.0 } else { 0.0 },
+            yaw_toward_actual: params.yaw_toward_actual,
             ..BodyDynamics::default()
         };
         let mut driver = Self {
