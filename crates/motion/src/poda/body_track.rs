@@ -541,20 +541,25 @@ mod tests {
         assert!((reached - 2.0).abs() < 0.05, "reached at {reached} s");
     }
 
-    #[test]
-    fn a_yaw_left_off_the_direction_of_travel_is_turned_back() {
-        // Walking straight ahead (+z) but facing 0.3 rad off: each leg turns
-        // the body from its yaw at mid-stance toward the direction of travel.
+    /// 6 s of a trot at 0.8 m/s straight ahead (+z), the body set facing 0.3 rad off.
+    fn yawed_trot(dynamics: BodyDynamics) -> Vec<BodyState> {
         let path = BodyPath::straight(DVec2::ZERO, 0.0, 100.0).expect("path");
         let gait = trot(0.8);
-        let mut track = BodyTrack::new(H, BodyDynamics::default());
+        let mut track = BodyTrack::new(H, dynamics);
         track.reset(&path, &gait);
         for state in &mut track.states {
             state.yaw_rad = 0.3;
         }
         track.yaw_planned = 1;
         track.cycles.fill(YawCycle::default());
-        let states = run(&mut track, &path, &gait, 6.0);
+        run(&mut track, &path, &gait, 6.0)
+    }
+
+    #[test]
+    fn a_yaw_left_off_the_direction_of_travel_is_turned_back() {
+        // Each leg turns the body from its yaw at mid-stance toward the
+        // direction of travel.
+        let states = yawed_trot(BodyDynamics::default());
         let lowest = states
             .iter()
             .map(|s| s.yaw_rad)
@@ -567,18 +572,10 @@ mod tests {
         assert!(early.abs() < 0.15, "{early} rad at 1.2 s");
         // As before 2026-12-02 (`yaw_toward_actual` off): the legs add only the
         // change of the direction of travel, and the error stays.
-        let dynamics = BodyDynamics {
+        let states = yawed_trot(BodyDynamics {
             yaw_toward_actual: false,
             ..BodyDynamics::default()
-        };
-        let mut track = BodyTrack::new(H, dynamics);
-        track.reset(&path, &gait);
-        for state in &mut track.states {
-            state.yaw_rad = 0.3;
-        }
-        track.yaw_planned = 1;
-        track.cycles.fill(YawCycle::default());
-        let states = run(&mut track, &path, &gait, 6.0);
+        });
         let last = states.last().expect("states").yaw_rad;
         assert!((last - 0.3).abs() < 1e-9, "{last} rad");
     }
