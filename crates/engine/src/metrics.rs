@@ -308,6 +308,9 @@ pub struct GaitRunMetrics {
     pub body_height_range_m: [f64; 2],
     /// Lowest and highest body pitch, degrees (positive: nose up; Figure 2).
     pub body_pitch_range_deg: [f64; 2],
+    /// Most the body fell behind and ran ahead of its even motion along the
+    /// path, metres (the fore-aft surge, `scenario.poda.fore_aft_surge`).
+    pub body_surge_range_m: [f64; 2],
     /// Longest time with no foot planted, seconds.
     pub flight_duration_max_s: f64,
     /// Whether every joint value stayed finite and within its limits.
@@ -362,6 +365,7 @@ impl GaitRunMetrics {
                 metrics.body_pitch_range_rad.0.to_degrees(),
                 metrics.body_pitch_range_rad.1.to_degrees(),
             ],
+            body_surge_range_m: [metrics.body_surge_range_m.0, metrics.body_surge_range_m.1],
             flight_duration_max_s: metrics.flight_max_s,
             within_limits: timing.within_limits,
             fps: None,

@@ -155,6 +155,15 @@ pub struct PodaParams {
     /// error stays (how every preset ran before 2026-12-02); the bundled PODA
     /// presets turn it on.
     pub yaw_toward_actual: bool,
+    /// The body's fore-aft surge ("Horizontal Control": "an additional
+    /// backward acceleration during the restore duration and forward
+    /// acceleration during the push duration"): each supporting leg pushes
+    /// along itself, so its eq. 12–13 force has a horizontal part that brakes
+    /// before mid-stance and drives after it; the body lags and catches up
+    /// around the path's even motion (magnitude derived in docs/poda.md,
+    /// "Fore-aft surge"). Off, the body moves evenly along its path, as every
+    /// preset ran before 2026-12-02; the bundled PODA presets turn it on.
+    pub fore_aft_surge: bool,
     /// Largest IK iterations per leg per frame. Default 12.
     pub iterations_per_frame: usize,
     /// Stop iterating a leg once its foot is this close to its target, metres. Default 1e-6.
@@ -182,6 +191,7 @@ impl Default for PodaParams {
             body_pitch: false,
             turn_within_reach: false,
             yaw_toward_actual: false,
+            fore_aft_surge: false,
             iterations_per_frame: 12,
             tolerance_m: 1e-6,
             center_gain: 0.5,

@@ -34,6 +34,7 @@ use super::ground_pose::GroundPose;
 use super::leg_ik::{LegIk, LegIkOptions};
 use super::path::BodyPath;
 use super::spline::eval_open;
+use super::surge::surge_superposition_m;
 use crate::DriverError;
 
 /// Gravity, m/s².
@@ -110,6 +111,8 @@ pub struct PodaDriver {
     pitch_rad: f64,
     /// Largest distance of the body from its path since the last reset, metres.
     path_error_max_m: f64,
+    /// This frame's fore-aft surge, metres forward (0 when `fore_aft_surge` is off).
+    surge_m: f64,
 }
 
 /// The body's pitch from its legs' vertical motion (Figure 2; "Rotational
@@ -280,6 +283,7 @@ impl PodaDriver {
             legs_mean_z_m: 0.0,
             pitch_rad: 0.0,
             path_error_max_m: 0.0,
+            surge_m: 0.0,
         };
         let z: Vec<f64> = driver.legs.iter().map(|l| l.reference_body.z).collect();
         driver.legs_mean_z_m = pitch_weights(&z, &mut driver.pitch_weights);
@@ -474,10 +478,19 @@ impl PodaDriver {
         self.path_error_max_m
     }
 
-    /// This frame's distance of the body's ground position from its path, metres.
+    /// This frame's fore-aft surge, metres ahead of the body's even motion
+    /// along its path (0 when `scenario.poda.fore_aft_surge` is off).
+    #[must_use]
+    pub fn surge_m(&self) -> f64 {
+        self.surge_m
+    }
+
+    /// This frame's distance of the body's ground position (the root, with
+    /// its surge) from its path, metres.
     #[must_use]
     pub fn path_error_m(&self) -> f64 {
-        let position = self.track.interpolate(self.time).position;
+        let root = self.pose.root.position;
+        let position = DVec2::new(root.x, root.z);
         let closest = self.path.sample(self.path.closest_distance(position));
         (closest.position - position).length()
     }
@@ -666,8 +679,14 @@ impl PodaDriver {
         let (height, slope) = self.body_height_and_slope(t);
         // Nose up (the front higher, slope > 0) turns +z toward +y: about −x.
         self.pitch_rad = slope.patan2(1.0);
+        self.surge_m = if self.params.fore_aft_surge {
+            surge_superposition_m(&self.gait, t, GRAVITY_MPS2, self.stand_height_m)
+        } else {
+            0.0
+        };
+        let surge = ground.to_world(DVec3::new(0.0, 0.0, self.surge_m));
         self.pose.root = RootTransform {
-            position: DVec3::new(ground.position.x, height, ground.position.y),
+            position: DVec3::new(surge.x, height, surge.z),
             rotation: ground.rotation() * DMat3::from_rotation_x(-self.pitch_rad),
         };
     }
@@ -685,6 +704,7 @@ impl PodaDriver {
         }
         self.metrics
             .record(t_prev, t, feet, self.pose.root.position, self.pitch_rad);
+        self.metrics.record_surge(self.surge_m);
     }
 }
 

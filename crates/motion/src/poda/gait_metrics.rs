@@ -142,6 +142,9 @@ pub struct GaitMetrics {
     pub body_height_range_m: (f64, f64),
     /// Lowest and highest body pitch seen, radians (positive: nose up).
     pub body_pitch_range_rad: (f64, f64),
+    /// Most the body fell behind and ran ahead of its even motion along the
+    /// path (the fore-aft surge), metres; `(0, 0)` without surge.
+    pub body_surge_range_m: (f64, f64),
     /// Longest time with no foot in contact, seconds (a flight phase).
     pub flight_max_s: f64,
     flight_start_s: Option<f64>,
@@ -195,6 +198,13 @@ impl GaitMetrics {
             let start = *self.flight_start_s.get_or_insert(t_prev);
             self.flight_max_s = self.flight_max_s.max(t - start);
         }
+    }
+
+    /// Records this frame's fore-aft surge, metres forward of the body's even
+    /// motion along its path.
+    pub fn record_surge(&mut self, surge_m: f64) {
+        let (low, high) = self.body_surge_range_m;
+        self.body_surge_range_m = (low.min(surge_m), high.max(surge_m));
     }
 
     /// Largest foot slip of any leg, metres.

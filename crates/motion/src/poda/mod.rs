@@ -12,6 +12,7 @@ pub mod ground_pose;
 pub mod leg_ik;
 pub mod path;
 pub mod spline;
+pub mod surge;
 
 pub use body_track::{BodyDynamics, BodyState, BodyTrack};
 pub use driver::PodaDriver;
