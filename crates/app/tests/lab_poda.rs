@@ -58,7 +58,9 @@ fn the_quadruped_trots_then_gallops() {
     let s = state(&lab);
     assert_eq!(s["gait"], "transverse_gallop");
     assert_eq!(s["poda"]["blending"], true);
-    for _ in 0..90 {
+    // Each leg takes the gallop on at its mid-stance, a fifth of the way a
+    // cycle at most (docs/poda.md, "Leg by leg").
+    for _ in 0..900 {
         lab.advance(1.0 / 60.0);
     }
     let s = state(&lab);

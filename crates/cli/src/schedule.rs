@@ -21,6 +21,10 @@ pub struct Outcome {
     /// The engine's refusal, `key: reason`; the run went on unchanged.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub refused: Option<String>,
+    /// The PODA gait after the change (a switch, or a speed edit with
+    /// `scenario.poda.gait_by_speed`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gait: Option<String>,
 }
 
 /// The run's changes in time order, and what each did.
@@ -79,6 +83,7 @@ impl Schedule {
                 applied_at_s: now_s,
                 derived: result.as_ref().map_or_else(|_| Vec::new(), Clone::clone),
                 refused: result.err(),
+                gait: gaitlab_engine::poda_gait(driver).map(str::to_owned),
             });
             self.next += 1;
         }

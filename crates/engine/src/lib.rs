@@ -18,7 +18,7 @@ pub mod trace;
 
 pub use any_driver::AnyDriver;
 pub use driver_for::{Overrides, Tracking, check, driver_for};
-pub use live::{Change, TimedChange, edit_value, switch_gait};
+pub use live::{Change, TimedChange, edit_value, poda_gait, switch_gait};
 pub use metrics::{RunMetrics, Timing};
 pub use switch::bundled_for_engine;
 pub use take::{FrameWriter, MAX_TAKE_S, Take};

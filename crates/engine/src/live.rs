@@ -70,6 +70,12 @@ pub fn edit_value(
         }
         .map(|()| Vec::new()),
         AnyDriver::Poda(poda) => {
+            if key == "speed_mps" {
+                return poda
+                    .set_speed(value)
+                    .map(|derived| derived.derived.to_vec())
+                    .map_err(|e| e.to_string());
+            }
             if key == "leg_force_n" {
                 return poda
                     .set_leg_force_n(value)
@@ -80,7 +86,6 @@ pub fn edit_value(
             match key {
                 "period_s" => gait.set_period(value),
                 "duty_factor" => gait.set_duty_factor(value),
-                "speed_mps" => gait.set_speed(value),
                 "stroke_m" => gait.set_stroke(value),
                 _ => {
                     return Err(format!(
@@ -94,6 +99,17 @@ pub fn edit_value(
         AnyDriver::Thesis(_) | AnyDriver::Track(_) => {
             Err(format!("{key}: engine {engine} has no gait"))
         }
+    }
+}
+
+/// The name of the PODA gait `driver` runs now (after a switch, or a speed
+/// edit that picked one: `scenario.poda.gait_by_speed`); `None` for the
+/// other engines.
+#[must_use]
+pub fn poda_gait(driver: &AnyDriver) -> Option<&str> {
+    match driver {
+        AnyDriver::Poda(poda) => Some(poda.gait_name()),
+        _ => None,
     }
 }
 

@@ -143,7 +143,7 @@ fn poda_driver_allocates_nothing() {
             }
         });
         assert_eq!(count, 0, "{preset}: {count} allocations in 240 frames");
-        // A gait change allocates once (the named gait's table), then the blend does not.
+        // A gait change allocates once (the named gait's table and the legs' cycles), then the legs taking it on do not.
         if preset == "poda-quadruped" {
             if let Err(error) = driver.set_gait("rotary_gallop") {
                 panic!("{error}");
@@ -153,7 +153,10 @@ fn poda_driver_allocates_nothing() {
                     driver.step(1.0 / 60.0);
                 }
             });
-            assert_eq!(count, 0, "{preset}: {count} allocations while blending");
+            assert_eq!(
+                count, 0,
+                "{preset}: {count} allocations while the legs take the gait on"
+            );
         }
     }
 }

@@ -185,26 +185,70 @@ fn a_pronk_with_high_leg_force_flies() {
     );
 }
 
+/// A sample of `tools/poda_change_sweep.py` (docs/poda.md, "The sweep"): a
+/// live change at several frames of a cycle, run until the legs have taken
+/// it on (`is_shifting` false), with no planted foot slipping more than 1 mm.
 #[test]
-fn switching_gait_mid_stride_blends_without_slipping() {
+fn live_changes_are_taken_on_leg_by_leg_without_slipping() {
+    type Change = fn(&mut PodaDriver);
     let creature = creature("poda-quadruped");
-    // Switch at every frame of a cycle (36 frames), to several gaits.
-    for start in 0..36 {
-        for gait in ["transverse_gallop", "pace", "pronk", "walk"] {
+    let changes: [(&str, Change); 8] = [
+        ("trot → transverse_gallop", |d| {
+            d.set_gait("transverse_gallop").expect("gallop")
+        }),
+        ("trot → pronk", |d| d.set_gait("pronk").expect("pronk")),
+        ("trot → walk", |d| d.set_gait("walk").expect("walk")),
+        ("trot → pace", |d| d.set_gait("pace").expect("pace")),
+        ("period ×1.3", |d| {
+            let _ = d.gait_mut().set_period(0.78).expect("period");
+        }),
+        ("speed ×0.7", |d| {
+            let _ = d.set_speed(0.56).expect("speed");
+        }),
+        ("stroke ×1.3", |d| {
+            let _ = d.gait_mut().set_stroke(0.312).expect("stroke");
+        }),
+        ("duty ×1.3", |d| {
+            let _ = d.gait_mut().set_duty_factor(0.65).expect("duty");
+        }),
+    ];
+    for start in (0..36).step_by(7) {
+        for (name, change) in changes {
             let mut driver = PodaDriver::new(&creature).expect("driver");
             for _ in 0..60 + start {
                 driver.step(1.0 / FPS);
             }
-            driver.set_gait(gait).expect("quadruped gait");
-            assert_eq!(driver.gait_name(), gait);
-            for _ in 0..150 {
+            change(&mut driver);
+            driver.step(1.0 / FPS);
+            assert!(driver.is_shifting(), "{name}: taken on at once");
+            let mut frames = 0;
+            while driver.is_shifting() && frames < 900 {
+                driver.step(1.0 / FPS);
+                frames += 1;
+            }
+            assert!(
+                !driver.is_shifting(),
+                "{name} at frame {start}: still shifting after 15 s"
+            );
+            for _ in 0..60 {
                 driver.step(1.0 / FPS);
             }
+            // The legs stand in the new gait's phases (eq. 9's R_i relative to leg 0).
+            let gait = driver.gait();
+            let mid = |i: usize| driver.mid_stance_s(i).expect("leg");
+            for (i, &r) in gait.phases().iter().enumerate() {
+                let relative = (mid(i) - mid(0)) / gait.period_s() + r - gait.phases()[0];
+                let off = relative.rem_euclid(1.0).min(1.0 - relative.rem_euclid(1.0));
+                assert!(
+                    off < 0.01,
+                    "{name} at frame {start}: leg {i} off its phase by {off}"
+                );
+            }
             let slip = driver.metrics().foot_slip_max_m();
-            let at = 60 + start;
             assert!(
                 slip <= 0.001,
-                "trot → {gait} at frame {at}: slip {:.3} mm",
+                "{name} at frame {}: slip {:.3} mm",
+                60 + start,
                 slip * 1e3
             );
         }

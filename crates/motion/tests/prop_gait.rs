@@ -300,7 +300,7 @@ fn run_poda(
             let legs = driver.gait().leg_count();
             let names: Vec<&str> = gait_names(legs).collect();
             if !names.is_empty() {
-                // A blend the gait model cannot take (a stroke out of range) is refused.
+                // A gait the model cannot take (a stroke out of range) is refused.
                 let _ = driver.set_gait(names[edit.gait.index(names.len())]);
             }
             let gait = driver.gait_mut();

@@ -115,7 +115,8 @@ pub struct PodaState {
     pub transfer_keys: Vec<[f64; 2]>,
     /// The body path.
     pub path: gaitlab_core::preset::PathSpec,
-    /// Whether the gait is blending into a new one.
+    /// Whether some leg has not yet taken on the gait (a switch or edit
+    /// being taken on leg by leg, at each leg's mid-stance).
     pub blending: bool,
     /// The legs' names.
     pub legs: Vec<String>,
@@ -338,7 +339,7 @@ impl State {
                     step_height_m: driver.params().step_height_m,
                     transfer_keys: driver.params().transfer_keys.clone(),
                     path: driver.path().to_spec(),
-                    blending: gait.is_blending(),
+                    blending: driver.is_shifting(),
                     legs: driver.leg_names().map(str::to_owned).collect(),
                     foot_slip_max_m: driver.metrics().foot_slip_max_m(),
                     path_error_max_m: driver.path_error_max_m(),

@@ -130,10 +130,10 @@ pub struct PodaParams {
     /// motion (Girard & Maciejewski 1985, Figure 2 and "Rotational Control":
     /// the pitch "is due to the separation of the application of vertical
     /// acceleration between the front and rear sections of the body").
-    /// Default off, as every preset ran before 2026-12-02: with the gait
-    /// switch's one-period blend a pitching quadruped's planted feet slip up to
-    /// 1.3 mm (docs/poda.md), so it turns on with issue 19's leg-by-leg gait
-    /// changes.
+    /// Default off, and off in the bundled presets: a steady pitching gait
+    /// keeps its feet planted, but while legs take a gait change on a
+    /// pitching quadruped's feet still slip up to 12.8 mm (docs/poda.md,
+    /// "Body pitch").
     pub body_pitch: bool,
     /// Follow the body path only as tightly as the legs reach (the lab's
     /// reading of "Horizontal Control": the body's turning and speeding up
@@ -164,6 +164,14 @@ pub struct PodaParams {
     /// "Fore-aft surge"). Off, the body moves evenly along its path, as every
     /// preset ran before 2026-12-02; the bundled PODA presets turn it on.
     pub fore_aft_surge: bool,
+    /// Pick the gait and its stride from the body speed whenever the speed
+    /// is set (the lab's option after Alexander 1984, PODA's reference 20):
+    /// the Froude number `v²/(g·h)`, `h` the standing height, walks below
+    /// 0.5, trots to 2.5 and gallops above (wave, ripple and alternating for
+    /// six or more legs); the period is Alexander's stride `2.3·Fr^0.3·h`
+    /// over the speed, shortened where the stroke would outreach the legs.
+    /// Default off.
+    pub gait_by_speed: bool,
     /// Largest IK iterations per leg per frame. Default 12.
     pub iterations_per_frame: usize,
     /// Stop iterating a leg once its foot is this close to its target, metres. Default 1e-6.
@@ -192,6 +200,7 @@ impl Default for PodaParams {
             turn_within_reach: false,
             yaw_toward_actual: false,
             fore_aft_surge: false,
+            gait_by_speed: false,
             iterations_per_frame: 12,
             tolerance_m: 1e-6,
             center_gain: 0.5,

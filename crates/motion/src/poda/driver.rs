@@ -5,7 +5,10 @@
 //!   following with the legs' horizontal force limits (eq. 14–15) and yaw
 //!   from the legs' push / restore toward the direction of travel — raised by
 //!   the superposition of each leg's vertical push / fall / restore (eq. 12–13);
-//! - **leg_states**: eq. 9 for every leg;
+//! - **leg_states**: eq. 9 for every leg until the gait changes; from then
+//!   each leg's own cycles ([`LegCycles`]), which take a change on at each
+//!   leg's mid-stance, with the body kept within [`super::transition`]'s
+//!   bounds while they do;
 //! - **footholds**: at lift-off (time t), eq. 11 — the body's predicted pose at
 //!   f₁ = t + transfer + support/2 carries the leg's reference position into
 //!   the world, and the body's pose at f₂ = t + transfer expresses that
@@ -28,21 +31,34 @@ use glam::{DMat3, DVec2, DVec3};
 
 use super::body_track::{BodyDynamics, BodyTrack};
 use super::gait::{Derived, GaitError, GaitParams, LegPhase};
+use super::gait_by_speed::{froude, gait_index, speed_gaits};
 use super::gait_metrics::GaitMetrics;
 use super::gaits::{gait_names, named_gait};
 use super::ground_pose::GroundPose;
+use super::leg_cycles::LegCycles;
 use super::leg_ik::{LegIk, LegIkOptions};
 use super::path::BodyPath;
 use super::spline::eval_open;
-use super::surge::surge_superposition_m;
+use super::surge::{surge_coefficient, surge_superposition_m};
+use super::transition::{
+    PlantedLeg, REACH, SAMPLES, TransitionBounds, eq9_centre_and_range_m, reach_ceiling_m,
+};
 use crate::DriverError;
 
 /// Gravity, m/s².
 pub const GRAVITY_MPS2: f64 = 9.81;
 /// Length of the default straight path, metres (beyond it the path extrapolates).
 const DEFAULT_PATH_M: f64 = 1000.0;
-/// Samples per period for centring the vertical motion.
-const CENTRE_SAMPLES: u32 = 240;
+/// Fraction of the stroke the legs' reach allows that gait by speed uses
+/// (the body bobs, pitches and surges around the stand height).
+const STROKE_OF_REACH: f64 = 0.8;
+/// A speed edit with gait by speed: the gait and its stride follow.
+const EDIT_SPEED_GAIT: Derived = Derived::new(
+    "speed_mps",
+    &["gait", "period_s", "duty_factor", "stroke_m"],
+);
+/// A speed edit with gait by speed that keeps the gait: its stride follows.
+const EDIT_SPEED_STRIDE: Derived = Derived::new("speed_mps", &["period_s", "stroke_m"]);
 /// IK iterations per leg when a reset settles the pose.
 const RESET_ITERATIONS: usize = 60;
 
@@ -53,6 +69,10 @@ struct Leg {
     ik: LegIk,
     /// Reference (mid-stance) foot position in the body frame, on the ground.
     reference_body: DVec3,
+    /// The hip joint's position relative to the root, body frame, metres.
+    hip_body: DVec3,
+    /// The straight leg's length from the hip joint to the foot, metres.
+    length_m: f64,
 }
 
 /// A leg's running state.
@@ -113,6 +133,19 @@ pub struct PodaDriver {
     path_error_max_m: f64,
     /// This frame's fore-aft surge, metres forward (0 when `fore_aft_surge` is off).
     surge_m: f64,
+    /// The longest stroke gait by speed gives the legs, metres.
+    max_stroke_m: f64,
+    /// The legs' own cycles, in use from the first gait change after a
+    /// reset (before it, eq. 9 on the gait's values).
+    cycles: LegCycles,
+    /// Whether the legs run on [`LegCycles`].
+    by_cycles: bool,
+    /// The gait eq. 9 ran with since the last reset (the cycles start from it).
+    steady_gait: GaitParams,
+    /// Whether the vertical centre in `centre_m` holds for the cycles' steady gait.
+    centre_steady: bool,
+    /// The lab's bounds on the body while legs take a change on.
+    bounds: TransitionBounds,
 }
 
 /// The body's pitch from its legs' vertical motion (Figure 2; "Rotational
@@ -191,7 +224,18 @@ impl PodaDriver {
                 DriverError::new(at("hip"), "not on the chain of the leg's effector")
             })?;
             let foot = rest_kin.effector_position[effector] - rest.root.position;
+            let mut length_m = 0.0;
+            let mut last = rest_kin.joint_position[hip];
+            for &j in &chain[start + 1..] {
+                length_m += (rest_kin.joint_position[j] - last).length();
+                last = rest_kin.joint_position[j];
+            }
+            length_m += (rest_kin.effector_position[effector] - last).length();
+            let hip_body = rest.root.rotation.transpose()
+                * (rest_kin.joint_position[hip] - rest.root.position);
             legs.push(Leg {
+                hip_body,
+                length_m,
                 name: spec.name.clone().unwrap_or_else(|| spec.effector.clone()),
                 ik: LegIk::new(chain[start..].to_vec(), effector),
                 reference_body: DVec3::new(foot.x, -stand_height_m, foot.z),
@@ -252,6 +296,7 @@ impl PodaDriver {
             yaw_toward_actual: params.yaw_toward_actual,
             ..BodyDynamics::default()
         };
+        let steady_gait = gait.clone();
         let mut driver = Self {
             effectors: vec![DVec3::ZERO; skeleton.effector_count()],
             targets: Targets {
@@ -284,7 +329,22 @@ impl PodaDriver {
             pitch_rad: 0.0,
             path_error_max_m: 0.0,
             surge_m: 0.0,
+            max_stroke_m: 0.0,
+            cycles: LegCycles::default(),
+            by_cycles: false,
+            steady_gait,
+            centre_steady: false,
+            bounds: TransitionBounds::new(n),
         };
+        driver.max_stroke_m = driver
+            .legs
+            .iter()
+            .map(|leg| {
+                let reach = REACH * leg.length_m;
+                let hip = stand_height_m + leg.hip_body.y;
+                2.0 * STROKE_OF_REACH * (reach * reach - hip * hip).max(0.0).sqrt()
+            })
+            .fold(f64::INFINITY, f64::min);
         let z: Vec<f64> = driver.legs.iter().map(|l| l.reference_body.z).collect();
         driver.legs_mean_z_m = pitch_weights(&z, &mut driver.pitch_weights);
         if !driver.params.body_pitch {
@@ -336,6 +396,51 @@ impl PodaDriver {
     pub fn set_leg_force_n(&mut self, force_n: f64) -> Result<Derived, GaitError> {
         self.gait
             .set_leg_force(force_n, self.params.body_mass_kg, GRAVITY_MPS2)
+    }
+
+    /// Sets the body speed, m/s. With `scenario.poda.gait_by_speed` the gait
+    /// and its period follow from the Froude number
+    /// ([`super::gait_by_speed`]) and the legs take them on one by one;
+    /// otherwise as [`GaitParams::set_speed`] (stroke kept, period derived).
+    ///
+    /// # Errors
+    /// The speed, or a value derived from it, out of range; nothing changes.
+    pub fn set_speed(&mut self, speed_mps: f64) -> Result<Derived, GaitError> {
+        let gaits = speed_gaits(self.legs.len());
+        let (Some(gaits), true, true) = (
+            gaits,
+            self.params.gait_by_speed,
+            speed_mps.is_finite() && speed_mps > 0.0,
+        ) else {
+            return self.gait.set_speed(speed_mps);
+        };
+        let fr = froude(speed_mps, self.stand_height_m, GRAVITY_MPS2);
+        let name = gaits[gait_index(fr)];
+        let (phases, duty) =
+            named_gait(name, self.legs.len()).map_err(|e| GaitError::new("speed_mps", e.reason))?;
+        let period = super::gait_by_speed::period_s(
+            speed_mps,
+            self.stand_height_m,
+            GRAVITY_MPS2,
+            duty,
+            self.max_stroke_m,
+        );
+        let next = GaitParams::new(period, duty, phases, speed_mps)
+            .map_err(|e| GaitError::new("speed_mps", format!("{}: {}", e.path, e.reason)))?;
+        let edit = if name == self.gait_name {
+            EDIT_SPEED_STRIDE
+        } else {
+            EDIT_SPEED_GAIT
+        };
+        name.clone_into(&mut self.gait_name);
+        if !self.by_cycles && self.time == 0.0 {
+            self.gait = next;
+            self.reset();
+        } else {
+            self.take_cycles();
+            self.gait = next;
+        }
+        Ok(edit)
     }
 
     /// Sets the highest point of the transfer trajectory above the ground.
@@ -426,18 +531,84 @@ impl PodaDriver {
         &self.gait_name
     }
 
-    /// Switches to the named gait, blending phases and duty factor over one cycle.
+    /// Switches to the named gait; each leg takes it on at its next
+    /// mid-stance ([`LegCycles`]), `P` and speed stay. Before the first
+    /// frame the run simply starts in it.
     ///
     /// # Errors
-    /// `gait` when the name is unknown for this leg count.
+    /// `gait` when the name is unknown for this leg count, or its stroke at
+    /// this period and speed is out of range; nothing changes.
     pub fn set_gait(&mut self, name: &str) -> Result<(), DriverError> {
         let (phases, duty) =
             named_gait(name, self.legs.len()).map_err(|e| DriverError::new("gait", e.reason))?;
-        self.gait
-            .blend_to(&phases, duty, self.time)
+        let mut next = self.gait.clone();
+        next.set_shape(&phases, duty)
             .map_err(|e| DriverError::new("gait", e.to_string()))?;
         name.clone_into(&mut self.gait_name);
+        if !self.by_cycles && self.time == 0.0 {
+            // Before the first frame: the run starts in the new gait.
+            self.gait = next;
+            self.reset();
+        } else {
+            self.take_cycles();
+            self.gait = next;
+        }
         Ok(())
+    }
+
+    /// From now on the legs run on their own cycles, starting from eq. 9 on
+    /// the gait they ran with (no-op when they already do).
+    fn take_cycles(&mut self) {
+        if !self.by_cycles {
+            self.cycles.start(&self.steady_gait, self.time);
+            self.by_cycles = true;
+            self.centre_steady = false;
+            self.bounds.start(
+                &self.steady_gait,
+                self.time,
+                GRAVITY_MPS2,
+                &self.pitch_weights,
+            );
+        }
+    }
+
+    /// Leg `i`'s latest mid-stance at or before now, seconds.
+    #[must_use]
+    pub fn mid_stance_s(&self, i: usize) -> Option<f64> {
+        if self.by_cycles {
+            return self.cycles.mid_stance_s(i, self.time, &self.gait);
+        }
+        let half = 0.5 * self.gait.support_s();
+        let phase = self.gait.leg_phase(i, self.time)?;
+        Some(self.time - (phase.state_s - half).rem_euclid(self.gait.period_s()))
+    }
+
+    /// Whether some leg has not yet taken on the gait's present values.
+    #[must_use]
+    pub fn is_shifting(&self) -> bool {
+        self.by_cycles && !self.cycles.is_steady(self.time, &self.gait)
+    }
+
+    /// How far past `t_s` footholds are already planned, seconds: to the
+    /// legs' next mid-stances (eq. 11's f₁).
+    fn planned_ahead_s(&self, t_s: f64) -> f64 {
+        let steady = self.gait.transfer_s() + 0.5 * self.gait.support_s();
+        if !self.by_cycles {
+            return steady;
+        }
+        (0..self.legs.len())
+            .filter_map(|i| self.cycles.cycle_at(i, t_s, &self.gait))
+            .map(|c| c.end_s() - t_s)
+            .fold(steady, f64::max)
+    }
+
+    /// Leg `i`'s state at `t_s`: its own cycles after a change, eq. 9 before.
+    fn leg_phase(&self, i: usize, t_s: f64) -> Option<LegPhase> {
+        if self.by_cycles {
+            self.cycles.leg_phase(i, t_s, &self.gait)
+        } else {
+            self.gait.leg_phase(i, t_s)
+        }
     }
 
     /// The figures measured since the last reset.
@@ -519,29 +690,24 @@ impl PodaDriver {
     /// legs then reach the ground however high the flights are). Recomputed
     /// only when the gait changes.
     fn vertical_centre_m(&mut self, t_s: f64) -> f64 {
+        if self.by_cycles {
+            // While a change is taken on, over the legs' own coming supports;
+            // once they are steady, once.
+            let steady = self.cycles.is_steady(t_s, &self.gait);
+            if !(steady && self.centre_steady) {
+                let g_n = self.gait.gravity_share_mps2(GRAVITY_MPS2);
+                self.centre_m = self.cycles.vertical_centre_m(t_s, &self.gait, g_n, SAMPLES);
+                self.centre_steady = steady;
+            }
+            return self.centre_m;
+        }
         let key = [self.gait.period_s(), self.gait.duty_factor()];
         let unchanged = self.centre_key.0 == key && self.centre_key.1 == self.gait.phases();
         if !unchanged {
             self.centre_key.0 = key;
             self.centre_key.1.clear();
             self.centre_key.1.extend_from_slice(self.gait.phases());
-            let period = self.gait.period_s();
-            let (mut sum, mut count) = (0.0, 0u32);
-            for k in 0..CENTRE_SAMPLES {
-                let t = t_s + period * (f64::from(k) + 0.5) / f64::from(CENTRE_SAMPLES);
-                let height = self.gait.vertical_superposition_m(t, GRAVITY_MPS2);
-                for i in 0..self.legs.len() {
-                    if self.gait.leg_phase(i, t).is_some_and(|p| p.support) {
-                        sum += height;
-                        count += 1;
-                    }
-                }
-            }
-            self.centre_m = if count > 0 {
-                sum / f64::from(count)
-            } else {
-                0.0
-            };
+            self.centre_m = eq9_centre_and_range_m(&self.gait, t_s, GRAVITY_MPS2).0;
         }
         self.centre_m
     }
@@ -552,24 +718,45 @@ impl PodaDriver {
     fn body_height_and_slope(&mut self, t_s: f64) -> (f64, f64) {
         let centre = self.vertical_centre_m(t_s);
         let gain = self.params.vertical_gain;
-        let slope = if self.params.body_pitch {
-            gain * self
-                .gait
-                .vertical_weighted_m(t_s, GRAVITY_MPS2, &self.pitch_weights)
+        let (sum, weighted) = if self.by_cycles {
+            let g_n = self.gait.gravity_share_mps2(GRAVITY_MPS2);
+            self.cycles
+                .vertical_sums_m(t_s, &self.gait, g_n, &self.pitch_weights)
         } else {
-            0.0
+            (
+                self.gait.vertical_superposition_m(t_s, GRAVITY_MPS2),
+                self.gait
+                    .vertical_weighted_m(t_s, GRAVITY_MPS2, &self.pitch_weights),
+            )
         };
-        let height = self.stand_height_m
-            + gain * (self.gait.vertical_superposition_m(t_s, GRAVITY_MPS2) - centre)
-            - slope * self.legs_mean_z_m;
+        // The weights are 0 without `body_pitch`. While legs take a change
+        // on, the pitch stays within the two steady gaits' (as the height
+        // stays above their lowest point, `transition_low_m`).
+        let slope = if self.by_cycles {
+            self.bounds
+                .refresh(&self.gait, t_s, GRAVITY_MPS2, &self.pitch_weights);
+            gain * self.bounds.pitch_slope(weighted)
+        } else {
+            gain * weighted
+        };
+        let height = self.stand_height_m + gain * (sum - centre) - slope * self.legs_mean_z_m;
         (height, slope)
     }
 
     /// Eq. 11: the foothold of leg `i` for a lift-off at `t_lo`.
     fn plan_foothold(&mut self, i: usize, t_lo: f64) {
-        let transfer = self.gait.transfer_s();
-        let f1 = t_lo + transfer + 0.5 * self.gait.support_s();
-        let f2 = t_lo + transfer;
+        // The touchdown (f₂) and the next mid-stance (f₁) of the cycle the
+        // lift-off belongs to: fixed at the mid-stance before it.
+        let (f1, f2) = match self.cycles.cycle_at(i, t_lo, &self.gait) {
+            Some(cycle) if self.by_cycles => (cycle.end_s(), cycle.touchdown_s()),
+            _ => {
+                let transfer = self.gait.transfer_s();
+                (
+                    t_lo + transfer + 0.5 * self.gait.support_s(),
+                    t_lo + transfer,
+                )
+            }
+        };
         let foothold_world = self.ground_pose(f1).to_world(self.legs[i].reference_body);
         let liftoff_body = self.ground_pose(t_lo).to_body(self.runs[i].planted);
         let foothold_body = self.ground_pose(f2).to_body(foothold_world);
@@ -679,15 +866,38 @@ impl PodaDriver {
         let (height, slope) = self.body_height_and_slope(t);
         // Nose up (the front higher, slope > 0) turns +z toward +y: about −x.
         self.pitch_rad = slope.patan2(1.0);
-        self.surge_m = if self.params.fore_aft_surge {
-            surge_superposition_m(&self.gait, t, GRAVITY_MPS2, self.stand_height_m)
-        } else {
+        self.surge_m = if !self.params.fore_aft_surge {
             0.0
+        } else if self.by_cycles {
+            let g_n = self.gait.gravity_share_mps2(GRAVITY_MPS2);
+            let c = surge_coefficient(&self.gait, g_n, self.stand_height_m);
+            self.cycles.surge_m(t, &self.gait, c)
+        } else {
+            surge_superposition_m(&self.gait, t, GRAVITY_MPS2, self.stand_height_m)
         };
         let surge = ground.to_world(DVec3::new(0.0, 0.0, self.surge_m));
+        let rotation = ground.rotation() * DMat3::from_rotation_x(-self.pitch_rad);
+        let height = if self.by_cycles {
+            let planted = self
+                .legs
+                .iter()
+                .zip(&self.runs)
+                .filter(|(_, run)| run.support)
+                .map(|(leg, run)| PlantedLeg {
+                    hip_body: leg.hip_body,
+                    length_m: leg.length_m,
+                    foot: run.planted,
+                });
+            height
+                .max(self.stand_height_m + self.bounds.low_m())
+                .min(self.stand_height_m + self.bounds.high_m())
+                .min(reach_ceiling_m(surge, rotation, planted))
+        } else {
+            height
+        };
         self.pose.root = RootTransform {
             position: DVec3::new(surge.x, height, surge.z),
-            rotation: ground.rotation() * DMat3::from_rotation_x(-self.pitch_rad),
+            rotation,
         };
     }
 
@@ -715,8 +925,19 @@ impl Driver for PodaDriver {
         }
         let t_prev = self.time;
         let t = t_prev + dt;
+        let steady = &self.steady_gait;
+        let rephased = self.gait.period_s() != steady.period_s()
+            || self.gait.duty_factor() != steady.duty_factor()
+            || self.gait.phases() != steady.phases();
+        if rephased && !self.by_cycles && t_prev == 0.0 {
+            // An edit before the first frame sets the gait the run starts in.
+            self.reset();
+        } else if rephased {
+            // An edit since the last frame that eq. 9 would take on by
+            // re-phasing every leg at once: the legs take it on one by one.
+            self.take_cycles();
+        }
         self.time = t;
-        self.gait.update(t);
         let key = [
             self.gait.speed_mps(),
             self.gait.period_s(),
@@ -725,12 +946,13 @@ impl Driver for PodaDriver {
         if key != self.track_key {
             // A gait edit: plan anew beyond the footholds already planned.
             self.track_key = key;
-            let keep = self.gait.transfer_s() + 0.5 * self.gait.support_s();
+            let keep = self.planned_ahead_s(t_prev);
             self.track.replan(t_prev, keep, &self.path, &self.gait);
         }
         self.track.advance_to(t, &self.path, &self.gait);
+        self.cycles.advance_to(t, &self.gait);
         for i in 0..self.legs.len() {
-            if let Some(phase) = self.gait.leg_phase(i, t) {
+            if let Some(phase) = self.leg_phase(i, t) {
                 self.advance_leg(i, t_prev, &phase);
             }
         }
@@ -746,6 +968,9 @@ impl Driver for PodaDriver {
 
     fn reset(&mut self) {
         self.time = 0.0;
+        self.by_cycles = false;
+        self.centre_steady = false;
+        self.steady_gait.clone_from(&self.gait);
         self.pose.clone_from(&self.rest);
         self.track.reset(&self.path, &self.gait);
         self.track_key = [

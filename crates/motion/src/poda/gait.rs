@@ -46,7 +46,9 @@ pub struct Derived {
 }
 
 impl Derived {
-    const fn new(edited: &'static str, derived: &'static [&'static str]) -> Self {
+    /// What an edit of `edited` derived.
+    #[must_use]
+    pub const fn new(edited: &'static str, derived: &'static [&'static str]) -> Self {
         Self { edited, derived }
     }
 
@@ -87,7 +89,7 @@ const EDIT_TRANSFER: Derived = Derived::new("transfer_s", &["period_s", "duty_fa
 const EDIT_FORCE: Derived = Derived::new("force_n", &["transfer_s", "period_s", "duty_factor"]);
 const EDIT_PHASE: Derived = Derived::new("phases", &[]);
 
-/// The serialised form of [`GaitParams`] (a running blend is not saved); deserialising
+/// The serialised form of [`GaitParams`]; deserialising
 /// validates it with [`GaitParams::new`].
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -102,18 +104,6 @@ pub struct GaitSpec {
     pub phases: Vec<f64>,
 }
 
-/// A running phase blend (see [`GaitParams::blend_to`]).
-#[derive(Clone, Debug, PartialEq)]
-struct Blend {
-    start_s: f64,
-    duration_s: f64,
-    from_duty: f64,
-    to_duty: f64,
-    from_phases: Vec<f64>,
-    delta_phases: Vec<f64>,
-    to_phases: Vec<f64>,
-}
-
 /// PODA gait parameters kept consistent with eq. 7–8 (see the module docs).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(try_from = "GaitSpec", into = "GaitSpec")]
@@ -122,7 +112,6 @@ pub struct GaitParams {
     duty_factor: f64,
     speed_mps: f64,
     phases: Vec<f64>,
-    blend: Option<Blend>,
 }
 
 /// Where one leg is in its cycle at a time `t` (eq. 9); all times are absolute, in seconds.
@@ -220,7 +209,6 @@ impl GaitParams {
             duty_factor,
             speed_mps,
             phases,
-            blend: None,
         })
     }
 
@@ -265,16 +253,14 @@ impl GaitParams {
         self.phases.len()
     }
 
-    /// Validates and stores a candidate state; cancels any running blend.
+    /// Validates and stores a candidate state.
     fn commit(&mut self, edit: Derived, next: State) -> Result<Derived, GaitError> {
         check_candidate(edit.edited, next)?;
         (self.period_s, self.duty_factor, self.speed_mps) = next;
-        self.blend = None;
         Ok(edit)
     }
 
     /// Sets `P`, keeping duty factor and speed; support, transfer and stroke are derived.
-    /// Like every edit, cancels a running blend (keeping the blended values reached so far).
     ///
     /// # Errors
     /// `period_s` out of range, or a derived value would leave its range.
@@ -354,7 +340,6 @@ impl GaitParams {
             return Err(GaitError::new(path, format!("no such leg of {count}")));
         };
         *slot = normalise_phase(phase);
-        self.blend = None;
         Ok(EDIT_PHASE)
     }
 
@@ -398,6 +383,24 @@ impl GaitParams {
         let period_s = support_s + accel / g_n * support_s;
         let next = (period_s, support_s / period_s, self.speed_mps);
         self.commit(EDIT_FORCE, next)
+    }
+
+    /// Sets every leg's phase and `β` at once (a named gait), keeping `P` and
+    /// speed; support and stroke are derived. Legs take it on one by one
+    /// ([`super::leg_cycles`]).
+    ///
+    /// # Errors
+    /// Wrong phase count, non-finite phase, duty factor out of range, or a
+    /// derived stroke out of range; nothing changes.
+    pub fn set_shape(&mut self, phases: &[f64], duty_factor: f64) -> Result<(), GaitError> {
+        check_phases(phases, self.leg_count()..=self.leg_count())?;
+        check_input("duty_factor", duty_factor, &DUTY_FACTOR_RANGE)?;
+        check_candidate("duty_factor", (self.period_s, duty_factor, self.speed_mps))?;
+        for (slot, &phase) in self.phases.iter_mut().zip(phases) {
+            *slot = normalise_phase(phase);
+        }
+        self.duty_factor = duty_factor;
+        Ok(())
     }
 
     /// Eq. 9 state of `leg` at time `t_s`; `None` for a missing leg or non-finite time.
@@ -456,86 +459,6 @@ impl GaitParams {
             .filter_map(|(leg, w)| self.leg_phase(leg, t_s).map(|p| (p, w)))
             .map(|(p, w)| w * vertical_offset_m(support, transfer, g_n, p.state_s - 0.5 * support))
             .sum()
-    }
-
-    /// Starts switching to `target_phases`/`target_duty` at `t_now_s`: over exactly one period
-    /// each phase moves the shorter way round the circle and `β` moves to its target, both eased
-    /// by smoothstep; `P` and speed stay fixed (support and stroke derived). Drive with
-    /// [`update`](Self::update). A blend already running is replaced, starting from the
-    /// values it reached. Leg-state speed stays within `[0.25, 1.75]` of real time.
-    ///
-    /// # Errors
-    /// Wrong phase count, non-finite phase or time, duty out of range, or a stroke out of range.
-    pub fn blend_to(
-        &mut self,
-        target_phases: &[f64],
-        target_duty: f64,
-        t_now_s: f64,
-    ) -> Result<(), GaitError> {
-        check_phases(target_phases, self.leg_count()..=self.leg_count())?;
-        check_input("duty_factor", target_duty, &DUTY_FACTOR_RANGE)?;
-        check_candidate("duty_factor", (self.period_s, target_duty, self.speed_mps))?;
-        if !t_now_s.is_finite() {
-            return Err(GaitError::new("t_now_s", "not a finite number"));
-        }
-        let to_phases: Vec<f64> = target_phases.iter().map(|&p| normalise_phase(p)).collect();
-        let delta_phases = self
-            .phases
-            .iter()
-            .zip(&to_phases)
-            .map(|(from, to)| {
-                let d = normalise_phase(to - from);
-                if d > 0.5 { d - 1.0 } else { d }
-            })
-            .collect();
-        self.blend = Some(Blend {
-            start_s: t_now_s,
-            duration_s: self.period_s,
-            from_duty: self.duty_factor,
-            to_duty: target_duty,
-            from_phases: self.phases.clone(),
-            delta_phases,
-            to_phases,
-        });
-        Ok(())
-    }
-
-    /// Whether a blend is running.
-    #[must_use]
-    pub fn is_blending(&self) -> bool {
-        self.blend.is_some()
-    }
-
-    /// Advances a running blend to `t_s` (no allocation); at its end the phases and duty factor
-    /// equal the targets exactly. Returns whether a blend is still running. Non-finite `t_s`
-    /// changes nothing.
-    pub fn update(&mut self, t_s: f64) -> bool {
-        let Some(blend) = &self.blend else {
-            return false;
-        };
-        if !t_s.is_finite() {
-            return true;
-        }
-        let s = ((t_s - blend.start_s) / blend.duration_s).clamp(0.0, 1.0);
-        if s >= 1.0 {
-            for (phase, to) in self.phases.iter_mut().zip(&blend.to_phases) {
-                *phase = *to;
-            }
-            self.duty_factor = blend.to_duty;
-            self.blend = None;
-            return false;
-        }
-        let w = s * s * (3.0 - 2.0 * s);
-        for ((phase, from), delta) in self
-            .phases
-            .iter_mut()
-            .zip(&blend.from_phases)
-            .zip(&blend.delta_phases)
-        {
-            *phase = normalise_phase(from + w * delta);
-        }
-        self.duty_factor = blend.from_duty + w * (blend.to_duty - blend.from_duty);
-        true
     }
 }
 
@@ -745,37 +668,6 @@ mod tests {
         assert!(d.contains("transfer_s") && close(g.transfer_s(), 0.8));
         assert!(close(g.duty_factor(), 1.0 / 3.0));
         assert_relations(&g);
-    }
-
-    #[test]
-    fn blend_is_continuous_and_ends_exactly_at_target() {
-        let walk = vec![0.75, 0.25, 0.0, 0.5];
-        let mut g = GaitParams::new(1.0, 0.75, walk, 1.0).expect("valid");
-        let target = [0.0, 0.5, 0.5, 0.0];
-        g.blend_to(&target, 0.5, 2.0).expect("ok");
-        let (dt, mut prev) = (1.0 / 60.0, [0.0; 4]);
-        for (leg, old) in prev.iter_mut().enumerate() {
-            *old = g.leg_phase(leg, 2.0).expect("leg").state_s;
-        }
-        for frame in 1..=61 {
-            let t = 2.0 + f64::from(frame) * dt;
-            assert_eq!(g.update(t), frame < 60);
-            assert_relations(&g);
-            for (leg, old) in prev.iter_mut().enumerate() {
-                let now = g.leg_phase(leg, t).expect("leg").state_s;
-                let jump = wrap(now - *old + 0.5, 1.0) - 0.5;
-                assert!(
-                    jump >= 0.25 * dt - 1e-9 && jump <= 1.75 * dt + 1e-9,
-                    "{leg}: {jump}"
-                );
-                *old = now;
-            }
-        }
-        assert!(g.phases() == target && g.duty_factor() == 0.5 && !g.is_blending());
-        assert_eq!(
-            g.blend_to(&[0.0], 0.5, 0.0).expect_err("count").path,
-            "phases"
-        );
     }
 
     #[test]

@@ -6,13 +6,16 @@
 pub mod body_track;
 pub mod driver;
 pub mod gait;
+pub mod gait_by_speed;
 pub mod gait_metrics;
 pub mod gaits;
 pub mod ground_pose;
+pub mod leg_cycles;
 pub mod leg_ik;
 pub mod path;
 pub mod spline;
 pub mod surge;
+pub mod transition;
 
 pub use body_track::{BodyDynamics, BodyState, BodyTrack};
 pub use driver::PodaDriver;

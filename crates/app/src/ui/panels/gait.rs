@@ -51,7 +51,7 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
                     for name in gait_names(legs) {
                         if ui
                             .selectable_label(name == current, name)
-                            .on_hover_text("Switch to this gait (blends over one cycle)")
+                            .on_hover_text("Switch to this gait: each leg takes it on at its own mid-stance, over a few strides")
                             .clicked()
                         {
                             chosen = Some(name);
