@@ -15,19 +15,24 @@ use gaitlab_motion::PodaDriver;
 
 const G: f64 = 9.81;
 
-#[test]
-fn a_pronk_rises_and_flies_as_eq_12_and_13_say() {
+/// The bundled PODA quadruped in `gait`.
+fn quadruped_in(gait: &str) -> PodaDriver {
     let mut creature = match load_bundled("poda-quadruped") {
         Some(Ok(creature)) => creature,
         other => panic!("poda-quadruped: {other:?}"),
     };
     if let Some(poda) = creature.scenario.poda.as_mut() {
-        poda.gait = Some("pronk".to_owned());
+        poda.gait = Some(gait.to_owned());
     }
-    let mut driver = match PodaDriver::new(&creature) {
+    match PodaDriver::new(&creature) {
         Ok(driver) => driver,
         Err(error) => panic!("{error}"),
-    };
+    }
+}
+
+#[test]
+fn a_pronk_rises_and_flies_as_eq_12_and_13_say() {
+    let mut driver = quadruped_in("pronk");
     // 600 frames a second, so that the sampled extremes are within 0.1 % of
     // the true ones.
     let fps = 600.0;
@@ -82,17 +87,7 @@ fn a_pronk_rises_and_flies_as_eq_12_and_13_say() {
 /// The four legs' sum, less its mean, is the body's height less its mean.
 #[test]
 fn each_leg_of_a_canter_moves_the_body_as_eq_12_and_13_say() {
-    let mut creature = match load_bundled("poda-quadruped") {
-        Some(Ok(creature)) => creature,
-        other => panic!("poda-quadruped: {other:?}"),
-    };
-    if let Some(poda) = creature.scenario.poda.as_mut() {
-        poda.gait = Some("canter".to_owned());
-    }
-    let mut driver = match PodaDriver::new(&creature) {
-        Ok(driver) => driver,
-        Err(error) => panic!("{error}"),
-    };
+    let mut driver = quadruped_in("canter");
     let (period, support) = (driver.gait().period_s(), driver.gait().support_s());
     let phases = driver.gait().phases().to_vec();
     let transfer = period - support;

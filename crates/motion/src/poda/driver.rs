@@ -432,14 +432,7 @@ impl PodaDriver {
         } else {
             EDIT_SPEED_GAIT
         };
-        name.clone_into(&mut self.gait_name);
-        if !self.by_cycles && self.time == 0.0 {
-            self.gait = next;
-            self.reset();
-        } else {
-            self.take_cycles();
-            self.gait = next;
-        }
+        self.adopt(name, next);
         Ok(edit)
     }
 
@@ -544,16 +537,22 @@ impl PodaDriver {
         let mut next = self.gait.clone();
         next.set_shape(&phases, duty)
             .map_err(|e| DriverError::new("gait", e.to_string()))?;
+        self.adopt(name, next);
+        Ok(())
+    }
+
+    /// Switches to the gait `name` with values `next`: before the first
+    /// frame the run simply starts in it; later the legs take it on one by
+    /// one ([`LegCycles`]).
+    fn adopt(&mut self, name: &str, next: GaitParams) {
         name.clone_into(&mut self.gait_name);
         if !self.by_cycles && self.time == 0.0 {
-            // Before the first frame: the run starts in the new gait.
             self.gait = next;
             self.reset();
         } else {
             self.take_cycles();
             self.gait = next;
         }
-        Ok(())
     }
 
     /// From now on the legs run on their own cycles, starting from eq. 9 on
