@@ -104,10 +104,9 @@ describe(`soak: ${SOAK_S} s cycling every preset, mode and method (WebGL2)`, () 
         }
         // Switching preset restarts the figure; mode and method switch live, mid-stride.
         const { preset: _, ...live } = combo;
-        // Gaits start afresh: for physics creatures a live change is tested in lab_physics.rs; for
-        // PODA creatures in poda_gaits.rs (from trot). A live PODA change between some other gaits
-        // drags a planted foot (gallop → walk up to 48 mm; `cargo run --release -p gaitlab-motion
-        // --example gait_switch_slip`), and this test's 1 mm slip check is for steady gaits.
+        // Gaits start afresh, so that each slot's 1 mm slip check measures its own gait: live
+        // changes are tested in lab_physics.rs for physics creatures, and for PODA creatures in
+        // poda_gaits.rs and by `tools/poda_change_sweep.py` (every ordered pair, docs/poda.md).
         let change = combo.preset === preset && !combo.gait ? live : combo;
         if (comparing && !combo.compare) change = { compare: false, ...change };
         preset = combo.preset;
