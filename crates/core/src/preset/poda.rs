@@ -132,7 +132,7 @@ pub struct PodaParams {
     /// acceleration between the front and rear sections of the body").
     /// Default off, and off in the bundled presets: a steady pitching gait
     /// keeps its feet planted, but while legs take a gait change on a
-    /// pitching quadruped's feet still slip up to 12.8 mm (docs/poda.md,
+    /// pitching quadruped's feet still slip up to 30.8 mm (docs/poda.md,
     /// "Body pitch").
     pub body_pitch: bool,
     /// Follow the body path only as tightly as the legs reach (the lab's
