@@ -339,3 +339,34 @@ fn copy_link_shows_the_link_and_download_preset_queues_the_json() {
         gaitlab_core::preset::bundled_json("human").expect("bundled")
     );
 }
+
+#[test]
+fn the_gait_panel_says_while_legs_take_a_switch_on() {
+    let mut harness = poda_harness("poda-quadruped", 1400.0);
+    harness.run();
+    let says = |h: &Harness<'static, Lab>| {
+        h.query_all_by_label_contains("Legs taking the change on")
+            .next()
+            .is_some()
+    };
+    assert!(!says(&harness), "a steady trot says nothing");
+    harness.state_mut().set_paused(false);
+    for _ in 0..60 {
+        harness.state_mut().advance(1.0 / 60.0);
+    }
+    harness
+        .state_mut()
+        .command(r#"{"gait":"pace"}"#)
+        .expect("valid");
+    harness.state_mut().advance(1.0 / 60.0);
+    harness.state_mut().set_paused(true);
+    harness.run_steps(5);
+    assert!(says(&harness), "the pace is being taken on");
+    harness.state_mut().set_paused(false);
+    for _ in 0..900 {
+        harness.state_mut().advance(1.0 / 60.0);
+    }
+    harness.state_mut().set_paused(true);
+    harness.run_steps(5);
+    assert!(!says(&harness), "the legs have the pace");
+}

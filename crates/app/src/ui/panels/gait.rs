@@ -40,6 +40,7 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
     let gait = driver.gait().clone();
     let force_n = driver.leg_force_n();
     let weight_share = driver.weight_share_n();
+    let shifting = driver.is_shifting();
     let mut chosen = None;
     let mut edits: Vec<(&str, f64)> = Vec::new();
     egui::CollapsingHeader::new("Gait (PODA)")
@@ -118,6 +119,13 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
             ));
             if !lab.gait_derived().is_empty() {
                 ui.weak(format!("derived: {}", lab.gait_derived().join(", ")));
+            }
+            if shifting {
+                ui.weak("Legs taking the change on, each at its own mid-stance")
+                    .on_hover_text(
+                        "Girard & Maciejewski: each leg adjusts at the beginning of its push; \
+                         the diagram shows the gait they are moving to (docs/poda.md, Leg by leg)",
+                    );
             }
             footfall_diagram(ui, lab);
         });
