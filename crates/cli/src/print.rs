@@ -138,4 +138,25 @@ fn print_physics(m: &PhysicsRunMetrics) {
         m.steps_per_second,
         m.realtime_factor,
     );
+    if m.table2.is_empty() {
+        return;
+    }
+    outln!("Table 2 (Raibert & Hodgins 1991, animation column) beside this run:");
+    for row in &m.table2 {
+        let measured = row
+            .measured
+            .map_or_else(|| "—".to_owned(), |v| format!("{v:.3}"));
+        let diff = match (row.input, row.diff_pct) {
+            (true, _) => "input".to_owned(),
+            (false, Some(d)) => format!("{d:+.0} %"),
+            (false, None) => String::new(),
+        };
+        outln!(
+            "  {:<40} paper {:>6} · run {:>7} {}",
+            row.quantity,
+            row.paper,
+            measured,
+            diff
+        );
+    }
 }

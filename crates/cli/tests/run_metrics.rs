@@ -131,3 +131,60 @@ fn the_page_and_the_cli_report_the_same_figures() {
         );
     }
 }
+
+#[test]
+fn a_physics_run_carries_table_2_for_its_gait() {
+    // The bound: all ten animation rows, the pairs' flights and stances too.
+    let bound = run_json(
+        "raibert-quadruped",
+        "6",
+        &["--gait", "bound", "--speed", "2.8"],
+    );
+    let rows = bound["table2"].as_array().expect("table2 array");
+    let names: Vec<&str> = rows.iter().filter_map(|r| r["quantity"].as_str()).collect();
+    assert_eq!(rows.len(), 10, "{names:?}");
+    for want in [
+        "gathered flight (s)",
+        "extended flight (s)",
+        "stance, front legs (s)",
+        "stance, rear legs (s)",
+        "error in running speed (m/s)",
+    ] {
+        assert!(names.contains(&want), "{want} missing from {names:?}");
+    }
+    // Each difference is the measured figure against the paper's.
+    for r in rows {
+        if let (Some(m), Some(p), Some(d)) = (
+            r["measured"].as_f64(),
+            r["paper"].as_f64(),
+            r["diff_pct"].as_f64(),
+        ) {
+            assert!((d - (m / p - 1.0) * 100.0).abs() < 1e-9, "{r}");
+        }
+    }
+    let speed = rows
+        .iter()
+        .find(|r| r["quantity"] == "running speed (m/s)")
+        .and_then(|r| r["measured"].as_f64());
+    assert_eq!(speed, bound["speed_mean_mps"].as_f64());
+    // The kangaroo: the tail wag, the desired speed as an input, and the
+    // peak acceleration as ground force over weight less 1 g.
+    let hop = run_json("raibert-kangaroo", "6", &[]);
+    let rows = hop["table2"].as_array().expect("table2 array");
+    assert_eq!(rows.len(), 8);
+    let row = |q: &str| rows.iter().find(|r| r["quantity"] == q).cloned();
+    let tail = row("tail wag relative to trunk (deg)").expect("tail row");
+    assert!(tail["measured"].as_f64().is_some_and(|w| w > 5.0), "{tail}");
+    let desired = row("desired running speed (m/s)").expect("desired row");
+    assert_eq!(desired["input"], true);
+    assert_eq!(desired["measured"], hop["speed_desired_mps"]);
+    let accel = hop["peak_vertical_accel_g"].as_f64().unwrap_or(f64::NAN);
+    let force = hop["peak_vertical_force_bw"].as_f64().unwrap_or(f64::NAN);
+    assert!(
+        (force - accel - 1.0).abs() < 1e-12 && accel > 1.0,
+        "{accel} g, {force} × weight"
+    );
+    // A gait the paper does not tabulate: no rows.
+    let gallop = run_json("raibert-biped", "2", &["--gait", "gallop"]);
+    assert_eq!(gallop["table2"].as_array().map(Vec::len), Some(0));
+}

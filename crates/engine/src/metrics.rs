@@ -382,6 +382,22 @@ pub struct PhysicsLegMetrics {
     pub stance_duration_s: f64,
 }
 
+/// One row of Raibert & Hodgins 1991's Table 2 (animation column) beside
+/// the run's figure: DESIGN.md's `table2` entries.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Table2Entry {
+    /// The quantity as the paper words it.
+    pub quantity: &'static str,
+    /// The paper's animation figure.
+    pub paper: f64,
+    /// The run's figure (`null` when the run has none, e.g. no flight yet).
+    pub measured: Option<f64>,
+    /// `(measured / paper − 1) · 100`, percent.
+    pub diff_pct: Option<f64>,
+    /// `true` for a desired speed: an input of the run, not a result.
+    pub input: bool,
+}
+
 /// DESIGN.md's `always` and `physics` keys plus Table 2's extras.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PhysicsRunMetrics {
@@ -425,10 +441,17 @@ pub struct PhysicsRunMetrics {
     pub pitch_magnitude_deg: f64,
     /// Roll magnitude, degrees.
     pub roll_magnitude_deg: f64,
-    /// Peak vertical acceleration, g.
+    /// Peak vertical acceleration of the centre of mass, g.
     pub peak_vertical_accel_g: f64,
+    /// Peak total vertical ground force, × body weight.
+    pub peak_vertical_force_bw: f64,
+    /// Mean per-stride peak-to-peak forward speed, m/s.
+    pub speed_swing_mps: f64,
     /// Largest horizontal-to-vertical ground force ratio needed.
     pub friction_needed_max: f64,
+    /// Table 2's rows for this gait beside the run's figures (empty for a
+    /// gait the paper does not tabulate).
+    pub table2: Vec<Table2Entry>,
     /// Integration steps.
     pub steps: u64,
     /// Integration steps per wall second.
@@ -477,7 +500,22 @@ impl PhysicsRunMetrics {
             pitch_magnitude_deg: s.pitch_magnitude_deg,
             roll_magnitude_deg: s.roll_magnitude_deg,
             peak_vertical_accel_g: s.peak_vertical_accel_g,
+            peak_vertical_force_bw: s.peak_vertical_force_bw,
+            speed_swing_mps: s.speed_swing_mps,
             friction_needed_max: s.friction_needed_max,
+            table2: {
+                let names: Vec<&str> = sim.creature.legs.iter().map(|l| l.name.as_str()).collect();
+                gaitlab_physics::engine::table2::compare(&s, driver.gait(), &names)
+                    .into_iter()
+                    .map(|c| Table2Entry {
+                        quantity: c.row.label,
+                        paper: c.row.animation,
+                        measured: c.measured,
+                        diff_pct: c.diff_pct(),
+                        input: c.row.quantity.is_input(),
+                    })
+                    .collect()
+            },
             steps: sim.steps,
             steps_per_second: if step_s > 0.0 { steps / step_s } else { 0.0 },
             realtime_factor: if step_s > 0.0 { sim.time / step_s } else { 0.0 },

@@ -1,14 +1,24 @@
 //! Writes docs/physics.md's Table-2 comparison: every gait of every bundled
 //! physics creature run through the driver at the paper's speed, its figures
-//! beside Raibert & Hodgins 1991's animation column.
-//! `cargo run --release -p gaitlab-physics --example table2_doc`
+//! beside Raibert & Hodgins 1991's animation column (the same rows as `gaitlab
+//! run --json`'s `table2`, from [`gaitlab_physics::engine::table2::compare`]).
+//!
+//! `cargo run --release -p gaitlab-physics --example table2_doc` prints it;
+//! with `-- --write` it replaces the part of docs/physics.md between the
+//! `table2_doc` markers.
+use std::fmt::Write as _;
+
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::load_bundled;
 use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::control::gait_controller::gait_names;
-use gaitlab_physics::engine::table2::{measured, paper_rows, paper_speed_mps};
+use gaitlab_physics::engine::table2::{compare, paper_speed_mps};
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
+const BEGIN: &str = "<!-- table2_doc:begin -->";
+const END: &str = "<!-- table2_doc:end -->";
+
+fn tables() -> Result<String, Box<dyn std::error::Error>> {
+    let mut out = String::new();
     for preset_name in ["raibert-biped", "raibert-quadruped", "raibert-kangaroo"] {
         let preset = load_bundled(preset_name).ok_or("no preset")??;
         let species = PhysicsDriver::new(&preset)?.sim().creature.species;
@@ -37,8 +47,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 .map(|l| l.name.clone())
                 .collect();
             let legs: Vec<&str> = legs.iter().map(String::as_str).collect();
-            println!("### {preset_name} · {gait} at {speed} m/s\n");
-            println!(
+            writeln!(out, "### {preset_name} · {gait} at {speed} m/s\n")?;
+            writeln!(
+                out,
                 "fell: {} · mean speed {:.2} m/s · stride {:.2} m in {:.3} s · flight {:.3} s · stance {:.3} s · pitch {:.1}° · roll {:.1}° · friction needed {:.2} · peak vertical force {:.1} × weight\n",
                 s.fell || driver.resets() > 0,
                 s.speed_mean_mps,
@@ -49,30 +60,60 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 s.pitch_magnitude_deg,
                 s.roll_magnitude_deg,
                 s.friction_needed_max,
-                s.peak_vertical_accel_g
-            );
-            let rows = paper_rows(gait);
+                s.peak_vertical_force_bw
+            )?;
+            let rows = compare(&s, gait, &legs);
             if rows.is_empty() {
-                println!("Table 2 has no column for this gait.\n");
+                writeln!(out, "Table 2 has no column for this gait.\n")?;
                 continue;
             }
-            println!("| quantity | paper (animation) | gaitlab | difference |");
-            println!("|---|---:|---:|---:|");
-            for row in rows {
-                match measured(&s, row.quantity, &legs) {
-                    Some(v) => {
-                        let d = (v / row.animation - 1.0) * 100.0;
-                        let mark = if d.abs() <= 35.0 { "" } else { " ✗" };
-                        println!(
-                            "| {} | {} | {:.3} | {:+.0} %{mark} |",
-                            row.label, row.animation, v, d
-                        );
+            writeln!(
+                out,
+                "| quantity | paper (animation) | gaitlab | difference |"
+            )?;
+            writeln!(out, "|---|---:|---:|---:|")?;
+            for c in rows {
+                let label = c.row.label;
+                let paper = c.row.animation;
+                match (c.measured, c.diff_pct()) {
+                    (Some(v), _) if c.row.quantity.is_input() => {
+                        writeln!(out, "| {label} | {paper} | {v:.3} | input |")?;
                     }
-                    None => println!("| {} | {} | — | |", row.label, row.animation),
+                    (Some(v), Some(d)) => {
+                        let speed_error = c.row.quantity.is_speed_error();
+                        let mark = if d.abs() <= 35.0 || speed_error {
+                            ""
+                        } else {
+                            " ✗"
+                        };
+                        let note = if speed_error { " (†)" } else { "" };
+                        writeln!(
+                            out,
+                            "| {label}{note} | {paper} | {v:.3} | {d:+.0} %{mark} |"
+                        )?;
+                    }
+                    _ => writeln!(out, "| {label} | {paper} | — | |")?,
                 }
             }
-            println!();
+            writeln!(out)?;
         }
     }
+    Ok(out)
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let text = tables()?;
+    if !std::env::args().any(|a| a == "--write") {
+        print!("{text}");
+        return Ok(());
+    }
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/physics.md");
+    let doc = std::fs::read_to_string(path)?;
+    let (Some(a), Some(b)) = (doc.find(BEGIN), doc.find(END)) else {
+        return Err(format!("{path}: no {BEGIN} … {END} markers").into());
+    };
+    let updated = format!("{}{BEGIN}\n\n{text}{}", &doc[..a], &doc[b..]);
+    std::fs::write(path, updated)?;
+    println!("wrote {path}");
     Ok(())
 }

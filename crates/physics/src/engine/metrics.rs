@@ -1,8 +1,9 @@
 //! The running figures of Raibert & Hodgins 1991, Table 2, measured from a
 //! simulation as it runs: stride length and duration, flight and stance
 //! durations, pitch and roll magnitudes, change of leg length during support,
-//! speed and its error, peak vertical acceleration, the friction the motion
-//! needed ("Modeling": max |f_t|/f_n over stance), and whether it fell.
+//! speed and its swing within a stride, peak vertical acceleration, the
+//! friction the motion needed ("Modeling": max |f_t|/f_n over stance), and
+//! whether it fell.
 //!
 //! Feed it every step with [`GaitRecorder::record`]; read
 //! [`GaitRecorder::summary`]. Everything before `settle_s` is ignored.
@@ -60,8 +61,16 @@ pub struct GaitSummary {
     pub pitch_magnitude_deg: f64,
     /// Mean per-stride peak-to-peak trunk roll (deg).
     pub roll_magnitude_deg: f64,
-    /// Largest total vertical ground force over body weight (g).
+    /// Largest vertical acceleration of the centre of mass (g): the total
+    /// vertical ground force over body weight, less the 1 g that only holds
+    /// the body up (Newton's law for the whole creature).
     pub peak_vertical_accel_g: f64,
+    /// Largest total vertical ground force over body weight (× weight).
+    pub peak_vertical_force_bw: f64,
+    /// Mean per-stride peak-to-peak forward speed of the centre of mass
+    /// (m/s): how much the body surges within a stride. Table 2's "error in
+    /// running speed" as this lab reads it (docs/physics.md says why).
+    pub speed_swing_mps: f64,
     /// Largest |f_t| / f_n at any foot carrying ≥ 10 % of body weight.
     pub friction_needed_max: f64,
     /// Mean per-stride peak-to-peak angle of the tail's base joint relative
@@ -94,10 +103,12 @@ pub struct GaitRecorder {
     roll_spans: Vec<f64>,
     tail_range: (f64, f64),
     tail_spans: Vec<f64>,
+    speed_range: (f64, f64),
+    speed_spans: Vec<f64>,
     start: Option<(f64, DVec3)>,
     last: (f64, DVec3),
     fell: bool,
-    peak_accel: f64,
+    peak_force: f64,
     friction: f64,
 }
 
@@ -121,10 +132,12 @@ impl GaitRecorder {
             roll_spans: Vec::new(),
             tail_range: (f64::INFINITY, f64::NEG_INFINITY),
             tail_spans: Vec::new(),
+            speed_range: (f64::INFINITY, f64::NEG_INFINITY),
+            speed_spans: Vec::new(),
             start: None,
             last: (0.0, DVec3::ZERO),
             fell: false,
-            peak_accel: 0.0,
+            peak_force: 0.0,
             friction: 0.0,
         }
     }
@@ -151,6 +164,12 @@ impl GaitRecorder {
         let settled = t >= self.settle_s;
         if settled && self.start.is_none() {
             self.start = Some((t, com));
+        }
+        // Forward speed by the centre of mass's travel since the last step.
+        let (t_last, com_last) = self.last;
+        if settled && t > t_last && self.start.is_some_and(|(t0, _)| t0 < t) {
+            let v = (com - com_last).dot(fwd) / (t - t_last);
+            self.speed_range = (self.speed_range.0.min(v), self.speed_range.1.max(v));
         }
         self.last = (t, com);
         let weight = c.model.total_mass() * crate::dynamics::model::GRAVITY_MPS2;
@@ -205,7 +224,7 @@ impl GaitRecorder {
             });
         }
         if settled {
-            self.peak_accel = self.peak_accel.max(vertical / weight);
+            self.peak_force = self.peak_force.max(vertical / weight);
             self.pitch_range = (self.pitch_range.0.min(pitch), self.pitch_range.1.max(pitch));
             self.roll_range = (self.roll_range.0.min(roll), self.roll_range.1.max(roll));
             if let Some(&k) = c.tail.first() {
@@ -225,8 +244,13 @@ impl GaitRecorder {
                 if self.tail_range.0.is_finite() {
                     self.tail_spans.push(self.tail_range.1 - self.tail_range.0);
                 }
+                if self.speed_range.0.is_finite() {
+                    self.speed_spans
+                        .push(self.speed_range.1 - self.speed_range.0);
+                }
             }
         }
+        self.speed_range = (f64::INFINITY, f64::NEG_INFINITY);
         self.tail_range = (f64::INFINITY, f64::NEG_INFINITY);
         self.pitch_range = (f64::INFINITY, f64::NEG_INFINITY);
         self.roll_range = (f64::INFINITY, f64::NEG_INFINITY);
@@ -272,7 +296,9 @@ impl GaitRecorder {
             leg_length_change_m: mean(&mut all_stances().map(|s| s.leg_shortening_m)),
             pitch_magnitude_deg: mean(&mut self.pitch_spans.iter().copied()),
             roll_magnitude_deg: mean(&mut self.roll_spans.iter().copied()),
-            peak_vertical_accel_g: self.peak_accel,
+            peak_vertical_accel_g: (self.peak_force - 1.0).max(0.0),
+            peak_vertical_force_bw: self.peak_force,
+            speed_swing_mps: mean(&mut self.speed_spans.iter().copied()),
             friction_needed_max: self.friction,
             tail_wag_deg: (!self.tail_spans.is_empty())
                 .then(|| mean(&mut self.tail_spans.iter().copied())),

@@ -5,7 +5,7 @@
 
 use gaitlab_core::driver::Driver as _;
 use gaitlab_physics::control::gait_controller::gait_names;
-use gaitlab_physics::engine::table2::{measured, paper_rows};
+use gaitlab_physics::engine::table2::compare;
 
 use super::panel::Panel;
 use crate::lab::Lab;
@@ -114,7 +114,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 "speed {:.2} m/s of {:.2} · friction needed {:.2}",
                 summary.speed_mean_mps, summary.speed_desired_mps, summary.friction_needed_max
             ));
-            let rows = paper_rows(&current);
+            let rows = compare(&summary, &current, &leg_names);
             if rows.is_empty() {
                 ui.label("Table 2 has no column for this gait.");
             } else {
@@ -125,13 +125,19 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                         ui.strong("quantity");
                         ui.strong("paper");
                         ui.strong("live");
+                        ui.strong("diff");
                         ui.end_row();
-                        for row in rows {
-                            ui.label(row.label);
-                            ui.label(format!("{:.3}", row.animation));
-                            match measured(&summary, row.quantity, &leg_names) {
+                        for c in &rows {
+                            ui.label(c.row.label);
+                            ui.label(format!("{:.3}", c.row.animation));
+                            match c.measured {
                                 Some(v) => ui.label(format!("{v:.3}")),
                                 None => ui.label("—"),
+                            };
+                            match (c.row.quantity.is_input(), c.diff_pct()) {
+                                (true, _) => ui.label("input"),
+                                (false, Some(d)) => ui.label(format!("{d:+.0} %")),
+                                (false, None) => ui.label(""),
                             };
                             ui.end_row();
                         }
