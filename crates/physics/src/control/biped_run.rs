@@ -4,15 +4,16 @@
 //! (eq. 1–2), speed by foot placement (eq. 3), trunk attitude by the active
 //! hip in stance (eq. 4).
 
-use gaitlab_core::portable::Portable;
-use glam::{DQuat, DVec3};
+use glam::DVec3;
 
 use super::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
 use super::hip_servo::set_hip;
+use super::leg_spring::{LegSpring, toward};
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
-use crate::creatures::BIPED_LEG_M;
-use crate::world::actuator::Stops;
+use super::posture::{through_hip, trunk_torque};
+use super::scale::Scale;
+use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
 
 /// Parameters of biped running; lengths are leg-spring coordinates
@@ -27,6 +28,8 @@ pub struct BipedRunParams {
     pub leg_stiffness: f64,
     /// Leg spring damping (N·s/m).
     pub leg_damping: f64,
+    /// How far the telescoping leg can shorten from full length (m).
+    pub leg_travel_m: f64,
     /// Rest length for landing (m of extension).
     pub landing_rest_m: f64,
     /// Extra rest length during thrust (m).
@@ -75,6 +78,7 @@ impl Default for BipedRunParams {
             heading: 0.0,
             leg_stiffness: 20_000.0,
             leg_damping: 20.0,
+            leg_travel_m: 0.25,
             landing_rest_m: -0.03,
             thrust_m: 0.03,
             idle_rest_m: -0.18,
@@ -119,14 +123,20 @@ pub struct BipedRun {
     last_liftoff: (glam::DVec3, f64),
     /// Each leg's rest length as it moves toward its target (m).
     rest: [f64; 2],
-    /// Scale of lengths (the creature's L).
-    scale: f64,
+    /// Each leg's hip-to-foot length at full extension (m, scaled).
+    leg_m: [f64; 2],
+    /// Table 1's factors for the creature's L.
+    scale: Scale,
 }
 
 impl BipedRun {
-    /// A controller starting in flight with leg 0 active.
+    /// A controller for `creature` (its scale and leg lengths), starting in
+    /// flight with leg 0 active.
     #[must_use]
-    pub fn new(params: BipedRunParams, scale: f64) -> Self {
+    pub fn new(params: BipedRunParams, creature: &PhysicalCreature) -> Self {
+        let scale = creature.scale;
+        let lengths = creature.leg_lengths_m();
+        let leg_m = [0, 1].map(|i| lengths.get(i).copied().unwrap_or(0.0));
         Self {
             params,
             phase: Phase::Flight,
@@ -140,17 +150,17 @@ impl BipedRun {
             speed_bias: 0.0,
             last_liftoff: (DVec3::ZERO, f64::NAN),
             rest: [params.landing_rest_m * scale, params.idle_rest_m * scale],
-            scale,
+            leg_m,
+            scale: Scale::new(scale),
         }
     }
 
-    fn leg_stops(&self) -> Stops {
-        let l = self.scale;
-        Stops {
-            min: -0.25 * l,
-            max: 0.0,
-            stiffness: 2.0e5 * l * l,
-            damping: 500.0 * l.ppowf(2.5),
+    fn spring(&self) -> LegSpring {
+        let p = &self.params;
+        LegSpring {
+            stiffness: p.leg_stiffness,
+            damping: p.leg_damping,
+            travel_m: p.leg_travel_m,
         }
     }
 
@@ -161,7 +171,7 @@ impl BipedRun {
         let qd = input.data.qd[leg.spring];
         let trunk_y = input.data.world[input.creature.trunk].pos.y;
         let p = &self.params;
-        let l = self.scale;
+        let (l, t) = (self.scale.length(), self.scale.time());
         match self.phase {
             Phase::Flight => {
                 self.apex_height = self.apex_height.max(trunk_y);
@@ -185,8 +195,7 @@ impl BipedRun {
         // bounces off the ground at impact is still landing.
         if matches!(self.phase, Phase::Thrust | Phase::Unloading) && !contact.touching {
             // Lift-off: the legs swap, the hop's apex adjusts the thrust (eq. 2).
-            self.stance_s =
-                (input.time - self.touchdown_time).clamp(0.05 * l.sqrt(), 0.5 * l.sqrt());
+            self.stance_s = (input.time - self.touchdown_time).clamp(0.05 * t, 0.5 * t);
             if self.apex_height.is_finite() {
                 let error = p.hop_height_m * l - (self.apex_height - self.liftoff_height);
                 self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
@@ -197,8 +206,8 @@ impl BipedRun {
             let (prev, t_prev) = self.last_liftoff;
             if t_prev.is_finite() && input.time > t_prev {
                 let along = heading_forward(p.heading).dot(com - prev) / (input.time - t_prev);
-                let error = p.speed_mps * l.sqrt() - along;
-                let cap = 0.5 * p.speed_mps.abs().max(0.5) * l.sqrt();
+                let error = p.speed_mps * self.scale.velocity() - along;
+                let cap = 0.5 * p.speed_mps.abs().max(0.5) * self.scale.velocity();
                 self.speed_bias =
                     (self.speed_bias + p.speed_integral_gain * error).clamp(-cap, cap);
             }
@@ -235,15 +244,16 @@ impl Controller for BipedRun {
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         self.advance_phase(input);
         let p = self.params;
-        let l = self.scale;
+        let s = self.scale;
+        let l = s.l;
         let creature = input.creature;
         let data = input.data;
         let trunk_rot = data.world[creature.trunk].rot;
         let (com, velocity) = com_state(creature, data);
-        let desired = heading_forward(p.heading) * (p.speed_mps * l.sqrt() + self.speed_bias);
-        let stops = self.leg_stops();
+        let desired = heading_forward(p.heading) * (p.speed_mps * s.velocity() + self.speed_bias);
+        let spring = self.spring();
         // Leg lengths: the spring of eq. 1 with a programmable rest.
-        let step = p.leg_rate_mps * l.sqrt() * input.dt;
+        let step = p.leg_rate_mps * s.velocity() * input.dt;
         for (i, leg) in creature.legs.iter().enumerate().take(2) {
             let target = if i != self.active {
                 p.idle_rest_m * l
@@ -257,20 +267,16 @@ impl Controller for BipedRun {
                     _ => p.landing_rest_m * l,
                 }
             };
-            self.rest[i] += (target - self.rest[i]).clamp(-step, step);
-            let d = &mut drives[leg.spring];
-            d.stops = Some(stops);
-            d.spring.stiffness = p.leg_stiffness * l * l;
-            d.spring.damping = p.leg_damping * l.ppowf(2.5);
-            d.feedforward = 0.0;
-            d.spring.rest = self.rest[i];
+            self.rest[i] = toward(self.rest[i], target, step);
+            spring.apply(&mut drives[leg.spring], self.rest[i], s);
         }
         // The active leg: placed for landing in flight, posture servo in stance.
         let active = &creature.legs[self.active];
         let idle = &creature.legs[1 - self.active];
-        let reach = (BIPED_LEG_M + p.landing_rest_m) * l;
-        let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.ppowf(4.5));
-        let max = p.max_hip_torque * l.powi(4);
+        let reach = self.leg_m[self.active] + p.landing_rest_m * l;
+        let (kp, kv) = s.torsional_gains(p.swing_kp, p.swing_kv);
+        let (ykp, ykv) = s.torsional_gains(p.leg_yaw_kp, p.leg_yaw_kv);
+        let max = p.max_hip_torque * s.torque();
         match self.phase {
             Phase::Flight => {
                 let hip_world = data.world[creature.trunk].rot * active.hip_in_trunk
@@ -280,43 +286,33 @@ impl Controller for BipedRun {
                         velocity,
                         desired,
                         self.stance_s,
-                        p.placement_gain_s * l.sqrt(),
+                        p.placement_gain_s * s.time(),
                     );
                 let dir = leg_direction(trunk_rot, foot - hip_world, reach);
                 let (roll, pitch) = gimbal_angles(dir);
                 set_hip(drives, &active.hip[..2], [roll, pitch], kp, kv, max);
-                drives[active.hip[2]].servo(
-                    p.leg_yaw_kp * l.powi(4),
-                    p.leg_yaw_kv * l.ppowf(4.5),
-                    0.0,
-                );
+                drives[active.hip[2]].servo(ykp, ykv, 0.0);
             }
             Phase::Loading => {
                 for &j in &active.hip[..2] {
                     drives[j].torque(0.0);
                 }
-                drives[active.hip[2]].servo(
-                    p.leg_yaw_kp * l.powi(4),
-                    p.leg_yaw_kv * l.ppowf(4.5),
-                    0.0,
-                );
+                drives[active.hip[2]].servo(ykp, ykv, 0.0);
             }
             Phase::Compression | Phase::Thrust | Phase::Unloading => {
                 // Eq. 4 on pitch and roll: the torque the trunk needs, applied
                 // by the hip joints as its reaction.
                 let err = attitude_error(creature, data, p.heading, 0.0);
                 let rate = trunk_rate(creature, data);
-                let (pkp, pkv) = (p.posture_kp * l.powi(4), p.posture_kv * l.ppowf(4.5));
-                let torque = -err * pkp - rate * pkv;
-                let roll_axis = trunk_rot * DVec3::Z;
+                let (pkp, pkv) = s.torsional_gains(p.posture_kp, p.posture_kv);
+                let torque = trunk_torque(err, rate, pkp, pkv);
                 let roll_q = data.q[active.hip[0]];
-                let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
-                drives[active.hip[0]].torque((-torque.dot(roll_axis)).clamp(-max, max));
-                drives[active.hip[1]].torque((-torque.dot(pitch_axis)).clamp(-max, max));
+                through_hip(drives, &active.hip, roll_q, trunk_rot, torque, max);
                 // The leg turns on a tiny inertia: only a torque the loaded
                 // foot's torsional grip can hold.
-                let yaw = -err.y * p.yaw_kp * l.powi(4) - rate.y * p.yaw_kv * l.ppowf(4.5);
-                let grip = p.max_yaw_torque * l.powi(4);
+                let (ypkp, ypkv) = s.torsional_gains(p.yaw_kp, p.yaw_kv);
+                let yaw = -err.y * ypkp - rate.y * ypkv;
+                let grip = p.max_yaw_torque * s.torque();
                 drives[active.hip[2]].torque((-yaw).clamp(-grip, grip));
             }
         }
@@ -324,6 +320,6 @@ impl Controller for BipedRun {
         // on the trunk with opposite torques and cancel.
         let mirror = [-data.q[active.hip[0]], -data.q[active.hip[1]]];
         set_hip(drives, &idle.hip[..2], mirror, kp, kv, max);
-        drives[idle.hip[2]].servo(p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.ppowf(4.5), 0.0);
+        drives[idle.hip[2]].servo(ykp, ykv, 0.0);
     }
 }

@@ -187,7 +187,9 @@ pub fn make_controller(
                 ..d
             };
             let p = with_parameters(p, params, gait)?;
-            Ok(GaitController::BipedRun(Box::new(BipedRun::new(p, l))))
+            Ok(GaitController::BipedRun(Box::new(BipedRun::new(
+                p, creature,
+            ))))
         }
         (Species::Biped, "gallop" | "gallop_alternate") => {
             if !two_ball_legs {

@@ -1,7 +1,10 @@
 //! Control: the running controllers (Raibert & Hodgins 1991, "Control"):
 //! hopping height by the leg spring's rest length and thrust (eq. 2), speed by
 //! foot placement about the neutral point (eq. 3), posture by the hip servo of
-//! eq. 4, all sequenced by the state machine of Figure 4. The
+//! eq. 4, all sequenced by the state machine of Figure 4. The paper's shared
+//! parts each have a module ([`scale`] Table 1, [`leg_spring`] eq. 1,
+//! [`placement`] eq. 3, [`posture`] eq. 4, [`hip_servo`] eq. 5, [`phase`]
+//! Figure 4's states); the gait modules compose them, and the
 //! [`gait_controller`] picks the state machine of each gait.
 
 pub mod attitude;
@@ -11,10 +14,13 @@ pub mod gains;
 pub mod gait_controller;
 pub mod hip_servo;
 pub mod kangaroo_hop;
+pub mod leg_spring;
 pub mod parameters;
 pub mod phase;
 pub mod placement;
+pub mod posture;
 pub mod quadruped_bound;
 pub mod quadruped_run;
+pub mod scale;
 
 pub use phase::Phase;

@@ -39,7 +39,7 @@ macro_rules! named_parameters {
 }
 
 named_parameters!(BipedRunParams;
-    leg_stiffness, leg_damping, landing_rest_m, thrust_m, idle_rest_m, hop_gain,
+    leg_stiffness, leg_damping, leg_travel_m, landing_rest_m, thrust_m, idle_rest_m, hop_gain,
     placement_gain_s, speed_integral_gain, swing_kp, swing_kv, posture_kp, posture_kv, yaw_kp,
     yaw_kv, leg_yaw_kp, leg_yaw_kv, max_hip_torque, max_yaw_torque, leg_rate_mps);
 

@@ -4,6 +4,8 @@
 
 use glam::DVec3;
 
+use crate::dynamics::data::Data;
+use crate::dynamics::kinematics::kinematics;
 use crate::dynamics::model::Model;
 
 /// One leg's joints (coordinate indices into `Data::q`) and its foot.
@@ -57,4 +59,42 @@ pub struct PhysicalCreature {
     pub tail: Vec<usize>,
     /// The kangaroo's neck joint.
     pub neck: Option<usize>,
+}
+
+impl PhysicalCreature {
+    /// Each leg's hip-to-foot length with every joint at zero (m, at the
+    /// creature's scale): for the telescoping legs, the leg at full length.
+    /// Controllers place feet with it, so a preset with other leg lengths
+    /// runs without code changes.
+    #[must_use]
+    pub fn leg_lengths_m(&self) -> Vec<f64> {
+        let mut data = Data::new(&self.model);
+        kinematics(&self.model, &mut data);
+        let trunk = data.world[self.trunk];
+        self.legs
+            .iter()
+            .map(|leg| {
+                let hip = trunk.rot * leg.hip_in_trunk + trunk.pos;
+                (data.point_world(leg.foot_body, leg.foot_point) - hip).length()
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::creatures::{BIPED_LEG_M, QUADRUPED_LEG_M, biped, quadruped};
+
+    #[test]
+    fn leg_lengths_are_the_models_hip_to_foot_at_full_length() {
+        let built = [(biped(1.0), BIPED_LEG_M), (quadruped(1.0), QUADRUPED_LEG_M)];
+        for (creature, want) in built {
+            for got in creature.expect("model builds").leg_lengths_m() {
+                assert_eq!(got, want, "bit for bit at scale 1");
+            }
+        }
+        for got in biped(2.0).expect("model builds").leg_lengths_m() {
+            assert!((got - 2.0 * BIPED_LEG_M).abs() < 1e-12);
+        }
+    }
 }
