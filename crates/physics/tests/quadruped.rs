@@ -22,7 +22,7 @@ fn run(speed: f64, seconds: f64) -> (GaitSummary, Option<String>) {
         speed_mps: speed,
         ..Default::default()
     };
-    let mut ctl = QuadrupedRun::new(params, 1.0);
+    let mut ctl = QuadrupedRun::new(params, &sim.creature);
     let mut rec = GaitRecorder::new(4, speed, 0.0, 3.0);
     while sim.time < seconds {
         if let Err(e) = sim.step(&mut ctl) {

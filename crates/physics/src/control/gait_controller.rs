@@ -225,7 +225,9 @@ pub fn make_controller(
                     ..QuadrupedRunParams::default()
                 };
                 let p = with_parameters(p, params, gait)?;
-                return Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(p, l))));
+                return Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(
+                    p, creature,
+                ))));
             }
             let style = if gait == "bound" {
                 BoundStyle::Bound

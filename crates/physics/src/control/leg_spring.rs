@@ -45,6 +45,7 @@ impl LegSpring {
         drive.stops = Some(self.stops(s));
         drive.spring.stiffness = self.stiffness * s.stiffness();
         drive.spring.damping = damping * s.damping();
+        drive.spring.max_force = f64::INFINITY;
         drive.feedforward = 0.0;
         drive.spring.rest = rest_m;
     }

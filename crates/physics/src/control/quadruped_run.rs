@@ -16,15 +16,16 @@
 //! for the trot. Every parameter is given for the creature at scale 1 and
 //! scaled by its dynamic scale L (Table 1).
 
-use gaitlab_core::portable::Portable;
 use glam::{DQuat, DVec3};
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
 use super::hip_servo::HipServo;
+use super::leg_spring::LegSpring;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
-use crate::creatures::QUADRUPED_LEG_M;
-use crate::world::actuator::Stops;
+use super::posture::axis_torque;
+use super::scale::Scale;
+use crate::creatures::PhysicalCreature;
 use crate::world::ground::GroundParams;
 use crate::world::sim::{ControlInput, Controller, Drive, Sim};
 
@@ -43,6 +44,8 @@ pub struct GaitTuning {
     /// Leg damping while the foot is off the ground (N·s/m): the leg's
     /// length servo, damped so a lengthened leg does not ring before landing.
     pub leg_air_damping: f64,
+    /// How far the telescoping leg can shorten from full length (m).
+    pub leg_travel_m: f64,
     /// Spring rest for landing and standing (m of extension from full
     /// length, ≤ 0): the paper shortened it for the trot.
     pub landing_rest_m: f64,
@@ -117,6 +120,7 @@ impl Default for QuadrupedRunParams {
             leg_stiffness: 12_000.0,
             leg_damping: 30.0,
             leg_air_damping: 200.0,
+            leg_travel_m: 0.36,
             landing_rest_m: -0.12,
             idle_rest_m: -0.30,
             thrust_m: 0.02,
@@ -160,17 +164,14 @@ pub fn quadruped_ground(l: f64) -> GroundParams {
 pub fn quadruped_start(sim: &mut Sim, speed_mps: f64) {
     let l = sim.creature.scale;
     let tuning = QuadrupedRunParams::default().trot;
+    let leg_m = sim.creature.leg_lengths_m().first().copied().unwrap_or(0.0);
     sim.data.q.fill(0.0);
     sim.data.qd.fill(0.0);
     for leg in &sim.creature.legs {
         sim.data.q[leg.spring] = tuning.idle_rest_m * l;
     }
     sim.data.base_orientation = DQuat::IDENTITY;
-    sim.data.base_position = DVec3::new(
-        0.0,
-        (QUADRUPED_LEG_M + tuning.landing_rest_m + 0.03) * l,
-        0.0,
-    );
+    sim.data.base_position = DVec3::new(0.0, leg_m + (tuning.landing_rest_m + 0.03) * l, 0.0);
     sim.data.base_velocity.angular = DVec3::ZERO;
     sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, speed_mps * l.sqrt());
     for c in &mut sim.contacts {
@@ -209,13 +210,18 @@ pub struct QuadrupedRun {
     pub speed_bias: f64,
     /// Time and forward position of the centre of mass at the last lift-off.
     step_start: Option<(f64, f64)>,
-    scale: f64,
+    /// Each leg's hip-to-foot length at full extension (m, scaled).
+    leg_m: [f64; 4],
+    scale: Scale,
 }
 
 impl QuadrupedRun {
-    /// A trot controller, starting in flight with pair 0 about to land.
+    /// A trot controller for `creature` (its scale and leg lengths),
+    /// starting in flight with pair 0 about to land.
     #[must_use]
-    pub fn new(params: QuadrupedRunParams, scale: f64) -> Self {
+    pub fn new(params: QuadrupedRunParams, creature: &PhysicalCreature) -> Self {
+        let scale = creature.scale;
+        let lengths = creature.leg_lengths_m();
         let t = params.trot;
         Self {
             params,
@@ -234,7 +240,8 @@ impl QuadrupedRun {
             liftoff_pair: None,
             speed_bias: 0.0,
             step_start: None,
-            scale,
+            leg_m: [0, 1, 2, 3].map(|i| lengths.get(i).copied().unwrap_or(0.0)),
+            scale: Scale::new(scale),
         }
     }
 
@@ -256,13 +263,12 @@ impl QuadrupedRun {
         self.params.trot
     }
 
-    fn leg_stops(&self) -> Stops {
-        let l = self.scale;
-        Stops {
-            min: -0.36 * l,
-            max: 0.0,
-            stiffness: 2.0e5 * l * l,
-            damping: 500.0 * l.ppowf(2.5),
+    fn spring(&self) -> LegSpring {
+        let t = self.tuning();
+        LegSpring {
+            stiffness: t.leg_stiffness,
+            damping: t.leg_damping,
+            travel_m: t.leg_travel_m,
         }
     }
 
@@ -274,7 +280,8 @@ impl QuadrupedRun {
         com_forward: f64,
     ) {
         let t = self.tuning();
-        let l = self.scale;
+        let l = self.scale.length();
+        let time_s = self.scale.time();
         let pair = TROT_PAIRS[self.active];
         let landing = t.landing_rest_m * l;
         // Flight time of the pair that lifted off last ends at the first touch
@@ -284,8 +291,8 @@ impl QuadrupedRun {
         {
             let flight = input.time - self.liftoff_time;
             self.flight_s[p] = flight;
-            let error = t.flight_s[p] * l.sqrt() - flight;
-            self.thrust[p] = (self.thrust[p] + self.params.flight_gain * l.sqrt() * error)
+            let error = t.flight_s[p] * time_s - flight;
+            self.thrust[p] = (self.thrust[p] + self.params.flight_gain * time_s * error)
                 .clamp(0.0, self.params.max_thrust_m * l);
             self.liftoff_pair = None;
         }
@@ -318,7 +325,7 @@ impl QuadrupedRun {
                 }
                 Phase::Loading
                     if (qd < 0.0 && q < self.stance_rest[i] - 0.002 * l)
-                        || input.time - self.leg_touchdown[i] > 0.015 * l.sqrt() =>
+                        || input.time - self.leg_touchdown[i] > 0.015 * time_s =>
                 {
                     *phase = Phase::Compression;
                 }
@@ -330,8 +337,8 @@ impl QuadrupedRun {
             }
             if *phase != Phase::Flight && !touching {
                 // A foot bouncing off at once may land again.
-                self.done[i] = *phase != Phase::Loading
-                    || input.time - self.leg_touchdown[i] > 0.01 * l.sqrt();
+                self.done[i] =
+                    *phase != Phase::Loading || input.time - self.leg_touchdown[i] > 0.01 * time_s;
                 *phase = Phase::Flight;
             }
         }
@@ -341,14 +348,14 @@ impl QuadrupedRun {
         {
             // Lift-off of the virtual leg: the pairs swap (Figure 4, flight).
             let measured = input.time - self.touchdown_time;
-            self.stance_s[self.active] = measured.clamp(0.04 * l.sqrt(), 0.4 * l.sqrt());
+            self.stance_s[self.active] = measured.clamp(0.04 * time_s, 0.4 * time_s);
             self.liftoff_time = input.time;
             self.liftoff_pair = Some(self.active);
             // Integral speed correction from the step's mean speed.
             if let Some((t0, x0)) = self.step_start
                 && input.time - t0 > 1e-3
             {
-                let vd = self.params.speed_mps * l.sqrt();
+                let vd = self.params.speed_mps * self.scale.velocity();
                 let v = (com_forward - x0) / (input.time - t0);
                 self.speed_bias = (self.speed_bias + t.speed_gain * (vd - v))
                     .clamp(-0.5 * vd.abs(), 0.5 * vd.abs());
@@ -424,7 +431,8 @@ impl Controller for QuadrupedRun {
         if creature.legs.len() != 4 {
             return;
         }
-        let l = self.scale;
+        let s = self.scale;
+        let l = s.length();
         let trunk = creature.trunk;
         let trunk_rot = data.world[trunk].rot;
         let trunk_pos = data.world[trunk].pos;
@@ -444,7 +452,7 @@ impl Controller for QuadrupedRun {
         let idle = TROT_PAIRS[1 - self.active];
         let p = self.params;
         let t = self.tuning();
-        let stops = self.leg_stops();
+        let spring = self.spring();
         let landing = t.landing_rest_m * l;
         let short = t.idle_rest_m * l;
         let thrust = self.thrust[self.active];
@@ -456,17 +464,12 @@ impl Controller for QuadrupedRun {
         let level = |i: usize| (hip_y(i) - mean_hip_y).clamp(-0.08 * l, 0.08 * l);
         // Leg springs: eq. 1 with a programmable rest.
         for (i, leg) in creature.legs.iter().enumerate() {
-            let d = &mut drives[leg.spring];
-            d.stops = Some(stops);
-            d.spring.stiffness = t.leg_stiffness * l * l;
-            d.spring.damping = if input.contacts[i].touching {
+            let damping = if input.contacts[i].touching {
                 t.leg_damping
             } else {
                 t.leg_air_damping
-            } * l.ppowf(2.5);
-            d.spring.max_force = f64::INFINITY;
-            d.feedforward = 0.0;
-            d.spring.rest = if !pair.contains(&i) || self.done[i] {
+            };
+            let rest = if !pair.contains(&i) || self.done[i] {
                 short
             } else {
                 match self.leg_phase[i] {
@@ -477,15 +480,16 @@ impl Controller for QuadrupedRun {
                     _ => self.stance_rest[i],
                 }
             };
+            spring.apply_with_damping(&mut drives[leg.spring], rest, damping, s);
         }
         // Foot placement (eq. 3) for the active pair's legs in the air.
         let velocity = com_velocity(creature, data);
-        let desired = fwd * (p.speed_mps * l.sqrt() + self.speed_bias);
-        let reach = QUADRUPED_LEG_M * l + landing;
-        let max = p.max_hip_torque * l.powi(4);
+        let desired = fwd * (p.speed_mps * s.velocity() + self.speed_bias);
+        let max = p.max_hip_torque * s.torque();
+        let (kp, kv) = s.torsional_gains(p.swing_kp, p.swing_kv);
         let servo = HipServo {
-            kp: p.swing_kp * l.powi(4),
-            kv: p.swing_kv * l.ppowf(4.5),
+            kp,
+            kv,
             max,
             dt: input.dt,
         };
@@ -493,7 +497,7 @@ impl Controller for QuadrupedRun {
             velocity,
             desired,
             self.stance_s[self.active],
-            t.placement_gain_s * l.sqrt(),
+            t.placement_gain_s * s.time(),
         );
         // Posture (eq. 4) and heading torques wanted on the trunk.
         let swing = if self.active == 0 {
@@ -504,11 +508,13 @@ impl Controller for QuadrupedRun {
         let err = attitude_error(creature, data, p.heading, t.pitch_d + swing);
         let rate = trunk_rate(creature, data);
         let lateral = DVec3::Y.cross(fwd);
-        let pitch_t = -(err.dot(lateral) * t.pitch_kp * l.powi(4)
-            + rate.dot(lateral) * t.pitch_kv * l.ppowf(4.5));
-        let roll_t =
-            -(err.dot(fwd) * t.roll_kp * l.powi(4) + rate.dot(fwd) * t.roll_kv * l.ppowf(4.5));
-        let yaw_t = -(err.y * p.yaw_kp * l.powi(4) + rate.y * p.yaw_kv * l.ppowf(4.5));
+        let gains = |kp: f64, kv: f64| s.torsional_gains(kp, kv);
+        let (pkp, pkv) = gains(t.pitch_kp, t.pitch_kv);
+        let pitch_t = axis_torque(err.dot(lateral), rate.dot(lateral), pkp, pkv);
+        let (rkp, rkv) = gains(t.roll_kp, t.roll_kv);
+        let roll_t = axis_torque(err.dot(fwd), rate.dot(fwd), rkp, rkv);
+        let (ykp, ykv) = gains(p.yaw_kp, p.yaw_kv);
+        let yaw_t = axis_torque(err.y, rate.y, ykp, ykv);
         let torque = lateral * pitch_t + fwd * roll_t;
         let servoing = |ph: Phase| matches!(ph, Phase::Compression | Phase::Thrust);
         let n = pair
@@ -530,6 +536,7 @@ impl Controller for QuadrupedRun {
         for &i in &pair {
             let leg = &creature.legs[i];
             let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
+            let reach = self.leg_m[i] + landing;
             active_pitch += data.q[leg.hip[1]] / 2.0;
             let phase = self.leg_phase[i];
             if self.done[i] {
@@ -552,7 +559,7 @@ impl Controller for QuadrupedRun {
                     } else {
                         0.0
                     }
-                    .min(0.5 * l.sqrt());
+                    .min(0.5 * s.time());
                     let ahead = DVec3::new(hip_v.x, 0.0, hip_v.z) * t_rem;
                     let foot = DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead + displacement;
                     let dir = leg_direction(trunk_rot, foot - hip_world, reach);
@@ -578,12 +585,12 @@ impl Controller for QuadrupedRun {
                     drives[leg.hip[0]].torque(roll_tau.clamp(-max, max));
                     let q = data.q[leg.spring];
                     let spring_force =
-                        (t.leg_stiffness * l * l * (self.stance_rest[i] - q)).max(0.0);
+                        (t.leg_stiffness * s.stiffness() * (self.stance_rest[i] - q)).max(0.0);
                     // In [0, max]: a leg driven past its stop has a negative
-                    // length QUADRUPED_LEG_M·l + q, and clamp(-lim, lim) panics
-                    // on a negative lim.
+                    // length leg_m + q, and clamp(-lim, lim) panics on a
+                    // negative lim.
                     let lim = if t.posture_force_ratio.is_finite() {
-                        (t.posture_force_ratio * spring_force * (QUADRUPED_LEG_M * l + q))
+                        (t.posture_force_ratio * spring_force * (self.leg_m[i] + q))
                             .min(max)
                             .max(0.0)
                     } else {
