@@ -29,7 +29,7 @@ fn run(style: BoundStyle, speed: f64, seconds: f64) -> GaitSummary {
         style,
         ..Default::default()
     };
-    let mut ctl = QuadrupedBound::new(params, 1.0);
+    let mut ctl = QuadrupedBound::new(params, &sim.creature);
     let mut rec = GaitRecorder::new(4, speed, 0.0, 3.0);
     while sim.time < seconds && !rec.fell() {
         sim.step(&mut ctl).expect("no blow-up");

@@ -241,7 +241,7 @@ pub fn make_controller(
             };
             let p = with_parameters(p, params, gait)?;
             Ok(GaitController::QuadrupedBound(Box::new(
-                QuadrupedBound::new(p, l),
+                QuadrupedBound::new(p, creature),
             )))
         }
         (Species::Kangaroo, "hop") => {

@@ -60,7 +60,7 @@ named_parameters!(KangarooHopParams;
     landing_damping_factor);
 
 named_parameters!(QuadrupedBoundParams;
-    leg_stiffness, leg_damping, leg_air_damping, landing_rest_m, short_rest_m, thrust_m,
+    leg_stiffness, leg_travel_m, leg_damping, leg_air_damping, landing_rest_m, short_rest_m, thrust_m,
     rear_extra_thrust_m, max_thrust_m, min_thrust_m, stride_flight_s, flight_gain,
     gathered_flight_s, extended_flight_s, pair_flight_gain, thrust_end, min_short_s, stance_s,
     placement_gain_s, speed_integral_gain, speed_bias_cap, min_stride_s, front_offset_m,

@@ -39,6 +39,35 @@ pub fn leg_direction(trunk_rot: DMat3, offset: DVec3, reach: f64) -> DVec3 {
     trunk_rot.transpose() * world
 }
 
+/// Where on the ground (world, y = 0) the hip will be at touchdown, looking
+/// at most `lookahead_s` ahead: the hip at `hip_world` moving at `hip_v`,
+/// falling under gravity until a leg of length `reach` pointed `displacement`
+/// ahead of it reaches the ground. Eq. 3's foot position is taken about this
+/// point, so the target stays put on the ground while the body travels and
+/// the leg sweeps back before landing (ground speed matching).
+#[must_use]
+pub fn hip_at_touchdown(
+    hip_world: DVec3,
+    hip_v: DVec3,
+    reach: f64,
+    displacement: DVec3,
+    lookahead_s: f64,
+) -> DVec3 {
+    let drop = hip_world.y
+        - (reach * reach - displacement.length_squared())
+            .max(0.0)
+            .sqrt();
+    let g = crate::dynamics::model::GRAVITY_MPS2;
+    let t_rem = if drop > 0.0 {
+        (hip_v.y + (hip_v.y * hip_v.y + 2.0 * g * drop).sqrt()) / g
+    } else {
+        0.0
+    }
+    .min(lookahead_s);
+    let ahead = DVec3::new(hip_v.x, 0.0, hip_v.z) * t_rem;
+    DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -55,6 +84,21 @@ mod tests {
             let back = DQuat::from_rotation_z(roll) * DQuat::from_rotation_x(pitch) * DVec3::NEG_Y;
             assert!((back - dir.normalize()).length() < 1e-12, "{dir} → {back}");
         }
+    }
+
+    #[test]
+    fn the_hip_at_touchdown_is_where_it_falls_to_leg_length() {
+        // A hip 1.0 m up, level, moving 2 m/s forward, over a 0.8 m leg
+        // pointed straight down: it falls 0.2 m in √(2·0.2/g) s.
+        let g = crate::dynamics::model::GRAVITY_MPS2;
+        let hip = DVec3::new(0.0, 1.0, 0.0);
+        let v = DVec3::new(0.0, 0.0, 2.0);
+        let at = hip_at_touchdown(hip, v, 0.8, DVec3::ZERO, 1.0);
+        let t = (2.0 * 0.2 / g).sqrt();
+        assert!((at - DVec3::new(0.0, 0.0, 2.0 * t)).length() < 1e-12);
+        // The look-ahead caps it; a hip already low looks nowhere ahead.
+        assert!((hip_at_touchdown(hip, v, 0.8, DVec3::ZERO, 0.05).z - 0.1).abs() < 1e-12);
+        assert_eq!(hip_at_touchdown(hip, v, 1.2, DVec3::ZERO, 1.0), DVec3::ZERO);
     }
 
     #[test]

@@ -39,6 +39,66 @@ pub fn through_hip(
     drives[hip[1]].torque((-torque.dot(pitch_axis)).clamp(-max, max));
 }
 
+/// One supporting leg's share of eq. 4 through a gimbal hip, for gaits with
+/// several feet down (the trot's and the bound's pairs).
+#[derive(Clone, Copy, Debug)]
+pub struct StanceShare {
+    /// The torque the trunk needs (world, N·m), shared by `legs` legs.
+    pub torque: DVec3,
+    /// How many legs share it.
+    pub legs: f64,
+    /// Yaw by horizontal foot forces about the centre of mass:
+    /// `G = c·(ŷ × r)` at each foot, `c` = yaw torque / Σ|r_xz|² (N/m).
+    pub yaw_per_m2: f64,
+    /// Largest hip torque (N·m).
+    pub max: f64,
+    /// Largest pitch torque (N·m), ≤ `max`: what the foot's grip allows.
+    pub pitch_limit: f64,
+}
+
+impl StanceShare {
+    /// Apply this leg's share through the roll (`hip[0]`, at angle `roll_q`)
+    /// and pitch (`hip[1]`) joints of a hip at `hip_world` whose foot is at
+    /// `foot`, the centre of mass at `com`.
+    #[expect(clippy::too_many_arguments, reason = "one leg's geometry, named")]
+    pub fn apply(
+        &self,
+        drives: &mut [Drive],
+        hip: &[usize],
+        roll_q: f64,
+        trunk_rot: DMat3,
+        hip_world: DVec3,
+        foot: DVec3,
+        com: DVec3,
+    ) {
+        let roll_axis = trunk_rot * DVec3::Z;
+        let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
+        let r = foot - com;
+        let g = DVec3::Y.cross(DVec3::new(r.x, 0.0, r.z)) * self.yaw_per_m2;
+        let moment = (foot - hip_world).cross(g);
+        let roll_tau = -self.torque.dot(roll_axis) / self.legs - roll_axis.dot(moment);
+        let pitch_tau = -self.torque.dot(pitch_axis) / self.legs - pitch_axis.dot(moment);
+        let (max, lim) = (self.max, self.pitch_limit);
+        drives[hip[0]].torque(roll_tau.clamp(-max, max));
+        drives[hip[1]].torque(pitch_tau.clamp(-lim, lim));
+        drives[hip[0]].spring.max_force = max;
+        drives[hip[1]].spring.max_force = max;
+    }
+}
+
+/// The largest pitch torque a stance leg may apply (N·m): `ratio` × the leg
+/// spring's force (N) × the leg's length (m), within `[0, max]` (a leg
+/// driven past its stop has a negative length; a non-finite ratio means no
+/// limit but `max`).
+#[must_use]
+pub fn grip_limit(ratio: f64, spring_force: f64, length_m: f64, max: f64) -> f64 {
+    if ratio.is_finite() {
+        (ratio * spring_force * length_m).min(max).max(0.0)
+    } else {
+        max
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -53,6 +113,27 @@ mod tests {
         );
         assert!((t - DVec3::new(-10.0, -5.0, 20.0)).length() < 1e-12);
         assert!((axis_torque(0.1, -2.0, 100.0, 5.0) - 0.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_stance_share_splits_the_torque_and_limits_pitch_by_grip() {
+        let mut drives = vec![Drive::default(); 2];
+        let share = StanceShare {
+            torque: DVec3::new(4.0, 0.0, 2.0),
+            legs: 2.0,
+            yaw_per_m2: 0.0,
+            max: 10.0,
+            pitch_limit: grip_limit(0.5, 2.0, 1.0, 10.0),
+        };
+        let (hip, foot) = (DVec3::new(0.0, 1.0, 0.0), DVec3::ZERO);
+        share.apply(&mut drives, &[0, 1], 0.0, DMat3::IDENTITY, hip, foot, foot);
+        assert_eq!(drives[0].feedforward, -1.0, "half the roll torque");
+        assert_eq!(
+            drives[1].feedforward, -1.0,
+            "half the pitch torque, limited to 1"
+        );
+        assert_eq!(grip_limit(1.0, 5.0, -0.1, 10.0), 0.0);
+        assert_eq!(grip_limit(f64::INFINITY, 5.0, 1.0, 10.0), 10.0);
     }
 
     #[test]

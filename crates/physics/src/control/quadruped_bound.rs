@@ -31,15 +31,16 @@
 //! All parameters are given at scale 1 and scaled by the creature's dynamic
 //! scale L (Table 1).
 
-use gaitlab_core::portable::Portable;
 use glam::{DQuat, DVec3};
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
 use super::hip_servo::HipServo;
+use super::leg_spring::LegSpring;
 use super::phase::Phase;
-use super::placement::{foot_displacement, gimbal_angles, leg_direction};
-use crate::creatures::QUADRUPED_LEG_M;
-use crate::world::actuator::Stops;
+use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
+use super::posture::{StanceShare, axis_torque, grip_limit};
+use super::scale::Scale;
+use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive, Sim};
 
 /// The pairs: front then rear; within a pair the leg that lands first in
@@ -83,6 +84,8 @@ pub struct QuadrupedBoundParams {
     pub heading: f64,
     /// Leg spring stiffness k of eq. 1, per leg (N/m).
     pub leg_stiffness: f64,
+    /// How far the telescoping leg can shorten from full length (m).
+    pub leg_travel_m: f64,
     /// Leg spring damping b of eq. 1 in stance (N·s/m).
     pub leg_damping: f64,
     /// Leg damping while the foot is in the air (N·s/m).
@@ -172,6 +175,7 @@ impl Default for QuadrupedBoundParams {
             speed_mps: 2.8,
             heading: 0.0,
             leg_stiffness: 6_660.0,
+            leg_travel_m: 0.36,
             leg_damping: 9.6,
             leg_air_damping: 120.0,
             landing_rest_m: -0.116,
@@ -244,7 +248,8 @@ pub fn bound_start(sim: &mut Sim, speed_mps: f64) {
         } * l;
     }
     sim.data.base_orientation = DQuat::IDENTITY;
-    sim.data.base_position = DVec3::new(0.0, (QUADRUPED_LEG_M + p.landing_rest_m + 0.04) * l, 0.0);
+    let leg_m = sim.creature.leg_lengths_m().first().copied().unwrap_or(0.0);
+    sim.data.base_position = DVec3::new(0.0, leg_m + p.landing_rest_m * l + 0.04 * l, 0.0);
     sim.data.base_velocity.angular = DVec3::ZERO;
     sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, speed_mps * l.sqrt());
     for c in &mut sim.contacts {
@@ -274,13 +279,18 @@ pub struct QuadrupedBound {
     /// Time and forward position of the centre of mass at the last rear touchdown.
     stride_start: Option<(f64, f64)>,
     hip_target: [[f64; 2]; 4],
-    scale: f64,
+    /// Each leg's hip-to-foot length at full extension (m, scaled).
+    leg_m: [f64; 4],
+    scale: Scale,
 }
 
 impl QuadrupedBound {
-    /// A controller in flight, either pair free to land first.
+    /// A controller for `creature` (its scale and leg lengths), in flight,
+    /// either pair free to land first.
     #[must_use]
-    pub fn new(params: QuadrupedBoundParams, scale: f64) -> Self {
+    pub fn new(params: QuadrupedBoundParams, creature: &PhysicalCreature) -> Self {
+        let scale = creature.scale;
+        let lengths = creature.leg_lengths_m();
         let pair = PairState {
             phase: Phase::Flight,
             armed: false,
@@ -304,7 +314,8 @@ impl QuadrupedBound {
             stride_flight_s: 0.0,
             stride_start: None,
             hip_target: [[0.0; 2]; 4],
-            scale,
+            leg_m: [0, 1, 2, 3].map(|i| lengths.get(i).copied().unwrap_or(0.0)),
+            scale: Scale::new(scale),
         }
     }
 
@@ -336,23 +347,22 @@ impl QuadrupedBound {
         }
     }
 
-    fn leg_stops(&self) -> Stops {
-        let l = self.scale;
-        Stops {
-            min: -0.36 * l,
-            max: 0.0,
-            stiffness: 2.0e5 * l * l,
-            damping: 500.0 * l.ppowf(2.5),
+    fn spring(&self) -> LegSpring {
+        let p = &self.params;
+        LegSpring {
+            stiffness: p.leg_stiffness,
+            damping: p.leg_damping,
+            travel_m: p.leg_travel_m,
         }
     }
 
     fn pair_thrust(&self, pair: usize) -> f64 {
+        let l = self.scale.length();
         let extra = if pair == REAR {
-            self.params.rear_extra_thrust_m * self.scale
+            self.params.rear_extra_thrust_m * l
         } else {
             0.0
         };
-        let l = self.scale;
         (self.thrust + extra + self.trim[pair])
             .clamp(self.params.min_thrust_m * l, self.params.max_thrust_m * l)
     }
@@ -361,7 +371,7 @@ impl QuadrupedBound {
     /// its lift-off (negative: overlap with the other pair's stance).
     fn regulate_pair(&mut self, k: usize, flight: f64) {
         let p = self.params;
-        let l = self.scale;
+        let l = self.scale.l;
         let target = if k == FRONT {
             p.gathered_flight_s
         } else {
@@ -374,7 +384,7 @@ impl QuadrupedBound {
 
     /// Advance both pairs' state machines on the contact and spring events.
     fn advance(&mut self, input: &ControlInput<'_>, com_forward: f64) {
-        let l = self.scale;
+        let l = self.scale.l;
         let p = self.params;
         let any_touch = input.contacts.iter().any(|c| c.touching);
         // Flights (every foot off) and the thrust regulation on the stride's
@@ -539,7 +549,8 @@ impl Controller for QuadrupedBound {
         if creature.legs.len() != 4 || creature.legs.iter().any(|leg| leg.hip.len() != 2) {
             return;
         }
-        let l = self.scale;
+        let s = self.scale;
+        let l = s.length();
         let p = self.params;
         let fwd = heading_forward(p.heading);
         let lateral = DVec3::Y.cross(fwd);
@@ -549,7 +560,7 @@ impl Controller for QuadrupedBound {
         let trunk = creature.trunk;
         let trunk_rot = data.world[trunk].rot;
         let trunk_pos = data.world[trunk].pos;
-        let stops = self.leg_stops();
+        let spring = self.spring();
         let landing = p.landing_rest_m * l;
         let short = p.short_rest_m * l;
         let gallop = p.style == BoundStyle::Gallop;
@@ -557,19 +568,21 @@ impl Controller for QuadrupedBound {
         // Posture torques wanted on the trunk in stance (eq. 4, weak on pitch).
         let err = attitude_error(creature, data, p.heading, p.pitch_bias);
         let rate = trunk_rate(creature, data);
-        let pitch_t = -(err.dot(lateral) * p.pitch_kp * l.powi(4)
-            + rate.dot(lateral) * p.pitch_kv * l.ppowf(4.5));
-        let roll_t =
-            -(err.dot(fwd) * p.roll_kp * l.powi(4) + rate.dot(fwd) * p.roll_kv * l.ppowf(4.5));
-        let yaw_t = -(err.y * p.yaw_kp * l.powi(4) + rate.y * p.yaw_kv * l.ppowf(4.5));
+        let gains = |kp: f64, kv: f64| s.torsional_gains(kp, kv);
+        let (pkp, pkv) = gains(p.pitch_kp, p.pitch_kv);
+        let pitch_t = axis_torque(err.dot(lateral), rate.dot(lateral), pkp, pkv);
+        let (rkp, rkv) = gains(p.roll_kp, p.roll_kv);
+        let roll_t = axis_torque(err.dot(fwd), rate.dot(fwd), rkp, rkv);
+        let (ykp, ykv) = gains(p.yaw_kp, p.yaw_kv);
+        let yaw_t = axis_torque(err.y, rate.y, ykp, ykv);
 
         let velocity = com_velocity(creature, data);
-        let desired = fwd * (p.speed_mps * l.sqrt() + self.speed_bias);
-        let reach = QUADRUPED_LEG_M * l + landing;
-        let max = p.max_hip_torque * l.powi(4);
+        let desired = fwd * (p.speed_mps * s.velocity() + self.speed_bias);
+        let max = p.max_hip_torque * s.torque();
+        let (kp, kv) = gains(p.swing_kp, p.swing_kv);
         let servo = HipServo {
-            kp: p.swing_kp * l.powi(4),
-            kv: p.swing_kv * l.ppowf(4.5),
+            kp,
+            kv,
             max,
             dt: input.dt,
         };
@@ -580,12 +593,12 @@ impl Controller for QuadrupedBound {
             let thrust = self.pair_thrust(k);
             let in_flight = pair.phase == Phase::Flight;
             // Lengthen for landing once armed and clear of the ground.
-            let extend = pair.armed && input.time - pair.liftoff_s > p.min_short_s * l.sqrt();
+            let extend = pair.armed && input.time - pair.liftoff_s > p.min_short_s * s.time();
             let displacement = foot_displacement(
                 velocity,
                 desired,
                 pair.stance_s,
-                p.placement_gain_s * l.sqrt(),
+                p.placement_gain_s * s.time(),
             ) + if k == FRONT {
                 fwd * (p.front_offset_m * l)
             } else {
@@ -594,9 +607,9 @@ impl Controller for QuadrupedBound {
             // Stance legs of the pair sharing the posture torque.
             let mut n = 0.0;
             let mut lever = 0.0;
-            for (s, &i) in legs.iter().enumerate() {
+            for (side, &i) in legs.iter().enumerate() {
                 if !in_flight
-                    && pair.touched[s]
+                    && pair.touched[side]
                     && input.contacts[i].touching
                     && servoing(pair.phase)
                 {
@@ -606,12 +619,13 @@ impl Controller for QuadrupedBound {
                 }
             }
             let yaw_c = if lever > 1e-6 { yaw_t / lever } else { 0.0 };
-            for (s, &i) in legs.iter().enumerate() {
+            for (side, &i) in legs.iter().enumerate() {
                 let leg = &creature.legs[i];
-                let second = gallop && s == 1;
+                let reach = self.leg_m[i] + landing;
+                let second = gallop && side == 1;
                 let touching = input.contacts[i].touching;
                 // Leg spring: eq. 1 with a programmable rest.
-                let airborne_leg = in_flight || !pair.touched[s];
+                let airborne_leg = in_flight || !pair.touched[side];
                 let rest = if airborne_leg {
                     if in_flight && !extend {
                         short
@@ -622,25 +636,18 @@ impl Controller for QuadrupedBound {
                     }
                 } else {
                     match pair.phase {
-                        Phase::Thrust => pair.rest[s] + thrust,
+                        Phase::Thrust => pair.rest[side] + thrust,
                         Phase::Unloading => short,
                         _ if !touching && pair.phase != Phase::Loading => short,
-                        _ => pair.rest[s],
+                        _ => pair.rest[side],
                     }
                 };
-                {
-                    let d = &mut drives[leg.spring];
-                    d.stops = Some(stops);
-                    d.spring.stiffness = p.leg_stiffness * l * l;
-                    d.spring.damping = if touching {
-                        p.leg_damping
-                    } else {
-                        p.leg_air_damping
-                    } * l.ppowf(2.5);
-                    d.spring.max_force = f64::INFINITY;
-                    d.feedforward = 0.0;
-                    d.spring.rest = rest.min(0.0);
-                }
+                let damping = if touching {
+                    p.leg_damping
+                } else {
+                    p.leg_air_damping
+                };
+                spring.apply_with_damping(&mut drives[leg.spring], rest.min(0.0), damping, s);
                 let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
                 if airborne_leg && !touching {
                     // Foot placement (eq. 3) about the hip's neutral point, aimed
@@ -649,52 +656,36 @@ impl Controller for QuadrupedBound {
                     // in the last moments, sweeps back so the heavy foot meets
                     // the ground at little speed (ground speed matching).
                     let hip_v = data.point_velocity_world(trunk, leg.hip_in_trunk);
-                    let drop = hip_world.y
-                        - (reach * reach - displacement.length_squared())
-                            .max(0.0)
-                            .sqrt();
-                    let g = crate::dynamics::model::GRAVITY_MPS2;
-                    let t_rem = if drop > 0.0 {
-                        (hip_v.y + (hip_v.y * hip_v.y + 2.0 * g * drop).sqrt()) / g
-                    } else {
-                        0.0
-                    }
-                    .min(p.sweep_s * l.sqrt());
-                    let ahead = DVec3::new(hip_v.x, 0.0, hip_v.z) * t_rem;
                     let spread = if second {
                         fwd * (p.gallop_spread_m * l)
                     } else {
                         DVec3::ZERO
                     };
-                    let foot =
-                        DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead + displacement + spread;
+                    let lookahead = p.sweep_s * s.time();
+                    let foot = hip_at_touchdown(hip_world, hip_v, reach, displacement, lookahead)
+                        + displacement
+                        + spread;
                     let dir = leg_direction(trunk_rot, foot - hip_world, reach);
                     let (roll, pitch) = gimbal_angles(dir);
                     servo.set(drives, &leg.hip, [roll, pitch], &mut self.hip_target[i]);
                 } else if touching && servoing(pair.phase) && n > 0.0 {
-                    let roll_axis = trunk_rot * DVec3::Z;
-                    let roll_q = data.q[leg.hip[0]];
-                    let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
-                    let foot = input.contacts[i].position;
-                    let r = foot - com;
-                    let gy = DVec3::Y.cross(DVec3::new(r.x, 0.0, r.z)) * yaw_c;
-                    let moment = (foot - hip_world).cross(gy);
-                    let torque = lateral * pitch_t + fwd * roll_t;
-                    let roll_tau = -torque.dot(roll_axis) / n - roll_axis.dot(moment);
-                    let pitch_tau = -torque.dot(pitch_axis) / n - pitch_axis.dot(moment);
                     let q = data.q[leg.spring];
-                    let spring_force = (p.leg_stiffness * l * l * (rest - q)).max(0.0);
-                    // At most `max`, never negative: the leg's length
-                    // (QUADRUPED_LEG_M·l + q) goes negative when the leg is driven
-                    // past its stop (a tall obstacle), and clamp(-lim, lim) panics
-                    // on a negative lim.
-                    let lim = (p.posture_force_ratio * spring_force * (QUADRUPED_LEG_M * l + q))
-                        .min(max)
-                        .max(0.0);
-                    drives[leg.hip[0]].torque(roll_tau.clamp(-max, max));
-                    drives[leg.hip[1]].torque(pitch_tau.clamp(-lim, lim));
-                    drives[leg.hip[0]].spring.max_force = max;
-                    drives[leg.hip[1]].spring.max_force = max;
+                    let spring_force = (p.leg_stiffness * s.stiffness() * (rest - q)).max(0.0);
+                    let share = StanceShare {
+                        torque: lateral * pitch_t + fwd * roll_t,
+                        legs: n,
+                        yaw_per_m2: yaw_c,
+                        max,
+                        pitch_limit: grip_limit(
+                            p.posture_force_ratio,
+                            spring_force,
+                            self.leg_m[i] + q,
+                            max,
+                        ),
+                    };
+                    let foot = input.contacts[i].position;
+                    let roll_q = data.q[leg.hip[0]];
+                    share.apply(drives, &leg.hip, roll_q, trunk_rot, hip_world, foot, com);
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 } else {
                     for (&j, prev) in leg.hip.iter().zip(self.hip_target[i].iter_mut()) {

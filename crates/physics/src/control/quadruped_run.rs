@@ -22,8 +22,8 @@ use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate}
 use super::hip_servo::HipServo;
 use super::leg_spring::LegSpring;
 use super::phase::Phase;
-use super::placement::{foot_displacement, gimbal_angles, leg_direction};
-use super::posture::axis_torque;
+use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
+use super::posture::{StanceShare, axis_torque, grip_limit};
 use super::scale::Scale;
 use crate::creatures::PhysicalCreature;
 use crate::world::ground::GroundParams;
@@ -171,7 +171,7 @@ pub fn quadruped_start(sim: &mut Sim, speed_mps: f64) {
         sim.data.q[leg.spring] = tuning.idle_rest_m * l;
     }
     sim.data.base_orientation = DQuat::IDENTITY;
-    sim.data.base_position = DVec3::new(0.0, leg_m + (tuning.landing_rest_m + 0.03) * l, 0.0);
+    sim.data.base_position = DVec3::new(0.0, leg_m + tuning.landing_rest_m * l + 0.03 * l, 0.0);
     sim.data.base_velocity.angular = DVec3::ZERO;
     sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, speed_mps * l.sqrt());
     for c in &mut sim.contacts {
@@ -549,19 +549,9 @@ impl Controller for QuadrupedRun {
                     // target stays put on the ground and the leg sweeps
                     // back as the body travels (ground speed matching).
                     let hip_v = data.point_velocity_world(trunk, leg.hip_in_trunk);
-                    let drop = hip_world.y
-                        - (reach * reach - displacement.length_squared())
-                            .max(0.0)
-                            .sqrt();
-                    let g = crate::dynamics::model::GRAVITY_MPS2;
-                    let t_rem = if drop > 0.0 {
-                        (hip_v.y + (hip_v.y * hip_v.y + 2.0 * g * drop).sqrt()) / g
-                    } else {
-                        0.0
-                    }
-                    .min(0.5 * s.time());
-                    let ahead = DVec3::new(hip_v.x, 0.0, hip_v.z) * t_rem;
-                    let foot = DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead + displacement;
+                    let foot =
+                        hip_at_touchdown(hip_world, hip_v, reach, displacement, 0.5 * s.time())
+                            + displacement;
                     let dir = leg_direction(trunk_rot, foot - hip_world, reach);
                     let (roll, pitch) = gimbal_angles(dir);
                     servo.set(drives, &leg.hip, [roll, pitch], &mut self.hip_target[i]);
@@ -573,30 +563,24 @@ impl Controller for QuadrupedRun {
                     }
                 }
                 Phase::Compression | Phase::Thrust => {
-                    let roll_axis = trunk_rot * DVec3::Z;
-                    let roll_q = data.q[leg.hip[0]];
-                    let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
-                    let foot = input.contacts[i].position;
-                    let r = foot - com;
-                    let g = DVec3::Y.cross(DVec3::new(r.x, 0.0, r.z)) * c;
-                    let moment = (foot - hip_world).cross(g);
-                    let roll_tau = -torque.dot(roll_axis) / n - roll_axis.dot(moment);
-                    let pitch_tau = -torque.dot(pitch_axis) / n - pitch_axis.dot(moment);
-                    drives[leg.hip[0]].torque(roll_tau.clamp(-max, max));
                     let q = data.q[leg.spring];
                     let spring_force =
                         (t.leg_stiffness * s.stiffness() * (self.stance_rest[i] - q)).max(0.0);
-                    // In [0, max]: a leg driven past its stop has a negative
-                    // length leg_m + q, and clamp(-lim, lim) panics on a
-                    // negative lim.
-                    let lim = if t.posture_force_ratio.is_finite() {
-                        (t.posture_force_ratio * spring_force * (self.leg_m[i] + q))
-                            .min(max)
-                            .max(0.0)
-                    } else {
-                        max
+                    let share = StanceShare {
+                        torque,
+                        legs: n,
+                        yaw_per_m2: c,
+                        max,
+                        pitch_limit: grip_limit(
+                            t.posture_force_ratio,
+                            spring_force,
+                            self.leg_m[i] + q,
+                            max,
+                        ),
                     };
-                    drives[leg.hip[1]].torque(pitch_tau.clamp(-lim, lim));
+                    let foot = input.contacts[i].position;
+                    let roll_q = data.q[leg.hip[0]];
+                    share.apply(drives, &leg.hip, roll_q, trunk_rot, hip_world, foot, com);
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 }
             }
