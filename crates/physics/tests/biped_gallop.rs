@@ -35,7 +35,7 @@ fn gallop(style: GallopStyle, speed: f64, secs: f64, l: f64) -> Run {
         style,
         ..BipedGallopParams::default()
     };
-    let mut ctl = BipedGallop::new(params, l);
+    let mut ctl = BipedGallop::new(params, &sim.creature);
     let mut rec = GaitRecorder::new(2, speed * l.sqrt(), 0.0, SETTLE_S * l.sqrt());
     let mut phases_seen = [false; 4];
     let mut blew_up = false;

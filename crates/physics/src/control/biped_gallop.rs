@@ -20,15 +20,16 @@
 //! support, shared in proportion to the load each carries. Everything scales
 //! with the creature's L ("Dynamic Scaling", Table 1).
 
-use gaitlab_core::portable::Portable;
-use glam::{DQuat, DVec3};
+use glam::DVec3;
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
 use super::hip_servo::set_hip;
+use super::leg_spring::LegSpring;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
-use crate::creatures::BIPED_LEG_M;
-use crate::world::actuator::Stops;
+use super::posture::{through_hip, trunk_torque};
+use super::scale::Scale;
+use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
 
 /// How the legs swing forward (Raibert & Hodgins 1991, "Gaits").
@@ -114,6 +115,8 @@ pub struct BipedGallopParams {
     pub leg_stiffness: f64,
     /// Leg spring damping b of eq. 1 (N·s/m).
     pub leg_damping: f64,
+    /// How far the telescoping leg can shorten from full length (m).
+    pub leg_travel_m: f64,
     /// Rest length for landing (m of extension).
     pub landing_rest_m: f64,
     /// Initial extra rest length during thrust (m); adapted each stride.
@@ -186,6 +189,7 @@ impl Default for BipedGallopParams {
             lead_leg: 0,
             leg_stiffness: 12_000.0,
             leg_damping: 20.0,
+            leg_travel_m: 0.25,
             landing_rest_m: -0.03,
             thrust_m: 0.03,
             idle_rest_m: -0.18,
@@ -255,14 +259,19 @@ pub struct BipedGallop {
     speed_bias: f64,
     /// Where the centre of mass was at the last stride's start (m) and when (s).
     last_stride: (DVec3, f64),
-    /// Scale of lengths (the creature's L).
-    scale: f64,
+    /// Each leg's hip-to-foot length at full extension (m, scaled).
+    leg_m: [f64; 2],
+    /// Table 1's factors for the creature's L.
+    scale: Scale,
 }
 
 impl BipedGallop {
-    /// A controller starting in flight, falling toward the trailing leg's landing.
+    /// A controller for `creature` (its scale and leg lengths), starting in
+    /// flight, falling toward the trailing leg's landing.
     #[must_use]
-    pub fn new(params: BipedGallopParams, scale: f64) -> Self {
+    pub fn new(params: BipedGallopParams, creature: &PhysicalCreature) -> Self {
+        let scale = creature.scale;
+        let lengths = creature.leg_lengths_m();
         let leg = |rest: f64| GallopLeg {
             phase: Phase::Flight,
             stance_s: 0.2 * scale.sqrt(),
@@ -285,7 +294,8 @@ impl BipedGallop {
             pitch_d: 0.0,
             speed_bias: 0.0,
             last_stride: (DVec3::ZERO, f64::NAN),
-            scale,
+            leg_m: [0, 1].map(|i| lengths.get(i).copied().unwrap_or(0.0)),
+            scale: Scale::new(scale),
         }
     }
 
@@ -307,13 +317,12 @@ impl BipedGallop {
         self.thrust
     }
 
-    fn leg_stops(&self) -> Stops {
-        let l = self.scale;
-        Stops {
-            min: -0.25 * l,
-            max: 0.0,
-            stiffness: 2.0e5 * l * l,
-            damping: 500.0 * l.ppowf(2.5),
+    fn spring(&self) -> LegSpring {
+        let p = &self.params;
+        LegSpring {
+            stiffness: p.leg_stiffness,
+            damping: p.leg_damping,
+            travel_m: p.leg_travel_m,
         }
     }
 
@@ -323,7 +332,7 @@ impl BipedGallop {
 
     fn advance_phase(&mut self, input: &ControlInput<'_>) {
         let p = self.params;
-        let l = self.scale;
+        let l = self.scale.l;
         let trunk_y = input.data.world[input.creature.trunk].pos.y;
         let pitch = self.pitch(input);
         if self.phase == GallopPhase::Flight {
@@ -361,14 +370,14 @@ impl BipedGallop {
                 // still lengthening may not shorten past its rest at once.
                 Phase::Loading
                     if q < state.landed_rest - 0.005 * l
-                        || input.time - state.touchdown_s >= 0.02 * l.sqrt() =>
+                        || input.time - state.touchdown_s >= 0.02 * self.scale.time() =>
                 {
                     state.phase = Phase::Compression;
                 }
                 // Thrust once the spring lengthens again after a real
                 // compression, not on the first jitter of a landing.
                 Phase::Compression
-                    if qd >= 0.0 && input.time - state.touchdown_s >= 0.03 * l.sqrt() =>
+                    if qd >= 0.0 && input.time - state.touchdown_s >= 0.03 * self.scale.time() =>
                 {
                     state.phase = Phase::Thrust;
                 }
@@ -390,8 +399,8 @@ impl BipedGallop {
             // Lift-off ends a stance only once the leg has thrust; a foot that
             // bounces off the ground at impact is still landing.
             if matches!(state.phase, Phase::Thrust | Phase::Unloading) && !touching {
-                state.stance_s =
-                    (input.time - state.touchdown_s).clamp(0.05 * l.sqrt(), 0.5 * l.sqrt());
+                state.stance_s = (input.time - state.touchdown_s)
+                    .clamp(0.05 * self.scale.time(), 0.5 * self.scale.time());
                 state.phase = Phase::Flight;
                 state.hold = [input.data.q[leg.hip[0]], input.data.q[leg.hip[1]]];
                 if !other_down {
@@ -419,9 +428,9 @@ impl BipedGallop {
     /// and the stride's speed the integral correction.
     fn start_flight(&mut self, input: &ControlInput<'_>) {
         let p = self.params;
-        let l = self.scale;
+        let l = self.scale.l;
         if self.apex_height.is_finite() {
-            let landing_height = (BIPED_LEG_M + p.landing_rest_m) * l;
+            let landing_height = self.leg_m[self.trail()] + p.landing_rest_m * l;
             let error = (landing_height + p.hop_height_m * l) - self.apex_height;
             self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
         }
@@ -429,8 +438,8 @@ impl BipedGallop {
         let (prev, t_prev) = self.last_stride;
         if t_prev.is_finite() && input.time > t_prev {
             let along = heading_forward(p.heading).dot(com - prev) / (input.time - t_prev);
-            let error = p.speed_mps * l.sqrt() - along;
-            let cap = 0.5 * p.speed_mps.abs().max(0.5) * l.sqrt();
+            let error = p.speed_mps * self.scale.velocity() - along;
+            let cap = 0.5 * p.speed_mps.abs().max(0.5) * self.scale.velocity();
             self.speed_bias = (self.speed_bias + p.speed_integral_gain * error).clamp(-cap, cap);
         }
         self.last_stride = (com, input.time);
@@ -455,7 +464,7 @@ impl BipedGallop {
     /// The rest length leg `i` heads for (m).
     fn rest_target(&self, i: usize, time: f64) -> f64 {
         let p = &self.params;
-        let l = self.scale;
+        let l = self.scale.l;
         let state = &self.legs[i];
         match state.phase {
             Phase::Thrust => state.landed_rest + self.thrust,
@@ -472,7 +481,7 @@ impl BipedGallop {
             }
             Phase::Flight => {
                 let trail = &self.legs[self.trail()];
-                let waited = time - trail.touchdown_s >= p.lead_delay_s * l.sqrt();
+                let waited = time - trail.touchdown_s >= p.lead_delay_s * self.scale.time();
                 if self.in_support(self.trail()) && waited {
                     p.landing_rest_m * l
                 } else if self.phase == GallopPhase::Flight && self.descending {
@@ -517,28 +526,29 @@ impl Controller for BipedGallop {
         }
         self.advance_phase(input);
         let p = self.params;
-        let l = self.scale;
+        let l = self.scale.l;
         let data = input.data;
         let trunk_rot = data.world[creature.trunk].rot;
         let trunk_pos = data.world[creature.trunk].pos;
         let velocity = com_velocity(creature, data);
         let forward = heading_forward(p.heading);
-        let desired = forward * (p.speed_mps * l.sqrt() + self.speed_bias);
-        let stops = self.leg_stops();
+        let s = self.scale;
+        let desired = forward * (p.speed_mps * s.velocity() + self.speed_bias);
+        let spring = self.spring();
 
         let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
-        let reach = (BIPED_LEG_M + p.landing_rest_m) * l;
-        let (kp, kv) = (p.swing_kp * l.powi(4), p.swing_kv * l.ppowf(4.5));
-        let (ykp, ykv) = (p.leg_yaw_kp * l.powi(4), p.leg_yaw_kv * l.ppowf(4.5));
-        let max = p.max_hip_torque * l.powi(4);
+        let (kp, kv) = s.torsional_gains(p.swing_kp, p.swing_kv);
+        let (ykp, ykv) = s.torsional_gains(p.leg_yaw_kp, p.leg_yaw_kv);
+        let max = p.max_hip_torque * s.torque();
 
         // Eq. 4 on pitch and roll (and a yaw servo): the torque the trunk
         // needs, shared by the legs in support in proportion to their load.
         let err = attitude_error(creature, data, p.heading, self.pitch_d);
         let rate = trunk_rate(creature, data);
-        let (pkp, pkv) = (p.posture_kp * l.powi(4), p.posture_kv * l.ppowf(4.5));
-        let posture = -err * pkp - rate * pkv;
-        let yaw = -err.y * p.yaw_kp * l.powi(4) - rate.y * p.yaw_kv * l.ppowf(4.5);
+        let (pkp, pkv) = s.torsional_gains(p.posture_kp, p.posture_kv);
+        let posture = trunk_torque(err, rate, pkp, pkv);
+        let (ypkp, ypkv) = s.torsional_gains(p.yaw_kp, p.yaw_kv);
+        let yaw = -err.y * ypkp - rate.y * ypkv;
         let servoing = |s: &GallopLeg| {
             matches!(
                 s.phase,
@@ -555,10 +565,10 @@ impl Controller for BipedGallop {
         let total_load = load[0] + load[1];
 
         let time = input.time;
-        let step = p.leg_rate_mps * l.sqrt() * input.dt;
-        let extend = p.lead_extend_mps * l.sqrt() * input.dt;
-        let flight_extend = p.trail_extend_mps * l.sqrt() * input.dt;
-        let unload = p.trail_unload_mps * l.sqrt() * input.dt;
+        let step = p.leg_rate_mps * s.velocity() * input.dt;
+        let extend = p.lead_extend_mps * s.velocity() * input.dt;
+        let flight_extend = p.trail_extend_mps * s.velocity() * input.dt;
+        let unload = p.trail_unload_mps * s.velocity() * input.dt;
         for (i, leg) in creature.legs.iter().enumerate().take(2) {
             // Leg length: the spring of eq. 1 with a programmable rest.
             let target = self.rest_target(i, time);
@@ -577,13 +587,7 @@ impl Controller for BipedGallop {
             };
             let state = &mut self.legs[i];
             state.rest += (target - state.rest).clamp(-down, up);
-            let d = &mut drives[leg.spring];
-            d.stops = Some(stops);
-            d.spring.stiffness = p.leg_stiffness * l * l;
-            d.spring.damping = p.leg_damping * l.ppowf(2.5);
-            d.spring.max_force = f64::INFINITY;
-            d.feedforward = 0.0;
-            d.spring.rest = state.rest;
+            spring.apply(&mut drives[leg.spring], state.rest, s);
 
             match self.legs[i].phase {
                 Phase::Flight => {
@@ -602,10 +606,14 @@ impl Controller for BipedGallop {
                                 velocity,
                                 desired,
                                 self.legs[i].stance_s,
-                                p.placement_gain_s * l.sqrt(),
+                                p.placement_gain_s * s.time(),
                             );
                         let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
-                        let dir = leg_direction(trunk_rot, foot - hip_world, reach);
+                        let dir = leg_direction(
+                            trunk_rot,
+                            foot - hip_world,
+                            self.leg_m[i] + p.landing_rest_m * l,
+                        );
                         let (roll, pitch) = gimbal_angles(dir);
                         [roll, pitch]
                     };
@@ -624,15 +632,11 @@ impl Controller for BipedGallop {
                     } else {
                         0.0
                     };
-                    let torque = posture * share;
-                    let roll_axis = trunk_rot * DVec3::Z;
                     let roll_q = data.q[leg.hip[0]];
-                    let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
-                    drives[leg.hip[0]].torque((-torque.dot(roll_axis)).clamp(-max, max));
-                    drives[leg.hip[1]].torque((-torque.dot(pitch_axis)).clamp(-max, max));
+                    through_hip(drives, &leg.hip, roll_q, trunk_rot, posture * share, max);
                     // The leg turns on a tiny inertia: only a torque the
                     // loaded foot's torsional grip can hold.
-                    let grip = p.max_yaw_torque * l.powi(4) * share;
+                    let grip = p.max_yaw_torque * s.torque() * share;
                     drives[leg.hip[2]].torque((-yaw * share).clamp(-grip, grip));
                 }
             }

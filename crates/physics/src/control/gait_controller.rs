@@ -156,7 +156,6 @@ pub fn make_controller(
     gait: &str,
     params: &PhysicsParams,
 ) -> Result<GaitController, PresetError> {
-    let l = creature.scale;
     let bad = || {
         let names = gait_names(creature.species);
         PresetError::new(
@@ -209,7 +208,7 @@ pub fn make_controller(
             };
             let p = with_parameters(p, params, gait)?;
             Ok(GaitController::BipedGallop(Box::new(BipedGallop::new(
-                p, l,
+                p, creature,
             ))))
         }
         (Species::Quadruped, "trot" | "bound" | "gallop") => {

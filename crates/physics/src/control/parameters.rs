@@ -44,7 +44,7 @@ named_parameters!(BipedRunParams;
     yaw_kv, leg_yaw_kp, leg_yaw_kv, max_hip_torque, max_yaw_torque, leg_rate_mps);
 
 named_parameters!(BipedGallopParams;
-    leg_stiffness, leg_damping, landing_rest_m, thrust_m, idle_rest_m, hop_gain,
+    leg_stiffness, leg_damping, leg_travel_m, landing_rest_m, thrust_m, idle_rest_m, hop_gain,
     placement_gain_s, speed_integral_gain, trail_offset_m, lead_offset_m, lead_retract_m,
     lead_delay_s, lead_extend_mps, trail_extend_mps, trail_unload_mps, swing_kp, swing_kv,
     posture_kp, posture_kv, pitch_feedforward, yaw_kp, yaw_kv, leg_yaw_kp, leg_yaw_kv,
