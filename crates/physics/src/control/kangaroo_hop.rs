@@ -37,6 +37,8 @@ use glam::{DVec2, DVec3};
 
 use super::attitude::com_velocity;
 use super::phase::Phase;
+use super::posture::axis_torque;
+use super::scale::Scale;
 use crate::creatures::PhysicalCreature;
 use crate::dynamics::data::Data;
 use crate::dynamics::model::GRAVITY_MPS2;
@@ -479,8 +481,7 @@ impl KangarooHop {
 
     fn ankle_gains(&self, l: f64) -> (f64, f64) {
         let p = &self.params;
-        let mut k = p.ankle_stiffness * l.powi(4);
-        let mut b = p.ankle_damping * l.ppowf(4.5);
+        let (mut k, mut b) = Scale::new(l).torsional_gains(p.ankle_stiffness, p.ankle_damping);
         match self.jump {
             JumpStage::Takeoff => k *= p.jump_stiffness_factor,
             JumpStage::Landing if self.phase != Phase::Flight => b *= p.landing_damping_factor,
@@ -568,8 +569,9 @@ impl Controller for KangarooHop {
         self.ramp_speed(input.dt, l);
         self.advance_phase(input, com, com_v);
         let p = self.params;
-        let (t4, t45) = (l.powi(4), l.ppowf(4.5));
-        let max = p.max_torque * t4;
+        let s = Scale::new(l);
+        let (t4, t45) = (s.torsional_stiffness(), s.torsional_damping());
+        let max = p.max_torque * s.torque();
         let pitch = data.q[2];
         let pitch_rate = data.qd[2];
 
@@ -616,8 +618,10 @@ impl Controller for KangarooHop {
             // Knee: posture (eq. 4) in compression and thrust.
             let posture =
                 matches!(self.phase, Phase::Compression | Phase::Thrust) || p.posture_always;
+            // The knee exerts the reaction of the torque the trunk needs.
             let torque = if posture {
-                p.posture_kp * t4 * (pitch - p.pitch_rad) + p.posture_kv * t45 * pitch_rate
+                let (kp, kv) = s.torsional_gains(p.posture_kp, p.posture_kv);
+                -axis_torque(pitch - p.pitch_rad, pitch_rate, kp, kv)
             } else {
                 0.0
             };
