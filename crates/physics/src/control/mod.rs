@@ -22,5 +22,6 @@ pub mod posture;
 pub mod quadruped_bound;
 pub mod quadruped_run;
 pub mod scale;
+pub mod start;
 
 pub use phase::Phase;

@@ -21,6 +21,16 @@ pub fn axis_torque(error: f64, rate: f64, kp: f64, kv: f64) -> f64 {
     -(error * kp + rate * kv)
 }
 
+/// The world axes of a gimbal hip's roll joint (the trunk's z) and pitch
+/// joint (x turned by the roll angle `roll_q`), for a trunk at `trunk_rot`.
+#[must_use]
+pub fn hip_axes(trunk_rot: DMat3, roll_q: f64) -> (DVec3, DVec3) {
+    (
+        trunk_rot * DVec3::Z,
+        trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X),
+    )
+}
+
 /// Apply `torque` (world, N·m) to the trunk through a gimbal or ball hip's
 /// roll and pitch joints (`hip[0]` turns about the trunk's z, `hip[1]` then
 /// about x; `roll_q` is the roll joint's angle): each joint exerts the
@@ -33,8 +43,7 @@ pub fn through_hip(
     torque: DVec3,
     max: f64,
 ) {
-    let roll_axis = trunk_rot * DVec3::Z;
-    let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
+    let (roll_axis, pitch_axis) = hip_axes(trunk_rot, roll_q);
     drives[hip[0]].torque((-torque.dot(roll_axis)).clamp(-max, max));
     drives[hip[1]].torque((-torque.dot(pitch_axis)).clamp(-max, max));
 }
@@ -71,8 +80,7 @@ impl StanceShare {
         foot: DVec3,
         com: DVec3,
     ) {
-        let roll_axis = trunk_rot * DVec3::Z;
-        let pitch_axis = trunk_rot * (DQuat::from_rotation_z(roll_q) * DVec3::X);
+        let (roll_axis, pitch_axis) = hip_axes(trunk_rot, roll_q);
         let r = foot - com;
         let g = DVec3::Y.cross(DVec3::new(r.x, 0.0, r.z)) * self.yaw_per_m2;
         let moment = (foot - hip_world).cross(g);

@@ -31,7 +31,7 @@
 //! All parameters are given at scale 1 and scaled by the creature's dynamic
 //! scale L (Table 1).
 
-use glam::{DQuat, DVec3};
+use glam::DVec3;
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
 use super::hip_servo::HipServo;
@@ -40,6 +40,7 @@ use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
 use super::posture::{StanceShare, axis_torque, grip_limit};
 use super::scale::Scale;
+use super::start::{first_leg_m, level_flight};
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive, Sim};
 
@@ -237,24 +238,15 @@ struct PairState {
 pub fn bound_start(sim: &mut Sim, speed_mps: f64) {
     let l = sim.creature.scale;
     let p = QuadrupedBoundParams::default();
-    sim.data.q.fill(0.0);
-    sim.data.qd.fill(0.0);
-    for (i, leg) in sim.creature.legs.iter().enumerate() {
-        let rear = PAIRS[REAR].contains(&i);
-        sim.data.q[leg.spring] = if rear {
+    let height = first_leg_m(sim) + p.landing_rest_m * l + 0.04 * l;
+    level_flight(sim, speed_mps, height, |i| {
+        let rest = if PAIRS[REAR].contains(&i) {
             p.landing_rest_m
         } else {
             p.short_rest_m
-        } * l;
-    }
-    sim.data.base_orientation = DQuat::IDENTITY;
-    let leg_m = sim.creature.leg_lengths_m().first().copied().unwrap_or(0.0);
-    sim.data.base_position = DVec3::new(0.0, leg_m + p.landing_rest_m * l + 0.04 * l, 0.0);
-    sim.data.base_velocity.angular = DVec3::ZERO;
-    sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, speed_mps * l.sqrt());
-    for c in &mut sim.contacts {
-        c.touching = false;
-    }
+        };
+        rest * l
+    });
 }
 
 /// The bounding / galloping controller.

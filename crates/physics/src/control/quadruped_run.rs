@@ -16,7 +16,7 @@
 //! for the trot. Every parameter is given for the creature at scale 1 and
 //! scaled by its dynamic scale L (Table 1).
 
-use glam::{DQuat, DVec3};
+use glam::DVec3;
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
 use super::hip_servo::HipServo;
@@ -25,6 +25,7 @@ use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
 use super::posture::{StanceShare, axis_torque, grip_limit};
 use super::scale::Scale;
+use super::start::{first_leg_m, level_flight};
 use crate::creatures::PhysicalCreature;
 use crate::world::ground::GroundParams;
 use crate::world::sim::{ControlInput, Controller, Drive, Sim};
@@ -164,19 +165,8 @@ pub fn quadruped_ground(l: f64) -> GroundParams {
 pub fn quadruped_start(sim: &mut Sim, speed_mps: f64) {
     let l = sim.creature.scale;
     let tuning = QuadrupedRunParams::default().trot;
-    let leg_m = sim.creature.leg_lengths_m().first().copied().unwrap_or(0.0);
-    sim.data.q.fill(0.0);
-    sim.data.qd.fill(0.0);
-    for leg in &sim.creature.legs {
-        sim.data.q[leg.spring] = tuning.idle_rest_m * l;
-    }
-    sim.data.base_orientation = DQuat::IDENTITY;
-    sim.data.base_position = DVec3::new(0.0, leg_m + tuning.landing_rest_m * l + 0.03 * l, 0.0);
-    sim.data.base_velocity.angular = DVec3::ZERO;
-    sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, speed_mps * l.sqrt());
-    for c in &mut sim.contacts {
-        c.touching = false;
-    }
+    let height = first_leg_m(sim) + tuning.landing_rest_m * l + 0.03 * l;
+    level_flight(sim, speed_mps, height, |_| tuning.idle_rest_m * l);
 }
 
 /// The quadruped running controller, the trot: a virtual biped on diagonal
