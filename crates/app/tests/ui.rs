@@ -370,3 +370,28 @@ fn the_gait_panel_says_while_legs_take_a_switch_on() {
     harness.run_steps(5);
     assert!(!says(&harness), "the legs have the pace");
 }
+
+#[test]
+fn the_physics_panel_names_the_lab_additions_the_gait_runs_with() {
+    // The bundled biped runs by the paper's laws but for Unloading's posture
+    // servo; the kangaroo keeps its speed ramp and tail feedback; the trot
+    // uses none of the named additions.
+    for (preset, want) in [
+        (
+            "raibert-biped",
+            "Lab's additions (not in the paper): unloading posture",
+        ),
+        (
+            "raibert-kangaroo",
+            "Lab's additions (not in the paper): speed ramp, tail feedback",
+        ),
+        ("raibert-quadruped", "Lab's additions: none"),
+    ] {
+        let mut harness = poda_harness(preset, 1400.0);
+        harness.run();
+        assert!(
+            harness.query_all_by_label(want).next().is_some(),
+            "{preset}: no line \"{want}\""
+        );
+    }
+}

@@ -97,6 +97,40 @@ fn a_preset_with_the_deprecated_vertical_gain_runs_as_it_was_made() {
     assert_eq!(got, want);
 }
 
+/// DESIGN.md "Versions": the biped preset as it was on 2026-12-02, before
+/// the lab's additions to the physics control were optional (no
+/// `lab_additions`), runs exactly as recorded then: with the speed trim and
+/// the earlier eq. 3 gain, where the bundled preset now runs the paper's
+/// laws.
+#[test]
+fn a_physics_preset_made_before_the_lab_additions_runs_as_it_was_made() {
+    let fixtures: PathBuf = [env!("CARGO_MANIFEST_DIR"), "tests", "fixtures"]
+        .iter()
+        .collect();
+    let preset = fixtures.join("raibert-biped_2026_12_02.json");
+    let path = preset.to_str().expect("utf-8 path");
+    let mut got = without_timing(run_json(path, "10", &[]));
+    let text = std::fs::read_to_string(fixtures.join("raibert-biped_2026_12_02.run-10s.json"))
+        .expect("recorded figures");
+    let mut want: Value = serde_json::from_str(&text).expect("JSON");
+    assert_eq!(
+        got["lab_additions"],
+        serde_json::json!(["speed_trim", "unloading_posture"])
+    );
+    if let (Some(got), Some(want)) = (got.as_object_mut(), want.as_object_mut()) {
+        want.remove("gaits_available");
+        got.retain(|key, _| want.contains_key(key));
+    }
+    assert_eq!(got, want);
+    // The bundled preset now runs the biped without the speed trim.
+    let now = run_json("raibert-biped", "10", &[]);
+    assert_eq!(
+        now["lab_additions"],
+        serde_json::json!(["unloading_posture"])
+    );
+    assert_ne!(now["speed_mean_mps"], want["speed_mean_mps"]);
+}
+
 fn cli_metrics(preset: &str, seconds: &str) -> Value {
     run_json(preset, seconds, &[])
 }

@@ -452,6 +452,9 @@ pub struct PhysicsRunMetrics {
     /// Table 2's rows for this gait beside the run's figures (empty for a
     /// gait the paper does not tabulate).
     pub table2: Vec<Table2Entry>,
+    /// The lab's additions to the paper's control this run used (empty:
+    /// the paper's laws only).
+    pub lab_additions: Vec<&'static str>,
     /// Integration steps.
     pub steps: u64,
     /// Integration steps per wall second.
@@ -503,6 +506,7 @@ impl PhysicsRunMetrics {
             peak_vertical_force_bw: s.peak_vertical_force_bw,
             speed_swing_mps: s.speed_swing_mps,
             friction_needed_max: s.friction_needed_max,
+            lab_additions: driver.lab_additions(),
             table2: {
                 let names: Vec<&str> = sim.creature.legs.iter().map(|l| l.name.as_str()).collect();
                 gaitlab_physics::engine::table2::compare(&s, driver.gait(), &names)

@@ -1,19 +1,30 @@
 //! Biped running (Raibert & Hodgins 1991, Figure 4) through the bundled
-//! preset and the driver: a minute without falling at several speeds with the
-//! mean speed within 10 % of desired after 3 s (the paper's claim), and the
-//! Table-2 figures beside the paper's animation column.
+//! preset and the driver: a minute without falling at the three
+//! speeds with the mean speed within 10 % of desired after 3 s (the paper's
+//! claim), by the paper's laws (no speed trim) and with the lab's additions
+//! on, and the Table-2 figures beside the paper's animation column.
 
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::load_bundled;
+use gaitlab_core::preset::physics::LabAdditions;
 use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::engine::table2::{measured, paper_rows};
 
 fn run(speed: f64, seconds: f64) -> PhysicsDriver {
+    run_with(speed, seconds, None)
+}
+
+/// The bundled biped at `speed`, with `additions` in place of the preset's
+/// `lab_additions` when given.
+fn run_with(speed: f64, seconds: f64, additions: Option<LabAdditions>) -> PhysicsDriver {
     let preset = load_bundled("raibert-biped")
         .expect("bundled")
         .expect("valid");
     let mut params = preset.scenario.physics.clone().expect("physics section");
     params.speed_mps = speed;
+    if let Some(a) = additions {
+        params.lab_additions = Some(a);
+    }
     let mut driver = PhysicsDriver::with_params(&preset, params).expect("driver");
     driver.reset_after_fall = false;
     let frames = (seconds * 60.0) as usize;
@@ -23,10 +34,10 @@ fn run(speed: f64, seconds: f64) -> PhysicsDriver {
     driver
 }
 
-#[test]
-fn runs_a_minute_at_several_speeds_within_ten_percent() {
-    for speed in [1.0, 2.0, 2.5] {
-        let driver = run(speed, 60.0);
+fn a_minute_within_ten_percent(additions: Option<LabAdditions>, want: &[&str]) {
+    for speed in [1.0, 1.6, 2.5] {
+        let driver = run_with(speed, 60.0, additions);
+        assert_eq!(driver.lab_additions(), want);
         let s = driver.summary();
         assert!(
             !s.fell && driver.resets() == 0,
@@ -35,7 +46,7 @@ fn runs_a_minute_at_several_speeds_within_ten_percent() {
         );
         let error = (s.speed_mean_mps - speed).abs() / speed;
         eprintln!(
-            "biped run {speed} m/s: mean {:.3} m/s ({:.1} %)",
+            "biped run {speed} m/s, additions {want:?}: mean {:.3} m/s ({:.1} %)",
             s.speed_mean_mps,
             error * 100.0
         );
@@ -45,6 +56,22 @@ fn runs_a_minute_at_several_speeds_within_ten_percent() {
             s.speed_mean_mps
         );
     }
+}
+
+#[test]
+fn runs_a_minute_at_three_speeds_within_ten_percent_without_the_speed_trim() {
+    // The bundled preset: eq. 3 alone holds the speed.
+    a_minute_within_ten_percent(None, &["unloading_posture"]);
+}
+
+#[test]
+fn runs_a_minute_at_three_speeds_within_ten_percent_with_the_lab_additions() {
+    let on = LabAdditions {
+        speed_trim: Some(true),
+        unloading_posture: Some(true),
+        ..LabAdditions::default()
+    };
+    a_minute_within_ten_percent(Some(on), &["speed_trim", "unloading_posture"]);
 }
 
 #[test]

@@ -241,6 +241,40 @@ pub struct PhysicsParams {
     /// through in order, turning its desired heading toward the next one.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub waypoints: Vec<[f64; 2]>,
+    /// The lab's additions to the paper's control, each named. `null` or
+    /// absent (files made before the additions were optional): every
+    /// addition on and the controllers' earlier defaults, so the file runs
+    /// as it was made. An object (`{}`): each gait's own defaults, the
+    /// paper's laws only where the gait holds its speed with them.
+    #[serde(default)]
+    pub lab_additions: Option<LabAdditions>,
+}
+
+/// The lab's additions to Raibert & Hodgins' control, none of them in the
+/// paper (docs/physics.md, "The lab's additions"). A field left out takes
+/// the gait's default: off where the gait runs without it, on where it does
+/// not yet (a finding, not the paper: docs/physics.md gives the experiment).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct LabAdditions {
+    /// Integral speed trim: after every step (or stride) the desired speed
+    /// given to eq. 3 is corrected by the last step's speed error, removing
+    /// the steady error eq. 3's proportional term leaves.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub speed_trim: Option<bool>,
+    /// Posture torque in Unloading: the biped keeps eq. 4's servo on while
+    /// the leg unloads, where Figure 4 zeroes the active hip's torque.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unloading_posture: Option<bool>,
+    /// The kangaroo's speed ramp: it starts at no more than 2 m/s and its
+    /// commanded speed moves toward the desired one at a set rate.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub speed_ramp: Option<bool>,
+    /// The kangaroo's tail feedback: the tail's rest angle follows the
+    /// trunk's pitch error and rate, where the paper only steps it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tail_feedback: Option<bool>,
 }
 
 /// The ground's linear springs and dampers (`scenario.physics.ground`), at

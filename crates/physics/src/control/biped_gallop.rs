@@ -22,6 +22,7 @@
 
 use glam::DVec3;
 
+use super::additions::trim_gain;
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
 use super::hip_servo::set_hip;
 use super::leg_spring::LegSpring;
@@ -130,6 +131,9 @@ pub struct BipedGallopParams {
     pub hop_gain: f64,
     /// Foot placement gain k_ẋ of eq. 3 (s), applied to each leg.
     pub placement_gain_s: f64,
+    /// The lab's integral speed trim on (`lab_additions.speed_trim`; not
+    /// in the paper), with gain `speed_integral_gain`.
+    pub speed_trim: bool,
     /// Integral gain on each stride's speed error (m/s of correction per
     /// m/s of error): removes the steady error eq. 3 alone leaves.
     pub speed_integral_gain: f64,
@@ -196,6 +200,7 @@ impl Default for BipedGallopParams {
             hop_height_m: 0.12,
             hop_gain: 0.15,
             placement_gain_s: 0.06,
+            speed_trim: true,
             speed_integral_gain: 0.3,
             trail_offset_m: 0.0,
             lead_offset_m: 0.0,
@@ -440,7 +445,9 @@ impl BipedGallop {
             let along = heading_forward(p.heading).dot(com - prev) / (input.time - t_prev);
             let error = p.speed_mps * self.scale.velocity() - along;
             let cap = 0.5 * p.speed_mps.abs().max(0.5) * self.scale.velocity();
-            self.speed_bias = (self.speed_bias + p.speed_integral_gain * error).clamp(-cap, cap);
+            self.speed_bias = (self.speed_bias
+                + trim_gain(p.speed_trim, p.speed_integral_gain) * error)
+                .clamp(-cap, cap);
         }
         self.last_stride = (com, input.time);
         self.apex_height = f64::NEG_INFINITY;

@@ -6,6 +6,7 @@
 
 use glam::DVec3;
 
+use super::additions::trim_gain;
 use super::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
 use super::hip_servo::set_hip;
 use super::leg_spring::{LegSpring, toward};
@@ -42,9 +43,16 @@ pub struct BipedRunParams {
     pub hop_gain: f64,
     /// Foot placement gain k_ẋ (s), eq. 3.
     pub placement_gain_s: f64,
-    /// Integral gain on each step's speed error (per step): removes the
-    /// steady speed error eq. 3 alone leaves.
+    /// The lab's integral speed trim on (`lab_additions.speed_trim`; not
+    /// in the paper), with gain `speed_integral_gain`.
+    pub speed_trim: bool,
+    /// Integral gain on each step's speed error (per step), while the speed
+    /// trim is on.
     pub speed_integral_gain: f64,
+    /// Keep eq. 4's posture servo on in Unloading: the lab's addition
+    /// (`lab_additions.unloading_posture`); Figure 4 zeroes the active hip's
+    /// torque there.
+    pub unloading_posture: bool,
     /// Hip servo gains for positioning legs (N·m/rad, N·m·s/rad).
     pub swing_kp: f64,
     /// Hip swing damping (N·m·s/rad).
@@ -84,8 +92,10 @@ impl Default for BipedRunParams {
             idle_rest_m: -0.18,
             hop_height_m: 0.10,
             hop_gain: 0.3,
-            placement_gain_s: 0.05,
-            speed_integral_gain: 0.3,
+            placement_gain_s: 0.12,
+            speed_trim: false,
+            speed_integral_gain: 0.1,
+            unloading_posture: true,
             swing_kp: 150.0,
             swing_kv: 8.0,
             posture_kp: 1000.0,
@@ -97,6 +107,24 @@ impl Default for BipedRunParams {
             max_hip_torque: 400.0,
             max_yaw_torque: 30.0,
             leg_rate_mps: 1.0,
+        }
+    }
+}
+
+impl BipedRunParams {
+    /// The defaults before the lab's additions were optional (files without
+    /// `lab_additions` run with these): eq. 3's gain 0.05 s, held to the
+    /// desired speed by the speed trim at gain 0.3, posture servo on in
+    /// Unloading. (With eq. 3's gain now 0.12 s, a trim at 0.3 makes the
+    /// biped blow up at 2.5 m/s within a minute; its default is 0.1.)
+    #[must_use]
+    pub fn before_lab_additions() -> Self {
+        Self {
+            placement_gain_s: 0.05,
+            speed_trim: true,
+            speed_integral_gain: 0.3,
+            unloading_posture: true,
+            ..Self::default()
         }
     }
 }
@@ -208,8 +236,9 @@ impl BipedRun {
                 let along = heading_forward(p.heading).dot(com - prev) / (input.time - t_prev);
                 let error = p.speed_mps * self.scale.velocity() - along;
                 let cap = 0.5 * p.speed_mps.abs().max(0.5) * self.scale.velocity();
-                self.speed_bias =
-                    (self.speed_bias + p.speed_integral_gain * error).clamp(-cap, cap);
+                self.speed_bias = (self.speed_bias
+                    + trim_gain(p.speed_trim, p.speed_integral_gain) * error)
+                    .clamp(-cap, cap);
             }
             self.last_liftoff = (com, input.time);
             self.apex_height = f64::NEG_INFINITY;
@@ -293,12 +322,9 @@ impl Controller for BipedRun {
                 set_hip(drives, &active.hip[..2], [roll, pitch], kp, kv, max);
                 drives[active.hip[2]].servo(ykp, ykv, 0.0);
             }
-            Phase::Loading => {
-                for &j in &active.hip[..2] {
-                    drives[j].torque(0.0);
-                }
-                drives[active.hip[2]].servo(ykp, ykv, 0.0);
-            }
+            // Figure 4: "zero active hip torque" on landing and unloading.
+            Phase::Loading => zero_hip(drives, &active.hip, ykp, ykv),
+            Phase::Unloading if !p.unloading_posture => zero_hip(drives, &active.hip, ykp, ykv),
             Phase::Compression | Phase::Thrust | Phase::Unloading => {
                 // Eq. 4 on pitch and roll: the torque the trunk needs, applied
                 // by the hip joints as its reaction.
@@ -322,4 +348,13 @@ impl Controller for BipedRun {
         set_hip(drives, &idle.hip[..2], mirror, kp, kv, max);
         drives[idle.hip[2]].servo(ykp, ykv, 0.0);
     }
+}
+
+/// Zero the roll and pitch torques of a ball hip; its yaw joint keeps the
+/// leg's own orientation (gains `ykp`, `ykv`).
+fn zero_hip(drives: &mut [Drive], hip: &[usize], ykp: f64, ykv: f64) {
+    for &j in &hip[..2] {
+        drives[j].torque(0.0);
+    }
+    drives[hip[2]].servo(ykp, ykv, 0.0);
 }

@@ -4,6 +4,7 @@
 
 use gaitlab_core::preset::{PhysicsParams, PresetError};
 
+use crate::control::additions::Additions;
 use crate::control::biped_gallop::{BipedGallop, BipedGallopParams, GallopStyle};
 use crate::control::biped_run::{BipedRun, BipedRunParams};
 use crate::control::kangaroo_hop::{KangarooHop, KangarooHopParams, kangaroo_start};
@@ -25,8 +26,9 @@ pub fn gait_names(species: Species) -> &'static [&'static str] {
     }
 }
 
-/// The kangaroo starts no faster than this (m/s at scale 1) and its
-/// controller ramps to the desired speed: started at 5 m/s it tumbles.
+/// With the lab's speed ramp, the kangaroo starts no faster than this (m/s
+/// at scale 1) and its controller ramps to the desired speed: started at
+/// 5 m/s it tumbles.
 pub const KANGAROO_START_MPS: f64 = 2.0;
 
 /// The controller of the gait running: one of the paper's state machines.
@@ -113,9 +115,10 @@ pub fn start_state(sim: &mut Sim, controller: &GaitController, speed_mps: f64) {
     match controller {
         GaitController::Quadruped(_) => quadruped_start(sim, speed_mps),
         GaitController::QuadrupedBound(_) => bound_start(sim, speed_mps),
-        GaitController::Kangaroo(_) => {
-            kangaroo_start(sim, speed_mps.clamp(0.0, KANGAROO_START_MPS))
+        GaitController::Kangaroo(c) if c.params.speed_ramp => {
+            kangaroo_start(sim, speed_mps.clamp(0.0, KANGAROO_START_MPS));
         }
+        GaitController::Kangaroo(_) => kangaroo_start(sim, speed_mps),
         GaitController::BipedRun(_) | GaitController::BipedGallop(_) => {}
     }
 }
@@ -145,7 +148,8 @@ fn with_parameters<P: NamedParameters>(
 }
 
 /// The controller of `gait` for `creature`, with `params`' speed, hop height,
-/// obstacles and controller parameters.
+/// obstacles, controller parameters and the lab's additions (which win over
+/// a controller parameter they zero).
 ///
 /// # Errors
 /// `scenario.physics.gait` for a gait the model lacks; `scenario.physics.legs`
@@ -166,6 +170,7 @@ pub fn make_controller(
             ),
         )
     };
+    let additions = Additions::for_gait(params.lab_additions.as_ref(), gait);
     let two_ball_legs =
         creature.legs.len() == 2 && creature.legs.iter().all(|leg| leg.hip.len() == 3);
     let biped_needs = || {
@@ -179,13 +184,19 @@ pub fn make_controller(
             if !two_ball_legs {
                 return Err(biped_needs());
             }
-            let d = BipedRunParams::default();
+            let d = if additions.legacy {
+                BipedRunParams::before_lab_additions()
+            } else {
+                BipedRunParams::default()
+            };
             let p = BipedRunParams {
                 speed_mps: params.speed_mps,
                 hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
                 ..d
             };
-            let p = with_parameters(p, params, gait)?;
+            let mut p = with_parameters(p, params, gait)?;
+            p.unloading_posture = additions.unloading_posture;
+            p.speed_trim = additions.speed_trim;
             Ok(GaitController::BipedRun(Box::new(BipedRun::new(
                 p, creature,
             ))))
@@ -206,7 +217,8 @@ pub fn make_controller(
                 style,
                 ..d
             };
-            let p = with_parameters(p, params, gait)?;
+            let mut p = with_parameters(p, params, gait)?;
+            p.speed_trim = additions.speed_trim;
             Ok(GaitController::BipedGallop(Box::new(BipedGallop::new(
                 p, creature,
             ))))
@@ -238,7 +250,8 @@ pub fn make_controller(
                 style,
                 ..QuadrupedBoundParams::default()
             };
-            let p = with_parameters(p, params, gait)?;
+            let mut p = with_parameters(p, params, gait)?;
+            p.speed_trim = additions.speed_trim;
             Ok(GaitController::QuadrupedBound(Box::new(
                 QuadrupedBound::new(p, creature),
             )))
@@ -266,7 +279,10 @@ pub fn make_controller(
                 obstacle_depth_m: obstacle.map_or(d.obstacle_depth_m, |o| o.depth_m),
                 ..d
             };
-            let p = with_parameters(p, params, gait)?;
+            let mut p = with_parameters(p, params, gait)?;
+            p.speed_trim = additions.speed_trim;
+            p.speed_ramp = additions.speed_ramp;
+            p.tail_feedback = additions.tail_feedback;
             Ok(GaitController::Kangaroo(Box::new(KangarooHop::new(p))))
         }
         _ => Err(bad()),

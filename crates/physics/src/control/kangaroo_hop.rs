@@ -35,6 +35,7 @@
 use gaitlab_core::portable::Portable;
 use glam::{DVec2, DVec3};
 
+use super::additions::trim_gain;
 use super::attitude::com_velocity;
 use super::phase::Phase;
 use super::posture::axis_torque;
@@ -56,6 +57,12 @@ pub struct KangarooHopParams {
     /// Largest rate of change of the commanded speed (m/s²): a fast gait is
     /// reached by accelerating through the slower ones.
     pub speed_ramp_mps2: f64,
+    /// The lab's speed ramp on (`lab_additions.speed_ramp`; not in the
+    /// paper): start at most 2 m/s and ramp at `speed_ramp_mps2`.
+    pub speed_ramp: bool,
+    /// The lab's integral speed trim on (`lab_additions.speed_trim`; not
+    /// in the paper), with gain `speed_integral_gain`.
+    pub speed_trim: bool,
     /// Integral gain of the speed correction (m/s of placement target per
     /// m/s of a stride's mean speed error): eq. 3 alone leaves a steady
     /// shortfall that grows with speed.
@@ -116,6 +123,11 @@ pub struct KangarooHopParams {
     /// Pitch feedback added to the tail-base rest angle (rad of rest per rad
     /// of trunk pitch): the tail as an inertial appendage keeps the trunk level.
     pub tail_pitch_gain: f64,
+    /// The lab's tail feedback on (`lab_additions.tail_feedback`; not in
+    /// the paper, which steps the tail's rest angle and tunes its natural
+    /// frequency to the hop): the rest follows pitch error and rate with
+    /// `tail_pitch_gain` and `tail_rate_gain_s`.
+    pub tail_feedback: bool,
     /// Pitch-rate feedback added to the tail-base rest angle (s).
     pub tail_rate_gain_s: f64,
     /// Stiffness of the two distal tail joints (N·m/rad).
@@ -147,6 +159,8 @@ impl Default for KangarooHopParams {
         Self {
             speed_mps: 5.0,
             speed_ramp_mps2: 0.25,
+            speed_ramp: true,
+            speed_trim: false,
             speed_integral_gain: 0.2,
             speed_integral_max_mps: 1.0,
             hop_rise_m: 0.07,
@@ -174,6 +188,7 @@ impl Default for KangarooHopParams {
             tail_mean_rad: 0.1,
             tail_step_rad: 0.15,
             tail_pitch_gain: 4.0,
+            tail_feedback: true,
             tail_rate_gain_s: 0.3,
             tail_tip_stiffness: 4.0,
             tail_tip_damping: 0.05,
@@ -367,7 +382,11 @@ impl KangarooHop {
     /// Move the commanded speed toward the desired one, rate-limited.
     fn ramp_speed(&mut self, dt: f64, l: f64) {
         let target = self.params.speed_mps * l.sqrt();
-        let step = self.params.speed_ramp_mps2.max(0.0) * dt;
+        let step = if self.params.speed_ramp {
+            self.params.speed_ramp_mps2.max(0.0) * dt
+        } else {
+            f64::INFINITY
+        };
         let cmd = if self.speed_command_mps.is_finite() {
             self.speed_command_mps
         } else {
@@ -426,7 +445,7 @@ impl KangarooHop {
             let mean = (com_z - z0) / (t - t0);
             let limit = p.speed_integral_max_mps * l.sqrt();
             self.speed_trim_mps = (self.speed_trim_mps
-                + p.speed_integral_gain * (self.speed_command_mps - mean))
+                + trim_gain(p.speed_trim, p.speed_integral_gain) * (self.speed_command_mps - mean))
                 .clamp(-limit, limit);
         }
         self.last_touchdown = Some((t, com_z));
@@ -662,8 +681,14 @@ impl Controller for KangarooHop {
             } else {
                 p.tail_mean_rad + 0.5 * p.tail_step_rad
             };
-            let assist = p.tail_pitch_gain * (pitch - p.pitch_rad)
-                + p.tail_rate_gain_s * l.sqrt() * pitch_rate;
+            // The lab's tail feedback: the rest also follows the trunk's
+            // pitch error and rate (the paper only steps it).
+            let assist = if p.tail_feedback {
+                p.tail_pitch_gain * (pitch - p.pitch_rad)
+                    + p.tail_rate_gain_s * l.sqrt() * pitch_rate
+            } else {
+                0.0
+            };
             let rest = step + assist.clamp(-1.0, 1.0);
             drives[base].servo(p.tail_stiffness * t4, p.tail_damping * t45, rest);
         }

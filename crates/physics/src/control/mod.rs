@@ -7,6 +7,7 @@
 //! Figure 4's states); the gait modules compose them, and the
 //! [`gait_controller`] picks the state machine of each gait.
 
+pub mod additions;
 pub mod attitude;
 pub mod biped_gallop;
 pub mod biped_run;

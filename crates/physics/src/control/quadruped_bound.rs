@@ -33,6 +33,7 @@
 
 use glam::DVec3;
 
+use super::additions::trim_gain;
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
 use super::hip_servo::HipServo;
 use super::leg_spring::LegSpring;
@@ -126,6 +127,9 @@ pub struct QuadrupedBoundParams {
     pub stance_s: f64,
     /// Foot placement gain k_ẋ of eq. 3 (s).
     pub placement_gain_s: f64,
+    /// The lab's integral speed trim on (`lab_additions.speed_trim`; not
+    /// in the paper), with gain `speed_integral_gain`.
+    pub speed_trim: bool,
     /// Change of the speed bias per stride per m/s of the stride's mean
     /// speed error (dimensionless): removes eq. 3's steady speed error.
     pub speed_integral_gain: f64,
@@ -194,6 +198,7 @@ impl Default for QuadrupedBoundParams {
             min_short_s: 0.05,
             stance_s: 0.09,
             placement_gain_s: 0.138,
+            speed_trim: true,
             speed_integral_gain: 0.11,
             speed_bias_cap: 1.0,
             min_stride_s: 0.12,
@@ -468,7 +473,8 @@ impl QuadrupedBound {
                             let vd = p.speed_mps * l.sqrt();
                             let v = (com_forward - x0) / (time - t0);
                             let cap = p.speed_bias_cap * vd.abs().max(0.5 * l.sqrt());
-                            self.speed_bias = (self.speed_bias + p.speed_integral_gain * (vd - v))
+                            self.speed_bias = (self.speed_bias
+                                + trim_gain(p.speed_trim, p.speed_integral_gain) * (vd - v))
                                 .clamp(-cap, cap);
                         }
                         self.stride_start = Some((time, com_forward));

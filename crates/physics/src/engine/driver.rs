@@ -226,6 +226,18 @@ impl PhysicsDriver {
         &self.params
     }
 
+    /// The lab's additions the running gait's controller uses, by their
+    /// preset names (`scenario.physics.lab_additions`); empty when it runs
+    /// the paper's laws only.
+    #[must_use]
+    pub fn lab_additions(&self) -> Vec<&'static str> {
+        crate::control::additions::Additions::for_gait(
+            self.params.lab_additions.as_ref(),
+            &self.gait,
+        )
+        .names()
+    }
+
     /// The state machine's state.
     #[must_use]
     pub fn phase_name(&self) -> &'static str {

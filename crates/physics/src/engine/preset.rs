@@ -281,6 +281,7 @@ pub fn to_preset(creature: &PhysicalCreature, meta: &PresetMeta) -> Preset {
         controller: std::collections::BTreeMap::new(),
         obstacles: Vec::new(),
         waypoints: Vec::new(),
+        lab_additions: Some(gaitlab_core::preset::physics::LabAdditions::default()),
     };
     Preset {
         schema: None,

@@ -49,6 +49,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     let time = driver.time();
     let resets = driver.resets();
     let gains = driver.gains();
+    let additions = driver.lab_additions();
     let mut chosen = None;
     let mut edits: Vec<(&str, f64)> = Vec::new();
     let mut gain_edits: Vec<(&'static str, f64)> = Vec::new();
@@ -110,6 +111,18 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 }
             });
             ui.label(format!("state: {phase} · t = {time:.2} s · resets: {resets}"));
+            let (text, hover) = if additions.is_empty() {
+                (
+                    "Lab's additions: none".to_owned(),
+                    "This gait runs without any of the lab's named additions (docs/physics.md, \"The lab's additions\", lists them and what else differs from the paper)",
+                )
+            } else {
+                (
+                    format!("Lab's additions (not in the paper): {}", additions.join(", ").replace('_', " ")),
+                    "What gaitlab adds to the paper's control for this gait; set them in the preset's scenario.physics.lab_additions (docs/physics.md, \"The lab's additions\")",
+                )
+            };
+            ui.label(text).on_hover_text(hover);
             ui.label(format!(
                 "speed {:.2} m/s of {:.2} · friction needed {:.2}",
                 summary.speed_mean_mps, summary.speed_desired_mps, summary.friction_needed_max
