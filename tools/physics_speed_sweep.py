@@ -9,7 +9,7 @@ Markdown table; a row fails when it falls or its mean speed is more than
 10 % off (the paper's claim).
 
 Usage: python3 tools/physics_speed_sweep.py [--seconds S] [--only WAY]
-       [--gaitlab PATH]
+       [--preset P] [--set KEY=VALUE] [--gaitlab PATH]
 (PATH defaults to target/release/gaitlab; build it with
 `cargo build --release -p gaitlab-cli`.) Exits 1 when a "default" row
 fails."""
@@ -42,6 +42,10 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--seconds", type=float, default=60.0)
     parser.add_argument("--only", choices=list(WAYS), action="append")
+    parser.add_argument("--preset", action="append",
+                        help="only these presets (repeatable)")
+    parser.add_argument("--set", action="append", default=[],
+                        help="passed to every run (repeatable)")
     parser.add_argument("--gaitlab", default="target/release/gaitlab")
     args = parser.parse_args()
     ways = args.only or list(WAYS)
@@ -52,11 +56,14 @@ def main():
     for way in ways:
         additions = json.dumps(WAYS[way])
         for preset, gait, speeds in GAITS:
+            if args.preset and preset not in args.preset:
+                continue
             for v in speeds:
                 m = run(args.gaitlab, preset, [
                     "--gait", gait, "--speed", str(v),
                     "--seconds", str(args.seconds),
-                    "--set", f"scenario.physics.lab_additions={additions}"])
+                    "--set", f"scenario.physics.lab_additions={additions}",
+                    *[a for kv in args.set for a in ("--set", kv)]])
                 if "error" in m:
                     print(f"| {way} | {preset} | {gait} | {v} | error: "
                           f"{m['error']} | | | | | |")

@@ -77,6 +77,14 @@ pub fn creature_with(
     Ok(creature)
 }
 
+/// The JSON text of a bundled preset by name, or else of the preset file.
+pub fn preset_text(name_or_path: &str) -> Result<String, Failure> {
+    match bundled_json(name_or_path) {
+        Some(json) => Ok(json.to_owned()),
+        None => preset_file(name_or_path),
+    }
+}
+
 /// The text of preset file `name_or_path`; a name that is no file is an
 /// error that lists the bundled presets.
 fn preset_file(name_or_path: &str) -> Result<String, Failure> {

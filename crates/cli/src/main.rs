@@ -1,6 +1,7 @@
 //! `gaitlab`: the command-line face of gaitlab (DESIGN.md "Contracts"): list and
 //! validate presets, run the She 2006 motions headless with metrics, BVH and CSV
-//! output, follow recorded targets, and report the performance figures.
+//! output, follow recorded targets, report the performance figures, and tune
+//! a physics gait's gains.
 
 mod bench;
 mod drive;
@@ -14,6 +15,7 @@ mod schedule;
 mod sink;
 mod stdout;
 mod track;
+mod tune;
 
 use std::process::ExitCode;
 
@@ -45,6 +47,8 @@ enum Command {
     Bench(bench::BenchArgs),
     /// Write a physics creature as a MuJoCo model (`--format mjcf`).
     Export(export::ExportArgs),
+    /// Tune a physics gait's gains by CMA-ES against an objective; writes the tuned preset.
+    Tune(tune::TuneArgs),
 }
 
 fn main() -> ExitCode {
@@ -59,6 +63,7 @@ fn main() -> ExitCode {
         Command::Track(args) => track::track(&args),
         Command::Bench(args) => bench::bench(&args),
         Command::Export(args) => export::export(&args),
+        Command::Tune(args) => tune::tune(&args),
     };
     match outcome {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,135 @@
+//! What a tune minimises: named terms of a run's figures, each with a
+//! weight (`--objective fall=10,speed=1,table2=0.5`).
+//!
+//! - `fall`: 1 when the creature fell or the simulation blew up, else 0.
+//! - `speed`: |mean speed − desired| / desired (the paper's 10 % claim).
+//! - `table2`: the mean |difference| from Raibert & Hodgins 1991's Table 2
+//!   (animation column) over the gait's measured rows, as a fraction; a row
+//!   the run has no figure for counts 1. Inputs (desired speeds) and the
+//!   undefined "error in running speed" rows are left out.
+
+use gaitlab_physics::engine::metrics::GaitSummary;
+use gaitlab_physics::engine::table2::compare;
+
+/// The names [`Objective::parse`] knows.
+pub const TERMS: [&str; 3] = ["fall", "speed", "table2"];
+
+/// Weighted terms; a weight of 0 leaves a term out.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Objective {
+    /// Weight of `fall`.
+    pub fall: f64,
+    /// Weight of `speed`.
+    pub speed: f64,
+    /// Weight of `table2`.
+    pub table2: f64,
+}
+
+impl Default for Objective {
+    /// `fall=10,speed=1`: stay up, then hold the speed.
+    fn default() -> Self {
+        Self {
+            fall: 10.0,
+            speed: 1.0,
+            table2: 0.0,
+        }
+    }
+}
+
+impl Objective {
+    /// Parse `name=weight,…`; terms not named get weight 0.
+    ///
+    /// # Errors
+    /// `objective: …` naming the unknown term or the bad weight.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let mut o = Self {
+            fall: 0.0,
+            speed: 0.0,
+            table2: 0.0,
+        };
+        for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
+            let (name, weight) = part
+                .split_once('=')
+                .ok_or_else(|| format!("objective: \"{part}\" is not name=weight"))?;
+            let w: f64 = weight
+                .trim()
+                .parse()
+                .ok()
+                .filter(|w: &f64| w.is_finite() && *w >= 0.0)
+                .ok_or_else(|| {
+                    format!("objective.{name}: the weight \"{weight}\" is not a number ≥ 0")
+                })?;
+            match name.trim() {
+                "fall" => o.fall = w,
+                "speed" => o.speed = w,
+                "table2" => o.table2 = w,
+                other => {
+                    return Err(format!(
+                        "objective: unknown term \"{other}\" (terms: {})",
+                        TERMS.join(", ")
+                    ));
+                }
+            }
+        }
+        if o.fall + o.speed + o.table2 <= 0.0 {
+            return Err("objective: every weight is 0".to_owned());
+        }
+        Ok(o)
+    }
+
+    /// The cost of a run of `gait` with figures `s` (legs named `legs`);
+    /// `fell` also counts a blow-up.
+    #[must_use]
+    pub fn cost(&self, s: &GaitSummary, fell: bool, gait: &str, legs: &[&str]) -> f64 {
+        let mut cost = 0.0;
+        if fell {
+            cost += self.fall;
+        }
+        if self.speed > 0.0 {
+            let desired = s.speed_desired_mps.abs().max(1e-6);
+            cost +=
+                self.speed * ((s.speed_mean_mps - s.speed_desired_mps).abs() / desired).min(1.0);
+        }
+        if self.table2 > 0.0 {
+            let rows: Vec<f64> = compare(s, gait, legs)
+                .iter()
+                .filter(|c| !c.row.quantity.is_input() && !c.row.quantity.is_speed_error())
+                .map(|c| c.diff_pct().map_or(1.0, |d| (d.abs() / 100.0).min(1.0)))
+                .collect();
+            if !rows.is_empty() {
+                cost += self.table2 * rows.iter().sum::<f64>() / rows.len() as f64;
+            }
+        }
+        cost
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn terms_parse_by_name_and_bad_ones_are_named() {
+        let o = Objective::parse("fall=5, table2=0.5").expect("parses");
+        assert_eq!((o.fall, o.speed, o.table2), (5.0, 0.0, 0.5));
+        assert!(Objective::parse("energy=1").is_err_and(|e| e.contains("unknown term \"energy\"")));
+        assert!(Objective::parse("speed=-1").is_err_and(|e| e.starts_with("objective.speed")));
+        assert!(Objective::parse("speed").is_err());
+        assert!(Objective::parse("speed=0").is_err());
+    }
+
+    #[test]
+    fn the_cost_adds_weighted_terms() {
+        let s = GaitSummary {
+            speed_desired_mps: 2.0,
+            speed_mean_mps: 1.8,
+            ..GaitSummary::default()
+        };
+        let o = Objective::default();
+        assert!((o.cost(&s, false, "run", &[]) - 0.1).abs() < 1e-12);
+        assert!((o.cost(&s, true, "run", &[]) - 10.1).abs() < 1e-12);
+        // No figures at all: every Table-2 row counts 1.
+        let t = Objective::parse("table2=1").expect("parses");
+        assert!((t.cost(&s, false, "run", &[]) - 1.0).abs() < 1e-12);
+    }
+}
