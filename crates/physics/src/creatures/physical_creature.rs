@@ -80,21 +80,3 @@ impl PhysicalCreature {
             .collect()
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use crate::creatures::{BIPED_LEG_M, QUADRUPED_LEG_M, biped, quadruped};
-
-    #[test]
-    fn leg_lengths_are_the_models_hip_to_foot_at_full_length() {
-        let built = [(biped(1.0), BIPED_LEG_M), (quadruped(1.0), QUADRUPED_LEG_M)];
-        for (creature, want) in built {
-            for got in creature.expect("model builds").leg_lengths_m() {
-                assert_eq!(got, want, "bit for bit at scale 1");
-            }
-        }
-        for got in biped(2.0).expect("model builds").leg_lengths_m() {
-            assert!((got - 2.0 * BIPED_LEG_M).abs() < 1e-12);
-        }
-    }
-}
