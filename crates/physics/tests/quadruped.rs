@@ -118,3 +118,35 @@ fn table2_trot_side_by_side() {
         assert!(!misses.iter().any(|m| m == held), "{held} off: {misses:?}");
     }
 }
+
+/// The hop-height input reaches the trot (issue 20: it ignored it): the trot
+/// regulates each pair's flight, so a hop height h asks for the flight
+/// √(8h/g) whose apex it is, and the measured flight follows it.
+#[test]
+fn the_trot_takes_the_hop_height_as_its_flight() {
+    use gaitlab_core::driver::Driver;
+    use gaitlab_physics::control::hop_height::flight_for_height;
+    let preset = gaitlab_core::preset::load_bundled("raibert-quadruped")
+        .expect("bundled")
+        .expect("valid");
+    for height in [0.02, 0.08] {
+        let mut params = preset.scenario.physics.clone().expect("physics");
+        params.gait = Some("trot".into());
+        params.speed_mps = 1.9;
+        params.hop_height_m = Some(height);
+        let mut driver =
+            gaitlab_physics::PhysicsDriver::with_params(&preset, params).expect("driver");
+        assert!((driver.hop_height_m().unwrap_or(0.0) - height).abs() < 1e-12);
+        for _ in 0..(20 * 60) {
+            driver.step(1.0 / 60.0);
+        }
+        let s = driver.summary();
+        let want = flight_for_height(height);
+        assert!(!s.fell);
+        assert!(
+            (s.flight_duration_s / want - 1.0).abs() < 0.05,
+            "hop {height} m: flight {} s, want {want} s",
+            s.flight_duration_s
+        );
+    }
+}

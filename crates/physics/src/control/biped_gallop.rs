@@ -526,6 +526,10 @@ impl Controller for BipedGallop {
         self.params.hop_height_m = height_m;
     }
 
+    fn hop_height_m(&self) -> Option<f64> {
+        Some(self.params.hop_height_m)
+    }
+
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         let creature = input.creature;
         if creature.legs.len() < 2 || creature.legs.iter().any(|g| g.hip.len() < 3) {

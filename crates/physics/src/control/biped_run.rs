@@ -270,6 +270,10 @@ impl Controller for BipedRun {
         self.params.hop_height_m = height_m;
     }
 
+    fn hop_height_m(&self) -> Option<f64> {
+        Some(self.params.hop_height_m)
+    }
+
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         self.advance_phase(input);
         let p = self.params;

@@ -7,6 +7,7 @@ use gaitlab_core::preset::{PhysicsParams, PresetError};
 use crate::control::additions::Additions;
 use crate::control::biped_gallop::{BipedGallop, BipedGallopParams, GallopStyle};
 use crate::control::biped_run::{BipedRun, BipedRunParams};
+use crate::control::hop_height::flight_for_height;
 use crate::control::kangaroo_hop::{KangarooHop, KangarooHopParams, kangaroo_start};
 use crate::control::parameters::NamedParameters;
 use crate::control::quadruped_bound::{
@@ -96,6 +97,10 @@ impl Controller for GaitController {
 
     fn set_hop_height(&mut self, height_m: f64) {
         self.inner_mut().set_hop_height(height_m);
+    }
+
+    fn hop_height_m(&self) -> Option<f64> {
+        self.inner().hop_height_m()
     }
 
     fn gains(&self) -> Vec<crate::world::sim::Gain> {
@@ -236,9 +241,11 @@ pub fn make_controller(
                     ..QuadrupedRunParams::default()
                 };
                 let p = with_parameters(p, params, gait)?;
-                return Ok(GaitController::Quadruped(Box::new(QuadrupedRun::new(
-                    p, creature,
-                ))));
+                let mut c = QuadrupedRun::new(p, creature);
+                if let Some(h) = params.hop_height_m {
+                    c.set_hop_height(h);
+                }
+                return Ok(GaitController::Quadruped(Box::new(c)));
             }
             let style = if gait == "bound" {
                 BoundStyle::Bound
@@ -252,6 +259,9 @@ pub fn make_controller(
             };
             let mut p = with_parameters(p, params, gait)?;
             p.speed_trim = additions.speed_trim;
+            if let Some(h) = params.hop_height_m {
+                p.stride_flight_s = flight_for_height(h);
+            }
             Ok(GaitController::QuadrupedBound(Box::new(
                 QuadrupedBound::new(p, creature),
             )))

@@ -568,6 +568,10 @@ impl Controller for KangarooHop {
         KangarooHop::set_hop_height(self, height_m);
     }
 
+    fn hop_height_m(&self) -> Option<f64> {
+        Some(self.params.hop_rise_m)
+    }
+
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         let creature = input.creature;
         let data = input.data;

@@ -14,6 +14,7 @@ pub mod biped_run;
 pub mod gains;
 pub mod gait_controller;
 pub mod hip_servo;
+pub mod hop_height;
 pub mod kangaroo_hop;
 pub mod leg_spring;
 pub mod parameters;

@@ -36,6 +36,7 @@ use glam::DVec3;
 use super::additions::trim_gain;
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
 use super::hip_servo::HipServo;
+use super::hop_height::{flight_for_height, height_for_flight};
 use super::leg_spring::LegSpring;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
@@ -535,6 +536,18 @@ impl Controller for QuadrupedBound {
 
     fn set_speed(&mut self, speed_mps: f64) {
         self.params.speed_mps = speed_mps;
+    }
+
+    /// The bound regulates the flight in each stride: a hop height asks for
+    /// the flight whose apex it is (eq. 2, [`super::hop_height`]).
+    fn set_hop_height(&mut self, height_m: f64) {
+        if height_m.is_finite() {
+            self.params.stride_flight_s = flight_for_height(height_m);
+        }
+    }
+
+    fn hop_height_m(&self) -> Option<f64> {
+        Some(height_for_flight(self.params.stride_flight_s))
     }
 
     fn set_heading(&mut self, heading: f64) {

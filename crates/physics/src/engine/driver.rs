@@ -328,6 +328,14 @@ impl PhysicsDriver {
         Ok(())
     }
 
+    /// The hop height the controller regulates now (m at scale 1): the
+    /// biped's and kangaroo's apex rise, the trot's and bound's flight as the
+    /// apex it reaches (eq. 2).
+    #[must_use]
+    pub fn hop_height_m(&self) -> Option<f64> {
+        self.controller.hop_height_m()
+    }
+
     /// The creature as a MuJoCo model (see [`crate::engine::mjcf`]): its springs and
     /// hip torque limits as the controller sets them at the start.
     #[must_use]

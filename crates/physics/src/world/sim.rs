@@ -108,6 +108,11 @@ pub trait Controller {
     /// Change the desired hop height (m at scale 1) while running.
     fn set_hop_height(&mut self, _height_m: f64) {}
 
+    /// The hop height it regulates (m at scale 1), if it regulates one.
+    fn hop_height_m(&self) -> Option<f64> {
+        None
+    }
+
     /// The gains a person may tune while it runs.
     fn gains(&self) -> Vec<Gain> {
         Vec::new()

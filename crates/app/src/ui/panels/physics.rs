@@ -35,7 +35,10 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     let current = driver.gait().to_owned();
     let names = gait_names(driver.sim().creature.species);
     let mut speed = driver.params().speed_mps;
-    let mut hop = driver.params().hop_height_m.unwrap_or(0.1);
+    let mut hop = driver
+        .hop_height_m()
+        .or(driver.params().hop_height_m)
+        .unwrap_or(0.1);
     let summary = driver.summary();
     let legs: Vec<String> = driver
         .sim()
