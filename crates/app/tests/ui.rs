@@ -372,7 +372,7 @@ fn the_gait_panel_says_while_legs_take_a_switch_on() {
 }
 
 #[test]
-fn the_physics_panel_names_the_lab_additions_the_gait_runs_with() {
+fn the_physics_panel_names_the_lab_additions_and_has_every_creatures_inputs() {
     // The bundled biped runs by the paper's laws but for Unloading's posture
     // servo; the kangaroo keeps its speed ramp and tail feedback; the trot
     // uses none of the named additions.
@@ -393,5 +393,11 @@ fn the_physics_panel_names_the_lab_additions_the_gait_runs_with() {
             harness.query_all_by_label(want).next().is_some(),
             "{preset}: no line \"{want}\""
         );
+        for slider in ["Hop height (m)", "Scale L"] {
+            assert!(
+                harness.query_all_by_label_contains(slider).next().is_some(),
+                "{preset}: no slider {slider}"
+            );
+        }
     }
 }

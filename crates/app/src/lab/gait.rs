@@ -38,6 +38,37 @@ impl Lab {
         Ok(())
     }
 
+    /// Restarts the physics creature at dynamic scale `scale` (Table 1's L:
+    /// lengths ×L, masses ×L³, times ×√L), keeping its gait and desired
+    /// speed: the running preset with `scenario.physics.scale` changed.
+    ///
+    /// # Errors
+    /// `scale: …` when the engine is not physics or L is outside
+    /// the preset's range; nothing changes.
+    pub fn set_physics_scale(&mut self, scale: f64) -> Result<(), String> {
+        let Some(driver) = self.stage.driver.physics() else {
+            let engine = self.session.engine_name();
+            return Err(format!("scale: engine {engine} has no dynamic scale"));
+        };
+        let (gait, speed) = (driver.gait().to_owned(), driver.params().speed_mps);
+        let mut preset: serde_json::Value = serde_json::from_str(&self.session.preset_text())
+            .map_err(|e| format!("scale: the running preset is not JSON ({e})"))?;
+        let Some(physics) = preset
+            .pointer_mut("/scenario/physics")
+            .and_then(serde_json::Value::as_object_mut)
+        else {
+            return Err("scale: the running preset has no scenario.physics".to_owned());
+        };
+        physics.insert("scale".into(), scale.into());
+        physics.insert("gait".into(), gait.into());
+        physics.insert("speed_mps".into(), speed.into());
+        let name = self.session.settings.preset.clone();
+        self.set_custom_preset(&preset.to_string())
+            .map_err(|e| e.replacen("preset: ", "", 1))?;
+        self.session.settings.preset = name;
+        Ok(())
+    }
+
     /// Sets a physics controller gain by name (the Gains sliders and the
     /// `gain` command).
     ///

@@ -53,6 +53,8 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     let resets = driver.resets();
     let gains = driver.gains();
     let additions = driver.lab_additions();
+    let mut scale = driver.params().scale;
+    let mut new_scale = None;
     let mut chosen = None;
     let mut edits: Vec<(&str, f64)> = Vec::new();
     let mut gain_edits: Vec<(&'static str, f64)> = Vec::new();
@@ -87,6 +89,19 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 .changed()
             {
                 edits.push(("hop_height_m", hop));
+            }
+            let response = ui
+                .add(
+                    egui::Slider::new(&mut scale, 0.25..=4.0)
+                        .logarithmic(true)
+                        .text("Scale L"),
+                )
+                .on_hover_text(
+                    "Table 1's dynamic scaling: lengths ×L, masses ×L³, speeds and times ×√L; \
+                     the creature restarts at the new size",
+                );
+            if response.drag_stopped() || (response.changed() && !response.dragged()) {
+                new_scale = Some(scale);
             }
             egui::CollapsingHeader::new("Gains").show(ui, |ui| {
                 ui.label("Up to 1000× the default: too much and the simulation blows up, and the creature is put back.");
@@ -170,6 +185,11 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
         if let Err(error) = lab.edit_gait(key, value) {
             lab.report_error(error);
         }
+    }
+    if let Some(l) = new_scale
+        && let Err(error) = lab.set_physics_scale(l)
+    {
+        lab.report_error(error);
     }
     for (name, value) in gain_edits {
         if let Err(error) = lab.set_gain(name, value) {
