@@ -183,3 +183,48 @@ fn the_dynamic_scale_from_the_panel_stretches_steps_by_root_l() {
     );
     assert_eq!(lab.driver().physics().map(|d| d.params().scale), Some(1.0));
 }
+
+/// The kangaroo's jump from the panel ("Place a box 3 m ahead",
+/// `Lab::place_obstacle`): the box appears in its path and the jump states
+/// carry it over without the toe entering it; the other gaits have no jump.
+#[test]
+fn a_box_placed_from_the_panel_is_jumped_by_the_kangaroo() {
+    let mut lab = Lab::new(Settings::default());
+    lab.command(r#"{"preset":"raibert-kangaroo","speed_mps":2.0}"#)
+        .expect("valid");
+    run(&mut lab, 4.0);
+    let at = lab.place_obstacle(3.0).expect("the kangaroo jumps");
+    let Some(driver) = lab.driver().physics() else {
+        panic!("physics")
+    };
+    let obstacle = *driver.sim().terrain.obstacles.last().expect("a box");
+    assert!((obstacle.min_xz[1] - at).abs() < 1e-12 && obstacle.height_m == 0.25);
+    let mut clearance = f64::INFINITY;
+    for _ in 0..(6 * 60) {
+        lab.advance(1.0 / 60.0);
+        let Some(driver) = lab.driver().physics() else {
+            panic!("physics")
+        };
+        let toe = driver.sim().contacts[0].position;
+        if obstacle.covers(toe.x, toe.z) {
+            clearance = clearance.min(toe.y - obstacle.height_m);
+        }
+    }
+    let s = state(&lab);
+    assert_eq!(s["physics"]["fell"], false, "{s}");
+    assert!(s["last_error"].is_null(), "{s}");
+    assert!(clearance > 0.0, "the toe entered the box ({clearance} m)");
+    let com_z = lab.driver().physics().map(|d| {
+        gaitlab_physics::dynamics::energy::center_of_mass(&d.sim().creature.model, &d.sim().data).z
+    });
+    assert!(
+        com_z.is_some_and(|z| z > obstacle.max_xz[1] + 1.0),
+        "{com_z:?}"
+    );
+    // The biped has no jump states.
+    lab.command(r#"{"preset":"raibert-biped"}"#).expect("valid");
+    assert!(
+        lab.place_obstacle(3.0)
+            .is_err_and(|e| e.contains("no jump"))
+    );
+}

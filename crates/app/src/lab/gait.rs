@@ -69,6 +69,20 @@ impl Lab {
         Ok(())
     }
 
+    /// Places a box `distance_m` ahead of the kangaroo, which jumps it
+    /// ([`gaitlab_physics::PhysicsDriver::place_obstacle_ahead`]).
+    ///
+    /// # Errors
+    /// `obstacle: …` when the engine or gait has no jump, or the distance is
+    /// out of range; nothing changes.
+    pub fn place_obstacle(&mut self, distance_m: f64) -> Result<f64, String> {
+        let Some(driver) = self.stage.driver.physics_mut() else {
+            let engine = self.session.engine_name();
+            return Err(format!("obstacle: engine {engine} has no obstacles"));
+        };
+        driver.place_obstacle_ahead(distance_m)
+    }
+
     /// Sets a physics controller gain by name (the Gains sliders and the
     /// `gain` command).
     ///

@@ -405,6 +405,39 @@ impl PhysicsDriver {
         }
     }
 
+    /// Put a box on the ground `distance_m` (m at scale 1) ahead of the
+    /// kangaroo and have it jump it: the paper's animator input "when and how
+    /// high to jump" (Figure 2), taken by the jump's extra states. Returns
+    /// where the box's near face is (m along the way, at scale 1).
+    ///
+    /// # Errors
+    /// `obstacle: …` when the gait has no jump (only the kangaroo's hop does)
+    /// or the distance is not in [1, 20] m.
+    pub fn place_obstacle_ahead(&mut self, distance_m: f64) -> Result<f64, String> {
+        if !(distance_m.is_finite() && (1.0..=20.0).contains(&distance_m)) {
+            return Err(format!(
+                "obstacle: {distance_m} m ahead is not in [1, 20] m"
+            ));
+        }
+        let GaitController::Kangaroo(kangaroo) = &mut self.controller else {
+            return Err(format!(
+                "obstacle: the {} has no jump (the paper adds jump states to the kangaroo's hop only)",
+                self.gait
+            ));
+        };
+        let l = self.params.scale;
+        let com = crate::dynamics::energy::center_of_mass(&self.sim.creature.model, &self.sim.data);
+        let at_m = com.z / l + distance_m;
+        let p = kangaroo.params;
+        self.sim.terrain.obstacles.push(Obstacle {
+            min_xz: [-10.0 * l, at_m * l],
+            max_xz: [10.0 * l, (at_m + p.obstacle_depth_m) * l],
+            height_m: p.obstacle_height_m * l,
+        });
+        kangaroo.jump_at(at_m);
+        Ok(at_m)
+    }
+
     /// Change gait while running (the controller takes over from the current state).
     ///
     /// # Errors

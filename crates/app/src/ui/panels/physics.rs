@@ -55,6 +55,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     let additions = driver.lab_additions();
     let mut scale = driver.params().scale;
     let mut new_scale = None;
+    let mut place_box = false;
     let mut chosen = None;
     let mut edits: Vec<(&str, f64)> = Vec::new();
     let mut gain_edits: Vec<(&'static str, f64)> = Vec::new();
@@ -102,6 +103,17 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 );
             if response.drag_stopped() || (response.changed() && !response.dragged()) {
                 new_scale = Some(scale);
+            }
+            if current == "hop"
+                && ui
+                    .button("Place a box 3 m ahead")
+                    .on_hover_text(
+                        "A 0.25 m × 0.3 m box in the kangaroo's path: its jump states \
+                         (stiffer take-off, tucked leg, damped landing) carry it over",
+                    )
+                    .clicked()
+            {
+                place_box = true;
             }
             egui::CollapsingHeader::new("Gains").show(ui, |ui| {
                 ui.label("Up to 1000× the default: too much and the simulation blows up, and the creature is put back.");
@@ -185,6 +197,9 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
         if let Err(error) = lab.edit_gait(key, value) {
             lab.report_error(error);
         }
+    }
+    if place_box && let Err(error) = lab.place_obstacle(3.0) {
+        lab.report_error(error);
     }
     if let Some(l) = new_scale
         && let Err(error) = lab.set_physics_scale(l)
