@@ -397,7 +397,11 @@ fn the_physics_panel_names_the_lab_additions_and_has_every_creatures_inputs() {
             .query_all_by_label("Place a box 3 m ahead")
             .next()
             .is_some();
-        assert_eq!(jump, preset == "raibert-kangaroo", "{preset}: the jump button");
+        assert_eq!(
+            jump,
+            preset == "raibert-kangaroo",
+            "{preset}: the jump button"
+        );
         for slider in ["Hop height (m)", "Scale L"] {
             assert!(
                 harness.query_all_by_label_contains(slider).next().is_some(),

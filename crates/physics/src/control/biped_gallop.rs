@@ -322,15 +322,6 @@ impl BipedGallop {
         self.thrust
     }
 
-    fn spring(&self) -> LegSpring {
-        let p = &self.params;
-        LegSpring {
-            stiffness: p.leg_stiffness,
-            damping: p.leg_damping,
-            travel_m: p.leg_travel_m,
-        }
-    }
-
     fn in_support(&self, i: usize) -> bool {
         self.legs[i].phase != Phase::Flight
     }
@@ -545,7 +536,7 @@ impl Controller for BipedGallop {
         let forward = heading_forward(p.heading);
         let s = self.scale;
         let desired = forward * (p.speed_mps * s.velocity() + self.speed_bias);
-        let spring = self.spring();
+        let spring = LegSpring::new(p.leg_stiffness, p.leg_damping, p.leg_travel_m);
 
         let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
         let (kp, kv) = s.torsional_gains(p.swing_kp, p.swing_kv);

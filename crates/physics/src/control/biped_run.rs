@@ -183,15 +183,6 @@ impl BipedRun {
         }
     }
 
-    fn spring(&self) -> LegSpring {
-        let p = &self.params;
-        LegSpring {
-            stiffness: p.leg_stiffness,
-            damping: p.leg_damping,
-            travel_m: p.leg_travel_m,
-        }
-    }
-
     fn advance_phase(&mut self, input: &ControlInput<'_>) {
         let leg = &input.creature.legs[self.active];
         let contact = input.contacts[self.active];
@@ -284,7 +275,7 @@ impl Controller for BipedRun {
         let trunk_rot = data.world[creature.trunk].rot;
         let (com, velocity) = com_state(creature, data);
         let desired = heading_forward(p.heading) * (p.speed_mps * s.velocity() + self.speed_bias);
-        let spring = self.spring();
+        let spring = LegSpring::new(p.leg_stiffness, p.leg_damping, p.leg_travel_m);
         // Leg lengths: the spring of eq. 1 with a programmable rest.
         let step = p.leg_rate_mps * s.velocity() * input.dt;
         for (i, leg) in creature.legs.iter().enumerate().take(2) {

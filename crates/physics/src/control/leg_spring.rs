@@ -28,6 +28,16 @@ pub struct LegSpring {
 }
 
 impl LegSpring {
+    /// Eq. 1's `k` (N/m), `b` (N·s/m) and the travel (m), at scale 1.
+    #[must_use]
+    pub const fn new(stiffness: f64, damping: f64, travel_m: f64) -> Self {
+        Self {
+            stiffness,
+            damping,
+            travel_m,
+        }
+    }
+
     /// The stops at full length and at `travel_m` shorter.
     #[must_use]
     pub fn stops(&self, s: Scale) -> Stops {

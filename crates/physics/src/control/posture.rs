@@ -48,8 +48,8 @@ pub fn through_hip(
     drives[hip[1]].torque((-torque.dot(pitch_axis)).clamp(-max, max));
 }
 
-/// One supporting leg's share of eq. 4 through a gimbal hip, for gaits with
-/// several feet down (the trot's and the bound's pairs).
+/// Eq. 4 shared by the supporting legs of a pair through their gimbal hips
+/// (the trot's diagonal pairs, the bound's front and rear pairs).
 #[derive(Clone, Copy, Debug)]
 pub struct StanceShare {
     /// The torque the trunk needs (world, N·m), shared by `legs` legs.
@@ -61,36 +61,44 @@ pub struct StanceShare {
     pub yaw_per_m2: f64,
     /// Largest hip torque (N·m).
     pub max: f64,
-    /// Largest pitch torque (N·m), ≤ `max`: what the foot's grip allows.
-    pub pitch_limit: f64,
+    /// The pitch torque a foot's grip allows, per newton of leg force and
+    /// metre of leg (see [`grip_limit`]).
+    pub force_ratio: f64,
+}
+
+/// One supporting leg of a [`StanceShare`].
+#[derive(Clone, Copy, Debug)]
+pub struct StanceLeg<'a> {
+    /// Its hip joints: roll (about the trunk's z), then pitch.
+    pub hip: &'a [usize],
+    /// The roll joint's angle (rad).
+    pub roll_q: f64,
+    /// The hip's position (world, m).
+    pub hip_world: DVec3,
+    /// The foot's position (world, m).
+    pub foot: DVec3,
+    /// The leg spring's push (N, ≥ 0).
+    pub spring_force_n: f64,
+    /// The leg's length (m).
+    pub length_m: f64,
 }
 
 impl StanceShare {
-    /// Apply this leg's share through the roll (`hip[0]`, at angle `roll_q`)
-    /// and pitch (`hip[1]`) joints of a hip at `hip_world` whose foot is at
-    /// `foot`, the centre of mass at `com`.
-    #[expect(clippy::too_many_arguments, reason = "one leg's geometry, named")]
-    pub fn apply(
-        &self,
-        drives: &mut [Drive],
-        hip: &[usize],
-        roll_q: f64,
-        trunk_rot: DMat3,
-        hip_world: DVec3,
-        foot: DVec3,
-        com: DVec3,
-    ) {
-        let (roll_axis, pitch_axis) = hip_axes(trunk_rot, roll_q);
-        let r = foot - com;
+    /// Apply `leg`'s share through its roll and pitch joints, the trunk at
+    /// `trunk_rot` and the centre of mass at `com`.
+    pub fn apply(&self, drives: &mut [Drive], trunk_rot: DMat3, com: DVec3, leg: &StanceLeg<'_>) {
+        let (roll_axis, pitch_axis) = hip_axes(trunk_rot, leg.roll_q);
+        let r = leg.foot - com;
         let g = DVec3::Y.cross(DVec3::new(r.x, 0.0, r.z)) * self.yaw_per_m2;
-        let moment = (foot - hip_world).cross(g);
+        let moment = (leg.foot - leg.hip_world).cross(g);
         let roll_tau = -self.torque.dot(roll_axis) / self.legs - roll_axis.dot(moment);
         let pitch_tau = -self.torque.dot(pitch_axis) / self.legs - pitch_axis.dot(moment);
-        let (max, lim) = (self.max, self.pitch_limit);
-        drives[hip[0]].torque(roll_tau.clamp(-max, max));
-        drives[hip[1]].torque(pitch_tau.clamp(-lim, lim));
-        drives[hip[0]].spring.max_force = max;
-        drives[hip[1]].spring.max_force = max;
+        let max = self.max;
+        let lim = grip_limit(self.force_ratio, leg.spring_force_n, leg.length_m, max);
+        drives[leg.hip[0]].torque(roll_tau.clamp(-max, max));
+        drives[leg.hip[1]].torque(pitch_tau.clamp(-lim, lim));
+        drives[leg.hip[0]].spring.max_force = max;
+        drives[leg.hip[1]].spring.max_force = max;
     }
 }
 
@@ -131,10 +139,17 @@ mod tests {
             legs: 2.0,
             yaw_per_m2: 0.0,
             max: 10.0,
-            pitch_limit: grip_limit(0.5, 2.0, 1.0, 10.0),
+            force_ratio: 0.5,
         };
-        let (hip, foot) = (DVec3::new(0.0, 1.0, 0.0), DVec3::ZERO);
-        share.apply(&mut drives, &[0, 1], 0.0, DMat3::IDENTITY, hip, foot, foot);
+        let leg = StanceLeg {
+            hip: &[0, 1],
+            roll_q: 0.0,
+            hip_world: DVec3::new(0.0, 1.0, 0.0),
+            foot: DVec3::ZERO,
+            spring_force_n: 2.0,
+            length_m: 1.0,
+        };
+        share.apply(&mut drives, DMat3::IDENTITY, DVec3::ZERO, &leg);
         assert_eq!(drives[0].feedforward, -1.0, "half the roll torque");
         assert_eq!(
             drives[1].feedforward, -1.0,

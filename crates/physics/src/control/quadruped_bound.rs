@@ -40,7 +40,7 @@ use super::hop_height::{flight_for_height, height_for_flight};
 use super::leg_spring::LegSpring;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
-use super::posture::{StanceShare, axis_torque, grip_limit};
+use super::posture::{StanceLeg, StanceShare, axis_torque};
 use super::scale::Scale;
 use super::start::{first_leg_m, level_flight};
 use crate::creatures::PhysicalCreature;
@@ -345,15 +345,6 @@ impl QuadrupedBound {
         }
     }
 
-    fn spring(&self) -> LegSpring {
-        let p = &self.params;
-        LegSpring {
-            stiffness: p.leg_stiffness,
-            damping: p.leg_damping,
-            travel_m: p.leg_travel_m,
-        }
-    }
-
     fn pair_thrust(&self, pair: usize) -> f64 {
         let l = self.scale.length();
         let extra = if pair == REAR {
@@ -571,7 +562,7 @@ impl Controller for QuadrupedBound {
         let trunk = creature.trunk;
         let trunk_rot = data.world[trunk].rot;
         let trunk_pos = data.world[trunk].pos;
-        let spring = self.spring();
+        let spring = LegSpring::new(p.leg_stiffness, p.leg_damping, p.leg_travel_m);
         let landing = p.landing_rest_m * l;
         let short = p.short_rest_m * l;
         let gallop = p.style == BoundStyle::Gallop;
@@ -630,6 +621,13 @@ impl Controller for QuadrupedBound {
                 }
             }
             let yaw_c = if lever > 1e-6 { yaw_t / lever } else { 0.0 };
+            let share = StanceShare {
+                torque: lateral * pitch_t + fwd * roll_t,
+                legs: n,
+                yaw_per_m2: yaw_c,
+                max,
+                force_ratio: p.posture_force_ratio,
+            };
             for (side, &i) in legs.iter().enumerate() {
                 let leg = &creature.legs[i];
                 let reach = self.leg_m[i] + landing;
@@ -682,21 +680,15 @@ impl Controller for QuadrupedBound {
                 } else if touching && servoing(pair.phase) && n > 0.0 {
                     let q = data.q[leg.spring];
                     let spring_force = (p.leg_stiffness * s.stiffness() * (rest - q)).max(0.0);
-                    let share = StanceShare {
-                        torque: lateral * pitch_t + fwd * roll_t,
-                        legs: n,
-                        yaw_per_m2: yaw_c,
-                        max,
-                        pitch_limit: grip_limit(
-                            p.posture_force_ratio,
-                            spring_force,
-                            self.leg_m[i] + q,
-                            max,
-                        ),
+                    let stance = StanceLeg {
+                        hip: &leg.hip,
+                        roll_q: data.q[leg.hip[0]],
+                        hip_world,
+                        foot: input.contacts[i].position,
+                        spring_force_n: spring_force,
+                        length_m: self.leg_m[i] + q,
                     };
-                    let foot = input.contacts[i].position;
-                    let roll_q = data.q[leg.hip[0]];
-                    share.apply(drives, &leg.hip, roll_q, trunk_rot, hip_world, foot, com);
+                    share.apply(drives, trunk_rot, com, &stance);
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 } else {
                     for (&j, prev) in leg.hip.iter().zip(self.hip_target[i].iter_mut()) {

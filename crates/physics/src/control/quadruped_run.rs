@@ -24,7 +24,7 @@ use super::hop_height::{flight_for_height, height_for_flight};
 use super::leg_spring::LegSpring;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
-use super::posture::{StanceShare, axis_torque, grip_limit};
+use super::posture::{StanceLeg, StanceShare, axis_torque};
 use super::scale::Scale;
 use super::start::{first_leg_m, level_flight};
 use crate::creatures::PhysicalCreature;
@@ -254,15 +254,6 @@ impl QuadrupedRun {
         self.params.trot
     }
 
-    fn spring(&self) -> LegSpring {
-        let t = self.tuning();
-        LegSpring {
-            stiffness: t.leg_stiffness,
-            damping: t.leg_damping,
-            travel_m: t.leg_travel_m,
-        }
-    }
-
     fn advance_phase(
         &mut self,
         input: &ControlInput<'_>,
@@ -456,7 +447,7 @@ impl Controller for QuadrupedRun {
         let idle = TROT_PAIRS[1 - self.active];
         let p = self.params;
         let t = self.tuning();
-        let spring = self.spring();
+        let spring = LegSpring::new(t.leg_stiffness, t.leg_damping, t.leg_travel_m);
         let landing = t.landing_rest_m * l;
         let short = t.idle_rest_m * l;
         let thrust = self.thrust[self.active];
@@ -536,6 +527,13 @@ impl Controller for QuadrupedRun {
             })
             .sum();
         let c = if lever > 1e-6 { yaw_t / lever } else { 0.0 };
+        let share = StanceShare {
+            torque,
+            legs: n,
+            yaw_per_m2: c,
+            max,
+            force_ratio: t.posture_force_ratio,
+        };
         let mut active_pitch = 0.0;
         for &i in &pair {
             let leg = &creature.legs[i];
@@ -570,21 +568,15 @@ impl Controller for QuadrupedRun {
                     let q = data.q[leg.spring];
                     let spring_force =
                         (t.leg_stiffness * s.stiffness() * (self.stance_rest[i] - q)).max(0.0);
-                    let share = StanceShare {
-                        torque,
-                        legs: n,
-                        yaw_per_m2: c,
-                        max,
-                        pitch_limit: grip_limit(
-                            t.posture_force_ratio,
-                            spring_force,
-                            self.leg_m[i] + q,
-                            max,
-                        ),
+                    let stance = StanceLeg {
+                        hip: &leg.hip,
+                        roll_q: data.q[leg.hip[0]],
+                        hip_world,
+                        foot: input.contacts[i].position,
+                        spring_force_n: spring_force,
+                        length_m: self.leg_m[i] + q,
                     };
-                    let foot = input.contacts[i].position;
-                    let roll_q = data.q[leg.hip[0]];
-                    share.apply(drives, &leg.hip, roll_q, trunk_rot, hip_world, foot, com);
+                    share.apply(drives, trunk_rot, com, &stance);
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 }
             }
