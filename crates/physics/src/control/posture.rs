@@ -5,6 +5,8 @@
 
 use glam::{DMat3, DQuat, DVec3};
 
+use crate::creatures::Leg;
+use crate::dynamics::data::Data;
 use crate::world::sim::Drive;
 
 /// Eq. 4 on every axis at once: the torque the trunk needs (world, N·m) for
@@ -81,6 +83,30 @@ pub struct StanceLeg<'a> {
     pub spring_force_n: f64,
     /// The leg's length (m).
     pub length_m: f64,
+}
+
+impl<'a> StanceLeg<'a> {
+    /// Leg `leg` of a creature in state `data`: its hip at `hip_world`, its
+    /// foot at `foot`, its spring pushing `spring_force_n`, `full_length_m`
+    /// long with the spring at zero.
+    #[must_use]
+    pub fn new(
+        leg: &'a Leg,
+        data: &Data,
+        hip_world: DVec3,
+        foot: DVec3,
+        spring_force_n: f64,
+        full_length_m: f64,
+    ) -> Self {
+        Self {
+            hip: &leg.hip,
+            roll_q: data.q[leg.hip[0]],
+            hip_world,
+            foot,
+            spring_force_n,
+            length_m: full_length_m + data.q[leg.spring],
+        }
+    }
 }
 
 impl StanceShare {

@@ -568,14 +568,9 @@ impl Controller for QuadrupedRun {
                     let q = data.q[leg.spring];
                     let spring_force =
                         (t.leg_stiffness * s.stiffness() * (self.stance_rest[i] - q)).max(0.0);
-                    let stance = StanceLeg {
-                        hip: &leg.hip,
-                        roll_q: data.q[leg.hip[0]],
-                        hip_world,
-                        foot: input.contacts[i].position,
-                        spring_force_n: spring_force,
-                        length_m: self.leg_m[i] + q,
-                    };
+                    let foot = input.contacts[i].position;
+                    let stance =
+                        StanceLeg::new(leg, data, hip_world, foot, spring_force, self.leg_m[i]);
                     share.apply(drives, trunk_rot, com, &stance);
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 }
