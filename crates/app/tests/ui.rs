@@ -373,14 +373,11 @@ fn the_gait_panel_says_while_legs_take_a_switch_on() {
 
 #[test]
 fn the_physics_panel_names_the_lab_additions_and_has_every_creatures_inputs() {
-    // The bundled biped runs by the paper's laws but for Unloading's posture
-    // servo; the kangaroo keeps its speed ramp and tail feedback; the trot
-    // uses none of the named additions.
+    // The bundled biped runs by the paper's laws alone; the kangaroo keeps
+    // its speed ramp and tail feedback; the trot uses none of the named
+    // additions.
     for (preset, want) in [
-        (
-            "raibert-biped",
-            "Lab's additions (not in the paper): unloading posture",
-        ),
+        ("raibert-biped", "Lab's additions: none"),
         (
             "raibert-kangaroo",
             "Lab's additions (not in the paper): speed ramp, tail feedback",

@@ -17,6 +17,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 rest: vec![0.0, 0.0, 0.0, -0.03, 0.0, 0.0, 0.0, -0.18],
                 gait: "run".into(),
                 speed_mps: 1.5,
+                control_every: 5,
             },
         ),
         (
@@ -28,6 +29,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 rest: vec![0.0, 0.0, -0.1, 0.0, 0.0, -0.1, 0.0, 0.0, -0.1, 0.0, 0.0, -0.1],
                 gait: "trot".into(),
                 speed_mps: 2.3,
+                // The skip bound's 10–27 ms stances fall at 2.8 m/s with
+                // its events seen 2 ms late (docs/physics.md).
+                control_every: 1,
             },
         ),
         (
@@ -39,6 +43,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 rest: vec![0.0, 0.45, 0.0, 0.6, -1.2, 1.2, 0.0, 0.0, 0.0, 0.0],
                 gait: "hop".into(),
                 speed_mps: 5.0,
+                control_every: 5,
             },
         ),
     ];

@@ -543,29 +543,6 @@ impl Controller for BipedGallop {
         let (ykp, ykv) = s.torsional_gains(p.leg_yaw_kp, p.leg_yaw_kv);
         let max = p.max_hip_torque * s.torque();
 
-        // Eq. 4 on pitch and roll (and a yaw servo): the torque the trunk
-        // needs, shared by the legs in support in proportion to their load.
-        let err = attitude_error(creature, data, p.heading, self.pitch_d);
-        let rate = trunk_rate(creature, data);
-        let (pkp, pkv) = s.torsional_gains(p.posture_kp, p.posture_kv);
-        let posture = trunk_torque(err, rate, pkp, pkv);
-        let (ypkp, ypkv) = s.torsional_gains(p.yaw_kp, p.yaw_kv);
-        let yaw = -err.y * ypkp - rate.y * ypkv;
-        let servoing = |s: &GallopLeg| {
-            matches!(
-                s.phase,
-                Phase::Compression | Phase::Thrust | Phase::Unloading
-            )
-        };
-        let load = [0, 1].map(|i| {
-            if servoing(&self.legs[i]) {
-                input.contacts.get(i).map_or(0.0, |c| c.force.y.max(0.0)) + 1e-6
-            } else {
-                0.0
-            }
-        });
-        let total_load = load[0] + load[1];
-
         let time = input.time;
         let step = p.leg_rate_mps * s.velocity() * input.dt;
         let extend = p.lead_extend_mps * s.velocity() * input.dt;
@@ -628,20 +605,62 @@ impl Controller for BipedGallop {
                     }
                     drives[leg.hip[2]].servo(ykp, ykv, 0.0);
                 }
-                Phase::Compression | Phase::Thrust | Phase::Unloading => {
-                    let share = if total_load > 0.0 {
-                        load[i] / total_load
-                    } else {
-                        0.0
-                    };
-                    let roll_q = data.q[leg.hip[0]];
-                    through_hip(drives, &leg.hip, roll_q, trunk_rot, posture * share, max);
-                    // The leg turns on a tiny inertia: only a torque the
-                    // loaded foot's torsional grip can hold.
-                    let grip = p.max_yaw_torque * s.torque() * share;
-                    drives[leg.hip[2]].torque((-yaw * share).clamp(-grip, grip));
-                }
+                // Eq. 4: [`Controller::servo`], every integration step.
+                Phase::Compression | Phase::Thrust | Phase::Unloading => {}
             }
+        }
+    }
+
+    /// Eq. 4 on pitch and roll (and a yaw servo): the torque the trunk
+    /// needs, shared by the legs in support in proportion to their load.
+    fn servo(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
+        let creature = input.creature;
+        let servoing = |s: &GallopLeg| {
+            matches!(
+                s.phase,
+                Phase::Compression | Phase::Thrust | Phase::Unloading
+            )
+        };
+        if creature.legs.len() < 2
+            || creature.legs.iter().any(|g| g.hip.len() < 3)
+            || !self.legs.iter().any(servoing)
+        {
+            return;
+        }
+        let p = self.params;
+        let s = self.scale;
+        let data = input.data;
+        let trunk_rot = data.world[creature.trunk].rot;
+        let max = p.max_hip_torque * s.torque();
+        let err = attitude_error(creature, data, p.heading, self.pitch_d);
+        let rate = trunk_rate(creature, data);
+        let (pkp, pkv) = s.torsional_gains(p.posture_kp, p.posture_kv);
+        let posture = trunk_torque(err, rate, pkp, pkv);
+        let (ypkp, ypkv) = s.torsional_gains(p.yaw_kp, p.yaw_kv);
+        let yaw = -err.y * ypkp - rate.y * ypkv;
+        let load = [0, 1].map(|i| {
+            if servoing(&self.legs[i]) {
+                input.contacts.get(i).map_or(0.0, |c| c.force.y.max(0.0)) + 1e-6
+            } else {
+                0.0
+            }
+        });
+        let total_load = load[0] + load[1];
+        for (i, leg) in creature.legs.iter().enumerate().take(2) {
+            if !servoing(&self.legs[i]) {
+                continue;
+            }
+            let share = if total_load > 0.0 {
+                load[i] / total_load
+            } else {
+                0.0
+            };
+            let roll_q = data.q[leg.hip[0]];
+            through_hip(drives, &leg.hip, roll_q, trunk_rot, posture * share, max);
+            // The leg turns on a tiny inertia: only a torque the loaded
+            // foot's torsional grip can hold.
+            let grip = p.max_yaw_torque * s.torque() * share;
+            drives[leg.hip[2]].torque((-yaw * share).clamp(-grip, grip));
         }
     }
 }

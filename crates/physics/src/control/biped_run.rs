@@ -265,6 +265,24 @@ impl Controller for BipedRun {
         Some(self.params.hop_height_m)
     }
 
+    /// Eq. 4 through the active hip while its foot is loaded ("vertical
+    /// loading on the feet keeps the leg from slipping when the torque is
+    /// applied"); a foot that left the ground between control calls goes
+    /// limp until the state machine sees the lift-off.
+    fn servo(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
+        let touching = input.contacts[self.active].touching;
+        let landed = self.phase == Phase::Flight && self.descending && touching;
+        if self.posture_on() && touching {
+            self.posture(input, drives);
+        } else if landed || self.posture_on() {
+            // Landed, or lifted off, since the last control call: Figure
+            // 4's zero hip torque until the state machine sees it.
+            let p = &self.params;
+            let (ykp, ykv) = self.scale.torsional_gains(p.leg_yaw_kp, p.leg_yaw_kv);
+            zero_hip(drives, &input.creature.legs[self.active].hip, ykp, ykv);
+        }
+    }
+
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         self.advance_phase(input);
         let p = self.params;
@@ -320,28 +338,50 @@ impl Controller for BipedRun {
             // Figure 4: "zero active hip torque" on landing and unloading.
             Phase::Loading => zero_hip(drives, &active.hip, ykp, ykv),
             Phase::Unloading if !p.unloading_posture => zero_hip(drives, &active.hip, ykp, ykv),
-            Phase::Compression | Phase::Thrust | Phase::Unloading => {
-                // Eq. 4 on pitch and roll: the torque the trunk needs, applied
-                // by the hip joints as its reaction.
-                let err = attitude_error(creature, data, p.heading, 0.0);
-                let rate = trunk_rate(creature, data);
-                let (pkp, pkv) = s.torsional_gains(p.posture_kp, p.posture_kv);
-                let torque = trunk_torque(err, rate, pkp, pkv);
-                let roll_q = data.q[active.hip[0]];
-                through_hip(drives, &active.hip, roll_q, trunk_rot, torque, max);
-                // The leg turns on a tiny inertia: only a torque the loaded
-                // foot's torsional grip can hold.
-                let (ypkp, ypkv) = s.torsional_gains(p.yaw_kp, p.yaw_kv);
-                let yaw = -err.y * ypkp - rate.y * ypkv;
-                let grip = p.max_yaw_torque * s.torque();
-                drives[active.hip[2]].torque((-yaw).clamp(-grip, grip));
-            }
+            // Eq. 4: [`Controller::servo`], every integration step.
+            Phase::Compression | Phase::Thrust | Phase::Unloading => {}
         }
         // The idle leg mirrors the active one, so the two legs' swings react
         // on the trunk with opposite torques and cancel.
         let mirror = [-data.q[active.hip[0]], -data.q[active.hip[1]]];
         set_hip(drives, &idle.hip[..2], mirror, kp, kv, max);
         drives[idle.hip[2]].servo(ykp, ykv, 0.0);
+    }
+}
+
+impl BipedRun {
+    /// Whether eq. 4's posture servo acts now: in Compression and Thrust,
+    /// and in Unloading with the lab's `unloading_posture`.
+    fn posture_on(&self) -> bool {
+        match self.phase {
+            Phase::Compression | Phase::Thrust => true,
+            Phase::Unloading => self.params.unloading_posture,
+            Phase::Flight | Phase::Loading => false,
+        }
+    }
+
+    /// Eq. 4 on pitch and roll: the torque the trunk needs, applied by the
+    /// active hip's joints as its reaction; yaw by the foot's grip.
+    fn posture(&self, input: &ControlInput<'_>, drives: &mut [Drive]) {
+        let p = &self.params;
+        let s = self.scale;
+        let creature = input.creature;
+        let data = input.data;
+        let active = &creature.legs[self.active];
+        let trunk_rot = data.world[creature.trunk].rot;
+        let max = p.max_hip_torque * s.torque();
+        let err = attitude_error(creature, data, p.heading, 0.0);
+        let rate = trunk_rate(creature, data);
+        let (pkp, pkv) = s.torsional_gains(p.posture_kp, p.posture_kv);
+        let torque = trunk_torque(err, rate, pkp, pkv);
+        let roll_q = data.q[active.hip[0]];
+        through_hip(drives, &active.hip, roll_q, trunk_rot, torque, max);
+        // The leg turns on a tiny inertia: only a torque the loaded foot's
+        // torsional grip can hold.
+        let (ypkp, ypkv) = s.torsional_gains(p.yaw_kp, p.yaw_kv);
+        let yaw = -err.y * ypkp - rate.y * ypkv;
+        let grip = p.max_yaw_torque * s.torque();
+        drives[active.hip[2]].torque((-yaw).clamp(-grip, grip));
     }
 }
 

@@ -79,6 +79,14 @@ impl Controller for GaitController {
         self.inner_mut().control(input, drives);
     }
 
+    fn servo(
+        &mut self,
+        input: &crate::world::sim::ControlInput<'_>,
+        drives: &mut [crate::world::sim::Drive],
+    ) {
+        self.inner_mut().servo(input, drives);
+    }
+
     fn phase_name(&self) -> &'static str {
         self.inner().phase_name()
     }

@@ -310,6 +310,8 @@ pub struct KangarooHop {
     stride_m: f64,
     /// Time and forward centre of mass at the last touchdown, for a stride's mean speed.
     last_touchdown: Option<(f64, f64)>,
+    /// The knee whose posture servo acts in this stance, if any.
+    knee_servo: Option<usize>,
 }
 
 impl KangarooHop {
@@ -335,6 +337,7 @@ impl KangarooHop {
             flight_start: 0.0,
             stride_m: 0.0,
             last_touchdown: None,
+            knee_servo: None,
         }
     }
 
@@ -572,6 +575,26 @@ impl Controller for KangarooHop {
         Some(self.params.hop_rise_m)
     }
 
+    /// The knee in stance: posture (eq. 4) in compression and thrust, the
+    /// reaction of the torque the trunk needs; limp in the other states.
+    fn servo(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
+        let Some(knee) = self.knee_servo else {
+            return;
+        };
+        let p = &self.params;
+        let s = Scale::new(input.creature.scale);
+        let posture = matches!(self.phase, Phase::Compression | Phase::Thrust) || p.posture_always;
+        let torque = if posture {
+            let (pitch, pitch_rate) = (input.data.q[2], input.data.qd[2]);
+            let (kp, kv) = s.torsional_gains(p.posture_kp, p.posture_kv);
+            -axis_torque(pitch - p.pitch_rad, pitch_rate, kp, kv)
+        } else {
+            0.0
+        };
+        let max = p.max_torque * s.torque();
+        drives[knee].torque(torque.clamp(-max, max));
+    }
+
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         let creature = input.creature;
         let data = input.data;
@@ -638,18 +661,10 @@ impl Controller for KangarooHop {
             };
             drives[hip].servo(p.stance_hip_kp * t4, p.stance_hip_kv * t45, a1 - pitch);
             drives[hip].spring.max_force = max;
-            // Knee: posture (eq. 4) in compression and thrust.
-            let posture =
-                matches!(self.phase, Phase::Compression | Phase::Thrust) || p.posture_always;
-            // The knee exerts the reaction of the torque the trunk needs.
-            let torque = if posture {
-                let (kp, kv) = s.torsional_gains(p.posture_kp, p.posture_kv);
-                -axis_torque(pitch - p.pitch_rad, pitch_rate, kp, kv)
-            } else {
-                0.0
-            };
-            drives[knee].torque(torque.clamp(-max, max));
+            // Knee: posture (eq. 4), every integration step ([`Controller::servo`]).
+            self.knee_servo = Some(knee);
         } else {
+            self.knee_servo = None;
             // Flight: place the toe for landing by eq. 3.
             let speed = com_v.z;
             let desired = self.speed_command_mps + self.speed_trim_mps;

@@ -17,6 +17,7 @@ pub mod hip_servo;
 pub mod hop_height;
 pub mod kangaroo_hop;
 pub mod leg_spring;
+pub mod pair_posture;
 pub mod parameters;
 pub mod phase;
 pub mod placement;

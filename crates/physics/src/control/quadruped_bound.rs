@@ -34,13 +34,13 @@
 use glam::DVec3;
 
 use super::additions::trim_gain;
-use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
+use super::attitude::{com_velocity, heading_forward};
 use super::hip_servo::HipServo;
 use super::hop_height::{flight_for_height, height_for_flight};
 use super::leg_spring::LegSpring;
+use super::pair_posture::PairPosture;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
-use super::posture::{StanceLeg, StanceShare, axis_torque};
 use super::scale::Scale;
 use super::start::{first_leg_m, level_flight};
 use crate::creatures::PhysicalCreature;
@@ -277,6 +277,8 @@ pub struct QuadrupedBound {
     /// Time and forward position of the centre of mass at the last rear touchdown.
     stride_start: Option<(f64, f64)>,
     hip_target: [[f64; 2]; 4],
+    /// Eq. 4's servo as the last control call set it.
+    posture: PairPosture,
     /// Each leg's hip-to-foot length at full extension (m, scaled).
     leg_m: [f64; 4],
     scale: Scale,
@@ -312,6 +314,7 @@ impl QuadrupedBound {
             stride_flight_s: 0.0,
             stride_start: None,
             hip_target: [[0.0; 2]; 4],
+            posture: PairPosture::default(),
             leg_m: [0, 1, 2, 3].map(|i| lengths.get(i).copied().unwrap_or(0.0)),
             scale: Scale::new(scale),
         }
@@ -555,7 +558,6 @@ impl Controller for QuadrupedBound {
         let l = s.length();
         let p = self.params;
         let fwd = heading_forward(p.heading);
-        let lateral = DVec3::Y.cross(fwd);
         let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
         self.advance(input, com.dot(fwd));
 
@@ -567,16 +569,23 @@ impl Controller for QuadrupedBound {
         let short = p.short_rest_m * l;
         let gallop = p.style == BoundStyle::Gallop;
 
-        // Posture torques wanted on the trunk in stance (eq. 4, weak on pitch).
-        let err = attitude_error(creature, data, p.heading, p.pitch_bias);
-        let rate = trunk_rate(creature, data);
+        // Posture (eq. 4, weak on pitch) in stance: the servo's set-up here,
+        // its torques every step ([`Controller::servo`]).
         let gains = |kp: f64, kv: f64| s.torsional_gains(kp, kv);
-        let (pkp, pkv) = gains(p.pitch_kp, p.pitch_kv);
-        let pitch_t = axis_torque(err.dot(lateral), rate.dot(lateral), pkp, pkv);
-        let (rkp, rkv) = gains(p.roll_kp, p.roll_kv);
-        let roll_t = axis_torque(err.dot(fwd), rate.dot(fwd), rkp, rkv);
-        let (ykp, ykv) = gains(p.yaw_kp, p.yaw_kv);
-        let yaw_t = axis_torque(err.y, rate.y, ykp, ykv);
+        let mut posture = PairPosture {
+            heading: p.heading,
+            pitch_d: p.pitch_bias,
+            gains: [
+                gains(p.pitch_kp, p.pitch_kv),
+                gains(p.roll_kp, p.roll_kv),
+                gains(p.yaw_kp, p.yaw_kv),
+            ],
+            max: p.max_hip_torque * s.torque(),
+            force_ratio: p.posture_force_ratio,
+            stiffness: p.leg_stiffness * s.stiffness(),
+            leg_m: self.leg_m,
+            ..PairPosture::default()
+        };
 
         let velocity = com_velocity(creature, data);
         let desired = fwd * (p.speed_mps * s.velocity() + self.speed_bias);
@@ -607,27 +616,13 @@ impl Controller for QuadrupedBound {
                 DVec3::ZERO
             };
             // Stance legs of the pair sharing the posture torque.
-            let mut n = 0.0;
-            let mut lever = 0.0;
             for (side, &i) in legs.iter().enumerate() {
-                if !in_flight
+                posture.sharing[i] = !in_flight
                     && pair.touched[side]
                     && input.contacts[i].touching
-                    && servoing(pair.phase)
-                {
-                    n += 1.0;
-                    let r = input.contacts[i].position - com;
-                    lever += r.x * r.x + r.z * r.z;
-                }
+                    && servoing(pair.phase);
             }
-            let yaw_c = if lever > 1e-6 { yaw_t / lever } else { 0.0 };
-            let share = StanceShare {
-                torque: lateral * pitch_t + fwd * roll_t,
-                legs: n,
-                yaw_per_m2: yaw_c,
-                max,
-                force_ratio: p.posture_force_ratio,
-            };
+            let sharing = legs.iter().any(|&i| posture.sharing[i]);
             for (side, &i) in legs.iter().enumerate() {
                 let leg = &creature.legs[i];
                 let reach = self.leg_m[i] + landing;
@@ -677,13 +672,9 @@ impl Controller for QuadrupedBound {
                     let dir = leg_direction(trunk_rot, foot - hip_world, reach);
                     let (roll, pitch) = gimbal_angles(dir);
                     servo.set(drives, &leg.hip, [roll, pitch], &mut self.hip_target[i]);
-                } else if touching && servoing(pair.phase) && n > 0.0 {
-                    let q = data.q[leg.spring];
-                    let spring_force = (p.leg_stiffness * s.stiffness() * (rest - q)).max(0.0);
-                    let foot = input.contacts[i].position;
-                    let stance =
-                        StanceLeg::new(leg, data, hip_world, foot, spring_force, self.leg_m[i]);
-                    share.apply(drives, trunk_rot, com, &stance);
+                } else if touching && servoing(pair.phase) && sharing {
+                    posture.applying[i] = true;
+                    posture.rest[i] = rest;
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 } else {
                     for (&j, prev) in leg.hip.iter().zip(self.hip_target[i].iter_mut()) {
@@ -693,5 +684,10 @@ impl Controller for QuadrupedBound {
                 }
             }
         }
+        self.posture = posture;
+    }
+
+    fn servo(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
+        self.posture.apply(input, &PAIRS, drives);
     }
 }

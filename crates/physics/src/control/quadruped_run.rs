@@ -16,15 +16,13 @@
 //! for the trot. Every parameter is given for the creature at scale 1 and
 //! scaled by its dynamic scale L (Table 1).
 
-use glam::DVec3;
-
-use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
+use super::attitude::{com_velocity, heading_forward};
 use super::hip_servo::HipServo;
 use super::hop_height::{flight_for_height, height_for_flight};
 use super::leg_spring::LegSpring;
+use super::pair_posture::PairPosture;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
-use super::posture::{StanceLeg, StanceShare, axis_torque};
 use super::scale::Scale;
 use super::start::{first_leg_m, level_flight};
 use crate::creatures::PhysicalCreature;
@@ -195,6 +193,8 @@ pub struct QuadrupedRun {
     stance_rest: [f64; 4],
     /// Each leg's hip servo target last call (rad), for the servo's rate feed-forward.
     hip_target: [[f64; 2]; 4],
+    /// Eq. 4's servo as the last control call set it.
+    posture: PairPosture,
     liftoff_time: f64,
     liftoff_pair: Option<usize>,
     /// Integral speed correction added to the desired speed (m/s).
@@ -227,6 +227,7 @@ impl QuadrupedRun {
             leg_touchdown: [0.0; 4],
             stance_rest: [params.trot.landing_rest_m * scale; 4],
             hip_target: [[0.0; 2]; 4],
+            posture: PairPosture::default(),
             liftoff_time: 0.0,
             liftoff_pair: None,
             speed_bias: 0.0,
@@ -494,46 +495,33 @@ impl Controller for QuadrupedRun {
             self.stance_s[self.active],
             t.placement_gain_s * s.time(),
         );
-        // Posture (eq. 4) and heading torques wanted on the trunk.
+        // Posture (eq. 4) and heading in stance: the servo's set-up here, its
+        // torques every step ([`Controller::servo`]).
         let swing = if self.active == 0 {
             t.pitch_swing
         } else {
             -t.pitch_swing
         };
-        let err = attitude_error(creature, data, p.heading, t.pitch_d + swing);
-        let rate = trunk_rate(creature, data);
-        let lateral = DVec3::Y.cross(fwd);
         let gains = |kp: f64, kv: f64| s.torsional_gains(kp, kv);
-        let (pkp, pkv) = gains(t.pitch_kp, t.pitch_kv);
-        let pitch_t = axis_torque(err.dot(lateral), rate.dot(lateral), pkp, pkv);
-        let (rkp, rkv) = gains(t.roll_kp, t.roll_kv);
-        let roll_t = axis_torque(err.dot(fwd), rate.dot(fwd), rkp, rkv);
-        let (ykp, ykv) = gains(p.yaw_kp, p.yaw_kv);
-        let yaw_t = axis_torque(err.y, rate.y, ykp, ykv);
-        let torque = lateral * pitch_t + fwd * roll_t;
         let servoing = |ph: Phase| matches!(ph, Phase::Compression | Phase::Thrust);
-        let n = pair
-            .iter()
-            .filter(|&&i| !self.done[i] && servoing(self.leg_phase[i]))
-            .count()
-            .max(1) as f64;
-        // Yaw by horizontal foot forces about the centre of mass: G = c·(ŷ × r).
-        let lever: f64 = pair
-            .iter()
-            .filter(|&&i| !self.done[i] && servoing(self.leg_phase[i]))
-            .map(|&i| {
-                let r = input.contacts[i].position - com;
-                r.x * r.x + r.z * r.z
-            })
-            .sum();
-        let c = if lever > 1e-6 { yaw_t / lever } else { 0.0 };
-        let share = StanceShare {
-            torque,
-            legs: n,
-            yaw_per_m2: c,
+        let mut posture = PairPosture {
+            heading: p.heading,
+            pitch_d: t.pitch_d + swing,
+            gains: [
+                gains(t.pitch_kp, t.pitch_kv),
+                gains(t.roll_kp, t.roll_kv),
+                gains(p.yaw_kp, p.yaw_kv),
+            ],
             max,
             force_ratio: t.posture_force_ratio,
+            stiffness: t.leg_stiffness * s.stiffness(),
+            leg_m: self.leg_m,
+            at_least_one: true,
+            ..PairPosture::default()
         };
+        for &i in &pair {
+            posture.sharing[i] = !self.done[i] && servoing(self.leg_phase[i]);
+        }
         let mut active_pitch = 0.0;
         for &i in &pair {
             let leg = &creature.legs[i];
@@ -565,13 +553,8 @@ impl Controller for QuadrupedRun {
                     }
                 }
                 Phase::Compression | Phase::Thrust => {
-                    let q = data.q[leg.spring];
-                    let spring_force =
-                        (t.leg_stiffness * s.stiffness() * (self.stance_rest[i] - q)).max(0.0);
-                    let foot = input.contacts[i].position;
-                    let stance =
-                        StanceLeg::new(leg, data, hip_world, foot, spring_force, self.leg_m[i]);
-                    share.apply(drives, trunk_rot, com, &stance);
+                    posture.applying[i] = true;
+                    posture.rest[i] = self.stance_rest[i];
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 }
             }
@@ -586,5 +569,10 @@ impl Controller for QuadrupedRun {
                 &mut self.hip_target[i],
             );
         }
+        self.posture = posture;
+    }
+
+    fn servo(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
+        self.posture.apply(input, &TROT_PAIRS, drives);
     }
 }

@@ -183,6 +183,9 @@ pub struct PresetMeta {
     pub gait: String,
     /// Desired speed (m/s).
     pub speed_mps: f64,
+    /// Run the controller every this many 0.4 ms steps: 5 (2 ms, the
+    /// paper's "few ms") where the creature's gaits hold at that interval.
+    pub control_every: u32,
 }
 
 fn mass_spec(b: &Body) -> MassSpec {
@@ -276,7 +279,7 @@ pub fn to_preset(creature: &PhysicalCreature, meta: &PresetMeta) -> Preset {
         hop_height_m: None,
         scale: 1.0,
         dt_s: 0.0004,
-        control_every: 1,
+        control_every: meta.control_every,
         ground: None,
         controller: std::collections::BTreeMap::new(),
         obstacles: Vec::new(),

@@ -87,6 +87,12 @@ pub trait Controller {
     /// Update `drives` (one per joint coordinate).
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]);
 
+    /// The servos the paper models with the actuators (eq. 4's posture
+    /// servo), run every integration step after [`Controller::control`]
+    /// with the set points `control` left: between control intervals they
+    /// keep acting on the fresh state. Default: none.
+    fn servo(&mut self, _input: &ControlInput<'_>, _drives: &mut [Drive]) {}
+
     /// The state machine's current state, for people and plots.
     fn phase_name(&self) -> &'static str {
         ""
@@ -261,16 +267,17 @@ impl Sim {
             &mut self.contacts,
         );
         let every = u64::from(self.options.control_every.max(1));
+        let input = ControlInput {
+            creature: &self.creature,
+            data: &self.data,
+            contacts: &self.contacts,
+            time: self.time,
+            dt: dt * every as f64,
+        };
         if self.steps.is_multiple_of(every) {
-            let input = ControlInput {
-                creature: &self.creature,
-                data: &self.data,
-                contacts: &self.contacts,
-                time: self.time,
-                dt: dt * every as f64,
-            };
             controller.control(&input, &mut self.drives);
         }
+        controller.servo(&input, &mut self.drives);
         for (k, drive) in self.drives.iter().enumerate() {
             self.data.tau[k] = drive.force(self.data.q[k], self.data.qd[k]);
         }
