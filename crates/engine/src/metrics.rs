@@ -506,7 +506,7 @@ impl PhysicsRunMetrics {
             peak_vertical_force_bw: s.peak_vertical_force_bw,
             speed_swing_mps: s.speed_swing_mps,
             friction_needed_max: s.friction_needed_max,
-            lab_additions: driver.lab_additions(),
+            lab_additions: driver.lab_additions().collect(),
             table2: {
                 let names: Vec<&str> = sim.creature.legs.iter().map(|l| l.name.as_str()).collect();
                 gaitlab_physics::engine::table2::compare(&s, driver.gait(), &names)

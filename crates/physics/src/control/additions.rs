@@ -66,23 +66,16 @@ impl Additions {
         }
     }
 
-    /// The additions on, by their preset names.
-    #[must_use]
-    pub fn names(&self) -> Vec<&'static str> {
-        let mut out = Vec::new();
-        if self.speed_trim {
-            out.push("speed_trim");
-        }
-        if self.unloading_posture {
-            out.push("unloading_posture");
-        }
-        if self.speed_ramp {
-            out.push("speed_ramp");
-        }
-        if self.tail_feedback {
-            out.push("tail_feedback");
-        }
-        out
+    /// The additions on, by their preset names (no allocation: the app's
+    /// panel asks every frame).
+    pub fn names(&self) -> impl Iterator<Item = &'static str> + Clone + use<> {
+        let on = [
+            (self.speed_trim, "speed_trim"),
+            (self.unloading_posture, "unloading_posture"),
+            (self.speed_ramp, "speed_ramp"),
+            (self.tail_feedback, "tail_feedback"),
+        ];
+        on.into_iter().filter(|&(on, _)| on).map(|(_, name)| name)
     }
 }
 
@@ -104,24 +97,34 @@ mod tests {
         let new = Additions::for_gait(Some(&LabAdditions::default()), "run");
         // The run drops the trim; Unloading's posture servo stays on until
         // the biped runs without it (docs/physics.md, "The lab's additions").
-        assert!(!new.legacy && new.names() == ["unloading_posture"]);
+        assert!(!new.legacy && new.names().eq(["unloading_posture"]));
         let paper = LabAdditions {
             unloading_posture: Some(false),
             ..LabAdditions::default()
         };
-        assert!(Additions::for_gait(Some(&paper), "run").names().is_empty());
+        assert!(
+            Additions::for_gait(Some(&paper), "run")
+                .names()
+                .next()
+                .is_none()
+        );
         let gallop = Additions::for_gait(Some(&LabAdditions::default()), "gallop");
-        assert_eq!(gallop.names(), ["speed_trim"]);
+        assert!(gallop.names().eq(["speed_trim"]));
         let asked = LabAdditions {
             speed_trim: Some(true),
             ..LabAdditions::default()
         };
         let run = Additions::for_gait(Some(&asked), "run");
-        assert_eq!(run.names(), ["speed_trim", "unloading_posture"]);
+        assert!(run.names().eq(["speed_trim", "unloading_posture"]));
         // The trot has no trim to turn on.
-        assert!(Additions::for_gait(Some(&asked), "trot").names().is_empty());
+        assert!(
+            Additions::for_gait(Some(&asked), "trot")
+                .names()
+                .next()
+                .is_none()
+        );
         // The kangaroo: its trim off, its ramp and tail feedback on.
         let hop = Additions::for_gait(Some(&LabAdditions::default()), "hop");
-        assert_eq!(hop.names(), ["speed_ramp", "tail_feedback"]);
+        assert!(hop.names().eq(["speed_ramp", "tail_feedback"]));
     }
 }

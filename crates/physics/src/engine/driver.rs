@@ -10,6 +10,7 @@ use gaitlab_core::preset::{Creature as PresetCreature, PhysicsParams, PresetErro
 use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
 
+use crate::control::additions::Additions;
 use crate::control::gait_controller::{GaitController, gait_names, make_controller, start_state};
 use crate::control::kangaroo_hop::kangaroo_ground;
 use crate::creatures::Species;
@@ -31,6 +32,8 @@ pub struct PhysicsDriver {
     start_root: DVec3,
     params: PhysicsParams,
     gait: String,
+    /// The lab's additions resolved for `gait`.
+    additions: Additions,
     sim: Sim,
     start: Sim,
     controller: GaitController,
@@ -162,6 +165,7 @@ impl PhysicsDriver {
             start_root,
 
             recorder: GaitRecorder::new(legs, params.speed_mps * l.sqrt(), 0.0, 3.0 * l.sqrt()),
+            additions: Additions::for_gait(params.lab_additions.as_ref(), &gait),
             params,
             gait,
             start: sim.clone(),
@@ -226,16 +230,11 @@ impl PhysicsDriver {
         &self.params
     }
 
-    /// The lab's additions the running gait's controller uses, by their
-    /// preset names (`scenario.physics.lab_additions`); empty when it runs
-    /// the paper's laws only.
-    #[must_use]
-    pub fn lab_additions(&self) -> Vec<&'static str> {
-        crate::control::additions::Additions::for_gait(
-            self.params.lab_additions.as_ref(),
-            &self.gait,
-        )
-        .names()
+    /// The lab's additions the gait's controller uses, by their preset
+    /// names (`scenario.physics.lab_additions`), resolved when the gait was
+    /// chosen; none when it runs the paper's laws only.
+    pub fn lab_additions(&self) -> impl Iterator<Item = &'static str> + Clone + use<> {
+        self.additions.names()
     }
 
     /// The state machine's state.
@@ -458,6 +457,7 @@ impl PhysicsDriver {
             // state every controller starts from.
             (_, next) => self.pending = Some(next),
         }
+        self.additions = Additions::for_gait(params.lab_additions.as_ref(), gait);
         self.params = params;
         self.gait = gait.to_owned();
         Ok(())

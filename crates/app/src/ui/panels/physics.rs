@@ -141,14 +141,17 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 }
             });
             ui.label(format!("state: {phase} · t = {time:.2} s · resets: {resets}"));
-            let (text, hover) = if additions.is_empty() {
+            let (text, hover) = if additions.clone().next().is_none() {
                 (
                     "Lab's additions: none".to_owned(),
                     "This gait runs without any of the lab's named additions (docs/physics.md, \"The lab's additions\", lists them and what else differs from the paper)",
                 )
             } else {
                 (
-                    format!("Lab's additions (not in the paper): {}", additions.join(", ").replace('_', " ")),
+                    format!(
+                        "Lab's additions (not in the paper): {}",
+                        additions.collect::<Vec<_>>().join(", ").replace('_', " ")
+                    ),
                     "What gaitlab adds to the paper's control for this gait; set them in the preset's scenario.physics.lab_additions (docs/physics.md, \"The lab's additions\")",
                 )
             };
