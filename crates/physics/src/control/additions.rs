@@ -79,13 +79,6 @@ impl Additions {
     }
 }
 
-/// The integral speed trim's gain when the trim is `on`, else 0: the speed
-/// correction then stays exactly zero.
-#[must_use]
-pub fn trim_gain(on: bool, gain: f64) -> f64 {
-    if on { gain } else { 0.0 }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

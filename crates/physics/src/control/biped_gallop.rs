@@ -22,7 +22,6 @@
 
 use glam::DVec3;
 
-use super::additions::trim_gain;
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
 use super::hip_servo::set_hip;
 use super::leg_spring::LegSpring;
@@ -30,6 +29,7 @@ use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
 use super::posture::{through_hip, trunk_torque};
 use super::scale::Scale;
+use super::speed_trim::SpeedTrim;
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
 
@@ -260,10 +260,8 @@ pub struct BipedGallop {
     /// Desired trunk pitch in stance (rad), eq. 4's ϕ_d: set against the
     /// pitch the legs' swing in flight produces.
     pitch_d: f64,
-    /// Accumulated speed correction added to the desired speed (m/s).
-    speed_bias: f64,
-    /// Where the centre of mass was at the last stride's start (m) and when (s).
-    last_stride: (DVec3, f64),
+    /// The lab's speed trim (zero unless `speed_trim`), per stride.
+    trim: SpeedTrim,
     /// Each leg's hip-to-foot length at full extension (m, scaled).
     leg_m: [f64; 2],
     /// Table 1's factors for the creature's L.
@@ -297,8 +295,7 @@ impl BipedGallop {
             descending: true,
             liftoff_pitch: f64::NAN,
             pitch_d: 0.0,
-            speed_bias: 0.0,
-            last_stride: (DVec3::ZERO, f64::NAN),
+            trim: SpeedTrim::default(),
             leg_m: [0, 1].map(|i| lengths.get(i).copied().unwrap_or(0.0)),
             scale: Scale::new(scale),
         }
@@ -431,16 +428,17 @@ impl BipedGallop {
             self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
         }
         let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
-        let (prev, t_prev) = self.last_stride;
-        if t_prev.is_finite() && input.time > t_prev {
-            let along = heading_forward(p.heading).dot(com - prev) / (input.time - t_prev);
-            let error = p.speed_mps * self.scale.velocity() - along;
-            let cap = 0.5 * p.speed_mps.abs().max(0.5) * self.scale.velocity();
-            self.speed_bias = (self.speed_bias
-                + trim_gain(p.speed_trim, p.speed_integral_gain) * error)
-                .clamp(-cap, cap);
-        }
-        self.last_stride = (com, input.time);
+        let v = self.scale.velocity();
+        self.trim.stride(
+            p.speed_trim,
+            p.speed_integral_gain,
+            p.speed_mps * v,
+            0.5 * p.speed_mps.abs().max(0.5) * v,
+            input.time,
+            com,
+            heading_forward(p.heading),
+            0.0,
+        );
         self.apex_height = f64::NEG_INFINITY;
         self.descending = false;
     }
@@ -535,7 +533,7 @@ impl Controller for BipedGallop {
         let velocity = com_velocity(creature, data);
         let forward = heading_forward(p.heading);
         let s = self.scale;
-        let desired = forward * (p.speed_mps * s.velocity() + self.speed_bias);
+        let desired = forward * (p.speed_mps * s.velocity() + self.trim.bias_mps);
         let spring = LegSpring::new(p.leg_stiffness, p.leg_damping, p.leg_travel_m);
 
         let com = crate::dynamics::energy::center_of_mass(&creature.model, data);

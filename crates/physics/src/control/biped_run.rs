@@ -6,7 +6,6 @@
 
 use glam::DVec3;
 
-use super::additions::trim_gain;
 use super::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
 use super::hip_servo::set_hip;
 use super::leg_spring::{LegSpring, toward};
@@ -14,6 +13,7 @@ use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, leg_direction};
 use super::posture::{through_hip, trunk_torque};
 use super::scale::Scale;
+use super::speed_trim::SpeedTrim;
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
 
@@ -145,10 +145,9 @@ pub struct BipedRun {
     apex_height: f64,
     thrust: f64,
     descending: bool,
-    /// Accumulated speed correction added to the desired speed (m/s).
-    speed_bias: f64,
-    /// Where the centre of mass was at the last lift-off (m) and when (s).
-    last_liftoff: (glam::DVec3, f64),
+    /// The lab's speed trim (zero unless `speed_trim`), measured from one
+    /// lift-off to the next.
+    trim: SpeedTrim,
     /// Each leg's rest length as it moves toward its target (m).
     rest: [f64; 2],
     /// Each leg's hip-to-foot length at full extension (m, scaled).
@@ -175,8 +174,7 @@ impl BipedRun {
             apex_height: f64::NEG_INFINITY,
             thrust: params.thrust_m * scale,
             descending: true,
-            speed_bias: 0.0,
-            last_liftoff: (DVec3::ZERO, f64::NAN),
+            trim: SpeedTrim::default(),
             rest: [params.landing_rest_m * scale, params.idle_rest_m * scale],
             leg_m,
             scale: Scale::new(scale),
@@ -222,16 +220,17 @@ impl BipedRun {
             self.liftoff_height = trunk_y;
             // Speed over the last step against the desired speed.
             let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
-            let (prev, t_prev) = self.last_liftoff;
-            if t_prev.is_finite() && input.time > t_prev {
-                let along = heading_forward(p.heading).dot(com - prev) / (input.time - t_prev);
-                let error = p.speed_mps * self.scale.velocity() - along;
-                let cap = 0.5 * p.speed_mps.abs().max(0.5) * self.scale.velocity();
-                self.speed_bias = (self.speed_bias
-                    + trim_gain(p.speed_trim, p.speed_integral_gain) * error)
-                    .clamp(-cap, cap);
-            }
-            self.last_liftoff = (com, input.time);
+            let v = self.scale.velocity();
+            self.trim.stride(
+                p.speed_trim,
+                p.speed_integral_gain,
+                p.speed_mps * v,
+                0.5 * p.speed_mps.abs().max(0.5) * v,
+                input.time,
+                com,
+                heading_forward(p.heading),
+                0.0,
+            );
             self.apex_height = f64::NEG_INFINITY;
             self.active = 1 - self.active;
             self.phase = Phase::Flight;
@@ -292,7 +291,8 @@ impl Controller for BipedRun {
         let data = input.data;
         let trunk_rot = data.world[creature.trunk].rot;
         let (com, velocity) = com_state(creature, data);
-        let desired = heading_forward(p.heading) * (p.speed_mps * s.velocity() + self.speed_bias);
+        let desired =
+            heading_forward(p.heading) * (p.speed_mps * s.velocity() + self.trim.bias_mps);
         let spring = LegSpring::new(p.leg_stiffness, p.leg_damping, p.leg_travel_m);
         // Leg lengths: the spring of eq. 1 with a programmable rest.
         let step = p.leg_rate_mps * s.velocity() * input.dt;

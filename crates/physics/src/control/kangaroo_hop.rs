@@ -35,11 +35,11 @@
 use gaitlab_core::portable::Portable;
 use glam::{DVec2, DVec3};
 
-use super::additions::trim_gain;
 use super::attitude::com_velocity;
 use super::phase::Phase;
 use super::posture::axis_torque;
 use super::scale::Scale;
+use super::speed_trim::{SpeedTrim, along_z};
 use crate::creatures::PhysicalCreature;
 use crate::dynamics::data::Data;
 use crate::dynamics::model::GRAVITY_MPS2;
@@ -296,8 +296,9 @@ pub struct KangarooHop {
     pub apex_correction_m: f64,
     /// Commanded forward speed (m/s, scaled), ramping toward the desired one.
     pub speed_command_mps: f64,
-    /// Integral speed correction added to the commanded speed in eq. 3 (m/s, scaled).
-    pub speed_trim_mps: f64,
+    /// The lab's speed trim added to the commanded speed in eq. 3 (zero
+    /// unless `speed_trim`), from one touchdown to the next.
+    pub trim: SpeedTrim,
     /// Whether a jump is still to come.
     jump_pending: bool,
     started: bool,
@@ -308,8 +309,6 @@ pub struct KangarooHop {
     target_apex_y: f64,
     flight_start: f64,
     stride_m: f64,
-    /// Time and forward centre of mass at the last touchdown, for a stride's mean speed.
-    last_touchdown: Option<(f64, f64)>,
     /// The knee whose posture servo acts in this stance, if any.
     knee_servo: Option<usize>,
 }
@@ -326,7 +325,7 @@ impl KangarooHop {
             ankle_rest: params.ankle_rest_rad,
             apex_correction_m: 0.0,
             speed_command_mps: f64::NAN,
-            speed_trim_mps: 0.0,
+            trim: SpeedTrim::default(),
             jump_pending: params.jump_at_m.is_some(),
             started: false,
             touchdown_time: 0.0,
@@ -336,7 +335,6 @@ impl KangarooHop {
             target_apex_y: f64::NAN,
             flight_start: 0.0,
             stride_m: 0.0,
-            last_touchdown: None,
             knee_servo: None,
         }
     }
@@ -441,17 +439,15 @@ impl KangarooHop {
     fn touch_down(&mut self, toe_z: f64, t: f64, com_z: f64, l: f64) {
         let p = self.params;
         // Integral speed correction from the stride just finished.
-        if let Some((t0, z0)) = self.last_touchdown
-            && self.jump == JumpStage::None
-            && t > t0
+        if self.jump == JumpStage::None
+            && let Some(mean) = self.trim.mean_since(t, along_z(com_z), DVec3::Z, 0.0)
         {
-            let mean = (com_z - z0) / (t - t0);
             let limit = p.speed_integral_max_mps * l.sqrt();
-            self.speed_trim_mps = (self.speed_trim_mps
-                + trim_gain(p.speed_trim, p.speed_integral_gain) * (self.speed_command_mps - mean))
-                .clamp(-limit, limit);
+            let error = self.speed_command_mps - mean;
+            self.trim
+                .correct(p.speed_trim, p.speed_integral_gain, error, limit);
         }
-        self.last_touchdown = Some((t, com_z));
+        self.trim.mark(t, along_z(com_z));
         if self.touchdown_toe != 0.0 {
             let stride = toe_z - self.touchdown_toe;
             if stride > 0.0 {
@@ -667,7 +663,7 @@ impl Controller for KangarooHop {
             self.knee_servo = None;
             // Flight: place the toe for landing by eq. 3.
             let speed = com_v.z;
-            let desired = self.speed_command_mps + self.speed_trim_mps;
+            let desired = self.speed_command_mps + self.trim.bias_mps;
             let x_fh =
                 speed * self.stance_s / 2.0 + p.placement_gain_s * l.sqrt() * (speed - desired);
             let rising = (com_v.y / l.sqrt()).clamp(0.0, 1.0);

@@ -25,6 +25,7 @@ pub mod posture;
 pub mod quadruped_bound;
 pub mod quadruped_run;
 pub mod scale;
+pub mod speed_trim;
 pub mod start;
 
 pub use phase::Phase;

@@ -33,7 +33,6 @@
 
 use glam::DVec3;
 
-use super::additions::trim_gain;
 use super::attitude::{com_velocity, heading_forward};
 use super::hip_servo::HipServo;
 use super::hop_height::{flight_for_height, height_for_flight};
@@ -42,6 +41,7 @@ use super::pair_posture::PairPosture;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
 use super::scale::Scale;
+use super::speed_trim::{SpeedTrim, along_z};
 use super::start::{first_leg_m, level_flight};
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive, Sim};
@@ -265,8 +265,9 @@ pub struct QuadrupedBound {
     pub thrust: f64,
     /// Each pair's own thrust trim added to the common thrust (m).
     pub trim: [f64; 2],
-    /// Integral speed correction added to the desired speed (m/s).
-    pub speed_bias: f64,
+    /// The lab's speed trim added to the desired speed (zero unless
+    /// `speed_trim`), from one rear touchdown to the next.
+    pub speed_trim: SpeedTrim,
     /// Last measured flight after each pair's lift-off (s): gathered
     /// (after the front pair) and extended (after the rear pair).
     pub flight_s: [f64; 2],
@@ -308,7 +309,7 @@ impl QuadrupedBound {
             pairs,
             thrust: params.thrust_m * scale,
             trim: [0.0; 2],
-            speed_bias: 0.0,
+            speed_trim: SpeedTrim::default(),
             flight_s: [0.0; 2],
             flight_start: None,
             stride_flight_s: 0.0,
@@ -462,16 +463,17 @@ impl QuadrupedBound {
                                 .clamp(p.min_thrust_m * l, p.max_thrust_m * l);
                         }
                         self.stride_flight_s = 0.0;
-                        if let Some((t0, x0)) = self.stride_start
-                            && time - t0 > 1e-3
-                        {
-                            let vd = p.speed_mps * l.sqrt();
-                            let v = (com_forward - x0) / (time - t0);
-                            let cap = p.speed_bias_cap * vd.abs().max(0.5 * l.sqrt());
-                            self.speed_bias = (self.speed_bias
-                                + trim_gain(p.speed_trim, p.speed_integral_gain) * (vd - v))
-                                .clamp(-cap, cap);
-                        }
+                        let vd = p.speed_mps * l.sqrt();
+                        self.speed_trim.stride(
+                            p.speed_trim,
+                            p.speed_integral_gain,
+                            vd,
+                            p.speed_bias_cap * vd.abs().max(0.5 * l.sqrt()),
+                            time,
+                            along_z(com_forward),
+                            DVec3::Z,
+                            1e-3,
+                        );
                         self.stride_start = Some((time, com_forward));
                     }
                     continue;
@@ -588,7 +590,7 @@ impl Controller for QuadrupedBound {
         };
 
         let velocity = com_velocity(creature, data);
-        let desired = fwd * (p.speed_mps * s.velocity() + self.speed_bias);
+        let desired = fwd * (p.speed_mps * s.velocity() + self.speed_trim.bias_mps);
         let max = p.max_hip_torque * s.torque();
         let (kp, kv) = gains(p.swing_kp, p.swing_kv);
         let servo = HipServo {

@@ -24,6 +24,7 @@ use super::pair_posture::PairPosture;
 use super::phase::Phase;
 use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
 use super::scale::Scale;
+use super::speed_trim::{SpeedTrim, along_z};
 use super::start::{first_leg_m, level_flight};
 use crate::creatures::PhysicalCreature;
 use crate::world::ground::GroundParams;
@@ -197,10 +198,9 @@ pub struct QuadrupedRun {
     posture: PairPosture,
     liftoff_time: f64,
     liftoff_pair: Option<usize>,
-    /// Integral speed correction added to the desired speed (m/s).
-    pub speed_bias: f64,
-    /// Time and forward position of the centre of mass at the last lift-off.
-    step_start: Option<(f64, f64)>,
+    /// A per-step speed correction by the tuning's `speed_gain` (0 unless a
+    /// preset sets it: the trot holds its speed by eq. 3 alone).
+    pub trim: SpeedTrim,
     /// Each leg's hip-to-foot length at full extension (m, scaled).
     leg_m: [f64; 4],
     scale: Scale,
@@ -230,8 +230,7 @@ impl QuadrupedRun {
             posture: PairPosture::default(),
             liftoff_time: 0.0,
             liftoff_pair: None,
-            speed_bias: 0.0,
-            step_start: None,
+            trim: SpeedTrim::default(),
             leg_m: [0, 1, 2, 3].map(|i| lengths.get(i).copied().unwrap_or(0.0)),
             scale: Scale::new(scale),
         }
@@ -335,15 +334,17 @@ impl QuadrupedRun {
             self.liftoff_time = input.time;
             self.liftoff_pair = Some(self.active);
             // Integral speed correction from the step's mean speed.
-            if let Some((t0, x0)) = self.step_start
-                && input.time - t0 > 1e-3
-            {
-                let vd = self.params.speed_mps * self.scale.velocity();
-                let v = (com_forward - x0) / (input.time - t0);
-                self.speed_bias = (self.speed_bias + t.speed_gain * (vd - v))
-                    .clamp(-0.5 * vd.abs(), 0.5 * vd.abs());
-            }
-            self.step_start = Some((input.time, com_forward));
+            let vd = self.params.speed_mps * self.scale.velocity();
+            self.trim.stride(
+                true,
+                t.speed_gain,
+                vd,
+                0.5 * vd.abs(),
+                input.time,
+                along_z(com_forward),
+                glam::DVec3::Z,
+                1e-3,
+            );
             self.in_stance = false;
             self.done = [false; 4];
             self.leg_phase = [Phase::Flight; 4];
@@ -480,7 +481,7 @@ impl Controller for QuadrupedRun {
         }
         // Foot placement (eq. 3) for the active pair's legs in the air.
         let velocity = com_velocity(creature, data);
-        let desired = fwd * (p.speed_mps * s.velocity() + self.speed_bias);
+        let desired = fwd * (p.speed_mps * s.velocity() + self.trim.bias_mps);
         let max = p.max_hip_torque * s.torque();
         let (kp, kv) = s.torsional_gains(p.swing_kp, p.swing_kv);
         let servo = HipServo {
