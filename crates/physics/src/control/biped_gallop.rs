@@ -274,7 +274,6 @@ impl BipedGallop {
     #[must_use]
     pub fn new(params: BipedGallopParams, creature: &PhysicalCreature) -> Self {
         let scale = creature.scale;
-        let lengths = creature.leg_lengths_m();
         let leg = |rest: f64| GallopLeg {
             phase: Phase::Flight,
             stance_s: 0.2 * scale.sqrt(),
@@ -296,7 +295,7 @@ impl BipedGallop {
             liftoff_pitch: f64::NAN,
             pitch_d: 0.0,
             trim: SpeedTrim::default(),
-            leg_m: [0, 1].map(|i| lengths.get(i).copied().unwrap_or(0.0)),
+            leg_m: [0, 1].map(|i| creature.leg_length_m(i)),
             scale: Scale::new(scale),
         }
     }

@@ -162,8 +162,7 @@ impl BipedRun {
     #[must_use]
     pub fn new(params: BipedRunParams, creature: &PhysicalCreature) -> Self {
         let scale = creature.scale;
-        let lengths = creature.leg_lengths_m();
-        let leg_m = [0, 1].map(|i| lengths.get(i).copied().unwrap_or(0.0));
+        let leg_m = [0, 1].map(|i| creature.leg_length_m(i));
         Self {
             params,
             phase: Phase::Flight,

@@ -291,7 +291,6 @@ impl QuadrupedBound {
     #[must_use]
     pub fn new(params: QuadrupedBoundParams, creature: &PhysicalCreature) -> Self {
         let scale = creature.scale;
-        let lengths = creature.leg_lengths_m();
         let pair = PairState {
             phase: Phase::Flight,
             armed: false,
@@ -316,7 +315,7 @@ impl QuadrupedBound {
             stride_start: None,
             hip_target: [[0.0; 2]; 4],
             posture: PairPosture::default(),
-            leg_m: [0, 1, 2, 3].map(|i| lengths.get(i).copied().unwrap_or(0.0)),
+            leg_m: [0, 1, 2, 3].map(|i| creature.leg_length_m(i)),
             scale: Scale::new(scale),
         }
     }

@@ -212,7 +212,6 @@ impl QuadrupedRun {
     #[must_use]
     pub fn new(params: QuadrupedRunParams, creature: &PhysicalCreature) -> Self {
         let scale = creature.scale;
-        let lengths = creature.leg_lengths_m();
         let t = params.trot;
         Self {
             params,
@@ -231,7 +230,7 @@ impl QuadrupedRun {
             liftoff_time: 0.0,
             liftoff_pair: None,
             trim: SpeedTrim::default(),
-            leg_m: [0, 1, 2, 3].map(|i| lengths.get(i).copied().unwrap_or(0.0)),
+            leg_m: [0, 1, 2, 3].map(|i| creature.leg_length_m(i)),
             scale: Scale::new(scale),
         }
     }

@@ -35,5 +35,5 @@ pub fn level_flight(
 /// The creature's first leg's full length (m, scaled); 0 with no legs.
 #[must_use]
 pub fn first_leg_m(sim: &Sim) -> f64 {
-    sim.creature.leg_lengths_m().first().copied().unwrap_or(0.0)
+    sim.creature.leg_length_m(0)
 }

@@ -89,16 +89,17 @@ pub fn biped(l: f64) -> Result<PhysicalCreature, ModelError> {
             foot_body: lower,
             foot_point: paper(0.0, 0.0, -LOWER_LENGTH_M) * l,
             hip_in_trunk: hip_at * l,
+            length_m: 0.0,
         });
         dof += 4;
     }
-    Ok(PhysicalCreature {
-        species: Species::Biped,
-        scale: l,
-        model: Model::new(b.bodies)?,
+    Ok(PhysicalCreature::new(
+        Species::Biped,
+        l,
+        Model::new(b.bodies)?,
         trunk,
         legs,
-        tail: Vec::new(),
-        neck: None,
-    })
+        Vec::new(),
+        None,
+    ))
 }

@@ -168,14 +168,15 @@ pub fn kangaroo(l: f64) -> Result<PhysicalCreature, ModelError> {
         foot_body: foot,
         foot_point: down(FOOT.length) * l,
         hip_in_trunk: hip_at * l,
+        length_m: 0.0,
     }];
-    Ok(PhysicalCreature {
-        species: Species::Kangaroo,
-        scale: l,
-        model: Model::new(b.bodies)?,
+    Ok(PhysicalCreature::new(
+        Species::Kangaroo,
+        l,
+        Model::new(b.bodies)?,
         trunk,
         legs,
-        tail: vec![6, 7, 8],
-        neck: Some(9),
-    })
+        vec![6, 7, 8],
+        Some(9),
+    ))
 }

@@ -27,6 +27,12 @@ pub struct Leg {
     pub foot_point: DVec3,
     /// The hip's position in trunk coordinates (m).
     pub hip_in_trunk: DVec3,
+    /// Hip-to-foot length with every joint at zero (m, at the creature's
+    /// scale): for the telescoping legs, the leg at full length. Set by
+    /// [`PhysicalCreature::new`] from the model; controllers place feet
+    /// with it, so a preset with other leg lengths runs without code
+    /// changes.
+    pub length_m: f64,
 }
 
 /// Which of the paper's models a creature is.
@@ -62,21 +68,44 @@ pub struct PhysicalCreature {
 }
 
 impl PhysicalCreature {
-    /// Each leg's hip-to-foot length with every joint at zero (m, at the
-    /// creature's scale): for the telescoping legs, the leg at full length.
-    /// Controllers place feet with it, so a preset with other leg lengths
-    /// runs without code changes.
+    /// A creature from its parts, each leg's [`Leg::length_m`] measured on
+    /// the model with every joint at zero.
     #[must_use]
-    pub fn leg_lengths_m(&self) -> Vec<f64> {
-        let mut data = Data::new(&self.model);
-        kinematics(&self.model, &mut data);
-        let trunk = data.world[self.trunk];
-        self.legs
-            .iter()
-            .map(|leg| {
-                let hip = trunk.rot * leg.hip_in_trunk + trunk.pos;
-                (data.point_world(leg.foot_body, leg.foot_point) - hip).length()
-            })
-            .collect()
+    pub fn new(
+        species: Species,
+        scale: f64,
+        model: Model,
+        trunk: usize,
+        mut legs: Vec<Leg>,
+        tail: Vec<usize>,
+        neck: Option<usize>,
+    ) -> Self {
+        let mut data = Data::new(&model);
+        kinematics(&model, &mut data);
+        let at = data.world[trunk];
+        for leg in &mut legs {
+            let hip = at.rot * leg.hip_in_trunk + at.pos;
+            leg.length_m = (data.point_world(leg.foot_body, leg.foot_point) - hip).length();
+        }
+        Self {
+            species,
+            scale,
+            model,
+            trunk,
+            legs,
+            tail,
+            neck,
+        }
+    }
+
+    /// Each leg's [`Leg::length_m`] (m).
+    pub fn leg_lengths_m(&self) -> impl Iterator<Item = f64> + '_ {
+        self.legs.iter().map(|leg| leg.length_m)
+    }
+
+    /// Leg `i`'s [`Leg::length_m`] (m), 0 for a leg it does not have.
+    #[must_use]
+    pub fn leg_length_m(&self, i: usize) -> f64 {
+        self.legs.get(i).map_or(0.0, |leg| leg.length_m)
     }
 }

@@ -97,16 +97,17 @@ pub fn quadruped(l: f64) -> Result<PhysicalCreature, ModelError> {
             foot_body: lower,
             foot_point: paper(0.0, 0.0, -LOWER_LENGTH_M) * l,
             hip_in_trunk: hip_at * l,
+            length_m: 0.0,
         });
         dof += 3;
     }
-    Ok(PhysicalCreature {
-        species: Species::Quadruped,
-        scale: l,
-        model: Model::new(b.bodies)?,
+    Ok(PhysicalCreature::new(
+        Species::Quadruped,
+        l,
+        Model::new(b.bodies)?,
         trunk,
         legs,
-        tail: Vec::new(),
-        neck: None,
-    })
+        Vec::new(),
+        None,
+    ))
 }

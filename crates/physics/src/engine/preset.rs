@@ -129,6 +129,7 @@ pub fn creature_from_preset(preset: &PresetCreature) -> Result<PhysicalCreature,
             foot_point: DVec3::from_array(spec.foot_point_m) * l,
             hip_in_trunk: hip_body.placement.pos,
             hip,
+            length_m: 0.0,
         });
     }
     let trunk = if free {
@@ -157,15 +158,15 @@ pub fn creature_from_preset(preset: &PresetCreature) -> Result<PhysicalCreature,
         .as_deref()
         .map(|n| joint("scenario.physics.neck".into(), n))
         .transpose()?;
-    Ok(PhysicalCreature {
-        species: species(params.model),
-        scale: l,
+    Ok(PhysicalCreature::new(
+        species(params.model),
+        l,
         model,
         trunk,
         legs,
         tail,
         neck,
-    })
+    ))
 }
 
 /// What a preset written by [`to_preset`] says beyond the creature itself.
