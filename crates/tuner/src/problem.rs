@@ -130,7 +130,7 @@ impl Problem {
         let mut fell = false;
         for frame in 0..frames {
             driver.step(FRAME_S);
-            if driver.resets() > 0 || (frame % 60 == 59 && driver.summary().fell) {
+            if driver.resets() > 0 || (frame % 60 == 59 && driver.fell()) {
                 fell = true;
                 break;
             }

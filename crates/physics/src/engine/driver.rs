@@ -272,6 +272,13 @@ impl PhysicsDriver {
         self.recorder.summary()
     }
 
+    /// Whether the creature has fallen since the figures started (the
+    /// recorder's flag: cheap, where [`Self::summary`] computes every figure).
+    #[must_use]
+    pub fn fell(&self) -> bool {
+        self.recorder.fell()
+    }
+
     /// Start the Table-2 figures afresh from now (no settling time): for
     /// measuring after a speed change has settled.
     pub fn clear_metrics(&mut self) {
