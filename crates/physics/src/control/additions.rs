@@ -25,44 +25,50 @@ pub struct Additions {
     pub legacy: bool,
 }
 
-/// The gaits with an integral speed trim (the trot has none: it holds
-/// its speed by eq. 3 alone).
-const TRIMMED: [&str; 5] = ["run", "gallop", "gallop_alternate", "bound", "hop"];
+/// Which of the lab's additions a controller has, each with its default
+/// for a file whose `lab_additions` does not name it; `None`: the
+/// controller has no such addition. Each controller's parameters declare
+/// theirs (`LAB_ADDITIONS`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Offered {
+    /// [`Additions::speed_trim`].
+    pub speed_trim: Option<bool>,
+    /// [`Additions::unloading_posture`].
+    pub unloading_posture: Option<bool>,
+    /// [`Additions::speed_ramp`].
+    pub speed_ramp: Option<bool>,
+    /// [`Additions::tail_feedback`].
+    pub tail_feedback: Option<bool>,
+}
 
-/// The gaits that hold their speed within the paper's 10 % by eq. 3 alone.
-const PAPER_SPEED: [&str; 2] = ["run", "hop"];
-
-/// The gaits whose posture servo may be turned off in Unloading (the biped
-/// gallops keep it on: not yet separated).
-const UNLOADING: [&str; 1] = ["run"];
+impl Offered {
+    /// No addition: the controller runs the paper's laws only.
+    pub const NONE: Self = Self {
+        speed_trim: None,
+        unloading_posture: None,
+        speed_ramp: None,
+        tail_feedback: None,
+    };
+}
 
 impl Additions {
-    /// The additions for `gait` from the preset's `lab_additions` (`None`:
-    /// a file made before they were optional).
+    /// The additions a controller offering `offered` runs with, from the
+    /// preset's `lab_additions` (`None`: a file made before they were
+    /// optional, every offered addition on).
     #[must_use]
-    pub fn for_gait(spec: Option<&LabAdditions>, gait: &str) -> Self {
-        let has_trim = TRIMMED.contains(&gait);
-        let has_unloading = UNLOADING.contains(&gait);
-        let hop = gait == "hop";
-        match spec {
-            None => Self {
-                speed_trim: has_trim,
-                unloading_posture: has_unloading,
-                speed_ramp: hop,
-                tail_feedback: hop,
-                legacy: true,
-            },
-            Some(a) => Self {
-                // The biped run and the kangaroo hold their speed without
-                // the trim; the gallops and the bound do not yet
-                // (docs/physics.md).
-                speed_trim: has_trim && a.speed_trim.unwrap_or(!PAPER_SPEED.contains(&gait)),
-                unloading_posture: has_unloading && a.unloading_posture.unwrap_or(true),
-                // Without either the kangaroo falls at 3.5 and 5 m/s.
-                speed_ramp: hop && a.speed_ramp.unwrap_or(true),
-                tail_feedback: hop && a.tail_feedback.unwrap_or(true),
-                legacy: false,
-            },
+    pub fn resolve(spec: Option<&LabAdditions>, offered: Offered) -> Self {
+        let pick =
+            |offer: Option<bool>, asked: fn(&LabAdditions) -> Option<bool>| match (offer, spec) {
+                (None, _) => false,
+                (Some(_), None) => true,
+                (Some(default), Some(a)) => asked(a).unwrap_or(default),
+            };
+        Self {
+            speed_trim: pick(offered.speed_trim, |a| a.speed_trim),
+            unloading_posture: pick(offered.unloading_posture, |a| a.unloading_posture),
+            speed_ramp: pick(offered.speed_ramp, |a| a.speed_ramp),
+            tail_feedback: pick(offered.tail_feedback, |a| a.tail_feedback),
+            legacy: spec.is_none(),
         }
     }
 
@@ -76,48 +82,5 @@ impl Additions {
             (self.tail_feedback, "tail_feedback"),
         ];
         on.into_iter().filter(|&(on, _)| on).map(|(_, name)| name)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn an_old_file_keeps_every_addition_and_a_new_one_the_gaits_defaults() {
-        let old = Additions::for_gait(None, "run");
-        assert!(old.legacy && old.speed_trim && old.unloading_posture);
-        let new = Additions::for_gait(Some(&LabAdditions::default()), "run");
-        // The run drops the trim; Unloading's posture servo stays on until
-        // the biped runs without it (docs/physics.md, "The lab's additions").
-        assert!(!new.legacy && new.names().eq(["unloading_posture"]));
-        let paper = LabAdditions {
-            unloading_posture: Some(false),
-            ..LabAdditions::default()
-        };
-        assert!(
-            Additions::for_gait(Some(&paper), "run")
-                .names()
-                .next()
-                .is_none()
-        );
-        let gallop = Additions::for_gait(Some(&LabAdditions::default()), "gallop");
-        assert!(gallop.names().eq(["speed_trim"]));
-        let asked = LabAdditions {
-            speed_trim: Some(true),
-            ..LabAdditions::default()
-        };
-        let run = Additions::for_gait(Some(&asked), "run");
-        assert!(run.names().eq(["speed_trim", "unloading_posture"]));
-        // The trot has no trim to turn on.
-        assert!(
-            Additions::for_gait(Some(&asked), "trot")
-                .names()
-                .next()
-                .is_none()
-        );
-        // The kangaroo: its trim off, its ramp and tail feedback on.
-        let hop = Additions::for_gait(Some(&LabAdditions::default()), "hop");
-        assert!(hop.names().eq(["speed_ramp", "tail_feedback"]));
     }
 }

@@ -6,6 +6,7 @@
 
 use glam::DVec3;
 
+use super::additions::Offered;
 use super::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
 use super::hip_servo::set_hip;
 use super::leg_spring::{LegSpring, toward};
@@ -77,6 +78,17 @@ pub struct BipedRunParams {
     /// How fast a leg's rest length may change (m/s): a leg snapped short
     /// would jerk the trunk through the offset hips.
     pub leg_rate_mps: f64,
+}
+
+impl BipedRunParams {
+    /// The lab's additions this controller has: the speed trim (off: eq. 3
+    /// alone holds the speed) and Unloading's posture servo (on for a file
+    /// that does not say, as files of 2026-12-02 ran).
+    pub const LAB_ADDITIONS: Offered = Offered {
+        speed_trim: Some(false),
+        unloading_posture: Some(true),
+        ..Offered::NONE
+    };
 }
 
 impl Default for BipedRunParams {

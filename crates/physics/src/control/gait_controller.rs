@@ -49,6 +49,38 @@ pub enum GaitController {
 }
 
 impl GaitController {
+    /// The lab's additions this controller runs with (its parameters'
+    /// flags, resolved when it was made).
+    #[must_use]
+    pub fn additions(&self) -> Additions {
+        let none = Additions::resolve(
+            Some(&gaitlab_core::preset::physics::LabAdditions::default()),
+            crate::control::additions::Offered::NONE,
+        );
+        match self {
+            GaitController::BipedRun(c) => Additions {
+                speed_trim: c.params.speed_trim,
+                unloading_posture: c.params.unloading_posture,
+                ..none
+            },
+            GaitController::BipedGallop(c) => Additions {
+                speed_trim: c.params.speed_trim,
+                ..none
+            },
+            GaitController::Quadruped(_) => none,
+            GaitController::QuadrupedBound(c) => Additions {
+                speed_trim: c.params.speed_trim,
+                ..none
+            },
+            GaitController::Kangaroo(c) => Additions {
+                speed_trim: c.params.speed_trim,
+                speed_ramp: c.params.speed_ramp,
+                tail_feedback: c.params.tail_feedback,
+                ..none
+            },
+        }
+    }
+
     fn inner(&self) -> &dyn Controller {
         match self {
             GaitController::BipedRun(c) => c.as_ref(),
@@ -183,7 +215,7 @@ pub fn make_controller(
             ),
         )
     };
-    let additions = Additions::for_gait(params.lab_additions.as_ref(), gait);
+    let additions = |offered| Additions::resolve(params.lab_additions.as_ref(), offered);
     let two_ball_legs =
         creature.legs.len() == 2 && creature.legs.iter().all(|leg| leg.hip.len() == 3);
     let biped_needs = || {
@@ -197,6 +229,7 @@ pub fn make_controller(
             if !two_ball_legs {
                 return Err(biped_needs());
             }
+            let additions = additions(BipedRunParams::LAB_ADDITIONS);
             let d = if additions.legacy {
                 BipedRunParams::before_lab_additions()
             } else {
@@ -231,7 +264,7 @@ pub fn make_controller(
                 ..d
             };
             let mut p = with_parameters(p, params, gait)?;
-            p.speed_trim = additions.speed_trim;
+            p.speed_trim = additions(BipedGallopParams::LAB_ADDITIONS).speed_trim;
             Ok(GaitController::BipedGallop(Box::new(BipedGallop::new(
                 p, creature,
             ))))
@@ -266,7 +299,7 @@ pub fn make_controller(
                 ..QuadrupedBoundParams::default()
             };
             let mut p = with_parameters(p, params, gait)?;
-            p.speed_trim = additions.speed_trim;
+            p.speed_trim = additions(QuadrupedBoundParams::LAB_ADDITIONS).speed_trim;
             if let Some(h) = params.hop_height_m {
                 p.stride_flight_s = flight_for_height(h);
             }
@@ -298,6 +331,7 @@ pub fn make_controller(
                 ..d
             };
             let mut p = with_parameters(p, params, gait)?;
+            let additions = additions(KangarooHopParams::LAB_ADDITIONS);
             p.speed_trim = additions.speed_trim;
             p.speed_ramp = additions.speed_ramp;
             p.tail_feedback = additions.tail_feedback;

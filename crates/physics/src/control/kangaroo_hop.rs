@@ -35,6 +35,7 @@
 use gaitlab_core::portable::Portable;
 use glam::{DVec2, DVec3};
 
+use super::additions::Offered;
 use super::attitude::com_velocity;
 use super::phase::Phase;
 use super::posture::axis_torque;
@@ -152,6 +153,18 @@ pub struct KangarooHopParams {
     pub jump_stiffness_factor: f64,
     /// Ankle damping multiplier for the landing stance after a jump.
     pub landing_damping_factor: f64,
+}
+
+impl KangarooHopParams {
+    /// The lab's additions this controller has: the speed trim (off), the
+    /// speed ramp and the tail feedback (on: without them it falls at 3.5
+    /// and 5 m/s).
+    pub const LAB_ADDITIONS: Offered = Offered {
+        speed_trim: Some(false),
+        speed_ramp: Some(true),
+        tail_feedback: Some(true),
+        ..Offered::NONE
+    };
 }
 
 impl Default for KangarooHopParams {

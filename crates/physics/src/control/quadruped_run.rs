@@ -16,6 +16,7 @@
 //! for the trot. Every parameter is given for the creature at scale 1 and
 //! scaled by its dynamic scale L (Table 1).
 
+use super::additions::Offered;
 use super::attitude::{com_velocity, heading_forward};
 use super::hip_servo::HipServo;
 use super::hop_height::{flight_for_height, height_for_flight};
@@ -113,6 +114,11 @@ pub struct QuadrupedRunParams {
     pub swing_kv: f64,
     /// Largest hip torque (N·m).
     pub max_hip_torque: f64,
+}
+
+impl QuadrupedRunParams {
+    /// The trot has none of the lab's additions.
+    pub const LAB_ADDITIONS: Offered = Offered::NONE;
 }
 
 impl Default for QuadrupedRunParams {

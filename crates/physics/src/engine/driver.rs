@@ -165,7 +165,7 @@ impl PhysicsDriver {
             start_root,
 
             recorder: GaitRecorder::new(legs, params.speed_mps * l.sqrt(), 0.0, 3.0 * l.sqrt()),
-            additions: Additions::for_gait(params.lab_additions.as_ref(), &gait),
+            additions: controller.additions(),
             params,
             gait,
             start: sim.clone(),
@@ -452,6 +452,7 @@ impl PhysicsDriver {
         let mut params = self.params.clone();
         params.gait = Some(gait.to_owned());
         let next = make_controller(&self.sim.creature, gait, &params)?;
+        self.additions = next.additions();
         match (&mut self.controller, next) {
             // The trot asked for again runs on, keeping its state.
             (GaitController::Quadruped(_), GaitController::Quadruped(_)) => {}
@@ -464,7 +465,6 @@ impl PhysicsDriver {
             // state every controller starts from.
             (_, next) => self.pending = Some(next),
         }
-        self.additions = Additions::for_gait(params.lab_additions.as_ref(), gait);
         self.params = params;
         self.gait = gait.to_owned();
         Ok(())

@@ -1,0 +1,69 @@
+//! The lab's additions (docs/physics.md, "The lab's additions"): each
+//! controller declares which it has and their defaults; a file without
+//! `lab_additions` (made before they were optional) gets every one its
+//! gait has; a file that names one gets it; a gait without it ignores it.
+
+use gaitlab_core::preset::load_bundled;
+use gaitlab_core::preset::physics::LabAdditions;
+use gaitlab_physics::control::gait_controller::make_controller;
+use gaitlab_physics::engine::preset::creature_from_preset;
+
+/// The additions `gait` of bundled `preset` runs with under `spec`.
+fn names(preset: &str, gait: &str, spec: Option<LabAdditions>) -> Vec<&'static str> {
+    let preset = load_bundled(preset).expect("bundled").expect("valid");
+    let creature = creature_from_preset(&preset).expect("creature");
+    let mut params = preset.scenario.physics.clone().expect("physics");
+    params.lab_additions = spec;
+    let controller = make_controller(&creature, gait, &params).expect("controller");
+    controller.additions().names().collect()
+}
+
+#[test]
+fn each_gait_runs_its_own_additions_by_the_file_s_choice() {
+    let default = Some(LabAdditions::default());
+    // A file made before they were optional: every addition the gait has.
+    assert_eq!(
+        names("raibert-biped", "run", None),
+        ["speed_trim", "unloading_posture"]
+    );
+    assert_eq!(
+        names("raibert-kangaroo", "hop", None),
+        ["speed_trim", "speed_ramp", "tail_feedback"]
+    );
+    assert!(names("raibert-quadruped", "trot", None).is_empty());
+    // `{}`: each controller's defaults.
+    assert_eq!(
+        names("raibert-biped", "run", default),
+        ["unloading_posture"]
+    );
+    assert_eq!(names("raibert-biped", "gallop", default), ["speed_trim"]);
+    assert_eq!(
+        names("raibert-biped", "gallop_alternate", default),
+        ["speed_trim"]
+    );
+    assert_eq!(names("raibert-quadruped", "bound", default), ["speed_trim"]);
+    assert_eq!(
+        names("raibert-quadruped", "gallop", default),
+        ["speed_trim"]
+    );
+    assert_eq!(
+        names("raibert-kangaroo", "hop", default),
+        ["speed_ramp", "tail_feedback"]
+    );
+    // Named ones win; a gait without the addition ignores it.
+    let asked = Some(LabAdditions {
+        speed_trim: Some(true),
+        unloading_posture: Some(false),
+        ..LabAdditions::default()
+    });
+    assert_eq!(names("raibert-biped", "run", asked), ["speed_trim"]);
+    assert!(names("raibert-quadruped", "trot", asked).is_empty());
+    let off = Some(LabAdditions {
+        speed_trim: Some(false),
+        speed_ramp: Some(false),
+        tail_feedback: Some(false),
+        ..LabAdditions::default()
+    });
+    assert!(names("raibert-kangaroo", "hop", off).is_empty());
+    assert!(names("raibert-biped", "gallop", off).is_empty());
+}
