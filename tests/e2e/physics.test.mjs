@@ -73,4 +73,54 @@ describe('physics engine (WebGL2)', () => {
       await p.page.close().catch(() => {});
     }
   });
+
+  // The paper's inputs (Figure 2: "the path along which to travel, and any event information, such as
+  // when and how high to jump"; Table 1's scale L), through the commands the panel's controls share.
+  it('the kangaroo jumps a box put ahead, the biped follows waypoints, L = 2 slows its steps by √2', T, async () => {
+    const p = await loadApp(browser, `${server.url}?preset=raibert-kangaroo`);
+    try {
+      const { page } = p;
+      const phys = async () => (await state(page)).physics;
+      // Waits until `test(physics, arg)` holds in the page (false after `timeout` ms).
+      const until = (test, arg, timeout) => page.waitForFunction(test, arg, { timeout, polling: 50 })
+        .then(() => true, () => false);
+
+      // A box 3 m ahead: the kangaroo's jump states run, and it lands beyond the box, still up.
+      let s = await phys();
+      const start = s.position_m[1];
+      assert.equal(await command(page, { obstacle_ahead_m: 3 }), 'ok');
+      assert.ok(await until(() => JSON.parse(window.gaitlab.state()).physics.phase.startsWith('jump'), null, 60_000), 'the jump states run');
+      assert.ok(await until((a) => JSON.parse(window.gaitlab.state()).physics.position_m[1] > a, start + 3 + 0.3 + 1.0, 60_000), 'past the box');
+      s = await phys();
+      assert.equal(s.fell, false);
+      assert.equal(s.resets, 0);
+      assert.match(await command(page, { obstacle_ahead_m: 50 }), /^obstacle_ahead_m: /);
+
+      // The biped at L = 1: its stride; then waypoints 8 m ahead and 8 m to the left of that.
+      assert.equal(await command(page, { preset: 'raibert-biped' }), 'ok');
+      assert.ok(await until((a) => { const s = JSON.parse(window.gaitlab.state()).physics; return s.stride_duration_s > 0 && s.steps > a; }, 6 * 2500, 60_000), 'strides at L = 1');
+      const stride1 = (await phys()).stride_duration_s;
+      assert.equal(await command(page, { waypoints: [[0, 8], [-8, 8]] }), 'ok');
+      assert.ok(await until(() => JSON.parse(window.gaitlab.state()).physics.waypoint >= 1, null, 60_000), 'reached the first waypoint');
+      assert.ok(await until(() => JSON.parse(window.gaitlab.state()).physics.waypoint >= 2, null, 60_000), 'reached the second waypoint');
+      s = await phys();
+      assert.ok(s.position_m[0] < -5, `turned left toward x = -8: at ${s.position_m}`);
+      assert.equal(s.resets, 0);
+      assert.match(await command(page, { waypoints: [[0, 1e6]] }), /^waypoints\[0\]: /);
+
+      // L = 2 from the slider's command: the creature starts again twice as large; steps take √2 as long.
+      assert.equal(await command(page, { physics_scale: 2 }), 'ok');
+      s = await phys();
+      assert.equal(s.scale, 2);
+      assert.ok(await until((a) => { const s = JSON.parse(window.gaitlab.state()).physics; return s.stride_duration_s > 0 && s.steps > a; }, 10 * 1770, 90_000), 'strides at L = 2');
+      const stride2 = (await phys()).stride_duration_s;
+      const ratio = stride2 / stride1;
+      console.log(`# biped stride ${stride1.toFixed(3)} s at L = 1, ${stride2.toFixed(3)} s at L = 2: × ${ratio.toFixed(3)} (√2 = 1.414)`);
+      assert.ok(Math.abs(ratio / Math.SQRT2 - 1) < 0.05, `stride × ${ratio}`);
+      assert.equal((await phys()).fell, false);
+      p.assertClean();
+    } finally {
+      await p.page.close().catch(() => {});
+    }
+  });
 });

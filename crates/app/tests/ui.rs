@@ -407,3 +407,47 @@ fn the_physics_panel_names_the_lab_additions_and_has_every_creatures_inputs() {
         }
     }
 }
+
+#[test]
+fn the_waypoint_panel_lays_a_square_the_biped_steers_along() {
+    let mut harness = poda_harness("raibert-biped", 1400.0);
+    harness.run();
+    harness.get_by_label("Path (waypoints)").click();
+    harness.run();
+    harness.get_by_label("Square 8 m").click();
+    harness.run();
+    let points = harness
+        .state()
+        .driver()
+        .physics()
+        .map(|d| d.waypoints().to_vec())
+        .expect("physics");
+    assert_eq!(points.len(), 4, "{points:?}");
+    // The first corner is 8 m ahead of where the biped stood (+z).
+    assert!((points[0][1] - 8.0).abs() < 0.5, "{points:?}");
+    harness.state_mut().set_paused(false);
+    for _ in 0..(16 * 60) {
+        harness.state_mut().advance(1.0 / 60.0);
+    }
+    let driver = harness.state().driver().physics().expect("physics");
+    assert!(
+        driver.waypoint() >= 2,
+        "reached {} waypoints in 16 s",
+        driver.waypoint()
+    );
+    assert_eq!(driver.resets(), 0);
+    // The same path by command, and a bad one refused with its key.
+    let lab = harness.state_mut();
+    assert_eq!(
+        lab.command(r#"{"waypoints": [[0, 100000]]}"#)
+            .err()
+            .as_deref(),
+        Some("waypoints[0]: must be [x, z] within ±10000 m")
+    );
+    lab.command(r#"{"waypoints": []}"#).expect("cleared");
+    assert!(
+        lab.driver()
+            .physics()
+            .is_some_and(|d| d.waypoints().is_empty())
+    );
+}

@@ -141,6 +141,15 @@ pub struct Command {
     pub leg_force_n: Option<f64>,
     /// The physics controllers' hop height, metres.
     pub hop_height_m: Option<f64>,
+    /// The physics creature's dynamic scale L (Table 1), as the panel's
+    /// "Scale L" slider: the creature starts again at that size.
+    pub physics_scale: Option<f64>,
+    /// Put a box this many metres ahead of the kangaroo, which jumps it
+    /// (the panel's "Place a box 3 m ahead"), [1, 20].
+    pub obstacle_ahead_m: Option<f64>,
+    /// The physics creature's path: waypoints `[x, z]`, metres, followed
+    /// from the first (the panel's waypoint editor); `[]` clears it.
+    pub waypoints: Option<Vec<[f64; 2]>>,
     /// One physics controller gain.
     #[serde(default, deserialize_with = "object")]
     pub gain: Option<GainCommand>,
@@ -303,6 +312,18 @@ impl Lab {
             if let Some(value) = value {
                 self.edit_gait(key, value)?;
             }
+        }
+        // The panel's errors name its controls; the command's name its keys.
+        if let Some(scale) = c.physics_scale {
+            self.set_physics_scale(scale)
+                .map_err(|e| e.replacen("scale:", "physics_scale:", 1))?;
+        }
+        if let Some(distance) = c.obstacle_ahead_m {
+            self.place_obstacle(distance)
+                .map_err(|e| e.replacen("obstacle:", "obstacle_ahead_m:", 1))?;
+        }
+        if let Some(points) = &c.waypoints {
+            self.set_waypoints(points)?;
         }
         if let Some(gain) = &c.gain {
             self.set_gain(&gain.name, gain.value)?;

@@ -61,6 +61,10 @@ pub struct PhysicsState {
     pub heading_deg: f64,
     /// The path's current waypoint.
     pub waypoint: usize,
+    /// The path being followed, `[x, z]` per waypoint, metres at scale 1.
+    pub waypoints: Vec<[f64; 2]>,
+    /// The centre of mass on the ground, `[x, z]`, metres.
+    pub position_m: [f64; 2],
     /// Mean speed, m/s.
     pub speed_mean_mps: f64,
     /// Whether it fell.
@@ -435,6 +439,13 @@ fn physics_state(driver: &gaitlab_physics::PhysicsDriver) -> PhysicsState {
         hop_height_m: driver.params().hop_height_m,
         heading_deg: driver.heading().to_degrees(),
         waypoint: driver.waypoint(),
+        waypoints: driver.waypoints().to_vec(),
+        position_m: {
+            let sim = driver.sim();
+            let com =
+                gaitlab_physics::dynamics::energy::center_of_mass(&sim.creature.model, &sim.data);
+            [com.x, com.z]
+        },
         speed_mean_mps: s.speed_mean_mps,
         fell: s.fell,
         resets: driver.resets(),

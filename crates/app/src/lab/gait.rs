@@ -83,6 +83,20 @@ impl Lab {
         driver.place_obstacle_ahead(distance_m)
     }
 
+    /// Has the physics creature follow `waypoints` (`[x, z]`, m at scale 1)
+    /// from the first ([`gaitlab_physics::PhysicsDriver::set_waypoints`]).
+    ///
+    /// # Errors
+    /// `waypoints: …` when the engine is not physics or a point is out of
+    /// range; nothing changes.
+    pub fn set_waypoints(&mut self, waypoints: &[[f64; 2]]) -> Result<(), String> {
+        let Some(driver) = self.stage.driver.physics_mut() else {
+            let engine = self.session.engine_name();
+            return Err(format!("waypoints: engine {engine} has no waypoints"));
+        };
+        driver.set_waypoints(waypoints).map_err(|e| e.to_string())
+    }
+
     /// Sets a physics controller gain by name (the Gains sliders and the
     /// `gain` command).
     ///

@@ -53,6 +53,29 @@ pub fn check_speed_mps(path: &str, speed_mps: f64) -> Result<(), PresetError> {
     }
 }
 
+/// Checks a path of waypoints `[x, z]` (m at scale 1): at most
+/// [`MAX_WAYPOINTS`], each within ±10 000 m.
+///
+/// # Errors
+/// `path: at most 64 waypoints` or `path[i]: must be [x, z] within ±10000 m`.
+pub fn check_waypoints(path: &str, waypoints: &[[f64; 2]]) -> Result<(), PresetError> {
+    if waypoints.len() > MAX_WAYPOINTS {
+        return Err(PresetError::new(
+            path,
+            format!("at most {MAX_WAYPOINTS} waypoints"),
+        ));
+    }
+    for (i, w) in waypoints.iter().enumerate() {
+        if !w.iter().all(|x| x.is_finite() && x.abs() <= 1e4) {
+            return Err(PresetError::new(
+                format!("{path}[{i}]"),
+                "must be [x, z] within ±10000 m",
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// Checks a desired hop height (m at scale 1) against [`HOP_HEIGHT_RANGE_M`].
 ///
 /// # Errors
@@ -503,20 +526,7 @@ impl PhysicsParams {
                 format!("at most {MAX_OBSTACLES} obstacles"),
             ));
         }
-        if self.waypoints.len() > MAX_WAYPOINTS {
-            return Err(PresetError::new(
-                at("waypoints"),
-                format!("at most {MAX_WAYPOINTS} waypoints"),
-            ));
-        }
-        for (i, w) in self.waypoints.iter().enumerate() {
-            if !w.iter().all(|x| x.is_finite() && x.abs() <= 1e4) {
-                return Err(PresetError::new(
-                    format!("{prefix}.waypoints[{i}]"),
-                    "must be [x, z] within ±10000 m",
-                ));
-            }
-        }
+        check_waypoints(&at("waypoints"), &self.waypoints)?;
         for (i, o) in self.obstacles.iter().enumerate() {
             let p = format!("{prefix}.obstacles[{i}]");
             let ok = |v: f64, lo: f64| v.is_finite() && v >= lo && v <= 1e3;

@@ -444,6 +444,26 @@ impl PhysicsDriver {
         Ok(at_m)
     }
 
+    /// Follow `waypoints` (`[x, z]`, m at scale 1) from the first: the
+    /// steering aims at each in turn (Raibert & Hodgins 1991, "simple
+    /// paths"); an empty path keeps the present heading.
+    ///
+    /// # Errors
+    /// `waypoints: at most 64 waypoints` or `waypoints[i]: …` for a point out
+    /// of range; nothing changes.
+    pub fn set_waypoints(&mut self, waypoints: &[[f64; 2]]) -> Result<(), PresetError> {
+        gaitlab_core::preset::physics::check_waypoints("waypoints", waypoints)?;
+        self.params.waypoints = waypoints.to_vec();
+        self.steering.waypoint = 0;
+        Ok(())
+    }
+
+    /// The path being followed (`[x, z]`, m at scale 1).
+    #[must_use]
+    pub fn waypoints(&self) -> &[[f64; 2]] {
+        &self.params.waypoints
+    }
+
     /// Change gait while running (the controller takes over from the current state).
     ///
     /// # Errors

@@ -5,6 +5,7 @@
 mod buttons;
 mod compare;
 mod gait;
+mod ground_view;
 mod ik;
 mod motion;
 mod panel;
@@ -16,6 +17,7 @@ mod recording;
 mod separator;
 mod share;
 mod view;
+mod waypoints;
 
 pub use buttons::buttons;
 pub use compare::cards as compare_cards;
@@ -31,6 +33,7 @@ pub static REGISTRY: &[&dyn Panel] = &[
     &buttons::ButtonsPanel,
     &separator::Separator,
     &physics::PhysicsPanel,
+    &waypoints::WaypointsPanel,
     &gait::GaitPanel,
     &path::PathPanel,
     &compare::SideBySidePanel,
@@ -83,7 +86,9 @@ mod tests {
                 gaitlab_core::preset::Engine::Physics,
                 "human"
             )),
-            with(&["Physics"])
+            with(&["Physics", "Path (waypoints)"])
         );
+        // The planar kangaroo cannot turn: no waypoints.
+        assert_eq!(shown("raibert-kangaroo"), with(&["Physics"]));
     }
 }

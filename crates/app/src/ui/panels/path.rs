@@ -6,6 +6,7 @@
 use gaitlab_core::preset::{PathKindSpec, PathSpec};
 use glam::DVec2;
 
+use super::ground_view::GroundView;
 use super::panel::Panel;
 use crate::lab::Lab;
 
@@ -141,31 +142,18 @@ fn top_down(
     samples: &[DVec2],
     (body, closest): (DVec2, DVec2),
 ) -> bool {
-    let (rect, _) = ui.allocate_exact_size(egui::vec2(VIEW_SIZE, VIEW_SIZE), egui::Sense::hover());
-    let painter = ui.painter_at(rect);
-    let visuals = ui.visuals();
-    painter.rect_filled(rect, 2.0, visuals.extreme_bg_color);
-    // World box around the points, the samples and the body, square, with a margin.
-    let mut min = body;
-    let mut max = body;
-    for p in samples
+    // The points, the samples and the body, framed.
+    let framed = samples
         .iter()
         .copied()
         .chain(spec.points.iter().map(|&p| DVec2::from(p)))
-    {
-        min = min.min(p);
-        max = max.max(p);
-    }
-    let centre = 0.5 * (min + max);
-    let half = (0.5 * (max - min).max_element()).max(0.5) * 1.15;
-    let scale = f64::from(VIEW_SIZE) / (2.0 * half);
-    // x to the right, z up the panel (the view from above).
-    let to_screen = |p: DVec2| {
-        egui::pos2(
-            rect.center().x + ((p.x - centre.x) * scale) as f32,
-            rect.center().y - ((p.y - centre.y) * scale) as f32,
-        )
-    };
+        .chain([body]);
+    let (view, _) = GroundView::allocate(ui, VIEW_SIZE, egui::Sense::hover(), framed, 0.5);
+    let painter = ui.painter_at(view.rect);
+    let visuals = ui.visuals();
+    painter.rect_filled(view.rect, 2.0, visuals.extreme_bg_color);
+    let scale = view.scale;
+    let to_screen = |p: DVec2| view.to_screen(p);
     let line: Vec<egui::Pos2> = samples.iter().map(|&p| to_screen(p)).collect();
     painter.add(egui::Shape::line(
         line,
