@@ -121,7 +121,7 @@ fn print_gait(m: &GaitRunMetrics) {
 
 fn print_physics(m: &PhysicsRunMetrics) {
     outln!(
-        "{} · engine physics · gait {} · {:.1} s simulated · fell {} · speed {:.2} of {:.2} m/s · stride {:.2} m in {:.2} s · flight {:.3} s · stance {:.3} s · pitch {:.1}° · roll {:.1}° · friction needed {:.2} · {:.0} steps/s ({:.0}× real time)",
+        "{} · engine physics · gait {} · {:.1} s simulated · fell {} · speed {:.2} of {:.2} m/s · stride {:.2} m in {:.2} s · flight {:.3} s · stance {:.3} s · pitch {:.1}° · roll {:.1}° · friction needed {:.2} · cost of transport {:.2} · {:.0} steps/s ({:.0}× real time)",
         m.preset,
         m.gait,
         m.sim_seconds,
@@ -135,6 +135,7 @@ fn print_physics(m: &PhysicsRunMetrics) {
         m.pitch_magnitude_deg,
         m.roll_magnitude_deg,
         m.friction_needed_max,
+        m.cost_of_transport,
         m.steps_per_second,
         m.realtime_factor,
     );

@@ -449,6 +449,9 @@ pub struct PhysicsRunMetrics {
     pub speed_swing_mps: f64,
     /// Largest horizontal-to-vertical ground force ratio needed.
     pub friction_needed_max: f64,
+    /// Cost of transport: positive actuator work over weight × distance
+    /// (dimensionless; 0 before any travel).
+    pub cost_of_transport: f64,
     /// Table 2's rows for this gait beside the run's figures (empty for a
     /// gait the paper does not tabulate).
     pub table2: Vec<Table2Entry>,
@@ -506,6 +509,7 @@ impl PhysicsRunMetrics {
             peak_vertical_force_bw: s.peak_vertical_force_bw,
             speed_swing_mps: s.speed_swing_mps,
             friction_needed_max: s.friction_needed_max,
+            cost_of_transport: s.cost_of_transport,
             lab_additions: driver.lab_additions().collect(),
             table2: {
                 let names: Vec<&str> = sim.creature.legs.iter().map(|l| l.name.as_str()).collect();

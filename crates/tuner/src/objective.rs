@@ -7,12 +7,14 @@
 //!   (animation column) over the gait's measured rows, as a fraction; a row
 //!   the run has no figure for counts 1. Inputs (desired speeds) and the
 //!   undefined "error in running speed" rows are left out.
+//! - `energy`: the cost of transport (positive actuator work over weight ×
+//!   distance, [`GaitSummary::cost_of_transport`]), capped at 10.
 
 use gaitlab_physics::engine::metrics::GaitSummary;
 use gaitlab_physics::engine::table2::compare;
 
 /// The names [`Objective::parse`] knows.
-pub const TERMS: [&str; 3] = ["fall", "speed", "table2"];
+pub const TERMS: [&str; 4] = ["fall", "speed", "table2", "energy"];
 
 /// Weighted terms; a weight of 0 leaves a term out.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -23,6 +25,8 @@ pub struct Objective {
     pub speed: f64,
     /// Weight of `table2`.
     pub table2: f64,
+    /// Weight of `energy`.
+    pub energy: f64,
 }
 
 impl Default for Objective {
@@ -32,6 +36,7 @@ impl Default for Objective {
             fall: 10.0,
             speed: 1.0,
             table2: 0.0,
+            energy: 0.0,
         }
     }
 }
@@ -46,6 +51,7 @@ impl Objective {
             fall: 0.0,
             speed: 0.0,
             table2: 0.0,
+            energy: 0.0,
         };
         for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
             let (name, weight) = part
@@ -63,6 +69,7 @@ impl Objective {
                 "fall" => o.fall = w,
                 "speed" => o.speed = w,
                 "table2" => o.table2 = w,
+                "energy" => o.energy = w,
                 other => {
                     return Err(format!(
                         "objective: unknown term \"{other}\" (terms: {})",
@@ -71,7 +78,7 @@ impl Objective {
                 }
             }
         }
-        if o.fall + o.speed + o.table2 <= 0.0 {
+        if o.fall + o.speed + o.table2 + o.energy <= 0.0 {
             return Err("objective: every weight is 0".to_owned());
         }
         Ok(o)
@@ -100,6 +107,9 @@ impl Objective {
                 cost += self.table2 * rows.iter().sum::<f64>() / rows.len() as f64;
             }
         }
+        if self.energy > 0.0 {
+            cost += self.energy * s.cost_of_transport.min(10.0);
+        }
         cost
     }
 }
@@ -112,7 +122,8 @@ mod tests {
     fn terms_parse_by_name_and_bad_ones_are_named() {
         let o = Objective::parse("fall=5, table2=0.5").expect("parses");
         assert_eq!((o.fall, o.speed, o.table2), (5.0, 0.0, 0.5));
-        assert!(Objective::parse("energy=1").is_err_and(|e| e.contains("unknown term \"energy\"")));
+        assert!(Objective::parse("power=1").is_err_and(|e| e.contains("unknown term \"power\"")));
+        assert_eq!(Objective::parse("energy=2").map(|o| o.energy), Ok(2.0));
         assert!(Objective::parse("speed=-1").is_err_and(|e| e.starts_with("objective.speed")));
         assert!(Objective::parse("speed").is_err());
         assert!(Objective::parse("speed=0").is_err());
@@ -131,5 +142,11 @@ mod tests {
         // No figures at all: every Table-2 row counts 1.
         let t = Objective::parse("table2=1").expect("parses");
         assert!((t.cost(&s, false, "run", &[]) - 1.0).abs() < 1e-12);
+        let e = Objective::parse("energy=2").expect("parses");
+        let moving = GaitSummary {
+            cost_of_transport: 0.4,
+            ..s
+        };
+        assert!((e.cost(&moving, false, "run", &[]) - 0.8).abs() < 1e-12);
     }
 }

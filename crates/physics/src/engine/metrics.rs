@@ -73,6 +73,12 @@ pub struct GaitSummary {
     pub speed_swing_mps: f64,
     /// Largest |f_t| / f_n at any foot carrying ≥ 10 % of body weight.
     pub friction_needed_max: f64,
+    /// Cost of transport: the positive work of every joint's actuator
+    /// (leg springs, hip servos, stops; Σ max(0, τ·q̇) dt) after settling,
+    /// over body weight × distance travelled along the heading. The
+    /// springs' elastic return counts as work, so it bounds from above what
+    /// motors would supply. 0 before the creature has travelled.
+    pub cost_of_transport: f64,
     /// Mean per-stride peak-to-peak angle of the tail's base joint relative
     /// to the trunk (deg), for creatures with a tail.
     pub tail_wag_deg: Option<f64>,
@@ -110,6 +116,9 @@ pub struct GaitRecorder {
     fell: bool,
     peak_force: f64,
     friction: f64,
+    /// Positive actuator work since settling (J) and the weight (N).
+    positive_work_j: f64,
+    weight_n: f64,
 }
 
 impl GaitRecorder {
@@ -139,6 +148,8 @@ impl GaitRecorder {
             fell: false,
             peak_force: 0.0,
             friction: 0.0,
+            positive_work_j: 0.0,
+            weight_n: 0.0,
         }
     }
 
@@ -173,6 +184,11 @@ impl GaitRecorder {
         }
         self.last = (t, com);
         let weight = c.model.total_mass() * crate::dynamics::model::GRAVITY_MPS2;
+        if self.start.is_some_and(|(t0, _)| t0 < t) && t > t_last {
+            let power: f64 = d.tau.iter().zip(&d.qd).map(|(f, v)| (f * v).max(0.0)).sum();
+            self.positive_work_j += power * (t - t_last);
+            self.weight_n = weight;
+        }
         let mut vertical = 0.0;
         for (i, (leg, contact)) in c.legs.iter().zip(&sim.contacts).enumerate() {
             vertical += contact.force.y;
@@ -300,6 +316,12 @@ impl GaitRecorder {
             peak_vertical_force_bw: self.peak_force,
             speed_swing_mps: mean(&mut self.speed_spans.iter().copied()),
             friction_needed_max: self.friction,
+            cost_of_transport: match self.start {
+                Some((_, c0)) if (self.last.1 - c0).dot(fwd) > 1e-3 && self.weight_n > 0.0 => {
+                    self.positive_work_j / (self.weight_n * (self.last.1 - c0).dot(fwd))
+                }
+                _ => 0.0,
+            },
             tail_wag_deg: (!self.tail_spans.is_empty())
                 .then(|| mean(&mut self.tail_spans.iter().copied())),
             flights: self.flights.clone(),
