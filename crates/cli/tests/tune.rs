@@ -85,8 +85,8 @@ fn bad_tune_arguments_are_named() {
     let out = out.to_str().expect("utf-8 path");
     for (args, want) in [
         (
-            vec!["--objective", "energy=1"],
-            "objective: unknown term \"energy\"",
+            vec!["--objective", "power=1"],
+            "objective: unknown term \"power\"",
         ),
         (vec!["--objective", "speed=-2"], "objective.speed"),
         (vec!["--budget", "0"], "budget:"),
