@@ -437,17 +437,9 @@ impl BipedGallop {
             self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
         }
         let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
+        let (on, gain) = (p.speed_trim, p.speed_integral_gain);
         let v = self.scale.velocity();
-        self.trim.stride(
-            p.speed_trim,
-            p.speed_integral_gain,
-            p.speed_mps * v,
-            0.5 * p.speed_mps.abs().max(0.5) * v,
-            input.time,
-            com,
-            heading_forward(p.heading),
-            0.0,
-        );
+        (self.trim).stride_at_heading(on, gain, p.speed_mps, v, input.time, com, p.heading);
         self.apex_height = f64::NEG_INFINITY;
         self.descending = false;
     }

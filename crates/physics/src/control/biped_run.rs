@@ -231,17 +231,9 @@ impl BipedRun {
             self.liftoff_height = trunk_y;
             // Speed over the last step against the desired speed.
             let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
+            let (on, gain) = (p.speed_trim, p.speed_integral_gain);
             let v = self.scale.velocity();
-            self.trim.stride(
-                p.speed_trim,
-                p.speed_integral_gain,
-                p.speed_mps * v,
-                0.5 * p.speed_mps.abs().max(0.5) * v,
-                input.time,
-                com,
-                heading_forward(p.heading),
-                0.0,
-            );
+            (self.trim).stride_at_heading(on, gain, p.speed_mps, v, input.time, com, p.heading);
             self.apex_height = f64::NEG_INFINITY;
             self.active = 1 - self.active;
             self.phase = Phase::Flight;
