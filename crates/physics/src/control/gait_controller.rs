@@ -5,15 +5,18 @@
 use gaitlab_core::preset::{PhysicsParams, PresetError};
 
 use crate::control::additions::Additions;
-use crate::control::biped_gallop::{BipedGallop, BipedGallopParams, GallopStyle};
-use crate::control::biped_run::{BipedRun, BipedRunParams};
+use crate::control::biped_gallop::BipedGallop;
+use crate::control::biped_gallop_params::{BipedGallopParams, GallopStyle};
+use crate::control::biped_run::BipedRun;
+use crate::control::biped_run_params::BipedRunParams;
 use crate::control::hop_height::flight_for_height;
-use crate::control::kangaroo_hop::{KangarooHop, KangarooHopParams, kangaroo_start};
+use crate::control::kangaroo_hop::{KangarooHop, kangaroo_start};
+use crate::control::kangaroo_hop_params::KangarooHopParams;
 use crate::control::parameters::NamedParameters;
-use crate::control::quadruped_bound::{
-    BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
-};
-use crate::control::quadruped_run::{QuadrupedRun, QuadrupedRunParams, quadruped_start};
+use crate::control::quadruped_bound::{QuadrupedBound, bound_start};
+use crate::control::quadruped_bound_params::{BoundStyle, QuadrupedBoundParams};
+use crate::control::quadruped_run::{QuadrupedRun, quadruped_start};
+use crate::control::quadruped_run_params::QuadrupedRunParams;
 use crate::creatures::{PhysicalCreature, Species};
 use crate::world::sim::{Controller, Sim};
 

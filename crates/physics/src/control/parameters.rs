@@ -6,11 +6,11 @@
 //! few of these, changeable while running. Speed, heading and hop height are
 //! the preset's own fields, not listed here.
 
-use crate::control::biped_gallop::BipedGallopParams;
-use crate::control::biped_run::BipedRunParams;
-use crate::control::kangaroo_hop::KangarooHopParams;
-use crate::control::quadruped_bound::QuadrupedBoundParams;
-use crate::control::quadruped_run::QuadrupedRunParams;
+use crate::control::biped_gallop_params::BipedGallopParams;
+use crate::control::biped_run_params::BipedRunParams;
+use crate::control::kangaroo_hop_params::KangarooHopParams;
+use crate::control::quadruped_bound_params::QuadrupedBoundParams;
+use crate::control::quadruped_run_params::QuadrupedRunParams;
 
 /// A gait controller's parameters, settable by name.
 pub trait NamedParameters {
