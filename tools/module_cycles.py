@@ -70,7 +70,8 @@ def reexports(mods):
             if prefix.endswith("crate"):
                 full = segs
             elif prefix == "super":
-                full = list(m[:-1] if is_dir else m[:-2]) + segs
+                # The parent of a directory module and of a file module alike.
+                full = list(m[:-1]) + segs
             elif prefix == "self":
                 full = list(m) + segs
             elif is_dir:

@@ -23,10 +23,10 @@
 use glam::DVec3;
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
-use super::hip_servo::set_hip;
+use super::hip_servo::{set_hip, zero_hip};
 use super::leg_spring::LegSpring;
 use super::phase::Phase;
-use super::placement::{foot_displacement, gimbal_angles, leg_direction};
+use super::placement::{foot_displacement, hip_angles};
 use super::posture::{through_hip, trunk_torque};
 use super::scale::Scale;
 use super::speed_trim::SpeedTrim;
@@ -34,47 +34,9 @@ use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
 
 pub use super::biped_gallop_params::{BipedGallopParams, GallopStyle};
-/// The stride's support state, from the legs' contacts as the controller
-/// accepted them.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum GallopPhase {
-    /// No leg in support.
-    #[default]
-    Flight,
-    /// Only the trailing leg (the first to land) supports.
-    TrailSupport,
-    /// Both legs support.
-    DoubleSupport,
-    /// Only the leading leg (the last to leave) supports.
-    LeadSupport,
-}
+pub use super::gallop_phase::GallopPhase;
 
-impl GallopPhase {
-    /// Every phase in stride order.
-    pub const ALL: [GallopPhase; 4] = [
-        GallopPhase::Flight,
-        GallopPhase::TrailSupport,
-        GallopPhase::DoubleSupport,
-        GallopPhase::LeadSupport,
-    ];
-
-    /// A name for people.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            GallopPhase::Flight => "flight",
-            GallopPhase::TrailSupport => "trail support",
-            GallopPhase::DoubleSupport => "double support",
-            GallopPhase::LeadSupport => "lead support",
-        }
-    }
-
-    /// The phase's position in the stride (0–3), for plots.
-    #[must_use]
-    pub fn index(self) -> usize {
-        self as usize
-    }
-}
+mod stride;
 
 /// One leg's part of the stride.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -168,174 +130,13 @@ impl BipedGallop {
     pub fn thrust_m(&self) -> f64 {
         self.thrust
     }
-
-    fn in_support(&self, i: usize) -> bool {
-        self.legs[i].phase != Phase::Flight
-    }
-
-    fn advance_phase(&mut self, input: &ControlInput<'_>) {
-        let p = self.params;
-        let l = self.scale.l;
-        let trunk_y = input.data.world[input.creature.trunk].pos.y;
-        let pitch = self.pitch(input);
-        if self.phase == GallopPhase::Flight {
-            self.apex_height = self.apex_height.max(trunk_y);
-            self.descending = self.descending || trunk_y < self.apex_height - 0.002 * l;
-        }
-        let (lead, trail) = (self.lead(), self.trail());
-        let lead_rebounds = self.legs[lead].phase == Phase::Thrust;
-        for i in [trail, lead] {
-            let Some(leg) = input.creature.legs.get(i) else {
-                continue;
-            };
-            let touching = input.contacts.get(i).is_some_and(|c| c.touching);
-            let q = input.data.q[leg.spring];
-            let qd = input.data.qd[leg.spring];
-            let other_down = self.in_support(1 - i);
-            // A landing counts from a falling flight or beside the other leg,
-            // not as a scuff just after lift-off.
-            if self.legs[i].phase == Phase::Flight && touching && (other_down || self.descending) {
-                if i == trail && self.liftoff_pitch.is_finite() {
-                    // The flight's pitching: aim the stance's posture servo
-                    // at the opposite side, so the trunk swings about level.
-                    let change = pitch - self.liftoff_pitch;
-                    let goal = (-p.pitch_feedforward * change).clamp(-0.3, 0.3);
-                    self.pitch_d += 0.5 * (goal - self.pitch_d);
-                }
-                let state = &mut self.legs[i];
-                state.phase = Phase::Loading;
-                state.touchdown_s = input.time;
-                state.landed_rest = state.rest.min(p.landing_rest_m * l);
-            }
-            let state = &mut self.legs[i];
-            match state.phase {
-                // Compression once the spring shortens; a leg that landed
-                // still lengthening may not shorten past its rest at once.
-                Phase::Loading
-                    if q < state.landed_rest - 0.005 * l
-                        || input.time - state.touchdown_s >= 0.02 * self.scale.time() =>
-                {
-                    state.phase = Phase::Compression;
-                }
-                // Thrust once the spring lengthens again after a real
-                // compression, not on the first jitter of a landing.
-                Phase::Compression
-                    if qd >= 0.0 && input.time - state.touchdown_s >= 0.03 * self.scale.time() =>
-                {
-                    state.phase = Phase::Thrust;
-                }
-                Phase::Thrust
-                    if q >= state.landed_rest + self.thrust - 0.01 * l || q >= -0.005 * l =>
-                {
-                    state.phase = Phase::Unloading;
-                }
-                _ => {}
-            }
-            // The trailing leg hands the load over: it shortens once the
-            // leading leg rebounds, so it leaves the ground first.
-            if i == trail
-                && lead_rebounds
-                && matches!(state.phase, Phase::Compression | Phase::Thrust)
-            {
-                state.phase = Phase::Unloading;
-            }
-            // Lift-off ends a stance only once the leg has thrust; a foot that
-            // bounces off the ground at impact is still landing.
-            if matches!(state.phase, Phase::Thrust | Phase::Unloading) && !touching {
-                state.stance_s = (input.time - state.touchdown_s)
-                    .clamp(0.05 * self.scale.time(), 0.5 * self.scale.time());
-                state.phase = Phase::Flight;
-                state.hold = [input.data.q[leg.hip[0]], input.data.q[leg.hip[1]]];
-                if !other_down {
-                    self.start_flight(input);
-                    self.liftoff_pitch = pitch;
-                }
-            }
-        }
-        self.phase = match (self.in_support(trail), self.in_support(lead)) {
-            (false, false) => GallopPhase::Flight,
-            (true, false) => GallopPhase::TrailSupport,
-            (true, true) => GallopPhase::DoubleSupport,
-            (false, true) => GallopPhase::LeadSupport,
-        };
-    }
-
-    /// The trunk's pitch about the heading's lateral axis (rad).
-    fn pitch(&self, input: &ControlInput<'_>) -> f64 {
-        let err = attitude_error(input.creature, input.data, self.params.heading, 0.0);
-        let lateral = DVec3::Y.cross(heading_forward(self.params.heading));
-        err.dot(lateral)
-    }
-
-    /// The stride's last lift-off: the hop's apex adjusts the thrust (eq. 2)
-    /// and the stride's speed the integral correction.
-    fn start_flight(&mut self, input: &ControlInput<'_>) {
-        let p = self.params;
-        let l = self.scale.l;
-        if self.apex_height.is_finite() {
-            let landing_height = self.leg_m[self.trail()] + p.landing_rest_m * l;
-            let error = (landing_height + p.hop_height_m * l) - self.apex_height;
-            self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
-        }
-        let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
-        let (on, gain) = (p.speed_trim, p.speed_integral_gain);
-        let v = self.scale.velocity();
-        (self.trim).stride_at_heading(on, gain, p.speed_mps, v, input.time, com, p.heading);
-        self.apex_height = f64::NEG_INFINITY;
-        self.descending = false;
-    }
-
-    /// Whether airborne leg `i` holds its lift-off angles rather than
-    /// swinging to its landing place.
-    fn holds(&self, i: usize) -> bool {
-        match self.params.style {
-            // The trailing leg waits behind while the leading leg supports;
-            // both swing forward together in flight.
-            GallopStyle::TogetherSwing => i == self.trail() && self.in_support(self.lead()),
-            // The leading leg waits through flight and swings forward in the
-            // trailing leg's single support; the trailing leg swings in the
-            // leading leg's.
-            GallopStyle::AlternateSwing => i == self.lead() && self.phase == GallopPhase::Flight,
-        }
-    }
-
-    /// The rest length leg `i` heads for (m).
-    fn rest_target(&self, i: usize, time: f64) -> f64 {
-        let p = &self.params;
-        let l = self.scale.l;
-        let state = &self.legs[i];
-        match state.phase {
-            Phase::Thrust => state.landed_rest + self.thrust,
-            Phase::Unloading => p.idle_rest_m * l,
-            Phase::Loading | Phase::Compression => state.landed_rest,
-            Phase::Flight if i == self.trail() => {
-                // Lengthen for landing in flight; not while the leading leg
-                // still supports, so the foot does not scuff the ground.
-                if self.phase == GallopPhase::Flight {
-                    p.landing_rest_m * l
-                } else {
-                    p.idle_rest_m * l
-                }
-            }
-            Phase::Flight => {
-                let trail = &self.legs[self.trail()];
-                let waited = time - trail.touchdown_s >= p.lead_delay_s * self.scale.time();
-                if self.in_support(self.trail()) && waited {
-                    p.landing_rest_m * l
-                } else if self.phase == GallopPhase::Flight && self.descending {
-                    (p.landing_rest_m - p.lead_retract_m) * l
-                } else {
-                    p.idle_rest_m * l
-                }
-            }
-        }
-    }
 }
 
 impl Controller for BipedGallop {
     crate::tunable_gains!(BipedGallopParams;
         leg_stiffness => "N/m", leg_damping => "N·s/m", posture_kp => "N·m/rad", posture_kv => "N·m·s/rad",
         placement_gain_s => "s", swing_kp => "N·m/rad", swing_kv => "N·m·s/rad");
+    crate::steering_commands!(hop_height_m);
 
     fn phase_name(&self) -> &'static str {
         self.phase.name()
@@ -343,22 +144,6 @@ impl Controller for BipedGallop {
 
     fn leg_phase_name(&self, leg: usize) -> Option<&'static str> {
         self.legs.get(leg).map(|l| l.phase.name())
-    }
-
-    fn set_speed(&mut self, speed_mps: f64) {
-        self.params.speed_mps = speed_mps;
-    }
-
-    fn set_heading(&mut self, heading: f64) {
-        self.params.heading = heading;
-    }
-
-    fn set_hop_height(&mut self, height_m: f64) {
-        self.params.hop_height_m = height_m;
-    }
-
-    fn hop_height_m(&self) -> Option<f64> {
-        Some(self.params.hop_height_m)
     }
 
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
@@ -428,23 +213,14 @@ impl Controller for BipedGallop {
                                 p.placement_gain_s * s.time(),
                             );
                         let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
-                        let dir = leg_direction(
-                            trunk_rot,
-                            foot - hip_world,
-                            self.leg_m[i] + p.landing_rest_m * l,
-                        );
-                        let (roll, pitch) = gimbal_angles(dir);
-                        [roll, pitch]
+                        let reach = self.leg_m[i] + p.landing_rest_m * l;
+                        hip_angles(trunk_rot, hip_world, foot, reach)
                     };
                     set_hip(drives, &leg.hip[..2], targets, kp, kv, max);
                     drives[leg.hip[2]].servo(ykp, ykv, 0.0);
                 }
-                Phase::Loading => {
-                    for &j in &leg.hip[..2] {
-                        drives[j].torque(0.0);
-                    }
-                    drives[leg.hip[2]].servo(ykp, ykv, 0.0);
-                }
+                // Figure 4: "zero active hip torque" on landing.
+                Phase::Loading => zero_hip(drives, &leg.hip, ykp, ykv),
                 // Eq. 4: [`Controller::servo`], every integration step.
                 Phase::Compression | Phase::Thrust | Phase::Unloading => {}
             }

@@ -7,10 +7,10 @@
 use glam::DVec3;
 
 use super::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
-use super::hip_servo::set_hip;
+use super::hip_servo::{set_hip, zero_hip};
 use super::leg_spring::{LegSpring, toward};
-use super::phase::Phase;
-use super::placement::{foot_displacement, gimbal_angles, leg_direction};
+use super::phase::{Phase, StanceEvents};
+use super::placement::{foot_displacement, hip_angles};
 use super::posture::{through_hip, trunk_torque};
 use super::scale::Scale;
 use super::speed_trim::SpeedTrim;
@@ -88,14 +88,13 @@ impl BipedRun {
                     self.touchdown_time = input.time;
                 }
             }
-            Phase::Loading if q < (p.landing_rest_m - 0.005) * l => self.phase = Phase::Compression,
-            Phase::Compression if qd >= 0.0 => self.phase = Phase::Thrust,
-            Phase::Thrust
-                if q >= p.landing_rest_m * l + self.thrust - 0.01 * l || q >= -0.005 * l =>
-            {
-                self.phase = Phase::Unloading;
+            stance => {
+                self.phase = stance.after(StanceEvents {
+                    shortened: q < (p.landing_rest_m - 0.005) * l,
+                    lengthening: qd >= 0.0,
+                    extended: q >= p.landing_rest_m * l + self.thrust - 0.01 * l || q >= -0.005 * l,
+                });
             }
-            _ => {}
         }
         // Lift-off ends a stance only once the leg has thrust; a foot that
         // bounces off the ground at impact is still landing.
@@ -124,25 +123,10 @@ impl Controller for BipedRun {
     crate::tunable_gains!(BipedRunParams;
         leg_stiffness => "N/m", leg_damping => "N·s/m", posture_kp => "N·m/rad", posture_kv => "N·m·s/rad",
         placement_gain_s => "s", swing_kp => "N·m/rad", swing_kv => "N·m·s/rad");
+    crate::steering_commands!(hop_height_m);
 
     fn phase_name(&self) -> &'static str {
         self.phase.name()
-    }
-
-    fn set_speed(&mut self, speed_mps: f64) {
-        self.params.speed_mps = speed_mps;
-    }
-
-    fn set_heading(&mut self, heading: f64) {
-        self.params.heading = heading;
-    }
-
-    fn set_hop_height(&mut self, height_m: f64) {
-        self.params.hop_height_m = height_m;
-    }
-
-    fn hop_height_m(&self) -> Option<f64> {
-        Some(self.params.hop_height_m)
     }
 
     /// Eq. 4 through the active hip while its foot is loaded ("vertical
@@ -211,9 +195,8 @@ impl Controller for BipedRun {
                         self.stance_s,
                         p.placement_gain_s * s.time(),
                     );
-                let dir = leg_direction(trunk_rot, foot - hip_world, reach);
-                let (roll, pitch) = gimbal_angles(dir);
-                set_hip(drives, &active.hip[..2], [roll, pitch], kp, kv, max);
+                let angles = hip_angles(trunk_rot, hip_world, foot, reach);
+                set_hip(drives, &active.hip[..2], angles, kp, kv, max);
                 drives[active.hip[2]].servo(ykp, ykv, 0.0);
             }
             // Figure 4: "zero active hip torque" on landing and unloading.
@@ -264,13 +247,4 @@ impl BipedRun {
         let grip = p.max_yaw_torque * s.torque();
         drives[active.hip[2]].torque((-yaw).clamp(-grip, grip));
     }
-}
-
-/// Zero the roll and pitch torques of a ball hip; its yaw joint keeps the
-/// leg's own orientation (gains `ykp`, `ykv`).
-fn zero_hip(drives: &mut [Drive], hip: &[usize], ykp: f64, ykv: f64) {
-    for &j in &hip[..2] {
-        drives[j].torque(0.0);
-    }
-    drives[hip[2]].servo(ykp, ykv, 0.0);
 }

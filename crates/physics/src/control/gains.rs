@@ -7,25 +7,32 @@
 //! loop calls; the macro here declares a controller's.
 
 /// Declares `gains()` and `set_gain()` over named fields of `self.params`
-/// (given as `field => unit`), with `Default` supplying the defaults.
+/// (given as `field => unit`), with `Default` supplying the defaults; or,
+/// as `params.sub = DEFAULT; …`, over the fields of `self.params.sub` with
+/// their defaults in `DEFAULT`.
 #[macro_export]
 #[doc(hidden)]
 macro_rules! tunable_gains {
-    ($params:ty; $($field:ident => $unit:literal),* $(,)?) => {
+    ($($path:ident).+ = $default:expr; $($field:ident => $unit:literal),* $(,)?) => {
         fn gains(&self) -> Vec<$crate::world::sim::Gain> {
-            let d = <$params>::default();
-            vec![$($crate::world::sim::Gain::new(stringify!($field), $unit, self.params.$field, d.$field)),*]
+            let d = $default;
+            let now = &self.$($path).+;
+            vec![$($crate::world::sim::Gain::new(stringify!($field), $unit, now.$field, d.$field)),*]
         }
 
         fn set_gain(&mut self, name: &str, value: f64) -> bool {
             if !(value.is_finite() && value >= 0.0) {
                 return false;
             }
+            let now = &mut self.$($path).+;
             match name {
-                $(stringify!($field) => self.params.$field = value,)*
+                $(stringify!($field) => now.$field = value,)*
                 _ => return false,
             }
             true
         }
+    };
+    ($params:ty; $($field:ident => $unit:literal),* $(,)?) => {
+        $crate::tunable_gains!(params = <$params>::default(); $($field => $unit),*);
     };
 }

@@ -13,6 +13,24 @@ pub fn set_hip(drives: &mut [Drive], hip: &[usize], targets: [f64; 2], kp: f64, 
     }
 }
 
+/// Figure 4's zero hip torque on a hip's joints `hip`, their angles now
+/// (`q`, rad, indexed by joint) kept in `previous` as the servo's last targets.
+pub fn release(drives: &mut [Drive], hip: &[usize], q: &[f64], previous: &mut [f64; 2]) {
+    for (&j, prev) in hip.iter().zip(previous.iter_mut()) {
+        drives[j].torque(0.0);
+        *prev = q[j];
+    }
+}
+
+/// Figure 4's zero hip torque on a ball hip's roll and pitch; its yaw joint
+/// keeps the leg's own orientation (gains `ykp` N·m/rad, `ykv` N·m·s/rad).
+pub fn zero_hip(drives: &mut [Drive], hip: &[usize], ykp: f64, ykv: f64) {
+    for &j in &hip[..2] {
+        drives[j].torque(0.0);
+    }
+    drives[hip[2]].servo(ykp, ykv, 0.0);
+}
+
 /// Largest hip servo targets (rad): roll, pitch.
 pub const HIP_TARGET_LIMIT: [f64; 2] = [0.8, 1.3];
 

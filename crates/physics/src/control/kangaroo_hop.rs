@@ -32,22 +32,23 @@
 //! (Table 1): lengths ×L, times ×√L, speeds ×√L, torsional stiffness ×L⁴,
 //! torsional damping ×L^4.5.
 
-use gaitlab_core::portable::Portable;
 use glam::{DVec2, DVec3};
 
 use super::attitude::com_velocity;
+use super::kangaroo_leg::{leg_geometry, leg_ik, planar, thigh_on_thrust_line};
 use super::phase::Phase;
 use super::posture::axis_torque;
 use super::scale::Scale;
-use super::speed_trim::{SpeedTrim, along_z};
-use crate::creatures::PhysicalCreature;
-use crate::dynamics::data::Data;
-use crate::dynamics::model::GRAVITY_MPS2;
-use crate::world::actuator::Stops;
-use crate::world::ground::{GroundParams, PawPad};
-use crate::world::sim::{ControlInput, Controller, Drive, Sim};
+use super::speed_trim::SpeedTrim;
+use crate::world::sim::{ControlInput, Controller, Drive};
 
+mod ankle;
+mod stride;
+mod tail;
+
+pub use super::ground::kangaroo_ground;
 pub use super::kangaroo_hop_params::KangarooHopParams;
+pub use super::start::kangaroo_start;
 
 /// The extra states of a jump over an obstacle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -61,65 +62,6 @@ pub enum JumpStage {
     Airborne,
     /// The stance after the jump: extra ankle damping.
     Landing,
-}
-
-/// The leg's link lengths (m), read from the model.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct LegGeometry {
-    thigh: f64,
-    shin: f64,
-    foot: f64,
-}
-
-fn leg_geometry(creature: &PhysicalCreature) -> Option<LegGeometry> {
-    let leg = creature.legs.first()?;
-    let bodies = creature.model.bodies();
-    let shin_body = bodies.get(leg.foot_body)?.parent?;
-    Some(LegGeometry {
-        thigh: bodies.get(shin_body)?.placement.pos.length(),
-        shin: bodies.get(leg.foot_body)?.placement.pos.length(),
-        foot: leg.foot_point.length(),
-    })
-}
-
-/// Unit direction (forward, up) of a link at absolute angle `a` (rad about +x,
-/// 0 hanging down, positive swinging back).
-fn dir(a: f64) -> DVec2 {
-    DVec2::new(-a.psin(), -a.pcos())
-}
-
-/// Absolute angle of the direction `v` (forward, up).
-fn angle_of(v: DVec2) -> f64 {
-    (-v.x).patan2(-v.y)
-}
-
-/// A world point in the sagittal plane (forward, up).
-fn planar(p: DVec3) -> DVec2 {
-    DVec2::new(p.z, p.y)
-}
-
-/// Hip and knee angles (relative, rad) putting the toe at `toe` from the hip
-/// (forward, up) with the ankle at `ankle` and the trunk at pitch `pitch`;
-/// the knee bends forward.
-fn leg_ik(g: &LegGeometry, toe: DVec2, ankle: f64, pitch: f64) -> (f64, f64) {
-    // Knee-to-toe as one link in the shin's frame.
-    let v = g.shin * dir(0.0) + g.foot * dir(ankle);
-    let s = v.length();
-    let delta = angle_of(v);
-    let l1 = g.thigh;
-    let d = toe
-        .length()
-        .clamp((l1 - s).abs() + 1e-6 * (l1 + s), 0.999 * (l1 + s));
-    let gamma = angle_of(toe);
-    let alpha = ((l1 * l1 + d * d - s * s) / (2.0 * l1 * d))
-        .clamp(-1.0, 1.0)
-        .pacos();
-    let a1 = gamma - alpha;
-    let knee = l1 * dir(a1);
-    let toe_at = d * dir(gamma);
-    let b = angle_of(toe_at - knee);
-    let a2 = b - delta;
-    (a1 - pitch, a2 - a1)
 }
 
 /// The kangaroo hopping controller: the state machine of Figure 4 plus the
@@ -239,159 +181,6 @@ impl KangarooHop {
         };
         self.speed_command_mps = cmd + (target - cmd).clamp(-step, step);
     }
-
-    fn advance_phase(&mut self, input: &ControlInput<'_>, com: DVec3, com_v: DVec3) {
-        let l = input.creature.scale;
-        let Some(leg) = input.creature.legs.first() else {
-            return;
-        };
-        let Some(contact) = input.contacts.first() else {
-            return;
-        };
-        let q = input.data.q[leg.spring];
-        let qd = input.data.qd[leg.spring];
-        let t = input.time;
-        match self.phase {
-            Phase::Flight => {
-                self.apex_com_y = self.apex_com_y.max(com.y);
-                let airborne = t - self.flight_start;
-                if contact.touching && airborne > 0.03 * l.sqrt() && com_v.y < 0.0 {
-                    self.phase = Phase::Loading;
-                    self.touchdown_time = t;
-                    self.touch_down(contact.position.z, t, com.z, l);
-                    return;
-                }
-            }
-            Phase::Loading if qd < 0.0 && q < self.ankle_rest - 0.02 => {
-                self.phase = Phase::Compression;
-            }
-            Phase::Compression if qd >= 0.0 => {
-                self.phase = Phase::Thrust;
-                self.thrust(input, com, com_v);
-            }
-            Phase::Thrust if q >= self.ankle_rest - 0.05 => self.phase = Phase::Unloading,
-            _ => {}
-        }
-        if self.phase != Phase::Flight
-            && !contact.touching
-            && t - self.touchdown_time > 0.02 * l.sqrt()
-        {
-            self.lift_off(t, com, l);
-        }
-    }
-
-    fn touch_down(&mut self, toe_z: f64, t: f64, com_z: f64, l: f64) {
-        let p = self.params;
-        // Integral speed correction from the stride just finished.
-        if self.jump == JumpStage::None
-            && let Some(mean) = self.trim.mean_since(t, along_z(com_z), DVec3::Z, 0.0)
-        {
-            let limit = p.speed_integral_max_mps * l.sqrt();
-            let error = self.speed_command_mps - mean;
-            self.trim
-                .correct(p.speed_trim, p.speed_integral_gain, error, limit);
-        }
-        self.trim.mark(t, along_z(com_z));
-        if self.touchdown_toe != 0.0 {
-            let stride = toe_z - self.touchdown_toe;
-            if stride > 0.0 {
-                self.stride_m = 0.5 * self.stride_m + 0.5 * stride;
-            }
-        }
-        self.touchdown_toe = toe_z;
-        // Hop-height learning from the apex just flown (eq. 2's losses).
-        if self.jump == JumpStage::None
-            && self.target_apex_y.is_finite()
-            && self.apex_com_y.is_finite()
-        {
-            let err = self.target_apex_y - self.apex_com_y;
-            self.apex_correction_m =
-                (self.apex_correction_m + p.hop_gain * err).clamp(-0.1 * l, 0.2 * l);
-        }
-        self.jump = match self.jump {
-            JumpStage::Airborne => JumpStage::Landing,
-            JumpStage::Landing => JumpStage::None,
-            s => s,
-        };
-        if self.jump_pending
-            && let Some(at) = p.jump_at_m
-        {
-            // Jump now if the next ordinary stride would land short of the
-            // obstacle's far side but past its near face minus a margin.
-            let next = toe_z + self.stride_m;
-            if next > (at - 0.25 * l) * 1.0 && toe_z < at {
-                self.jump = JumpStage::Takeoff;
-                self.jump_pending = false;
-            }
-        }
-    }
-
-    fn lift_off(&mut self, t: f64, com: DVec3, l: f64) {
-        let measured = t - self.touchdown_time;
-        if self.jump == JumpStage::None {
-            self.stance_s = measured.clamp(0.05 * l.sqrt(), 0.3 * l.sqrt());
-        }
-        self.liftoff_com_y = com.y;
-        self.apex_com_y = f64::NEG_INFINITY;
-        self.flight_start = t;
-        self.phase = Phase::Flight;
-        self.ankle_rest = self.params.ankle_rest_rad;
-        if self.jump == JumpStage::Takeoff {
-            self.jump = JumpStage::Airborne;
-        }
-    }
-
-    fn ankle_gains(&self, l: f64) -> (f64, f64) {
-        let p = &self.params;
-        let (mut k, mut b) = Scale::new(l).torsional_gains(p.ankle_stiffness, p.ankle_damping);
-        match self.jump {
-            JumpStage::Takeoff => k *= p.jump_stiffness_factor,
-            JumpStage::Landing if self.phase != Phase::Flight => b *= p.landing_damping_factor,
-            _ => {}
-        }
-        (k, b)
-    }
-
-    /// Eq. 2 at the bottom of the stance: step the ankle rest so the
-    /// predicted apex meets the target.
-    fn thrust(&mut self, input: &ControlInput<'_>, com: DVec3, com_v: DVec3) {
-        let l = input.creature.scale;
-        let Some(leg) = input.creature.legs.first() else {
-            return;
-        };
-        let p = self.params;
-        let m = input.creature.model.total_mass();
-        let g = GRAVITY_MPS2;
-        let (k, _) = self.ankle_gains(l);
-        let q = input.data.q[leg.spring];
-        let strain = 0.5 * k * (q - self.ankle_rest).powi(2);
-        let predicted = (strain + m * g * com.y + 0.5 * m * com_v.y * com_v.y) / (m * g);
-        let base = if self.liftoff_com_y.is_finite() {
-            self.liftoff_com_y
-        } else {
-            com.y
-        };
-        let mut target = base + p.hop_rise_m * l;
-        if self.jump == JumpStage::Takeoff
-            && let Some(at) = p.jump_at_m
-        {
-            // Long enough to carry the body past the obstacle, and high
-            // enough for the tucked toe to clear it.
-            let v = com_v.z.max(0.5 * l.sqrt());
-            let far = at + p.obstacle_depth_m * l + 0.3 * l;
-            let flight = ((far - com.z) / v - 0.5 * self.stance_s).max(0.1 * l.sqrt());
-            let rise_time = 0.5 * flight;
-            let by_time = 0.5 * g * rise_time * rise_time;
-            let by_height = (p.obstacle_height_m + p.jump_clearance_m) * l + 0.1 * l;
-            target = base + by_time.max(by_height);
-        }
-        self.target_apex_y = target;
-        let wanted = (target + self.apex_correction_m - predicted) * m * g;
-        let stored = (q - self.ankle_rest).powi(2) + 2.0 * wanted / k;
-        let rest = q + stored.max(0.0).sqrt();
-        let r0 = p.ankle_rest_rad;
-        self.ankle_rest = rest.clamp(r0 - 0.5 * p.max_thrust_rad, r0 + p.max_thrust_rad);
-    }
 }
 
 impl Controller for KangarooHop {
@@ -461,44 +250,14 @@ impl Controller for KangarooHop {
         let pitch = data.q[2];
         let pitch_rate = data.qd[2];
 
-        // Ankle: the leg spring of eq. 1.
-        let (ak, ab) = self.ankle_gains(l);
-        let d = &mut drives[ankle];
-        d.spring.stiffness = ak;
-        d.spring.damping = ab;
-        d.spring.rest = self.ankle_rest;
-        d.spring.max_force = f64::INFINITY;
-        d.feedforward = 0.0;
-        d.stops = Some(Stops {
-            min: p.ankle_rest_rad - 1.3,
-            max: p.ankle_rest_rad + 1.2,
-            stiffness: 50.0 * ak,
-            damping: 20.0 * ab,
-        });
+        self.drive_ankle(&mut drives[ankle], l);
 
         let hip_world = planar(data.point_world(creature.trunk, leg.hip_in_trunk));
         let stance = self.phase != Phase::Flight;
         if stance {
             // Hip: the knee onto the thrust line toe → centre of mass.
             let toe = planar(input.contacts.first().map_or(DVec3::ZERO, |c| c.position));
-            let u = (planar(com) - toe).normalize_or(DVec2::Y);
-            let th = toe - hip_world;
-            let b = u.dot(th);
-            let disc = b * b - (th.length_squared() - g.thigh * g.thigh);
-            let a1_now = pitch + data.q[hip];
-            let a1 = if disc >= 0.0 {
-                let r = disc.sqrt();
-                let k1 = toe + (-b + r) * u - hip_world;
-                let k2 = toe + (-b - r) * u - hip_world;
-                let (c1, c2) = (angle_of(k1), angle_of(k2));
-                if (c1 - a1_now).abs() <= (c2 - a1_now).abs() {
-                    c1
-                } else {
-                    c2
-                }
-            } else {
-                angle_of(toe + (-b) * u - hip_world)
-            };
+            let a1 = thigh_on_thrust_line(&g, hip_world, toe, planar(com), pitch + data.q[hip]);
             drives[hip].servo(p.stance_hip_kp * t4, p.stance_hip_kv * t45, a1 - pitch);
             drives[hip].spring.max_force = max;
             // Knee: posture (eq. 4), every integration step ([`Controller::servo`]).
@@ -532,84 +291,6 @@ impl Controller for KangarooHop {
             drives[knee].spring.max_force = max;
         }
 
-        // Tail: a step of the base spring's rest, down in stance, up in flight.
-        let mut tail = creature.tail.iter().copied();
-        if let Some(base) = tail.next() {
-            let step = if stance {
-                p.tail_mean_rad - 0.5 * p.tail_step_rad
-            } else {
-                p.tail_mean_rad + 0.5 * p.tail_step_rad
-            };
-            // The lab's tail feedback: the rest also follows the trunk's
-            // pitch error and rate (the paper only steps it).
-            let assist = if p.tail_feedback {
-                p.tail_pitch_gain * (pitch - p.pitch_rad)
-                    + p.tail_rate_gain_s * l.sqrt() * pitch_rate
-            } else {
-                0.0
-            };
-            let rest = step + assist.clamp(-1.0, 1.0);
-            drives[base].servo(p.tail_stiffness * t4, p.tail_damping * t45, rest);
-        }
-        for j in tail {
-            drives[j].servo(p.tail_tip_stiffness * t4, p.tail_tip_damping * t45, 0.0);
-        }
-        // Head level.
-        if let Some(neck) = creature.neck {
-            drives[neck].servo(p.neck_kp * t4, p.neck_kv * t45, -pitch);
-        }
+        self.tail_and_neck(creature, pitch, pitch_rate, stance, drives);
     }
-}
-
-/// The kangaroo's paw-pad ground (eq. 6) at scale 1; scale it with
-/// [`GroundParams::scaled`].
-#[must_use]
-pub fn kangaroo_ground() -> GroundParams {
-    GroundParams {
-        vertical_stiffness: 30_000.0,
-        vertical_damping: 150.0,
-        tangential_stiffness: 20_000.0,
-        tangential_damping: 100.0,
-        torsional_stiffness: 50.0,
-        torsional_damping: 0.5,
-        pad: Some(PawPad {
-            stiffness_n: 600.0,
-            thickness_m: 0.02,
-        }),
-    }
-}
-
-/// Put the kangaroo in flight just before landing, moving forward at
-/// `speed_mps` (m/s at scale 1; scaled by √L), its leg set for a neutral
-/// landing. Expects `sim.creature` to be the kangaroo.
-pub fn kangaroo_start(sim: &mut Sim, speed_mps: f64) {
-    let creature = &sim.creature;
-    let l = creature.scale;
-    let p = KangarooHopParams::default();
-    let Some(g) = leg_geometry(creature) else {
-        return;
-    };
-    let Some(leg) = creature.legs.first() else {
-        return;
-    };
-    let (Some(&hip), Some(knee)) = (leg.hip.first(), leg.knee) else {
-        return;
-    };
-    let ankle = leg.spring;
-    let data: &mut Data = &mut sim.data;
-    data.q.fill(0.0);
-    data.qd.fill(0.0);
-    let r0 = p.landing_leg_m * l;
-    let dz = (0.5 * speed_mps * p.stance_guess_s * l).min(0.8 * r0);
-    let toe = DVec2::new(dz, -(r0 * r0 - dz * dz).sqrt());
-    let (qh, qk) = leg_ik(&g, toe, p.ankle_rest_rad, 0.0);
-    data.q[hip] = qh;
-    data.q[knee] = qk;
-    data.q[ankle] = p.ankle_rest_rad;
-    data.q[6] = p.tail_mean_rad;
-    // Trunk height: the toe 1 cm (×L) above the ground.
-    data.q[1] = -(leg.hip_in_trunk.y + toe.y) + 0.01 * l;
-    data.qd[0] = speed_mps * l.sqrt();
-    data.qd[1] = -0.5 * l.sqrt();
-    crate::dynamics::kinematics::kinematics(&creature.model, data);
 }

@@ -1,5 +1,9 @@
 //! The states of Figure 4's finite state machine, entered on the sensory
-//! events the paper lists beneath each state name.
+//! events the paper lists beneath each state name, and the stance part of
+//! the cycle (loading → compression → thrust → unloading) that every gait's
+//! (virtual) leg runs. What counts as a touchdown or a lift-off, and the
+//! thresholds of each event, are the gait's: it senses them, this module
+//! moves the state.
 
 /// One state of the running cycle.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -44,5 +48,31 @@ impl Phase {
     #[must_use]
     pub fn index(self) -> usize {
         self as usize
+    }
+}
+
+/// The sensory events of one (virtual) leg in stance, as its gait senses them.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct StanceEvents {
+    /// The leg spring has shortened: Loading → Compression.
+    pub shortened: bool,
+    /// The leg spring lengthens again: Compression → Thrust.
+    pub lengthening: bool,
+    /// The leg spring is near full length: Thrust → Unloading.
+    pub extended: bool,
+}
+
+impl Phase {
+    /// The state after `self` on `events` (Figure 4), one step at most:
+    /// Loading, Compression and Thrust move on their event; Flight and
+    /// Unloading stay (touchdown and lift-off are the gait's to sense).
+    #[must_use]
+    pub fn after(self, events: StanceEvents) -> Phase {
+        match self {
+            Phase::Loading if events.shortened => Phase::Compression,
+            Phase::Compression if events.lengthening => Phase::Thrust,
+            Phase::Thrust if events.extended => Phase::Unloading,
+            other => other,
+        }
     }
 }

@@ -39,6 +39,15 @@ pub fn leg_direction(trunk_rot: DMat3, offset: DVec3, reach: f64) -> DVec3 {
     trunk_rot.transpose() * world
 }
 
+/// The hip's gimbal angles `[roll, pitch]` (rad) that aim a leg of length
+/// `reach` (m) from the hip at `hip_world` toward the ground point `foot`
+/// (world): eq. 3's foot place as hip targets.
+#[must_use]
+pub fn hip_angles(trunk_rot: DMat3, hip_world: DVec3, foot: DVec3, reach: f64) -> [f64; 2] {
+    let (roll, pitch) = gimbal_angles(leg_direction(trunk_rot, foot - hip_world, reach));
+    [roll, pitch]
+}
+
 /// Where on the ground (world, y = 0) the hip will be at touchdown, looking
 /// at most `lookahead_s` ahead: the hip at `hip_world` moving at `hip_v`,
 /// falling under gravity until a leg of length `reach` pointed `displacement`

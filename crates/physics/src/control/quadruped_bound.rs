@@ -34,28 +34,21 @@
 use glam::DVec3;
 
 use super::attitude::{com_velocity, heading_forward};
-use super::hip_servo::HipServo;
+use super::hip_servo::{HipServo, release};
 use super::hop_height::{flight_for_height, height_for_flight};
 use super::leg_spring::LegSpring;
 use super::pair_posture::PairPosture;
 use super::phase::Phase;
-use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
+use super::placement::{foot_displacement, hip_angles, hip_at_touchdown};
 use super::scale::Scale;
-use super::speed_trim::{SpeedTrim, along_z};
-use super::start::{first_leg_m, level_flight};
+use super::speed_trim::SpeedTrim;
 use crate::creatures::PhysicalCreature;
-use crate::world::sim::{ControlInput, Controller, Drive, Sim};
+use crate::world::sim::{ControlInput, Controller, Drive};
 
-/// The pairs: front then rear; within a pair the leg that lands first in
-/// the gallop comes first (front-right 1, front-left 0, rear-right 3, rear-left 2).
-pub const PAIRS: [[usize; 2]; 2] = [[1, 0], [3, 2]];
+pub use super::quadruped_bound_params::{BoundStyle, FRONT, PAIRS, QuadrupedBoundParams, REAR};
+pub use super::start::bound_start;
 
-/// Index of the front pair in [`PAIRS`].
-pub const FRONT: usize = 0;
-/// Index of the rear pair in [`PAIRS`].
-pub const REAR: usize = 1;
-
-pub use super::quadruped_bound_params::{BoundStyle, QuadrupedBoundParams};
+mod pairs;
 
 /// One pair's state machine (Figure 4).
 #[derive(Clone, Copy, Debug)]
@@ -71,23 +64,6 @@ struct PairState {
     rest: [f64; 2],
     /// Whether each leg has touched in this stance.
     touched: [bool; 2],
-}
-
-/// Put the quadruped of `sim` at the start of a bound at `speed_mps`
-/// (scale-1, scaled by √L): trunk level at landing height, rear legs
-/// extended for landing, front legs short, moving forward along +z.
-pub fn bound_start(sim: &mut Sim, speed_mps: f64) {
-    let l = sim.creature.scale;
-    let p = QuadrupedBoundParams::default();
-    let height = first_leg_m(sim) + p.landing_rest_m * l + 0.04 * l;
-    level_flight(sim, speed_mps, height, |i| {
-        let rest = if PAIRS[REAR].contains(&i) {
-            p.landing_rest_m
-        } else {
-            p.short_rest_m
-        };
-        rest * l
-    });
 }
 
 /// The bounding / galloping controller.
@@ -154,206 +130,13 @@ impl QuadrupedBound {
             scale: Scale::new(scale),
         }
     }
-
-    /// Bound or gallop.
-    #[must_use]
-    pub fn style(&self) -> BoundStyle {
-        self.params.style
-    }
-
-    /// Change between bound and gallop while running.
-    pub fn set_style(&mut self, style: BoundStyle) {
-        self.params.style = style;
-    }
-
-    /// The state of the pair `pair` (0 front, 1 rear).
-    #[must_use]
-    pub fn pair_phase(&self, pair: usize) -> Phase {
-        self.pairs[pair.min(1)].phase
-    }
-
-    /// The state shown for the creature: the rear pair's in its stance,
-    /// else the front pair's, else flight.
-    #[must_use]
-    pub fn phase(&self) -> Phase {
-        if self.pairs[REAR].phase != Phase::Flight {
-            self.pairs[REAR].phase
-        } else {
-            self.pairs[FRONT].phase
-        }
-    }
-
-    fn pair_thrust(&self, pair: usize) -> f64 {
-        let l = self.scale.length();
-        let extra = if pair == REAR {
-            self.params.rear_extra_thrust_m * l
-        } else {
-            0.0
-        };
-        (self.thrust + extra + self.trim[pair])
-            .clamp(self.params.min_thrust_m * l, self.params.max_thrust_m * l)
-    }
-
-    /// Regulate pair `k`'s trim on the flight `flight` (s) that followed
-    /// its lift-off (negative: overlap with the other pair's stance).
-    fn regulate_pair(&mut self, k: usize, flight: f64) {
-        let p = self.params;
-        let l = self.scale.l;
-        let target = if k == FRONT {
-            p.gathered_flight_s
-        } else {
-            p.extended_flight_s
-        } * l.sqrt();
-        let max = p.max_thrust_m * l;
-        self.trim[k] =
-            (self.trim[k] + p.pair_flight_gain * l.sqrt() * (target - flight)).clamp(-max, max);
-    }
-
-    /// Advance both pairs' state machines on the contact and spring events.
-    fn advance(&mut self, input: &ControlInput<'_>, com_forward: f64) {
-        let l = self.scale.l;
-        let p = self.params;
-        let any_touch = input.contacts.iter().any(|c| c.touching);
-        // Flights (every foot off) and the thrust regulation on the stride's
-        // total flight, updated when the gathered flight ends.
-        match (self.flight_start, any_touch) {
-            (Some((t0, last)), true) => {
-                self.flight_s[last] = input.time - t0;
-                self.stride_flight_s += input.time - t0;
-                self.flight_start = None;
-            }
-            (None, false) => {
-                let last = if self.pairs[FRONT].liftoff_s >= self.pairs[REAR].liftoff_s {
-                    FRONT
-                } else {
-                    REAR
-                };
-                self.flight_start = Some((input.time, last));
-            }
-            _ => {}
-        }
-        let thrusts = [self.pair_thrust(FRONT), self.pair_thrust(REAR)];
-        // Flights to regulate each pair's trim on: (pair, flight).
-        let mut events: [Option<(usize, f64)>; 2] = [None; 2];
-        for (k, &legs) in PAIRS.iter().enumerate() {
-            let other = self.pairs[1 - k];
-            let touching = [
-                input.contacts[legs[0]].touching,
-                input.contacts[legs[1]].touching,
-            ];
-            let any = touching[0] || touching[1];
-            let (mut q, mut qd, mut n) = (0.0, 0.0, 0.0);
-            for (s, &i) in legs.iter().enumerate() {
-                if touching[s] {
-                    let spring = input.creature.legs[i].spring;
-                    q += input.data.q[spring] - self.pairs[k].rest[s];
-                    qd += input.data.qd[spring];
-                    n += 1.0;
-                }
-            }
-            if n > 0.0 {
-                q /= n;
-                qd /= n;
-            }
-            let time = input.time;
-            let pair = &mut self.pairs[k];
-            for s in 0..2 {
-                if touching[s] && pair.phase != Phase::Flight && !pair.touched[s] {
-                    pair.touched[s] = true;
-                    pair.rest[s] = input.data.q[input.creature.legs[legs[s]].spring]
-                        .clamp(p.short_rest_m * l, 0.0)
-                        .max(p.landing_rest_m * l - 0.1 * l)
-                        .min(p.landing_rest_m * l + 0.02 * l);
-                }
-            }
-            match pair.phase {
-                Phase::Flight if any => {
-                    pair.phase = Phase::Loading;
-                    pair.touchdown_s = time;
-                    pair.armed = false;
-                    for s in 0..2 {
-                        pair.touched[s] = touching[s];
-                        let q = input.data.q[input.creature.legs[legs[s]].spring];
-                        pair.rest[s] = q
-                            .max(p.landing_rest_m * l - 0.1 * l)
-                            .min(p.landing_rest_m * l + 0.02 * l);
-                    }
-                    // The other pair's flight ends with this touchdown.
-                    if other.phase == Phase::Flight && other.liftoff_s > pair.liftoff_s {
-                        events[k] = Some((1 - k, time - other.liftoff_s));
-                    }
-                    self.pairs[1 - k].armed = true;
-                    // A stride runs from one rear touchdown to the next; a
-                    // rear bounce sooner than `min_stride_s` is the same stride.
-                    let stride_done = self
-                        .stride_start
-                        .is_none_or(|(t0, _)| time - t0 >= p.min_stride_s * l.sqrt());
-                    if k == REAR && stride_done {
-                        // Eq. 2's energy per stride: one thrust for both pairs,
-                        // regulated on the stride's total flight.
-                        if self.stride_start.is_some() {
-                            let error = p.stride_flight_s * l.sqrt() - self.stride_flight_s;
-                            self.thrust = (self.thrust + p.flight_gain * l.sqrt() * error)
-                                .clamp(p.min_thrust_m * l, p.max_thrust_m * l);
-                        }
-                        self.stride_flight_s = 0.0;
-                        let vd = p.speed_mps * l.sqrt();
-                        self.speed_trim.stride(
-                            p.speed_trim,
-                            p.speed_integral_gain,
-                            vd,
-                            p.speed_bias_cap * vd.abs().max(0.5 * l.sqrt()),
-                            time,
-                            along_z(com_forward),
-                            DVec3::Z,
-                            1e-3,
-                        );
-                        self.stride_start = Some((time, com_forward));
-                    }
-                    continue;
-                }
-                // A foot bouncing off at impact is still landing.
-                Phase::Loading if !any && time - pair.touchdown_s > 0.01 * l.sqrt() => {
-                    pair.phase = Phase::Flight;
-                    pair.liftoff_s = time;
-                }
-                Phase::Loading if !any => {}
-                Phase::Loading
-                    if (qd < 0.0 && q < -0.002 * l)
-                        || time - pair.touchdown_s > 0.015 * l.sqrt() =>
-                {
-                    pair.phase = Phase::Compression;
-                }
-                Phase::Compression if qd >= 0.0 => pair.phase = Phase::Thrust,
-                Phase::Thrust if q >= p.thrust_end * thrusts[k] - 0.005 * l => {
-                    pair.phase = Phase::Unloading;
-                }
-                _ => {}
-            }
-            if matches!(
-                pair.phase,
-                Phase::Compression | Phase::Thrust | Phase::Unloading
-            ) && !any
-            {
-                pair.phase = Phase::Flight;
-                pair.liftoff_s = time;
-                pair.stance_s = (time - pair.touchdown_s).clamp(0.04 * l.sqrt(), 0.3 * l.sqrt());
-                // The other pair landed during this stance: no flight.
-                if other.phase != Phase::Flight && other.touchdown_s > pair.touchdown_s {
-                    events[k] = Some((k, other.touchdown_s - time));
-                }
-            }
-        }
-        for (k, flight) in events.into_iter().flatten() {
-            self.regulate_pair(k, flight);
-        }
-    }
 }
 
 impl Controller for QuadrupedBound {
     crate::tunable_gains!(QuadrupedBoundParams;
         leg_stiffness => "N/m", leg_damping => "N·s/m", placement_gain_s => "s", pitch_kp => "N·m/rad",
         pitch_kv => "N·m·s/rad", roll_kp => "N·m/rad", roll_kv => "N·m·s/rad");
+    crate::steering_commands!();
 
     fn phase_name(&self) -> &'static str {
         self.phase().name()
@@ -362,10 +145,6 @@ impl Controller for QuadrupedBound {
     fn leg_phase_name(&self, leg: usize) -> Option<&'static str> {
         let pair = PAIRS.iter().position(|legs| legs.contains(&leg))?;
         Some(self.pair_phase(pair).name())
-    }
-
-    fn set_speed(&mut self, speed_mps: f64) {
-        self.params.speed_mps = speed_mps;
     }
 
     /// The bound regulates the flight in each stride: a hop height asks for
@@ -378,10 +157,6 @@ impl Controller for QuadrupedBound {
 
     fn hop_height_m(&self) -> Option<f64> {
         Some(height_for_flight(self.params.stride_flight_s))
-    }
-
-    fn set_heading(&mut self, heading: f64) {
-        self.params.heading = heading;
     }
 
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
@@ -505,18 +280,14 @@ impl Controller for QuadrupedBound {
                     let foot = hip_at_touchdown(hip_world, hip_v, reach, displacement, lookahead)
                         + displacement
                         + spread;
-                    let dir = leg_direction(trunk_rot, foot - hip_world, reach);
-                    let (roll, pitch) = gimbal_angles(dir);
-                    servo.set(drives, &leg.hip, [roll, pitch], &mut self.hip_target[i]);
+                    let angles = hip_angles(trunk_rot, hip_world, foot, reach);
+                    servo.set(drives, &leg.hip, angles, &mut self.hip_target[i]);
                 } else if touching && servoing(pair.phase) && sharing {
                     posture.applying[i] = true;
                     posture.rest[i] = rest;
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 } else {
-                    for (&j, prev) in leg.hip.iter().zip(self.hip_target[i].iter_mut()) {
-                        drives[j].torque(0.0);
-                        *prev = data.q[j];
-                    }
+                    release(drives, &leg.hip, &data.q, &mut self.hip_target[i]);
                 }
             }
         }

@@ -3,6 +3,15 @@
 
 use super::additions::Offered;
 
+/// The pairs: front then rear; within a pair the leg that lands first in
+/// the gallop comes first (front-right 1, front-left 0, rear-right 3, rear-left 2).
+pub const PAIRS: [[usize; 2]; 2] = [[1, 0], [3, 2]];
+
+/// Index of the front pair in [`PAIRS`].
+pub const FRONT: usize = 0;
+/// Index of the rear pair in [`PAIRS`].
+pub const REAR: usize = 1;
+
 /// Bound or gallop.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum BoundStyle {

@@ -17,41 +17,26 @@
 //! scaled by its dynamic scale L (Table 1).
 
 use super::attitude::{com_velocity, heading_forward};
-use super::hip_servo::HipServo;
+use super::hip_servo::{HipServo, release};
 use super::hop_height::{flight_for_height, height_for_flight};
-use super::leg_spring::LegSpring;
 use super::pair_posture::PairPosture;
 use super::phase::Phase;
-use super::placement::{foot_displacement, gimbal_angles, hip_at_touchdown, leg_direction};
+use super::placement::{foot_displacement, hip_angles, hip_at_touchdown};
 use super::scale::Scale;
-use super::speed_trim::{SpeedTrim, along_z};
-use super::start::{first_leg_m, level_flight};
+use super::speed_trim::SpeedTrim;
 use crate::creatures::PhysicalCreature;
-use crate::world::ground::GroundParams;
-use crate::world::sim::{ControlInput, Controller, Drive, Sim};
+use crate::world::sim::{ControlInput, Controller, Drive};
 
 /// The trot's two virtual legs, diagonal pairs of leg indices (front-left
 /// 0, front-right 1, rear-left 2, rear-right 3): front-left + rear-right,
 /// front-right + rear-left.
 pub const TROT_PAIRS: [[usize; 2]; 2] = [[0, 3], [1, 2]];
 
+mod cycle;
+
+pub use super::ground::quadruped_ground;
 pub use super::quadruped_run_params::{GaitTuning, QuadrupedRunParams};
-
-/// The ground the quadruped runs on at scale `l`: the default springs scaled.
-#[must_use]
-pub fn quadruped_ground(l: f64) -> GroundParams {
-    GroundParams::default().scaled(l)
-}
-
-/// Put the quadruped of `sim` in the initial state for the trot at
-/// `speed_mps` (scale-1 speed, scaled by √L): trunk level just above standing
-/// height, moving forward along +z, legs hanging, the first pair about to land.
-pub fn quadruped_start(sim: &mut Sim, speed_mps: f64) {
-    let l = sim.creature.scale;
-    let tuning = QuadrupedRunParams::default().trot;
-    let height = first_leg_m(sim) + tuning.landing_rest_m * l + 0.03 * l;
-    level_flight(sim, speed_mps, height, |_| tuning.idle_rest_m * l);
-}
+pub use super::start::quadruped_start;
 
 /// The quadruped running controller, the trot: a virtual biped on diagonal
 /// pairs of legs.
@@ -136,145 +121,13 @@ impl QuadrupedRun {
     fn tuning(&self) -> GaitTuning {
         self.params.trot
     }
-
-    fn advance_phase(
-        &mut self,
-        input: &ControlInput<'_>,
-        drives: &[Drive],
-        descending: bool,
-        com_forward: f64,
-    ) {
-        let t = self.tuning();
-        let l = self.scale.length();
-        let time_s = self.scale.time();
-        let pair = TROT_PAIRS[self.active];
-        let landing = t.landing_rest_m * l;
-        // Flight time of the pair that lifted off last ends at the first touch
-        // of any foot.
-        if let Some(p) = self.liftoff_pair
-            && input.contacts.iter().any(|c| c.touching)
-        {
-            let flight = input.time - self.liftoff_time;
-            self.flight_s[p] = flight;
-            let error = t.flight_s[p] * time_s - flight;
-            self.thrust[p] = (self.thrust[p] + self.params.flight_gain * time_s * error)
-                .clamp(0.0, self.params.max_thrust_m * l);
-            self.liftoff_pair = None;
-        }
-        for &i in &pair {
-            if self.done[i] {
-                continue;
-            }
-            let leg = &input.creature.legs[i];
-            let touching = input.contacts[i].touching;
-            let q = input.data.q[leg.spring];
-            let qd = input.data.qd[leg.spring];
-            let phase = &mut self.leg_phase[i];
-            match *phase {
-                Phase::Flight => {
-                    let armed = descending || self.in_stance || !t.wait_for_descent;
-                    if touching && armed {
-                        *phase = Phase::Loading;
-                        self.leg_touchdown[i] = input.time;
-                        // A leg caught short stands at the length it landed with.
-                        self.stance_rest[i] = drives[leg.spring]
-                            .spring
-                            .rest
-                            .min(q + 0.02 * l)
-                            .max(landing - 0.08 * l);
-                        if !self.in_stance {
-                            self.in_stance = true;
-                            self.touchdown_time = input.time;
-                        }
-                    }
-                }
-                Phase::Loading
-                    if (qd < 0.0 && q < self.stance_rest[i] - 0.002 * l)
-                        || input.time - self.leg_touchdown[i] > 0.015 * time_s =>
-                {
-                    *phase = Phase::Compression;
-                }
-                Phase::Compression if qd >= 0.0 => *phase = Phase::Thrust,
-                Phase::Thrust if q >= self.stance_rest[i] - 0.005 * l => {
-                    *phase = Phase::Unloading;
-                }
-                _ => {}
-            }
-            if *phase != Phase::Flight && !touching {
-                // A foot bouncing off at once may land again.
-                self.done[i] =
-                    *phase != Phase::Loading || input.time - self.leg_touchdown[i] > 0.01 * time_s;
-                *phase = Phase::Flight;
-            }
-        }
-        if self.in_stance
-            && pair.iter().all(|&i| !input.contacts[i].touching)
-            && pair.iter().any(|&i| self.done[i])
-        {
-            // Lift-off of the virtual leg: the pairs swap (Figure 4, flight).
-            let measured = input.time - self.touchdown_time;
-            self.stance_s[self.active] = measured.clamp(0.04 * time_s, 0.4 * time_s);
-            self.liftoff_time = input.time;
-            self.liftoff_pair = Some(self.active);
-            // Integral speed correction from the step's mean speed.
-            let vd = self.params.speed_mps * self.scale.velocity();
-            self.trim.stride(
-                true,
-                t.speed_gain,
-                vd,
-                0.5 * vd.abs(),
-                input.time,
-                along_z(com_forward),
-                glam::DVec3::Z,
-                1e-3,
-            );
-            self.in_stance = false;
-            self.done = [false; 4];
-            self.leg_phase = [Phase::Flight; 4];
-            self.active = 1 - self.active;
-        }
-    }
 }
 
 impl Controller for QuadrupedRun {
-    fn gains(&self) -> Vec<crate::world::sim::Gain> {
-        use crate::world::sim::Gain;
-        let t = &self.params.trot;
-        let d = QuadrupedRunParams::default().trot;
-        vec![
-            Gain::new("leg_stiffness", "N/m", t.leg_stiffness, d.leg_stiffness),
-            Gain::new("leg_damping", "N·s/m", t.leg_damping, d.leg_damping),
-            Gain::new(
-                "placement_gain_s",
-                "s",
-                t.placement_gain_s,
-                d.placement_gain_s,
-            ),
-            Gain::new("pitch_kp", "N·m/rad", t.pitch_kp, d.pitch_kp),
-            Gain::new("pitch_kv", "N·m·s/rad", t.pitch_kv, d.pitch_kv),
-            Gain::new("roll_kp", "N·m/rad", t.roll_kp, d.roll_kp),
-            Gain::new("roll_kv", "N·m·s/rad", t.roll_kv, d.roll_kv),
-        ]
-    }
-
-    fn set_gain(&mut self, name: &str, value: f64) -> bool {
-        if !(value.is_finite() && value >= 0.0) {
-            return false;
-        }
-        let t = &mut self.params.trot;
-        let slot = match name {
-            "leg_stiffness" => &mut t.leg_stiffness,
-            "leg_damping" => &mut t.leg_damping,
-            "placement_gain_s" => &mut t.placement_gain_s,
-            "pitch_kp" => &mut t.pitch_kp,
-            "pitch_kv" => &mut t.pitch_kv,
-            "roll_kp" => &mut t.roll_kp,
-            "roll_kv" => &mut t.roll_kv,
-            _ => return false,
-        };
-        *slot = value;
-        true
-    }
+    crate::tunable_gains!(params.trot = QuadrupedRunParams::default().trot;
+        leg_stiffness => "N/m", leg_damping => "N·s/m", placement_gain_s => "s", pitch_kp => "N·m/rad",
+        pitch_kv => "N·m·s/rad", roll_kp => "N·m/rad", roll_kv => "N·m·s/rad");
+    crate::steering_commands!();
 
     fn phase_name(&self) -> &'static str {
         self.phase().name()
@@ -282,10 +135,6 @@ impl Controller for QuadrupedRun {
 
     fn leg_phase_name(&self, leg: usize) -> Option<&'static str> {
         self.leg_phase.get(leg).map(|p| p.name())
-    }
-
-    fn set_speed(&mut self, speed_mps: f64) {
-        self.params.speed_mps = speed_mps;
     }
 
     /// The trot regulates each pair's flight time: a hop height asks for
@@ -299,10 +148,6 @@ impl Controller for QuadrupedRun {
     fn hop_height_m(&self) -> Option<f64> {
         let f = self.params.trot.flight_s;
         Some(height_for_flight((f[0] + f[1]) / 2.0))
-    }
-
-    fn set_heading(&mut self, heading: f64) {
-        self.params.heading = heading;
     }
 
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
@@ -332,36 +177,8 @@ impl Controller for QuadrupedRun {
         let idle = TROT_PAIRS[1 - self.active];
         let p = self.params;
         let t = self.tuning();
-        let spring = LegSpring::new(t.leg_stiffness, t.leg_damping, t.leg_travel_m);
         let landing = t.landing_rest_m * l;
-        let short = t.idle_rest_m * l;
-        let thrust = self.thrust[self.active];
-        // The active pair lands as one virtual leg: each leg's landing length
-        // makes up for its hip's height above the pair's mean, so the feet
-        // reach the ground together although the trunk pitches and rolls.
-        let hip_y = |i: usize| (trunk_rot * creature.legs[i].hip_in_trunk).y;
-        let mean_hip_y = (hip_y(pair[0]) + hip_y(pair[1])) / 2.0;
-        let level = |i: usize| (hip_y(i) - mean_hip_y).clamp(-0.08 * l, 0.08 * l);
-        // Leg springs: eq. 1 with a programmable rest.
-        for (i, leg) in creature.legs.iter().enumerate() {
-            let damping = if input.contacts[i].touching {
-                t.leg_damping
-            } else {
-                t.leg_air_damping
-            };
-            let rest = if !pair.contains(&i) || self.done[i] {
-                short
-            } else {
-                match self.leg_phase[i] {
-                    Phase::Thrust => self.stance_rest[i] + thrust,
-                    Phase::Unloading => short,
-                    Phase::Flight if !descending && !self.in_stance && t.wait_for_descent => short,
-                    Phase::Flight => (landing + level(i)).min(0.0),
-                    _ => self.stance_rest[i],
-                }
-            };
-            spring.apply_with_damping(&mut drives[leg.spring], rest, damping, s);
-        }
+        self.set_springs(input, drives, descending);
         // Foot placement (eq. 3) for the active pair's legs in the air.
         let velocity = com_velocity(creature, data);
         let desired = fwd * (p.speed_mps * s.velocity() + self.trim.bias_mps);
@@ -426,15 +243,11 @@ impl Controller for QuadrupedRun {
                     let foot =
                         hip_at_touchdown(hip_world, hip_v, reach, displacement, 0.5 * s.time())
                             + displacement;
-                    let dir = leg_direction(trunk_rot, foot - hip_world, reach);
-                    let (roll, pitch) = gimbal_angles(dir);
-                    servo.set(drives, &leg.hip, [roll, pitch], &mut self.hip_target[i]);
+                    let angles = hip_angles(trunk_rot, hip_world, foot, reach);
+                    servo.set(drives, &leg.hip, angles, &mut self.hip_target[i]);
                 }
                 Phase::Loading | Phase::Unloading => {
-                    for (&j, prev) in leg.hip.iter().zip(self.hip_target[i].iter_mut()) {
-                        drives[j].torque(0.0);
-                        *prev = data.q[j];
-                    }
+                    release(drives, &leg.hip, &data.q, &mut self.hip_target[i]);
                 }
                 Phase::Compression | Phase::Thrust => {
                     posture.applying[i] = true;

@@ -11,8 +11,9 @@ use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
 
 use crate::control::additions::Additions;
-use crate::control::gait_controller::{GaitController, gait_names, make_controller, start_state};
+use crate::control::gait_controller::{GaitController, gait_names, start_state};
 use crate::control::kangaroo_hop::kangaroo_ground;
+use crate::control::make_controller::make_controller;
 use crate::creatures::Species;
 use crate::dynamics::model::Joint as BodyJoint;
 use crate::engine::metrics::{GaitRecorder, GaitSummary};
