@@ -49,9 +49,25 @@ impl Offered {
         speed_ramp: None,
         tail_feedback: None,
     };
+
+    /// Only the speed trim, on unless the file turns it off: the gaits that
+    /// do not yet hold their speed by eq. 3 alone (the gallops, the bound).
+    pub const SPEED_TRIM_ON: Self = Self {
+        speed_trim: Some(true),
+        ..Self::NONE
+    };
 }
 
 impl Additions {
+    /// None on, and not a file from before they were optional.
+    pub const NONE: Self = Self {
+        speed_trim: false,
+        unloading_posture: false,
+        speed_ramp: false,
+        tail_feedback: false,
+        legacy: false,
+    };
+
     /// The additions a controller offering `offered` runs with, from the
     /// preset's `lab_additions` (`None`: a file made before they were
     /// optional, every offered addition on).

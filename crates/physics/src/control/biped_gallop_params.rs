@@ -115,10 +115,7 @@ pub struct BipedGallopParams {
 impl BipedGallopParams {
     /// The lab's additions this controller has: the speed trim, on (without
     /// it the gallops miss the desired speed by 25–46 %).
-    pub const LAB_ADDITIONS: Offered = Offered {
-        speed_trim: Some(true),
-        ..Offered::NONE
-    };
+    pub const LAB_ADDITIONS: Offered = Offered::SPEED_TRIM_ON;
 }
 
 impl Default for BipedGallopParams {

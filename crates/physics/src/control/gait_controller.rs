@@ -47,10 +47,7 @@ impl GaitController {
     /// flags, resolved when it was made).
     #[must_use]
     pub fn additions(&self) -> Additions {
-        let none = Additions::resolve(
-            Some(&gaitlab_core::preset::physics::LabAdditions::default()),
-            crate::control::additions::Offered::NONE,
-        );
+        let none = Additions::NONE;
         match self {
             GaitController::BipedRun(c) => Additions {
                 speed_trim: c.params.speed_trim,

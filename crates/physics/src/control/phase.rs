@@ -76,3 +76,63 @@ impl Phase {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::control::phase::{Phase, StanceEvents};
+
+    const ALL_EVENTS: StanceEvents = StanceEvents {
+        shortened: true,
+        lengthening: true,
+        extended: true,
+    };
+
+    #[test]
+    fn the_stance_moves_one_state_per_event_in_figure_4s_order() {
+        // With every event sensed at once, each call moves one state on.
+        let mut phase = Phase::Loading;
+        let mut seen = vec![phase];
+        for _ in 0..4 {
+            phase = phase.after(ALL_EVENTS);
+            seen.push(phase);
+        }
+        assert_eq!(
+            seen,
+            [
+                Phase::Loading,
+                Phase::Compression,
+                Phase::Thrust,
+                Phase::Unloading,
+                Phase::Unloading
+            ]
+        );
+        // Touchdown is the gait's to sense: flight stays flight.
+        assert_eq!(Phase::Flight.after(ALL_EVENTS), Phase::Flight);
+    }
+
+    #[test]
+    fn each_state_waits_for_its_own_event() {
+        let only = |shortened, lengthening, extended| StanceEvents {
+            shortened,
+            lengthening,
+            extended,
+        };
+        // Each state moves on its own event only (Loading waits for the
+        // spring to shorten, not for the others, and so on).
+        let cases = [
+            (Phase::Loading, only(false, true, true), Phase::Loading),
+            (Phase::Loading, only(true, false, false), Phase::Compression),
+            (
+                Phase::Compression,
+                only(true, false, true),
+                Phase::Compression,
+            ),
+            (Phase::Compression, only(false, true, false), Phase::Thrust),
+            (Phase::Thrust, only(true, true, false), Phase::Thrust),
+            (Phase::Thrust, only(false, false, true), Phase::Unloading),
+        ];
+        for (from, events, to) in cases {
+            assert_eq!(from.after(events), to, "{from:?} on {events:?}");
+        }
+    }
+}

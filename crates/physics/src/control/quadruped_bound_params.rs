@@ -134,10 +134,7 @@ pub struct QuadrupedBoundParams {
 impl QuadrupedBoundParams {
     /// The lab's additions this controller has: the speed trim, on (without
     /// it the skip bound and gallop run 38–54 % slow).
-    pub const LAB_ADDITIONS: Offered = Offered {
-        speed_trim: Some(true),
-        ..Offered::NONE
-    };
+    pub const LAB_ADDITIONS: Offered = Offered::SPEED_TRIM_ON;
 }
 
 impl Default for QuadrupedBoundParams {
