@@ -2,7 +2,7 @@
 //! --out FILE`: CMA-ES over a physics gait's tunable gains (the tuner
 //! crate), every generation's runs on every core (rayon), a line per
 //! generation with the objective, and the preset written back with the
-//! tuned gains in `scenario.physics.controller`.
+//! tuned gains in `scenario.physics.controller_by_gait.GAIT`.
 
 use std::io::IsTerminal as _;
 use std::time::Instant;
@@ -175,10 +175,14 @@ fn write_preset(
     if let Some(speed) = args.speed {
         physics.insert("speed_mps".into(), speed.into());
     }
-    let controller = physics
-        .entry("controller")
+    // The gait's own parameters: the creature's other gaits keep theirs.
+    let by_gait = physics
+        .entry("controller_by_gait")
         .or_insert_with(|| serde_json::json!({}));
-    if let Some(map) = controller.as_object_mut() {
+    let own = by_gait
+        .as_object_mut()
+        .map(|m| m.entry(gait).or_insert_with(|| serde_json::json!({})));
+    if let Some(map) = own.and_then(serde_json::Value::as_object_mut) {
         for (name, value) in problem.names().iter().zip(&tuned.values) {
             map.insert((*name).to_owned(), (*value).into());
         }

@@ -68,13 +68,17 @@ fn a_seeded_tune_recovers_a_detuned_biped_and_repeats_bit_for_bit() {
     let speed = tuned["speed_mean_mps"].as_f64().unwrap_or(0.0);
     assert!((speed / 1.6 - 1.0).abs() < 0.10, "tuned speed {speed}");
     let preset: serde_json::Value = serde_json::from_slice(&a).expect("JSON");
-    let gains = &preset["scenario"]["physics"]["controller"];
+    // The tuned gains are the run's own; the file's gains for every gait
+    // (the detuned posture damping 20) stay as they were for the others.
+    let physics = &preset["scenario"]["physics"];
+    let gains = &physics["controller_by_gait"]["run"];
     assert!(
         gains["posture_kv"]
             .as_f64()
             .is_some_and(|v| v > 0.0 && v != 20.0),
         "{gains}"
     );
+    assert_eq!(physics["controller"]["posture_kv"], 20.0, "{physics}");
     gaitlab_ok(&["validate", one.to_str().expect("utf-8 path")]);
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -107,8 +107,12 @@ impl Problem {
     #[must_use]
     pub fn params_with(&self, values: &[f64]) -> PhysicsParams {
         let mut params = self.params.clone();
+        let own = params
+            .controller_by_gait
+            .entry(self.gait.clone())
+            .or_default();
         for (name, v) in self.names.iter().zip(values) {
-            params.controller.insert((*name).to_owned(), *v);
+            own.insert((*name).to_owned(), *v);
         }
         params
     }

@@ -35,8 +35,11 @@ pub const MAX_CONTROL_EVERY: u32 = 100;
 pub const MAX_GROUND_COEFFICIENT: f64 = 1e8;
 /// Largest magnitude of a gait controller parameter.
 pub const MAX_CONTROLLER_VALUE: f64 = 1e7;
-/// Most gait controller parameters one preset may set.
+/// Most gait controller parameters one preset may set (in `controller`, and
+/// for each gait in `controller_by_gait`).
 pub const MAX_CONTROLLER_VALUES: usize = 64;
+/// Most gaits `controller_by_gait` may name.
+pub const MAX_GAITS: usize = 8;
 
 /// Checks a desired speed (m/s at scale 1) against [`MAX_PHYSICS_SPEED_MPS`].
 ///
@@ -90,6 +93,31 @@ pub fn check_hop_height_m(path: &str, height_m: f64) -> Result<(), PresetError> 
             format!("must be a height in [{lo}, {hi}] m"),
         ))
     }
+}
+
+/// Checks a map of controller parameters at `path`: at most
+/// [`MAX_CONTROLLER_VALUES`], each finite within ±[`MAX_CONTROLLER_VALUE`].
+/// (Whether the gait's controller has each name is the physics crate's to
+/// say when it builds the controller.)
+///
+/// # Errors
+/// `path` for too many values, `path.NAME` for a value out of range.
+pub fn check_controller(path: &str, values: &BTreeMap<String, f64>) -> Result<(), PresetError> {
+    if values.len() > MAX_CONTROLLER_VALUES {
+        return Err(PresetError::new(
+            path,
+            format!("at most {MAX_CONTROLLER_VALUES} parameters"),
+        ));
+    }
+    for (name, value) in values {
+        if !(value.is_finite() && value.abs() <= MAX_CONTROLLER_VALUE) {
+            return Err(PresetError::new(
+                format!("{path}.{name}"),
+                format!("must be a finite number within ±{MAX_CONTROLLER_VALUE}"),
+            ));
+        }
+    }
+    Ok(())
 }
 /// Most obstacles on the ground.
 pub const MAX_OBSTACLES: usize = 32;
@@ -259,6 +287,13 @@ pub struct PhysicsParams {
     /// names them when one is wrong). Default: none changed.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub controller: BTreeMap<String, f64>,
+    /// One gait's own controller parameters, by gait name, set after
+    /// `controller` when that gait runs (`{"bound": {"pitch_kp": 90}}`;
+    /// `--set scenario.physics.controller_by_gait.bound.pitch_kp=90`): a
+    /// tuned gait leaves the creature's other gaits as they were. Default:
+    /// none.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub controller_by_gait: BTreeMap<String, BTreeMap<String, f64>>,
     /// Boxes on the ground.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub obstacles: Vec<ObstacleSpec>,
@@ -506,19 +541,23 @@ impl PhysicsParams {
         if let Some(ground) = &self.ground {
             ground.check(&at("ground"))?;
         }
-        if self.controller.len() > MAX_CONTROLLER_VALUES {
+        check_controller(&at("controller"), &self.controller)?;
+        if self.controller_by_gait.len() > MAX_GAITS {
             return Err(PresetError::new(
-                at("controller"),
-                format!("at most {MAX_CONTROLLER_VALUES} parameters"),
+                at("controller_by_gait"),
+                format!("at most {MAX_GAITS} gaits"),
             ));
         }
-        for (name, value) in &self.controller {
-            if !(value.is_finite() && value.abs() <= MAX_CONTROLLER_VALUE) {
+        for (gait, values) in &self.controller_by_gait {
+            let p = format!("{prefix}.controller_by_gait.{gait}");
+            let word = gait.chars().all(|c| c.is_ascii_lowercase() || c == '_');
+            if gait.is_empty() || gait.len() > 32 || !word {
                 return Err(PresetError::new(
-                    format!("{prefix}.controller.{name}"),
-                    format!("must be a finite number within ±{MAX_CONTROLLER_VALUE}"),
+                    p,
+                    "must be a gait's name (lower-case letters and _)",
                 ));
             }
+            check_controller(&p, values)?;
         }
         if self.obstacles.len() > MAX_OBSTACLES {
             return Err(PresetError::new(

@@ -23,20 +23,30 @@ use crate::control::quadruped_run_params::QuadrupedRunParams;
 use crate::creatures::{PhysicalCreature, Species};
 use crate::world::sim::Controller;
 
-/// `p` with the preset's controller parameters (`scenario.physics.controller`)
-/// set by name.
+/// `p` with the preset's controller parameters set by name: those of
+/// every gait (`scenario.physics.controller`), then this gait's own
+/// (`scenario.physics.controller_by_gait.GAIT`).
 ///
 /// # Errors
-/// `scenario.physics.controller.NAME` for a name the gait's controller lacks.
+/// The path of a name the gait's controller lacks.
 fn with_parameters<P: NamedParameters>(
     mut p: P,
     params: &PhysicsParams,
     gait: &str,
 ) -> Result<P, PresetError> {
-    for (name, &value) in &params.controller {
+    let own = params.controller_by_gait.get(gait);
+    let named = params
+        .controller
+        .iter()
+        .map(|nv| ("controller".to_owned(), nv));
+    let gait_named = own
+        .into_iter()
+        .flatten()
+        .map(|nv| (format!("controller_by_gait.{gait}"), nv));
+    for (at, (name, &value)) in named.chain(gait_named) {
         if !p.set_parameter(name, value) {
             return Err(PresetError::new(
-                format!("scenario.physics.controller.{name}"),
+                format!("scenario.physics.{at}.{name}"),
                 format!(
                     "the {gait} controller has no such parameter (it has: {})",
                     P::NAMES.join(", ")
@@ -45,6 +55,25 @@ fn with_parameters<P: NamedParameters>(
         }
     }
     Ok(p)
+}
+
+/// Whether every gait `controller_by_gait` names is one of the model's.
+///
+/// # Errors
+/// `scenario.physics.controller_by_gait.NAME` for a gait the model lacks.
+fn known_gaits(creature: &PhysicalCreature, params: &PhysicsParams) -> Result<(), PresetError> {
+    let names = gait_names(creature.species);
+    match params
+        .controller_by_gait
+        .keys()
+        .find(|g| !names.contains(&g.as_str()))
+    {
+        Some(g) => Err(PresetError::new(
+            format!("scenario.physics.controller_by_gait.{g}"),
+            format!("this model has no such gait (it has: {})", names.join(", ")),
+        )),
+        None => Ok(()),
+    }
 }
 
 /// The controller of `gait` for `creature`, with `params`' speed, hop height,
@@ -60,6 +89,7 @@ pub fn make_controller(
     gait: &str,
     params: &PhysicsParams,
 ) -> Result<GaitController, PresetError> {
+    known_gaits(creature, params)?;
     let made = match (creature.species, gait) {
         (Species::Biped, "run") => biped_run(creature, params),
         (Species::Biped, "gallop") => biped_gallop(creature, params, GallopStyle::TogetherSwing),

@@ -283,6 +283,7 @@ pub fn to_preset(creature: &PhysicalCreature, meta: &PresetMeta) -> Preset {
         control_every: meta.control_every,
         ground: None,
         controller: std::collections::BTreeMap::new(),
+        controller_by_gait: std::collections::BTreeMap::new(),
         obstacles: Vec::new(),
         waypoints: Vec::new(),
         lab_additions: Some(gaitlab_core::preset::physics::LabAdditions::default()),
