@@ -23,12 +23,12 @@
 use glam::DVec3;
 
 use super::attitude::{attitude_error, com_velocity, heading_forward, trunk_rate};
+use super::body_plan::BodyPlan;
 use super::hip_servo::{set_hip, zero_hip};
 use super::leg_spring::LegSpring;
 use super::phase::Phase;
 use super::placement::{foot_displacement, hip_angles};
 use super::posture::{through_hip, trunk_torque};
-use super::scale::Scale;
 use super::speed_trim::SpeedTrim;
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
@@ -75,10 +75,8 @@ pub struct BipedGallop {
     pitch_d: f64,
     /// The lab's speed trim (zero unless `speed_trim`), per stride.
     trim: SpeedTrim,
-    /// Each leg's hip-to-foot length at full extension (m, scaled).
-    leg_m: [f64; 2],
-    /// Table 1's factors for the creature's L.
-    scale: Scale,
+    /// The creature's scale and leg lengths.
+    plan: BodyPlan<2>,
 }
 
 impl BipedGallop {
@@ -108,8 +106,7 @@ impl BipedGallop {
             liftoff_pitch: f64::NAN,
             pitch_d: 0.0,
             trim: SpeedTrim::default(),
-            leg_m: [0, 1].map(|i| creature.leg_length_m(i)),
-            scale: Scale::new(scale),
+            plan: BodyPlan::of(creature),
         }
     }
 
@@ -133,9 +130,7 @@ impl BipedGallop {
 }
 
 impl Controller for BipedGallop {
-    crate::tunable_gains!(BipedGallopParams;
-        leg_stiffness => "N/m", leg_damping => "N·s/m", posture_kp => "N·m/rad", posture_kv => "N·m·s/rad",
-        placement_gain_s => "s", swing_kp => "N·m/rad", swing_kv => "N·m·s/rad");
+    crate::biped_gains!(BipedGallopParams);
     crate::steering_commands!(hop_height_m);
 
     fn phase_name(&self) -> &'static str {
@@ -153,13 +148,13 @@ impl Controller for BipedGallop {
         }
         self.advance_phase(input);
         let p = self.params;
-        let l = self.scale.l;
+        let l = self.plan.scale.l;
         let data = input.data;
         let trunk_rot = data.world[creature.trunk].rot;
         let trunk_pos = data.world[creature.trunk].pos;
         let velocity = com_velocity(creature, data);
         let forward = heading_forward(p.heading);
-        let s = self.scale;
+        let s = self.plan.scale;
         let desired = forward * (p.speed_mps * s.velocity() + self.trim.bias_mps);
         let spring = LegSpring::new(p.leg_stiffness, p.leg_damping, p.leg_travel_m);
 
@@ -213,7 +208,7 @@ impl Controller for BipedGallop {
                                 p.placement_gain_s * s.time(),
                             );
                         let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
-                        let reach = self.leg_m[i] + p.landing_rest_m * l;
+                        let reach = self.plan.leg_m[i] + p.landing_rest_m * l;
                         hip_angles(trunk_rot, hip_world, foot, reach)
                     };
                     set_hip(drives, &leg.hip[..2], targets, kp, kv, max);
@@ -244,7 +239,7 @@ impl Controller for BipedGallop {
             return;
         }
         let p = self.params;
-        let s = self.scale;
+        let s = self.plan.scale;
         let data = input.data;
         let trunk_rot = data.world[creature.trunk].rot;
         let max = p.max_hip_torque * s.torque();

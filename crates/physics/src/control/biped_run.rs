@@ -7,12 +7,12 @@
 use glam::DVec3;
 
 use super::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
+use super::body_plan::BodyPlan;
 use super::hip_servo::{set_hip, zero_hip};
 use super::leg_spring::{LegSpring, toward};
 use super::phase::{Phase, StanceEvents};
 use super::placement::{foot_displacement, hip_angles};
 use super::posture::{through_hip, trunk_torque};
-use super::scale::Scale;
 use super::speed_trim::SpeedTrim;
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
@@ -40,10 +40,8 @@ pub struct BipedRun {
     trim: SpeedTrim,
     /// Each leg's rest length as it moves toward its target (m).
     rest: [f64; 2],
-    /// Each leg's hip-to-foot length at full extension (m, scaled).
-    leg_m: [f64; 2],
-    /// Table 1's factors for the creature's L.
-    scale: Scale,
+    /// The creature's scale and leg lengths.
+    plan: BodyPlan<2>,
 }
 
 impl BipedRun {
@@ -52,7 +50,6 @@ impl BipedRun {
     #[must_use]
     pub fn new(params: BipedRunParams, creature: &PhysicalCreature) -> Self {
         let scale = creature.scale;
-        let leg_m = [0, 1].map(|i| creature.leg_length_m(i));
         Self {
             params,
             phase: Phase::Flight,
@@ -65,8 +62,7 @@ impl BipedRun {
             descending: true,
             trim: SpeedTrim::default(),
             rest: [params.landing_rest_m * scale, params.idle_rest_m * scale],
-            leg_m,
-            scale: Scale::new(scale),
+            plan: BodyPlan::of(creature),
         }
     }
 
@@ -77,7 +73,7 @@ impl BipedRun {
         let qd = input.data.qd[leg.spring];
         let trunk_y = input.data.world[input.creature.trunk].pos.y;
         let p = &self.params;
-        let (l, t) = (self.scale.length(), self.scale.time());
+        let (l, t) = (self.plan.scale.length(), self.plan.scale.time());
         match self.phase {
             Phase::Flight => {
                 self.apex_height = self.apex_height.max(trunk_y);
@@ -109,7 +105,7 @@ impl BipedRun {
             // Speed over the last step against the desired speed.
             let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
             let (on, gain) = (p.speed_trim, p.speed_integral_gain);
-            let v = self.scale.velocity();
+            let v = self.plan.scale.velocity();
             (self.trim).stride_at_heading(on, gain, p.speed_mps, v, input.time, com, p.heading);
             self.apex_height = f64::NEG_INFINITY;
             self.active = 1 - self.active;
@@ -120,9 +116,7 @@ impl BipedRun {
 }
 
 impl Controller for BipedRun {
-    crate::tunable_gains!(BipedRunParams;
-        leg_stiffness => "N/m", leg_damping => "N·s/m", posture_kp => "N·m/rad", posture_kv => "N·m·s/rad",
-        placement_gain_s => "s", swing_kp => "N·m/rad", swing_kv => "N·m·s/rad");
+    crate::biped_gains!(BipedRunParams);
     crate::steering_commands!(hop_height_m);
 
     fn phase_name(&self) -> &'static str {
@@ -142,7 +136,7 @@ impl Controller for BipedRun {
             // Landed, or lifted off, since the last control call: Figure
             // 4's zero hip torque until the state machine sees it.
             let p = &self.params;
-            let (ykp, ykv) = self.scale.torsional_gains(p.leg_yaw_kp, p.leg_yaw_kv);
+            let (ykp, ykv) = self.plan.scale.torsional_gains(p.leg_yaw_kp, p.leg_yaw_kv);
             zero_hip(drives, &input.creature.legs[self.active].hip, ykp, ykv);
         }
     }
@@ -150,7 +144,7 @@ impl Controller for BipedRun {
     fn control(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         self.advance_phase(input);
         let p = self.params;
-        let s = self.scale;
+        let s = self.plan.scale;
         let l = s.l;
         let creature = input.creature;
         let data = input.data;
@@ -180,7 +174,7 @@ impl Controller for BipedRun {
         // The active leg: placed for landing in flight, posture servo in stance.
         let active = &creature.legs[self.active];
         let idle = &creature.legs[1 - self.active];
-        let reach = self.leg_m[self.active] + p.landing_rest_m * l;
+        let reach = self.plan.leg_m[self.active] + p.landing_rest_m * l;
         let (kp, kv) = s.torsional_gains(p.swing_kp, p.swing_kv);
         let (ykp, ykv) = s.torsional_gains(p.leg_yaw_kp, p.leg_yaw_kv);
         let max = p.max_hip_torque * s.torque();
@@ -228,7 +222,7 @@ impl BipedRun {
     /// active hip's joints as its reaction; yaw by the foot's grip.
     fn posture(&self, input: &ControlInput<'_>, drives: &mut [Drive]) {
         let p = &self.params;
-        let s = self.scale;
+        let s = self.plan.scale;
         let creature = input.creature;
         let data = input.data;
         let active = &creature.legs[self.active];

@@ -16,6 +16,7 @@ pub mod biped_gallop;
 pub mod biped_gallop_params;
 pub mod biped_run;
 pub mod biped_run_params;
+pub mod body_plan;
 pub mod commands;
 pub mod gains;
 pub mod gait_controller;

@@ -34,13 +34,13 @@
 use glam::DVec3;
 
 use super::attitude::{com_velocity, heading_forward};
+use super::body_plan::BodyPlan;
 use super::hip_servo::{HipServo, release};
 use super::hop_height::{flight_for_height, height_for_flight};
 use super::leg_spring::LegSpring;
 use super::pair_posture::PairPosture;
 use super::phase::Phase;
 use super::placement::{foot_displacement, hip_angles, hip_at_touchdown};
-use super::scale::Scale;
 use super::speed_trim::SpeedTrim;
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
@@ -91,9 +91,8 @@ pub struct QuadrupedBound {
     hip_target: [[f64; 2]; 4],
     /// Eq. 4's servo as the last control call set it.
     posture: PairPosture,
-    /// Each leg's hip-to-foot length at full extension (m, scaled).
-    leg_m: [f64; 4],
-    scale: Scale,
+    /// The creature's scale and leg lengths.
+    plan: BodyPlan<4>,
 }
 
 impl QuadrupedBound {
@@ -126,16 +125,13 @@ impl QuadrupedBound {
             stride_start: None,
             hip_target: [[0.0; 2]; 4],
             posture: PairPosture::default(),
-            leg_m: [0, 1, 2, 3].map(|i| creature.leg_length_m(i)),
-            scale: Scale::new(scale),
+            plan: BodyPlan::of(creature),
         }
     }
 }
 
 impl Controller for QuadrupedBound {
-    crate::tunable_gains!(QuadrupedBoundParams;
-        leg_stiffness => "N/m", leg_damping => "N·s/m", placement_gain_s => "s", pitch_kp => "N·m/rad",
-        pitch_kv => "N·m·s/rad", roll_kp => "N·m/rad", roll_kv => "N·m·s/rad");
+    crate::quadruped_gains!(QuadrupedBoundParams);
     crate::steering_commands!();
 
     fn phase_name(&self) -> &'static str {
@@ -165,7 +161,7 @@ impl Controller for QuadrupedBound {
         if creature.legs.len() != 4 || creature.legs.iter().any(|leg| leg.hip.len() != 2) {
             return;
         }
-        let s = self.scale;
+        let s = self.plan.scale;
         let l = s.length();
         let p = self.params;
         let fwd = heading_forward(p.heading);
@@ -194,7 +190,7 @@ impl Controller for QuadrupedBound {
             max: p.max_hip_torque * s.torque(),
             force_ratio: p.posture_force_ratio,
             stiffness: p.leg_stiffness * s.stiffness(),
-            leg_m: self.leg_m,
+            leg_m: self.plan.leg_m,
             ..PairPosture::default()
         };
 
@@ -236,7 +232,7 @@ impl Controller for QuadrupedBound {
             let sharing = legs.iter().any(|&i| posture.sharing[i]);
             for (side, &i) in legs.iter().enumerate() {
                 let leg = &creature.legs[i];
-                let reach = self.leg_m[i] + landing;
+                let reach = self.plan.leg_m[i] + landing;
                 let second = gallop && side == 1;
                 let touching = input.contacts[i].touching;
                 // Leg spring: eq. 1 with a programmable rest.

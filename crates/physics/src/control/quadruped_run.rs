@@ -17,12 +17,12 @@
 //! scaled by its dynamic scale L (Table 1).
 
 use super::attitude::{com_velocity, heading_forward};
+use super::body_plan::BodyPlan;
 use super::hip_servo::{HipServo, release};
 use super::hop_height::{flight_for_height, height_for_flight};
 use super::pair_posture::PairPosture;
 use super::phase::Phase;
 use super::placement::{foot_displacement, hip_angles, hip_at_touchdown};
-use super::scale::Scale;
 use super::speed_trim::SpeedTrim;
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
@@ -70,9 +70,8 @@ pub struct QuadrupedRun {
     /// A per-step speed correction by the tuning's `speed_gain` (0 unless a
     /// preset sets it: the trot holds its speed by eq. 3 alone).
     pub trim: SpeedTrim,
-    /// Each leg's hip-to-foot length at full extension (m, scaled).
-    leg_m: [f64; 4],
-    scale: Scale,
+    /// The creature's scale and leg lengths.
+    plan: BodyPlan<4>,
 }
 
 impl QuadrupedRun {
@@ -99,8 +98,7 @@ impl QuadrupedRun {
             liftoff_time: 0.0,
             liftoff_pair: None,
             trim: SpeedTrim::default(),
-            leg_m: [0, 1, 2, 3].map(|i| creature.leg_length_m(i)),
-            scale: Scale::new(scale),
+            plan: BodyPlan::of(creature),
         }
     }
 
@@ -124,9 +122,7 @@ impl QuadrupedRun {
 }
 
 impl Controller for QuadrupedRun {
-    crate::tunable_gains!(params.trot = QuadrupedRunParams::default().trot;
-        leg_stiffness => "N/m", leg_damping => "N·s/m", placement_gain_s => "s", pitch_kp => "N·m/rad",
-        pitch_kv => "N·m·s/rad", roll_kp => "N·m/rad", roll_kv => "N·m·s/rad");
+    crate::quadruped_gains!(params.trot = QuadrupedRunParams::default().trot);
     crate::steering_commands!();
 
     fn phase_name(&self) -> &'static str {
@@ -156,7 +152,7 @@ impl Controller for QuadrupedRun {
         if creature.legs.len() != 4 {
             return;
         }
-        let s = self.scale;
+        let s = self.plan.scale;
         let l = s.length();
         let trunk = creature.trunk;
         let trunk_rot = data.world[trunk].rot;
@@ -216,7 +212,7 @@ impl Controller for QuadrupedRun {
             max,
             force_ratio: t.posture_force_ratio,
             stiffness: t.leg_stiffness * s.stiffness(),
-            leg_m: self.leg_m,
+            leg_m: self.plan.leg_m,
             at_least_one: true,
             ..PairPosture::default()
         };
@@ -227,7 +223,7 @@ impl Controller for QuadrupedRun {
         for &i in &pair {
             let leg = &creature.legs[i];
             let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
-            let reach = self.leg_m[i] + landing;
+            let reach = self.plan.leg_m[i] + landing;
             active_pitch += data.q[leg.hip[1]] / 2.0;
             let phase = self.leg_phase[i];
             if self.done[i] {

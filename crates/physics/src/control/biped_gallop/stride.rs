@@ -21,7 +21,7 @@ impl BipedGallop {
     /// and the stride's support state from both.
     pub(super) fn advance_phase(&mut self, input: &ControlInput<'_>) {
         let p = self.params;
-        let l = self.scale.l;
+        let l = self.plan.scale.l;
         let trunk_y = input.data.world[input.creature.trunk].pos.y;
         let pitch = self.pitch(input);
         if self.phase == GallopPhase::Flight {
@@ -59,10 +59,10 @@ impl BipedGallop {
                 // Compression once the spring shortens; a leg that landed
                 // still lengthening may not shorten past its rest at once.
                 shortened: q < state.landed_rest - 0.005 * l
-                    || since_touchdown >= 0.02 * self.scale.time(),
+                    || since_touchdown >= 0.02 * self.plan.scale.time(),
                 // Thrust once the spring lengthens again after a real
                 // compression, not on the first jitter of a landing.
-                lengthening: qd >= 0.0 && since_touchdown >= 0.03 * self.scale.time(),
+                lengthening: qd >= 0.0 && since_touchdown >= 0.03 * self.plan.scale.time(),
                 extended: q >= state.landed_rest + self.thrust - 0.01 * l || q >= -0.005 * l,
             });
             // The trailing leg hands the load over: it shortens once the
@@ -77,7 +77,7 @@ impl BipedGallop {
             // bounces off the ground at impact is still landing.
             if matches!(state.phase, Phase::Thrust | Phase::Unloading) && !touching {
                 state.stance_s = (input.time - state.touchdown_s)
-                    .clamp(0.05 * self.scale.time(), 0.5 * self.scale.time());
+                    .clamp(0.05 * self.plan.scale.time(), 0.5 * self.plan.scale.time());
                 state.phase = Phase::Flight;
                 state.hold = [input.data.q[leg.hip[0]], input.data.q[leg.hip[1]]];
                 if !other_down {
@@ -105,15 +105,15 @@ impl BipedGallop {
     /// and the stride's speed the integral correction.
     pub(super) fn start_flight(&mut self, input: &ControlInput<'_>) {
         let p = self.params;
-        let l = self.scale.l;
+        let l = self.plan.scale.l;
         if self.apex_height.is_finite() {
-            let landing_height = self.leg_m[self.trail()] + p.landing_rest_m * l;
+            let landing_height = self.plan.leg_m[self.trail()] + p.landing_rest_m * l;
             let error = (landing_height + p.hop_height_m * l) - self.apex_height;
             self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
         }
         let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
         let (on, gain) = (p.speed_trim, p.speed_integral_gain);
-        let v = self.scale.velocity();
+        let v = self.plan.scale.velocity();
         (self.trim).stride_at_heading(on, gain, p.speed_mps, v, input.time, com, p.heading);
         self.apex_height = f64::NEG_INFINITY;
         self.descending = false;
@@ -136,7 +136,7 @@ impl BipedGallop {
     /// The rest length leg `i` heads for (m).
     pub(super) fn rest_target(&self, i: usize, time: f64) -> f64 {
         let p = &self.params;
-        let l = self.scale.l;
+        let l = self.plan.scale.l;
         let state = &self.legs[i];
         match state.phase {
             Phase::Thrust => state.landed_rest + self.thrust,
@@ -153,7 +153,7 @@ impl BipedGallop {
             }
             Phase::Flight => {
                 let trail = &self.legs[self.trail()];
-                let waited = time - trail.touchdown_s >= p.lead_delay_s * self.scale.time();
+                let waited = time - trail.touchdown_s >= p.lead_delay_s * self.plan.scale.time();
                 if self.in_support(self.trail()) && waited {
                     p.landing_rest_m * l
                 } else if self.phase == GallopPhase::Flight && self.descending {

@@ -42,7 +42,7 @@ impl QuadrupedBound {
     }
 
     pub(super) fn pair_thrust(&self, pair: usize) -> f64 {
-        let l = self.scale.length();
+        let l = self.plan.scale.length();
         let extra = if pair == REAR {
             self.params.rear_extra_thrust_m * l
         } else {
@@ -56,7 +56,7 @@ impl QuadrupedBound {
     /// its lift-off (negative: overlap with the other pair's stance).
     pub(super) fn regulate_pair(&mut self, k: usize, flight: f64) {
         let p = self.params;
-        let l = self.scale.l;
+        let l = self.plan.scale.l;
         let target = if k == FRONT {
             p.gathered_flight_s
         } else {
@@ -69,7 +69,7 @@ impl QuadrupedBound {
 
     /// Advance both pairs' state machines on the contact and spring events.
     pub(super) fn advance(&mut self, input: &ControlInput<'_>, com_forward: f64) {
-        let l = self.scale.l;
+        let l = self.plan.scale.l;
         let p = self.params;
         let any_touch = input.contacts.iter().any(|c| c.touching);
         // Flights (every foot off) and the thrust regulation on the stride's

@@ -21,8 +21,8 @@ impl QuadrupedRun {
         com_forward: f64,
     ) {
         let t = self.tuning();
-        let l = self.scale.length();
-        let time_s = self.scale.time();
+        let l = self.plan.scale.length();
+        let time_s = self.plan.scale.time();
         let pair = TROT_PAIRS[self.active];
         let landing = t.landing_rest_m * l;
         // Flight time of the pair that lifted off last ends at the first touch
@@ -90,7 +90,7 @@ impl QuadrupedRun {
             self.liftoff_time = input.time;
             self.liftoff_pair = Some(self.active);
             // Integral speed correction from the step's mean speed.
-            let vd = self.params.speed_mps * self.scale.velocity();
+            let vd = self.params.speed_mps * self.plan.scale.velocity();
             self.trim.stride(
                 true,
                 t.speed_gain,
@@ -117,7 +117,7 @@ impl QuadrupedRun {
         descending: bool,
     ) {
         let creature = input.creature;
-        let s = self.scale;
+        let s = self.plan.scale;
         let l = s.length();
         let t = self.tuning();
         let pair = TROT_PAIRS[self.active];
