@@ -4,6 +4,8 @@
 //! parameters by name, and the lab's additions resolved against what each
 //! controller offers.
 
+use std::collections::BTreeMap;
+
 use gaitlab_core::preset::{PhysicsParams, PresetError};
 
 use crate::control::additions::{Additions, Offered};
@@ -34,25 +36,23 @@ fn with_parameters<P: NamedParameters>(
     params: &PhysicsParams,
     gait: &str,
 ) -> Result<P, PresetError> {
-    let own = params.controller_by_gait.get(gait);
-    let named = params
-        .controller
-        .iter()
-        .map(|nv| ("controller".to_owned(), nv));
-    let gait_named = own
-        .into_iter()
-        .flatten()
-        .map(|nv| (format!("controller_by_gait.{gait}"), nv));
-    for (at, (name, &value)) in named.chain(gait_named) {
-        if !p.set_parameter(name, value) {
-            return Err(PresetError::new(
-                format!("scenario.physics.{at}.{name}"),
-                format!(
-                    "the {gait} controller has no such parameter (it has: {})",
-                    P::NAMES.join(", ")
-                ),
-            ));
+    let mut set = |values: &BTreeMap<String, f64>, at: &dyn Fn() -> String| {
+        for (name, &value) in values {
+            if !p.set_parameter(name, value) {
+                return Err(PresetError::new(
+                    format!("scenario.physics.{}.{name}", at()),
+                    format!(
+                        "the {gait} controller has no such parameter (it has: {})",
+                        P::NAMES.join(", ")
+                    ),
+                ));
+            }
         }
+        Ok(())
+    };
+    set(&params.controller, &|| "controller".to_owned())?;
+    if let Some(own) = params.controller_by_gait.get(gait) {
+        set(own, &|| format!("controller_by_gait.{gait}"))?;
     }
     Ok(p)
 }
