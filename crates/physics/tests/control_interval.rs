@@ -6,6 +6,7 @@
 
 use gaitlab_core::portable::Portable;
 use gaitlab_physics::control::biped_run::{BipedRun, BipedRunParams};
+use gaitlab_physics::control::hopper_params::HopperParams;
 use gaitlab_physics::creatures::biped;
 use gaitlab_physics::world::ground::GroundParams;
 use gaitlab_physics::world::sim::{ControlInput, Controller, Drive};
@@ -63,11 +64,15 @@ fn the_state_machine_runs_every_interval_and_the_servos_every_step() {
 fn the_biped_runs_with_control_every_two_ms() {
     let mut sim = sim(5);
     sim.data.base_velocity.linear.z = 2.5;
+    let d = BipedRunParams::default();
     let params = BipedRunParams {
         speed_mps: 2.5,
-        yaw_kv: 40.0,
+        hopper: HopperParams {
+            yaw_kv: 40.0,
+            ..d.hopper
+        },
         unloading_posture: false,
-        ..BipedRunParams::default()
+        ..d
     };
     let mut c = BipedRun::new(params, &sim.creature);
     let mut worst_yaw: f64 = 0.0;

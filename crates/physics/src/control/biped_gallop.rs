@@ -91,17 +91,17 @@ impl BipedGallop {
             touchdown_s: f64::NEG_INFINITY,
             hold: [0.0; 2],
             rest: rest * scale,
-            landed_rest: params.landing_rest_m * scale,
+            landed_rest: params.hopper.landing_rest_m * scale,
         };
         let lead = params.lead_leg.min(1);
-        let mut legs = [leg(params.landing_rest_m); 2];
-        legs[lead].rest = params.idle_rest_m * scale;
+        let mut legs = [leg(params.hopper.landing_rest_m); 2];
+        legs[lead].rest = params.hopper.idle_rest_m * scale;
         Self {
             params,
             phase: GallopPhase::Flight,
             legs,
             apex_height: f64::NEG_INFINITY,
-            thrust: params.thrust_m * scale,
+            thrust: params.hopper.thrust_m * scale,
             descending: true,
             liftoff_pitch: f64::NAN,
             pitch_d: 0.0,
@@ -130,7 +130,7 @@ impl BipedGallop {
 }
 
 impl Controller for BipedGallop {
-    crate::biped_gains!(BipedGallopParams);
+    crate::family_gains!(biped BipedGallopParams);
     crate::steering_commands!(hop_height_m);
 
     fn phase_name(&self) -> &'static str {
@@ -156,15 +156,19 @@ impl Controller for BipedGallop {
         let forward = heading_forward(p.heading);
         let s = self.plan.scale;
         let desired = forward * (p.speed_mps * s.velocity() + self.trim.bias_mps);
-        let spring = LegSpring::new(p.leg_stiffness, p.leg_damping, p.leg_travel_m);
+        let spring = LegSpring::new(
+            p.hopper.leg_stiffness,
+            p.hopper.leg_damping,
+            p.hopper.leg_travel_m,
+        );
 
         let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
-        let (kp, kv) = s.torsional_gains(p.swing_kp, p.swing_kv);
-        let (ykp, ykv) = s.torsional_gains(p.leg_yaw_kp, p.leg_yaw_kv);
-        let max = p.max_hip_torque * s.torque();
+        let (kp, kv) = s.torsional_gains(p.hopper.swing_kp, p.hopper.swing_kv);
+        let (ykp, ykv) = s.torsional_gains(p.hopper.leg_yaw_kp, p.hopper.leg_yaw_kv);
+        let max = p.hopper.max_hip_torque * s.torque();
 
         let time = input.time;
-        let step = p.leg_rate_mps * s.velocity() * input.dt;
+        let step = p.hopper.leg_rate_mps * s.velocity() * input.dt;
         let extend = p.lead_extend_mps * s.velocity() * input.dt;
         let flight_extend = p.trail_extend_mps * s.velocity() * input.dt;
         let unload = p.trail_unload_mps * s.velocity() * input.dt;
@@ -205,10 +209,10 @@ impl Controller for BipedGallop {
                                 velocity,
                                 desired,
                                 self.legs[i].stance_s,
-                                p.placement_gain_s * s.time(),
+                                p.hopper.placement_gain_s * s.time(),
                             );
                         let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
-                        let reach = self.plan.leg_m[i] + p.landing_rest_m * l;
+                        let reach = self.plan.leg_m[i] + p.hopper.landing_rest_m * l;
                         hip_angles(trunk_rot, hip_world, foot, reach)
                     };
                     set_hip(drives, &leg.hip[..2], targets, kp, kv, max);
@@ -242,12 +246,12 @@ impl Controller for BipedGallop {
         let s = self.plan.scale;
         let data = input.data;
         let trunk_rot = data.world[creature.trunk].rot;
-        let max = p.max_hip_torque * s.torque();
+        let max = p.hopper.max_hip_torque * s.torque();
         let err = attitude_error(creature, data, p.heading, self.pitch_d);
         let rate = trunk_rate(creature, data);
-        let (pkp, pkv) = s.torsional_gains(p.posture_kp, p.posture_kv);
+        let (pkp, pkv) = s.torsional_gains(p.hopper.posture_kp, p.hopper.posture_kv);
         let posture = trunk_torque(err, rate, pkp, pkv);
-        let (ypkp, ypkv) = s.torsional_gains(p.yaw_kp, p.yaw_kv);
+        let (ypkp, ypkv) = s.torsional_gains(p.hopper.yaw_kp, p.hopper.yaw_kv);
         let yaw = -err.y * ypkp - rate.y * ypkv;
         let load = [0, 1].map(|i| {
             if servoing(&self.legs[i]) {
@@ -270,7 +274,7 @@ impl Controller for BipedGallop {
             through_hip(drives, &leg.hip, roll_q, trunk_rot, posture * share, max);
             // The leg turns on a tiny inertia: only a torque the loaded
             // foot's torsional grip can hold.
-            let grip = p.max_yaw_torque * s.torque() * share;
+            let grip = p.hopper.max_yaw_torque * s.torque() * share;
             drives[leg.hip[2]].torque((-yaw * share).clamp(-grip, grip));
         }
     }

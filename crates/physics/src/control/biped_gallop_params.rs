@@ -2,6 +2,7 @@
 //! 1, and the two swing styles.
 
 use super::additions::Offered;
+use super::hopper_params::HopperParams;
 
 /// How the legs swing forward (Raibert & Hodgins 1991, "Gaits").
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -40,31 +41,15 @@ pub struct BipedGallopParams {
     /// The leading leg (0 or 1): it lands second, ahead of the trailing leg,
     /// and leaves the ground last.
     pub lead_leg: usize,
-    /// Leg spring stiffness k of eq. 1 (N/m).
-    pub leg_stiffness: f64,
-    /// Leg spring damping b of eq. 1 (N·s/m).
-    pub leg_damping: f64,
-    /// How far the telescoping leg can shorten from full length (m).
-    pub leg_travel_m: f64,
-    /// Rest length for landing (m of extension).
-    pub landing_rest_m: f64,
-    /// Initial extra rest length during thrust (m); adapted each stride.
-    pub thrust_m: f64,
-    /// Rest length of a shortened, swinging leg (m of extension).
-    pub idle_rest_m: f64,
     /// Desired hop height: apex of the trunk in flight above the height of
     /// a hip over a vertical leg at landing length (m).
     pub hop_height_m: f64,
-    /// How much each stride's apex error changes the thrust (m per m).
-    pub hop_gain: f64,
-    /// Foot placement gain k_ẋ of eq. 3 (s), applied to each leg.
-    pub placement_gain_s: f64,
+    /// The hopper's spring, thrust, placement and servo parameters.
+    pub hopper: HopperParams,
     /// The lab's integral speed trim on (`lab_additions.speed_trim`; not
-    /// in the paper), with gain `speed_integral_gain`.
+    /// in the paper), with gain `hopper.speed_integral_gain`: removes the
+    /// steady error eq. 3 alone leaves.
     pub speed_trim: bool,
-    /// Integral gain on each stride's speed error (m/s of correction per
-    /// m/s of error): removes the steady error eq. 3 alone leaves.
-    pub speed_integral_gain: f64,
     /// Extra forward placement of the trailing foot beyond its neutral point (m).
     pub trail_offset_m: f64,
     /// Extra forward placement of the leading foot beyond its neutral point (m).
@@ -82,34 +67,9 @@ pub struct BipedGallopParams {
     /// How fast the trailing leg shortens in unloading while the leading
     /// leg supports (m/s).
     pub trail_unload_mps: f64,
-    /// Hip servo stiffness for swinging and holding legs (N·m/rad).
-    pub swing_kp: f64,
-    /// Hip servo damping for swinging and holding legs (N·m·s/rad).
-    pub swing_kv: f64,
-    /// Posture servo stiffness k_p of eq. 4 (N·m/rad).
-    pub posture_kp: f64,
-    /// Posture servo damping k_v of eq. 4 (N·m·s/rad).
-    pub posture_kv: f64,
     /// Fraction of the trunk's pitching in flight that the posture servo
     /// anticipates in stance (0 = level in stance, 0.5 = pitch about level).
     pub pitch_feedforward: f64,
-    /// Trunk yaw servo stiffness in stance, through the hips' yaw joints (N·m/rad).
-    pub yaw_kp: f64,
-    /// Trunk yaw damping in stance (N·m·s/rad).
-    pub yaw_kv: f64,
-    /// Stiffness of an airborne leg's own yaw joint; the leg spins on a tiny
-    /// inertia, so it is small (N·m/rad).
-    pub leg_yaw_kp: f64,
-    /// Damping of an airborne leg's yaw joint (N·m·s/rad).
-    pub leg_yaw_kv: f64,
-    /// Largest hip torque (N·m).
-    pub max_hip_torque: f64,
-    /// Largest trunk-yaw torque through the stance legs' yaw joints, all
-    /// together (N·m).
-    pub max_yaw_torque: f64,
-    /// How fast a leg's rest length may otherwise change (m/s): a leg snapped
-    /// short would jerk the trunk through the offset hips.
-    pub leg_rate_mps: f64,
 }
 
 impl BipedGallopParams {
@@ -125,17 +85,19 @@ impl Default for BipedGallopParams {
             heading: 0.0,
             style: GallopStyle::TogetherSwing,
             lead_leg: 0,
-            leg_stiffness: 12_000.0,
-            leg_damping: 20.0,
-            leg_travel_m: 0.25,
-            landing_rest_m: -0.03,
-            thrust_m: 0.03,
-            idle_rest_m: -0.18,
             hop_height_m: 0.12,
-            hop_gain: 0.15,
-            placement_gain_s: 0.06,
+            hopper: HopperParams {
+                leg_stiffness: 12_000.0,
+                hop_gain: 0.15,
+                placement_gain_s: 0.06,
+                speed_integral_gain: 0.3,
+                swing_kp: 400.0,
+                swing_kv: 15.0,
+                posture_kp: 1500.0,
+                posture_kv: 100.0,
+                ..HopperParams::default()
+            },
             speed_trim: true,
-            speed_integral_gain: 0.3,
             trail_offset_m: 0.0,
             lead_offset_m: 0.0,
             lead_retract_m: 0.08,
@@ -143,18 +105,7 @@ impl Default for BipedGallopParams {
             lead_extend_mps: 4.0,
             trail_extend_mps: 1.0,
             trail_unload_mps: 2.0,
-            swing_kp: 400.0,
-            swing_kv: 15.0,
-            posture_kp: 1500.0,
-            posture_kv: 100.0,
             pitch_feedforward: 0.5,
-            yaw_kp: 200.0,
-            yaw_kv: 20.0,
-            leg_yaw_kp: 2.0,
-            leg_yaw_kv: 0.1,
-            max_hip_torque: 400.0,
-            max_yaw_torque: 30.0,
-            leg_rate_mps: 1.0,
         }
     }
 }

@@ -58,10 +58,13 @@ impl BipedRun {
             touchdown_time: 0.0,
             liftoff_height: 0.0,
             apex_height: f64::NEG_INFINITY,
-            thrust: params.thrust_m * scale,
+            thrust: params.hopper.thrust_m * scale,
             descending: true,
             trim: SpeedTrim::default(),
-            rest: [params.landing_rest_m * scale, params.idle_rest_m * scale],
+            rest: [
+                params.hopper.landing_rest_m * scale,
+                params.hopper.idle_rest_m * scale,
+            ],
             plan: BodyPlan::of(creature),
         }
     }
@@ -86,9 +89,10 @@ impl BipedRun {
             }
             stance => {
                 self.phase = stance.after(StanceEvents {
-                    shortened: q < (p.landing_rest_m - 0.005) * l,
+                    shortened: q < (p.hopper.landing_rest_m - 0.005) * l,
                     lengthening: qd >= 0.0,
-                    extended: q >= p.landing_rest_m * l + self.thrust - 0.01 * l || q >= -0.005 * l,
+                    extended: q >= p.hopper.landing_rest_m * l + self.thrust - 0.01 * l
+                        || q >= -0.005 * l,
                 });
             }
         }
@@ -99,12 +103,12 @@ impl BipedRun {
             self.stance_s = (input.time - self.touchdown_time).clamp(0.05 * t, 0.5 * t);
             if self.apex_height.is_finite() {
                 let error = p.hop_height_m * l - (self.apex_height - self.liftoff_height);
-                self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
+                self.thrust = (self.thrust + p.hopper.hop_gain * error).clamp(0.0, 0.12 * l);
             }
             self.liftoff_height = trunk_y;
             // Speed over the last step against the desired speed.
             let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
-            let (on, gain) = (p.speed_trim, p.speed_integral_gain);
+            let (on, gain) = (p.speed_trim, p.hopper.speed_integral_gain);
             let v = self.plan.scale.velocity();
             (self.trim).stride_at_heading(on, gain, p.speed_mps, v, input.time, com, p.heading);
             self.apex_height = f64::NEG_INFINITY;
@@ -116,7 +120,7 @@ impl BipedRun {
 }
 
 impl Controller for BipedRun {
-    crate::biped_gains!(BipedRunParams);
+    crate::family_gains!(biped BipedRunParams);
     crate::steering_commands!(hop_height_m);
 
     fn phase_name(&self) -> &'static str {
@@ -136,7 +140,10 @@ impl Controller for BipedRun {
             // Landed, or lifted off, since the last control call: Figure
             // 4's zero hip torque until the state machine sees it.
             let p = &self.params;
-            let (ykp, ykv) = self.plan.scale.torsional_gains(p.leg_yaw_kp, p.leg_yaw_kv);
+            let (ykp, ykv) = self
+                .plan
+                .scale
+                .torsional_gains(p.hopper.leg_yaw_kp, p.hopper.leg_yaw_kv);
             zero_hip(drives, &input.creature.legs[self.active].hip, ykp, ykv);
         }
     }
@@ -152,20 +159,24 @@ impl Controller for BipedRun {
         let (com, velocity) = com_state(creature, data);
         let desired =
             heading_forward(p.heading) * (p.speed_mps * s.velocity() + self.trim.bias_mps);
-        let spring = LegSpring::new(p.leg_stiffness, p.leg_damping, p.leg_travel_m);
+        let spring = LegSpring::new(
+            p.hopper.leg_stiffness,
+            p.hopper.leg_damping,
+            p.hopper.leg_travel_m,
+        );
         // Leg lengths: the spring of eq. 1 with a programmable rest.
-        let step = p.leg_rate_mps * s.velocity() * input.dt;
+        let step = p.hopper.leg_rate_mps * s.velocity() * input.dt;
         for (i, leg) in creature.legs.iter().enumerate().take(2) {
             let target = if i != self.active {
-                p.idle_rest_m * l
+                p.hopper.idle_rest_m * l
             } else {
                 match self.phase {
-                    Phase::Thrust => p.landing_rest_m * l + self.thrust,
-                    Phase::Unloading => p.idle_rest_m * l,
+                    Phase::Thrust => p.hopper.landing_rest_m * l + self.thrust,
+                    Phase::Unloading => p.hopper.idle_rest_m * l,
                     // Lengthen for landing once the body falls, so the new
                     // active leg does not scuff the ground at lift-off.
-                    Phase::Flight if !self.descending => p.idle_rest_m * l,
-                    _ => p.landing_rest_m * l,
+                    Phase::Flight if !self.descending => p.hopper.idle_rest_m * l,
+                    _ => p.hopper.landing_rest_m * l,
                 }
             };
             self.rest[i] = toward(self.rest[i], target, step);
@@ -174,10 +185,10 @@ impl Controller for BipedRun {
         // The active leg: placed for landing in flight, posture servo in stance.
         let active = &creature.legs[self.active];
         let idle = &creature.legs[1 - self.active];
-        let reach = self.plan.leg_m[self.active] + p.landing_rest_m * l;
-        let (kp, kv) = s.torsional_gains(p.swing_kp, p.swing_kv);
-        let (ykp, ykv) = s.torsional_gains(p.leg_yaw_kp, p.leg_yaw_kv);
-        let max = p.max_hip_torque * s.torque();
+        let reach = self.plan.leg_m[self.active] + p.hopper.landing_rest_m * l;
+        let (kp, kv) = s.torsional_gains(p.hopper.swing_kp, p.hopper.swing_kv);
+        let (ykp, ykv) = s.torsional_gains(p.hopper.leg_yaw_kp, p.hopper.leg_yaw_kv);
+        let max = p.hopper.max_hip_torque * s.torque();
         match self.phase {
             Phase::Flight => {
                 let hip_world = data.world[creature.trunk].rot * active.hip_in_trunk
@@ -187,7 +198,7 @@ impl Controller for BipedRun {
                         velocity,
                         desired,
                         self.stance_s,
-                        p.placement_gain_s * s.time(),
+                        p.hopper.placement_gain_s * s.time(),
                     );
                 let angles = hip_angles(trunk_rot, hip_world, foot, reach);
                 set_hip(drives, &active.hip[..2], angles, kp, kv, max);
@@ -227,18 +238,18 @@ impl BipedRun {
         let data = input.data;
         let active = &creature.legs[self.active];
         let trunk_rot = data.world[creature.trunk].rot;
-        let max = p.max_hip_torque * s.torque();
+        let max = p.hopper.max_hip_torque * s.torque();
         let err = attitude_error(creature, data, p.heading, 0.0);
         let rate = trunk_rate(creature, data);
-        let (pkp, pkv) = s.torsional_gains(p.posture_kp, p.posture_kv);
+        let (pkp, pkv) = s.torsional_gains(p.hopper.posture_kp, p.hopper.posture_kv);
         let torque = trunk_torque(err, rate, pkp, pkv);
         let roll_q = data.q[active.hip[0]];
         through_hip(drives, &active.hip, roll_q, trunk_rot, torque, max);
         // The leg turns on a tiny inertia: only a torque the loaded foot's
         // torsional grip can hold.
-        let (ypkp, ypkv) = s.torsional_gains(p.yaw_kp, p.yaw_kv);
+        let (ypkp, ypkv) = s.torsional_gains(p.hopper.yaw_kp, p.hopper.yaw_kv);
         let yaw = -err.y * ypkp - rate.y * ypkv;
-        let grip = p.max_yaw_torque * s.torque();
+        let grip = p.hopper.max_yaw_torque * s.torque();
         drives[active.hip[2]].torque((-yaw).clamp(-grip, grip));
     }
 }

@@ -3,6 +3,7 @@
 //! this controller has.
 
 use super::additions::Offered;
+use super::hopper_params::HopperParams;
 
 /// Parameters of biped running; lengths are leg-spring coordinates
 /// (metres of extension, 0 = the leg at full length).
@@ -12,58 +13,17 @@ pub struct BipedRunParams {
     pub speed_mps: f64,
     /// Desired heading (rad about +y; 0 = +z).
     pub heading: f64,
-    /// Leg spring stiffness k (N/m) and damping b (N·s/m), eq. 1.
-    pub leg_stiffness: f64,
-    /// Leg spring damping (N·s/m).
-    pub leg_damping: f64,
-    /// How far the telescoping leg can shorten from full length (m).
-    pub leg_travel_m: f64,
-    /// Rest length for landing (m of extension).
-    pub landing_rest_m: f64,
-    /// Extra rest length during thrust (m).
-    pub thrust_m: f64,
-    /// Rest length of the shortened idle leg (m of extension).
-    pub idle_rest_m: f64,
     /// Desired hop height: apex of the hip above its lift-off height (m).
     pub hop_height_m: f64,
-    /// How much each hop's apex error changes the thrust (m of thrust per m).
-    pub hop_gain: f64,
-    /// Foot placement gain k_ẋ (s), eq. 3.
-    pub placement_gain_s: f64,
+    /// The hopper's spring, thrust, placement and servo parameters.
+    pub hopper: HopperParams,
     /// The lab's integral speed trim on (`lab_additions.speed_trim`; not
-    /// in the paper), with gain `speed_integral_gain`.
+    /// in the paper), with gain `hopper.speed_integral_gain`.
     pub speed_trim: bool,
-    /// Integral gain on each step's speed error (per step), while the speed
-    /// trim is on.
-    pub speed_integral_gain: f64,
     /// Keep eq. 4's posture servo on in Unloading: the lab's addition
     /// (`lab_additions.unloading_posture`); Figure 4 zeroes the active hip's
     /// torque there.
     pub unloading_posture: bool,
-    /// Hip servo gains for positioning legs (N·m/rad, N·m·s/rad).
-    pub swing_kp: f64,
-    /// Hip swing damping (N·m·s/rad).
-    pub swing_kv: f64,
-    /// Posture servo gains of eq. 4 (N·m/rad, N·m·s/rad).
-    pub posture_kp: f64,
-    /// Posture damping (N·m·s/rad).
-    pub posture_kv: f64,
-    /// Trunk yaw servo in stance, through the hip's yaw joint (N·m/rad, N·m·s/rad).
-    pub yaw_kp: f64,
-    /// Trunk yaw damping in stance (N·m·s/rad).
-    pub yaw_kv: f64,
-    /// Servo of the leg's own yaw joint in flight; the leg spins on a tiny
-    /// inertia, so these are small (N·m/rad, N·m·s/rad).
-    pub leg_yaw_kp: f64,
-    /// Leg yaw damping in flight (N·m·s/rad).
-    pub leg_yaw_kv: f64,
-    /// Largest hip torque (N·m).
-    pub max_hip_torque: f64,
-    /// Largest trunk-yaw torque through the stance leg's yaw joint (N·m).
-    pub max_yaw_torque: f64,
-    /// How fast a leg's rest length may change (m/s): a leg snapped short
-    /// would jerk the trunk through the offset hips.
-    pub leg_rate_mps: f64,
 }
 
 impl BipedRunParams {
@@ -82,29 +42,10 @@ impl Default for BipedRunParams {
         Self {
             speed_mps: 1.5,
             heading: 0.0,
-            leg_stiffness: 20_000.0,
-            leg_damping: 20.0,
-            leg_travel_m: 0.25,
-            landing_rest_m: -0.03,
-            thrust_m: 0.03,
-            idle_rest_m: -0.18,
             hop_height_m: 0.10,
-            hop_gain: 0.3,
-            placement_gain_s: 0.12,
+            hopper: HopperParams::default(),
             speed_trim: false,
-            speed_integral_gain: 0.1,
             unloading_posture: true,
-            swing_kp: 150.0,
-            swing_kv: 8.0,
-            posture_kp: 1000.0,
-            posture_kv: 160.0,
-            yaw_kp: 200.0,
-            yaw_kv: 20.0,
-            leg_yaw_kp: 2.0,
-            leg_yaw_kv: 0.1,
-            max_hip_torque: 400.0,
-            max_yaw_torque: 30.0,
-            leg_rate_mps: 1.0,
         }
     }
 }
@@ -117,12 +58,16 @@ impl BipedRunParams {
     /// biped blow up at 2.5 m/s within a minute; its default is 0.1.)
     #[must_use]
     pub fn before_lab_additions() -> Self {
+        let d = Self::default();
         Self {
-            placement_gain_s: 0.05,
+            hopper: HopperParams {
+                placement_gain_s: 0.05,
+                speed_integral_gain: 0.3,
+                ..d.hopper
+            },
             speed_trim: true,
-            speed_integral_gain: 0.3,
             unloading_posture: true,
-            ..Self::default()
+            ..d
         }
     }
 }

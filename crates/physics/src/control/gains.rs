@@ -37,27 +37,21 @@ macro_rules! tunable_gains {
     };
 }
 
-/// The biped gaits' tunable gains (run and both gallops): the leg spring,
-/// eq. 4's posture servo, eq. 3's gain and the swing servo, over the
-/// parameters `tunable_gains!` is given.
+/// A family's tunable gains over its gaits' parameters: `biped P` — the run's
+/// and both gallops' leg spring, eq. 4's posture servo, eq. 3's gain and the
+/// swing servo, in `P`'s `hopper`; `quadruped …` — the trot's, bound's and
+/// gallop's leg spring, eq. 3's gain and eq. 4's pitch and roll servos, over
+/// the parameters `tunable_gains!` is given.
 #[macro_export]
 #[doc(hidden)]
-macro_rules! biped_gains {
-    ($($params:tt)*) => {
-        $crate::tunable_gains!($($params)*;
+macro_rules! family_gains {
+    (biped $params:ty) => {
+        $crate::tunable_gains!(params.hopper = <$params>::default().hopper;
             leg_stiffness => "N/m", leg_damping => "N·s/m", posture_kp => "N·m/rad",
             posture_kv => "N·m·s/rad", placement_gain_s => "s", swing_kp => "N·m/rad",
             swing_kv => "N·m·s/rad");
     };
-}
-
-/// The quadruped gaits' tunable gains (trot, bound, gallop): the leg
-/// spring, eq. 3's gain and eq. 4's pitch and roll servos, over the
-/// parameters `tunable_gains!` is given.
-#[macro_export]
-#[doc(hidden)]
-macro_rules! quadruped_gains {
-    ($($params:tt)*) => {
+    (quadruped $($params:tt)*) => {
         $crate::tunable_gains!($($params)*;
             leg_stiffness => "N/m", leg_damping => "N·s/m", placement_gain_s => "s",
             pitch_kp => "N·m/rad", pitch_kv => "N·m·s/rad", roll_kp => "N·m/rad",

@@ -24,6 +24,7 @@ pub mod gallop_phase;
 pub mod ground;
 pub mod hip_servo;
 pub mod hop_height;
+pub mod hopper_params;
 pub mod kangaroo_hop;
 pub mod kangaroo_hop_params;
 pub mod kangaroo_leg;

@@ -21,51 +21,53 @@ pub trait NamedParameters {
     fn set_parameter(&mut self, name: &str, value: f64) -> bool;
 }
 
-/// Implements [`NamedParameters`] over plain `f64` fields.
+/// Implements [`NamedParameters`] over plain `f64` fields, in groups: `[a, b]`
+/// for fields of the parameters themselves, `sub [c, d]` for fields of
+/// their `sub` struct.
 macro_rules! named_parameters {
-    ($params:ty; $($field:ident),* $(,)?) => {
+    ($params:ty $(; $($path:ident).* [$($field:ident),* $(,)?])+) => {
         impl NamedParameters for $params {
-            const NAMES: &'static [&'static str] = &[$(stringify!($field)),*];
+            const NAMES: &'static [&'static str] = &[$($(stringify!($field),)*)+];
 
             fn set_parameter(&mut self, name: &str, value: f64) -> bool {
-                match name {
-                    $(stringify!($field) => self.$field = value,)*
-                    _ => return false,
-                }
-                true
+                $({
+                    let fields = &mut (*self)$(.$path)*;
+                    match name {
+                        $(stringify!($field) => {
+                            fields.$field = value;
+                            return true;
+                        })*
+                        _ => {}
+                    }
+                })+
+                false
             }
         }
     };
 }
 
-named_parameters!(BipedRunParams;
-    leg_stiffness, leg_damping, leg_travel_m, landing_rest_m, thrust_m, idle_rest_m, hop_gain,
-    placement_gain_s, speed_integral_gain, swing_kp, swing_kv, posture_kp, posture_kv, yaw_kp,
-    yaw_kv, leg_yaw_kp, leg_yaw_kv, max_hip_torque, max_yaw_torque, leg_rate_mps);
+crate::with_hopper_fields!(named_parameters!(BipedRunParams));
 
-named_parameters!(BipedGallopParams;
-    leg_stiffness, leg_damping, leg_travel_m, landing_rest_m, thrust_m, idle_rest_m, hop_gain,
-    placement_gain_s, speed_integral_gain, trail_offset_m, lead_offset_m, lead_retract_m,
-    lead_delay_s, lead_extend_mps, trail_extend_mps, trail_unload_mps, swing_kp, swing_kv,
-    posture_kp, posture_kv, pitch_feedforward, yaw_kp, yaw_kv, leg_yaw_kp, leg_yaw_kv,
-    max_hip_torque, max_yaw_torque, leg_rate_mps);
+crate::with_hopper_fields!(named_parameters!(BipedGallopParams; [
+    trail_offset_m, lead_offset_m, lead_retract_m, lead_delay_s, lead_extend_mps,
+    trail_extend_mps, trail_unload_mps, pitch_feedforward]));
 
-named_parameters!(KangarooHopParams;
+named_parameters!(KangarooHopParams; [
     speed_ramp_mps2, speed_integral_gain, speed_integral_max_mps, hop_gain, ankle_stiffness,
     ankle_damping, ankle_rest_rad, max_thrust_rad, placement_gain_s, landing_leg_m,
     flight_retract_m, stance_guess_s, hip_kp, hip_kv, stance_hip_kp, stance_hip_kv, knee_kp,
     knee_kv, posture_kp, posture_kv, pitch_rad, tail_stiffness, tail_damping, tail_mean_rad,
     tail_step_rad, tail_pitch_gain, tail_rate_gain_s, tail_tip_stiffness, tail_tip_damping,
     neck_kp, neck_kv, max_torque, jump_clearance_m, jump_stiffness_factor,
-    landing_damping_factor);
+    landing_damping_factor]);
 
-named_parameters!(QuadrupedBoundParams;
+named_parameters!(QuadrupedBoundParams; [
     leg_stiffness, leg_travel_m, leg_damping, leg_air_damping, landing_rest_m, short_rest_m, thrust_m,
     rear_extra_thrust_m, max_thrust_m, min_thrust_m, stride_flight_s, flight_gain,
     gathered_flight_s, extended_flight_s, pair_flight_gain, thrust_end, min_short_s, stance_s,
     placement_gain_s, speed_integral_gain, speed_bias_cap, min_stride_s, front_offset_m,
     pitch_bias, pitch_kp, pitch_kv, roll_kp, roll_kv, yaw_kp, yaw_kv, posture_force_ratio,
-    sweep_s, swing_kp, swing_kv, max_hip_torque, gallop_shorter_m, gallop_spread_m);
+    sweep_s, swing_kp, swing_kv, max_hip_torque, gallop_shorter_m, gallop_spread_m]);
 
 impl NamedParameters for QuadrupedRunParams {
     const NAMES: &'static [&'static str] = &[

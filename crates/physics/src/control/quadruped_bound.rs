@@ -131,7 +131,7 @@ impl QuadrupedBound {
 }
 
 impl Controller for QuadrupedBound {
-    crate::quadruped_gains!(QuadrupedBoundParams);
+    crate::family_gains!(quadruped QuadrupedBoundParams);
     crate::steering_commands!();
 
     fn phase_name(&self) -> &'static str {

@@ -122,7 +122,7 @@ impl QuadrupedRun {
 }
 
 impl Controller for QuadrupedRun {
-    crate::quadruped_gains!(params.trot = QuadrupedRunParams::default().trot);
+    crate::family_gains!(quadruped params.trot = QuadrupedRunParams::default().trot);
     crate::steering_commands!();
 
     fn phase_name(&self) -> &'static str {

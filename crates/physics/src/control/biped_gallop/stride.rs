@@ -51,7 +51,7 @@ impl BipedGallop {
                 let state = &mut self.legs[i];
                 state.phase = Phase::Loading;
                 state.touchdown_s = input.time;
-                state.landed_rest = state.rest.min(p.landing_rest_m * l);
+                state.landed_rest = state.rest.min(p.hopper.landing_rest_m * l);
             }
             let state = &mut self.legs[i];
             let since_touchdown = input.time - state.touchdown_s;
@@ -107,12 +107,12 @@ impl BipedGallop {
         let p = self.params;
         let l = self.plan.scale.l;
         if self.apex_height.is_finite() {
-            let landing_height = self.plan.leg_m[self.trail()] + p.landing_rest_m * l;
+            let landing_height = self.plan.leg_m[self.trail()] + p.hopper.landing_rest_m * l;
             let error = (landing_height + p.hop_height_m * l) - self.apex_height;
-            self.thrust = (self.thrust + p.hop_gain * error).clamp(0.0, 0.12 * l);
+            self.thrust = (self.thrust + p.hopper.hop_gain * error).clamp(0.0, 0.12 * l);
         }
         let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
-        let (on, gain) = (p.speed_trim, p.speed_integral_gain);
+        let (on, gain) = (p.speed_trim, p.hopper.speed_integral_gain);
         let v = self.plan.scale.velocity();
         (self.trim).stride_at_heading(on, gain, p.speed_mps, v, input.time, com, p.heading);
         self.apex_height = f64::NEG_INFINITY;
@@ -140,26 +140,26 @@ impl BipedGallop {
         let state = &self.legs[i];
         match state.phase {
             Phase::Thrust => state.landed_rest + self.thrust,
-            Phase::Unloading => p.idle_rest_m * l,
+            Phase::Unloading => p.hopper.idle_rest_m * l,
             Phase::Loading | Phase::Compression => state.landed_rest,
             Phase::Flight if i == self.trail() => {
                 // Lengthen for landing in flight; not while the leading leg
                 // still supports, so the foot does not scuff the ground.
                 if self.phase == GallopPhase::Flight {
-                    p.landing_rest_m * l
+                    p.hopper.landing_rest_m * l
                 } else {
-                    p.idle_rest_m * l
+                    p.hopper.idle_rest_m * l
                 }
             }
             Phase::Flight => {
                 let trail = &self.legs[self.trail()];
                 let waited = time - trail.touchdown_s >= p.lead_delay_s * self.plan.scale.time();
                 if self.in_support(self.trail()) && waited {
-                    p.landing_rest_m * l
+                    p.hopper.landing_rest_m * l
                 } else if self.phase == GallopPhase::Flight && self.descending {
-                    (p.landing_rest_m - p.lead_retract_m) * l
+                    (p.hopper.landing_rest_m - p.lead_retract_m) * l
                 } else {
-                    p.idle_rest_m * l
+                    p.hopper.idle_rest_m * l
                 }
             }
         }
