@@ -20,60 +20,6 @@ impl Scale {
         Self { l }
     }
 
-    /// Length and displacement (m): L.
-    #[must_use]
-    pub fn length(self) -> f64 {
-        self.l
-    }
-
-    /// Time (s): L^½.
-    #[must_use]
-    pub fn time(self) -> f64 {
-        self.l.sqrt()
-    }
-
-    /// Velocity (m/s): L^½.
-    #[must_use]
-    pub fn velocity(self) -> f64 {
-        self.l.sqrt()
-    }
-
-    /// Force (N): L³.
-    #[must_use]
-    pub fn force(self) -> f64 {
-        self.l.powi(3)
-    }
-
-    /// Torque (N·m): L⁴.
-    #[must_use]
-    pub fn torque(self) -> f64 {
-        self.l.powi(4)
-    }
-
-    /// Linear stiffness (N/m): L².
-    #[must_use]
-    pub fn stiffness(self) -> f64 {
-        self.l * self.l
-    }
-
-    /// Linear damping (N·s/m): L^{5/2}.
-    #[must_use]
-    pub fn damping(self) -> f64 {
-        self.l.ppowf(2.5)
-    }
-
-    /// Torsional stiffness (N·m/rad): L⁴.
-    #[must_use]
-    pub fn torsional_stiffness(self) -> f64 {
-        self.l.powi(4)
-    }
-
-    /// Torsional damping (N·m·s/rad): L^{9/2}.
-    #[must_use]
-    pub fn torsional_damping(self) -> f64 {
-        self.l.ppowf(4.5)
-    }
-
     /// A linear servo's or spring's gains `(k, b)` at scale 1, scaled.
     #[must_use]
     pub fn linear_gains(self, k: f64, b: f64) -> (f64, f64) {
@@ -88,6 +34,44 @@ impl Scale {
             kv * self.torsional_damping(),
         )
     }
+}
+
+/// Declares one method of [`Scale`] per row of Table 1: `name = |l| factor`,
+/// the factor as an expression in L.
+macro_rules! table_1 {
+    ($($(#[$doc:meta])* $name:ident = |$l:ident| $factor:expr;)*) => {
+        impl Scale {
+            $(
+                $(#[$doc])*
+                #[must_use]
+                pub fn $name(self) -> f64 {
+                    let $l = self.l;
+                    $factor
+                }
+            )*
+        }
+    };
+}
+
+table_1! {
+    /// Length and displacement (m): L.
+    length = |l| l;
+    /// Time (s): L^½.
+    time = |l| l.sqrt();
+    /// Force (N): L³.
+    force = |l| l.powi(3);
+    /// Velocity (m/s): L^½.
+    velocity = |l| l.sqrt();
+    /// Linear stiffness (N/m): L².
+    stiffness = |l| l * l;
+    /// Torque (N·m): L⁴.
+    torque = |l| l.powi(4);
+    /// Linear damping (N·s/m): L^{5/2}.
+    damping = |l| l.ppowf(2.5);
+    /// Torsional stiffness (N·m/rad): L⁴.
+    torsional_stiffness = |l| l.powi(4);
+    /// Torsional damping (N·m·s/rad): L^{9/2}.
+    torsional_damping = |l| l.ppowf(4.5);
 }
 
 #[cfg(test)]
