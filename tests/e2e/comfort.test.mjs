@@ -1,6 +1,6 @@
 // Browser tests of the comfort features (issue 6 item 5): the phone layout (a 390 × 844 touch
 // screen: the 3-D view fills the width, a tap on "Controls" opens the drawer, the view keeps
-// drawing) and the light/dark theme (the panels' pixels follow the setting). Touch orbit and
+// drawing; a tap on "Plots" opens the live plots, issue 21 item 7) and the light/dark theme (the panels' pixels follow the setting). Touch orbit and
 // pinch zoom are tested in features.test.mjs ("high-DPI and touch").
 
 import { after, before, describe, it } from 'node:test';
@@ -28,6 +28,30 @@ async function until(page, pred, what, timeout = 20_000) {
   }
 }
 
+/**
+ * A finger tap on the phone bar's button at `rect` (CSS pixels = egui points at DPR 1), repeated
+ * up to three times until `pred(state())` holds: on a starved machine (about 1 fps in CI) a tap's
+ * press and release can fall in frames too far apart for egui to count a click; a person would
+ * tap again.
+ */
+async function tapUntil(page, rect, pred, what) {
+  const [bx, by, bw, bh] = rect;
+  const cdp = await page.context().newCDPSession(page);
+  const at = [{ x: bx + bw / 2, y: by + bh / 2, id: 0 }];
+  for (let tap = 1; ; tap++) {
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at });
+    await sleep(80);
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+    try {
+      return await until(page, pred, what, tap < 3 ? 8_000 : 20_000);
+    } catch (e) {
+      if (tap >= 3) throw e;
+      const s = await state(page);
+      if (pred(s)) return s; // the tap landed just after the wait
+    }
+  }
+}
+
 describe('phone layout (WebGL2, 390 × 844 touch screen)', () => {
   let browser;
   before(async () => { browser = await launch('webgl2', { hasTouch: true, viewport: { width: 390, height: 844 } }); });
@@ -43,25 +67,7 @@ describe('phone layout (WebGL2, 390 × 844 touch screen)', () => {
       assert.ok(vh >= 0.8 * 844, `and most of the height: ${vh} px of 844`);
       assertDrawn(await shootCanvas(page, 'phone-closed.png'), 'phone layout');
 
-      // A finger tap on the "Controls" button (CSS pixels = egui points at DPR 1).
-      const [bx, by, bw, bh] = s.layout.controls_button_pt;
-      const cdp = await page.context().newCDPSession(page);
-      const at = [{ x: bx + bw / 2, y: by + bh / 2, id: 0 }];
-      // Up to three taps: on a starved machine (about 1 fps in CI) a tap's press and release can
-      // fall in frames too far apart for egui to count a click; a person would tap again.
-      for (let tap = 1; ; tap++) {
-        await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at });
-        await sleep(80);
-        await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
-        try {
-          s = await until(page, (x) => x.layout.controls_open, 'the drawer to open', tap < 3 ? 8_000 : 20_000);
-          break;
-        } catch (e) {
-          if (tap >= 3) throw e;
-          s = await state(page);
-          if (s.layout.controls_open) break; // the tap landed just after the wait
-        }
-      }
+      s = await tapUntil(page, s.layout.controls_button_pt, (x) => x.layout.controls_open, 'the drawer to open');
       const [, , vw2, vh2] = s.view_rect_px;
       assert.ok(vw2 >= 0.95 * 390, `the view keeps the width under the drawer: ${vw2}`);
       assert.ok(vh2 > 0.3 * 844 && vh2 < vh, `the drawer takes the lower part: view ${vh} → ${vh2} px`);
@@ -75,6 +81,24 @@ describe('phone layout (WebGL2, 390 × 844 touch screen)', () => {
       // The app keeps working in this layout: a method change reaches the state.
       assert.equal(await command(page, { method: 'sdls' }), 'ok');
       assert.equal((await state(page)).method, 'sdls');
+    });
+  });
+
+  it('opens the live plots by a tap, in place of the controls', T, async () => {
+    await withLoadedApp(browser, `${server.url}?preset=raibert-biped`, async ({ page }) => {
+      let s = await until(page, (x) => x.layout.narrow && x.layout.plots_button_pt[2] > 0, 'the phone layout');
+      assert.equal(s.layout.plots_open, false, 'the plots start closed');
+      const [, , , vh] = s.view_rect_px;
+      s = await tapUntil(page, s.layout.plots_button_pt, (x) => x.layout.plots_open, 'the plots to open');
+      assert.equal(s.layout.controls_open, false, 'one drawer at a time');
+      assert.ok(s.view_rect_px[3] < vh, `the plots take the lower part: view ${vh} → ${s.view_rect_px[3]} px`);
+      // Let the running biped draw a second of its traces.
+      await sleep(1500);
+      const shot = await shootCanvas(page, 'phone-plots.png');
+      const sheet = pngStats(shot.png, { x0: 0.05, y0: 0.6, x1: 0.95, y1: 0.95 });
+      assert.ok(sheet.distinct > 8, `the drawer shows plots (${sheet.distinct} colours); see ${shot.file}`);
+      s = await tapUntil(page, s.layout.controls_button_pt, (x) => x.layout.controls_open, 'the controls to open');
+      assert.equal(s.layout.plots_open, false, 'opening the controls closes the plots');
     });
   });
 });

@@ -40,8 +40,14 @@ impl History {
         self.start = 0;
     }
 
-    /// Appends one frame: `time` and one value per series (missing values are NaN).
+    /// Appends one frame: `time` and one value per series (missing values are
+    /// NaN). A `time` before the newest kept one — the simulation restarted
+    /// (a fall's or a blow-up's reset) — first forgets every sample, so a plot
+    /// breaks cleanly instead of drawing a line back to the start.
     pub fn push(&mut self, time: f64, sample: impl Iterator<Item = f64>) {
+        if self.newest_time().is_some_and(|newest| time < newest) {
+            self.clear();
+        }
         let mut sample = sample;
         if self.times.len() < HISTORY_FRAMES {
             self.times.push(time);
@@ -56,6 +62,20 @@ impl History {
             }
             self.start = (self.start + 1) % HISTORY_FRAMES;
         }
+    }
+
+    /// The newest sample's time (s).
+    fn newest_time(&self) -> Option<f64> {
+        let n = self.times.len();
+        if n == 0 {
+            return None;
+        }
+        let newest = if n < HISTORY_FRAMES {
+            n - 1
+        } else {
+            (self.start + HISTORY_FRAMES - 1) % HISTORY_FRAMES
+        };
+        Some(self.times[newest])
     }
 
     /// Samples kept.
@@ -99,5 +119,25 @@ mod tests {
             [(HISTORY_FRAMES + 9) as f64, -((HISTORY_FRAMES + 9) as f64)]
         );
         assert!(points.windows(2).all(|w| w[1][0] > w[0][0]));
+    }
+
+    #[test]
+    fn a_restart_breaks_the_series_cleanly() {
+        // Past the ring's wrap too: the newest sample is found where it is.
+        for frames in [10, HISTORY_FRAMES + 25] {
+            let mut history = History::new(vec!["a".into()]);
+            for f in 0..frames {
+                history.push(0.01 * f as f64, [1.0].into_iter());
+            }
+            // Same time again: kept (a paused step does not restart).
+            let last = 0.01 * (frames - 1) as f64;
+            history.push(last, [2.0].into_iter());
+            assert_eq!(history.len(), (frames + 1).min(HISTORY_FRAMES));
+            // The driver reset itself after a fall: time 0 again.
+            history.push(0.0, [3.0].into_iter());
+            history.push(0.01, [4.0].into_iter());
+            let points: Vec<[f64; 2]> = history.points(0).collect();
+            assert_eq!(points, vec![[0.0, 3.0], [0.01, 4.0]], "{frames} frames");
+        }
     }
 }

@@ -451,3 +451,37 @@ fn the_waypoint_panel_lays_a_square_the_biped_steers_along() {
             .is_some_and(|d| d.waypoints().is_empty())
     );
 }
+
+#[test]
+fn the_physics_plots_each_hold_one_unit_and_open_on_a_phone() {
+    // Wide: four plots, one unit each, their axes labelled.
+    let mut harness = poda_harness("raibert-biped", 900.0);
+    harness.run();
+    for title in [
+        "Height and leg length",
+        "Ground force",
+        "Trunk attitude",
+        "State (Figure 4)",
+    ] {
+        harness.get_by_label(title);
+    }
+    // On a phone the plots are a drawer of their own, closed at first; the
+    // controls drawer and the plots drawer never show together.
+    let mut lab = Lab::new(Settings::default());
+    lab.set_paused(true);
+    lab.set_preset("raibert-biped").expect("bundled");
+    assert!(lab.command(r#"{"narrow": true}"#).is_ok());
+    let mut harness = Harness::builder()
+        .with_size(egui::vec2(390.0, 844.0))
+        .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab);
+    harness.run();
+    assert!(harness.query_all_by_label("Ground force").next().is_none());
+    harness.get_by_label("Plots").click();
+    harness.run();
+    assert!(harness.state().plots_open());
+    harness.get_by_label("Ground force");
+    harness.get_by_label("Controls").click();
+    harness.run();
+    let lab = harness.state();
+    assert!(lab.controls_open() && !lab.plots_open());
+}

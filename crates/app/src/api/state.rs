@@ -190,6 +190,10 @@ pub struct LayoutState {
     pub controls_open: bool,
     /// The controls button's rectangle, points.
     pub controls_button_pt: [f32; 4],
+    /// Whether the phone layout's plots drawer is open.
+    pub plots_open: bool,
+    /// The phone layout's plots button's rectangle, points.
+    pub plots_button_pt: [f32; 4],
 }
 
 /// `video`: the video recording.
@@ -413,6 +417,8 @@ impl State {
                 narrow: lab.layout.narrow,
                 controls_open: lab.layout.controls_open,
                 controls_button_pt: lab.layout.controls_button_pt,
+                plots_open: lab.layout.plots_open,
+                plots_button_pt: lab.layout.plots_button_pt,
             },
             video: VideoState {
                 recording: lab.video.recording,

@@ -1,5 +1,5 @@
 //! The lab's layout as last drawn: wide or phone layout (and whether a test
-//! forced it), the phone drawer, the light or dark visuals and where the 3-D
+//! forced it), the phone drawers, the light or dark visuals and where the 3-D
 //! view lies on the canvas (`state().layout`, `view_rect_px`, `dark`).
 
 /// What the last frame's layout was.
@@ -11,6 +11,12 @@ pub struct Layout {
     pub narrow: bool,
     /// Whether the phone layout's controls drawer is open.
     pub controls_open: bool,
+    /// Whether the phone layout's plots drawer is open (never with the
+    /// controls drawer).
+    pub plots_open: bool,
+    /// The phone layout's "Plots" button, points `[x, y, w, h]` (zeros in the
+    /// wide layout), for tests that tap it.
+    pub plots_button_pt: [f32; 4],
     /// The phone layout's "Controls" button, points (CSS pixels) `[x, y, w, h]`
     /// (zeros in the wide layout), for tests that tap it.
     pub controls_button_pt: [f32; 4],
@@ -26,6 +32,8 @@ impl Default for Layout {
             narrow_override: None,
             narrow: false,
             controls_open: false,
+            plots_open: false,
+            plots_button_pt: [0.0; 4],
             controls_button_pt: [0.0; 4],
             dark_mode: true,
             view_rect_px: [0.0; 4],

@@ -8,16 +8,12 @@ use gaitlab_core::{JointKind, Skeleton};
 use crate::history::History;
 
 /// The physics engine's body plot: trunk height (m), first leg's length (m),
-/// vertical ground force (body weights) and the state machine's state (0 flight … 4 unloading).
-pub const PHYSICS_BODY_SERIES: [&str; 4] = [
-    "height (m)",
-    "leg length (m)",
-    "ground force (× weight)",
-    "state (0–4)",
-];
+/// vertical ground force (body weights) and the state machine's state (0 flight … 4 unloading;
+/// the plot names them).
+pub const PHYSICS_BODY_SERIES: [&str; 4] = ["height", "leg length", "ground force", "state"];
 
-/// The physics engine's attitude plot, degrees.
-pub const PHYSICS_ATTITUDE_SERIES: [&str; 2] = ["pitch (°)", "roll (°)"];
+/// The physics engine's attitude plot, degrees (the plot's axis names the unit).
+pub const PHYSICS_ATTITUDE_SERIES: [&str; 2] = ["pitch", "roll"];
 
 /// Most joints plotted at once.
 pub const MAX_PLOT_JOINTS: usize = 8;

@@ -1,9 +1,9 @@
 //! The lab's layout: controls on the left, live plots at the bottom, the 3-D
 //! view in the middle, an error banner on top when something went wrong, and
 //! the keyboard shortcuts (space pause, R reset, . single step). Below
-//! [`NARROW_WIDTH_PT`] (a phone, issue 6 "Comfort") the controls become a
-//! drawer toggled from a slim top bar and the plots are hidden, so the 3-D
-//! view keeps most of the screen.
+//! [`NARROW_WIDTH_PT`] (a phone, issue 6 "Comfort") the controls and the
+//! plots become drawers toggled from a slim top bar (one open at a time, the
+//! plots one under another), so the 3-D view keeps most of the screen.
 
 use crate::lab::Lab;
 use crate::render::viewport;
@@ -12,11 +12,14 @@ pub mod panels;
 mod plots;
 
 /// Below this width (points, i.e. CSS pixels) the lab takes its phone layout:
-/// the 3-D view fills the screen under a slim bar, the controls open as a
-/// drawer over the lower part of the screen, and the plots are hidden.
+/// the 3-D view fills the screen under a slim bar, and the controls or the
+/// plots open as a drawer over the lower part of the screen.
 pub const NARROW_WIDTH_PT: f32 = 600.0;
 
-/// Share of the screen height the phone layout's controls drawer takes.
+/// Height of one plot in the phone layout's plots drawer (points).
+const PHONE_PLOT_HEIGHT_PT: f32 = 170.0;
+
+/// Share of the screen height the phone layout's drawers take.
 const DRAWER_HEIGHT_FRACTION: f32 = 0.45;
 
 impl Lab {
@@ -38,6 +41,7 @@ impl Lab {
             self.phone_layout(ui);
         } else {
             self.layout.controls_button_pt = [0.0; 4];
+            self.layout.plots_button_pt = [0.0; 4];
             egui::Panel::left("gaitlab-controls")
                 .resizable(true)
                 .default_size(290.0)
@@ -159,14 +163,33 @@ impl Lab {
                 self.layout.controls_button_pt = [r.min.x, r.min.y, r.width(), r.height()];
                 if toggle.clicked() {
                     self.layout.controls_open = !self.layout.controls_open;
+                    self.layout.plots_open &= !self.layout.controls_open;
+                }
+                let plots = ui
+                    .selectable_label(self.layout.plots_open, "Plots")
+                    .on_hover_text(
+                        "Open or close the live plots over the lower part of the screen",
+                    );
+                let r = plots.rect;
+                self.layout.plots_button_pt = [r.min.x, r.min.y, r.width(), r.height()];
+                if plots.clicked() {
+                    self.layout.plots_open = !self.layout.plots_open;
+                    self.layout.controls_open &= !self.layout.plots_open;
                 }
                 panels::buttons(ui, self);
             });
         });
+        let height = (ui.available_height() * DRAWER_HEIGHT_FRACTION).max(160.0);
+        if self.layout.plots_open {
+            egui::Panel::bottom("gaitlab-phone-plots")
+                .resizable(false)
+                .exact_size(height)
+                .show(ui, |ui| self.plots_stacked_ui(ui, PHONE_PLOT_HEIGHT_PT));
+            return;
+        }
         if !self.layout.controls_open {
             return;
         }
-        let height = (ui.available_height() * DRAWER_HEIGHT_FRACTION).max(160.0);
         egui::Panel::bottom("gaitlab-phone-controls")
             .resizable(false)
             .exact_size(height)
@@ -203,6 +226,12 @@ impl Lab {
     #[must_use]
     pub fn controls_open(&self) -> bool {
         self.layout.controls_open
+    }
+
+    /// Whether the phone layout's plots drawer is open.
+    #[must_use]
+    pub fn plots_open(&self) -> bool {
+        self.layout.plots_open
     }
 
     fn keyboard(&mut self, ui: &egui::Ui) {

@@ -1,56 +1,126 @@
-//! The live plots under the 3-D view: effector errors (or the physics body
-//! series) beside the joint angles (or the physics attitude), with a menu to
-//! choose the plotted joints.
+//! The live plots under the 3-D view (issue 21 item 2, readable plots): for
+//! IK, effector errors (mm) beside the chosen joint angles; for physics, four
+//! plots of one unit each — height and leg length (m), vertical ground force
+//! (× body weight), the trunk's attitude (°) and Figure 4's state, by name.
+//! Every plot labels its axes with their units, keeps its legend above the
+//! data, reads out the nearest sample on hover and restarts cleanly when the
+//! simulation does ([`History::push`]).
 
-use egui_plot::{Legend, Line, Plot, PlotPoints};
+use std::ops::Range;
+
+use egui::Color32;
+use egui_plot::{GridInput, GridMark, HoverPosition, Line, Plot, PlotPoints};
 
 use crate::history::History;
 use crate::lab::{Lab, MAX_PLOT_JOINTS};
 
+/// Series colours, told apart by colour-blind viewers too (Okabe & Ito's
+/// palette), one per series up to [`MAX_PLOT_JOINTS`].
+pub const SERIES_COLOURS: [Color32; MAX_PLOT_JOINTS] = [
+    Color32::from_rgb(0xE6, 0x9F, 0x00),
+    Color32::from_rgb(0x56, 0xB4, 0xE9),
+    Color32::from_rgb(0x00, 0x9E, 0x73),
+    Color32::from_rgb(0xD5, 0x5E, 0x00),
+    Color32::from_rgb(0xCC, 0x79, 0xA7),
+    Color32::from_rgb(0x00, 0x72, 0xB2),
+    Color32::from_rgb(0xF0, 0xE4, 0x42),
+    Color32::from_rgb(0x99, 0x99, 0x99),
+];
+
+/// Figure 4's states in the order of their index, for the state plot's axis.
+const STATE_NAMES: [&str; 5] = ["flight", "loading", "compression", "thrust", "unloading"];
+
+/// One live plot: which series of a history it draws, and in what unit.
+struct PlotSpec<'a> {
+    /// egui id of the plot.
+    id: &'a str,
+    /// The y axis' label, with its unit.
+    y_label: &'a str,
+    /// The unit of a hover read-out.
+    unit: &'a str,
+    /// The history's series this plot draws.
+    series: Range<usize>,
+    /// Factor from stored values to plotted ones (1e3: m to mm).
+    scale: f64,
+    /// The y range always includes [0, `min_span`].
+    min_span: f64,
+    /// Names for the integer y ticks (the states), else numbers.
+    y_names: Option<&'static [&'static str]>,
+}
+
 impl Lab {
+    /// The plots side by side, filling `ui` (the wide layout's bottom panel).
     pub(crate) fn plots_ui(&mut self, ui: &mut egui::Ui) {
-        let physics = self.stage.driver.physics().is_some();
-        let half = (ui.available_width() - ui.spacing().item_spacing.x).max(0.0) / 2.0;
-        let height = ui.available_height();
+        let count = self.plot_count();
+        let gap = ui.spacing().item_spacing.x;
+        let width = ((ui.available_width() - gap * (count - 1) as f32) / count as f32).max(0.0);
+        let cell = egui::vec2(width, ui.available_height());
         ui.horizontal(|ui| {
-            ui.allocate_ui(egui::vec2(half, height), |ui| {
-                ui.vertical(|ui| {
-                    if physics {
-                        ui.label("Body: height, leg length, ground force, state");
-                        series_plot(ui, "gaitlab-body-plot", &self.stage.history, 1.0, 1.0);
-                    } else {
-                        ui.label("Effector error (mm)");
-                        series_plot(ui, "gaitlab-error-plot", &self.stage.history, 1e3, 1.0);
-                    }
-                });
-            });
-            ui.allocate_ui(egui::vec2(half, height), |ui| {
-                ui.vertical(|ui| {
-                    if physics {
-                        ui.label("Trunk attitude (°)");
-                        series_plot(
-                            ui,
-                            "gaitlab-attitude-plot",
-                            &self.plots.joint_history,
-                            1.0,
-                            10.0,
-                        );
-                        return;
-                    }
-                    ui.horizontal(|ui| {
-                        ui.label("Joint angles");
-                        self.joint_picker(ui);
-                    });
-                    series_plot(
-                        ui,
-                        "gaitlab-joint-plot",
-                        &self.plots.joint_history,
-                        1.0,
-                        10.0,
-                    );
-                });
-            });
+            for k in 0..count {
+                ui.allocate_ui(cell, |ui| ui.vertical(|ui| self.plot_cell(ui, k)));
+            }
         });
+    }
+
+    /// The plots one under another, each `height` points tall, in a
+    /// scrolling sheet (the phone layout's plots drawer).
+    pub(crate) fn plots_stacked_ui(&mut self, ui: &mut egui::Ui, height: f32) {
+        egui::ScrollArea::vertical().show(ui, |ui| {
+            let width = ui.available_width();
+            for k in 0..self.plot_count() {
+                ui.allocate_ui(egui::vec2(width, height), |ui| {
+                    ui.vertical(|ui| self.plot_cell(ui, k))
+                });
+            }
+        });
+    }
+
+    /// How many plots the running engine has: four for physics, two for IK.
+    fn plot_count(&self) -> usize {
+        if self.stage.driver.physics().is_some() {
+            4
+        } else {
+            2
+        }
+    }
+
+    /// Plot `k` of [`Lab::plot_count`], filling `ui`.
+    fn plot_cell(&mut self, ui: &mut egui::Ui, k: usize) {
+        if self.stage.driver.physics().is_some() {
+            let body = &self.stage.history;
+            let attitude = &self.plots.joint_history;
+            let (title, history, spec) = match k {
+                0 => ("Height and leg length", body, &LENGTHS),
+                1 => ("Ground force", body, &FORCE),
+                2 => ("Trunk attitude", attitude, &ATTITUDE),
+                _ => ("State (Figure 4)", body, &STATE),
+            };
+            series_plot(ui, title, history, spec);
+            return;
+        }
+        if k == 0 {
+            let history = &self.stage.history;
+            let spec = PlotSpec {
+                series: 0..history.names.len(),
+                ..ERRORS
+            };
+            series_plot(ui, "Effector error (mm)", history, &spec);
+            return;
+        }
+        ui.horizontal(|ui| {
+            ui.label("Joint angles");
+            self.joint_picker(ui);
+        });
+        let history = &self.plots.joint_history;
+        // One unit per axis unless a prismatic joint is chosen too.
+        let mixed = history.names.iter().any(|n| n.ends_with("(mm)"));
+        let spec = PlotSpec {
+            series: 0..history.names.len(),
+            y_label: if mixed { "° or mm" } else { "angle (°)" },
+            unit: if mixed { "(° or mm)" } else { "°" },
+            ..JOINTS
+        };
+        series_plot(ui, "", history, &spec);
     }
 
     /// A menu of the creature's joints with a checkbox each (at most
@@ -97,21 +167,271 @@ impl Lab {
     }
 }
 
-/// One live plot of every series in `history`, values scaled by `scale`; the
-/// y range always includes [0, `min_span`].
-fn series_plot(ui: &mut egui::Ui, id: &str, history: &History, scale: f64, min_span: f64) {
-    Plot::new(id)
-        .legend(Legend::default())
+const ERRORS: PlotSpec<'static> = PlotSpec {
+    id: "gaitlab-error-plot",
+    y_label: "error (mm)",
+    unit: "mm",
+    series: 0..0,
+    scale: 1e3,
+    min_span: 1.0,
+    y_names: None,
+};
+
+const JOINTS: PlotSpec<'static> = PlotSpec {
+    id: "gaitlab-joint-plot",
+    y_label: "angle (°)",
+    unit: "°",
+    series: 0..0,
+    scale: 1.0,
+    min_span: 10.0,
+    y_names: None,
+};
+
+/// The physics body history's series, [`crate::lab::PHYSICS_BODY_SERIES`]:
+/// height and leg length, ground force, state.
+const LENGTHS: PlotSpec<'static> = PlotSpec {
+    id: "gaitlab-body-plot",
+    y_label: "length (m)",
+    unit: "m",
+    series: 0..2,
+    scale: 1.0,
+    min_span: 0.5,
+    y_names: None,
+};
+
+const FORCE: PlotSpec<'static> = PlotSpec {
+    id: "gaitlab-force-plot",
+    y_label: "force (× weight)",
+    unit: "× weight",
+    series: 2..3,
+    scale: 1.0,
+    min_span: 2.0,
+    y_names: None,
+};
+
+const STATE: PlotSpec<'static> = PlotSpec {
+    id: "gaitlab-state-plot",
+    y_label: "state",
+    unit: "",
+    series: 3..4,
+    scale: 1.0,
+    min_span: 4.0,
+    y_names: Some(&STATE_NAMES),
+};
+
+const ATTITUDE: PlotSpec<'static> = PlotSpec {
+    id: "gaitlab-attitude-plot",
+    y_label: "angle (°)",
+    unit: "°",
+    series: 0..2,
+    scale: 1.0,
+    min_span: 10.0,
+    y_names: None,
+};
+
+/// One live plot of `spec`'s series of `history`, filling the height left,
+/// under its title and legend (a row of coloured names above the data, when
+/// it draws more than one series): axes labelled with their units, the
+/// nearest sample read out on hover.
+fn series_plot(ui: &mut egui::Ui, title: &str, history: &History, spec: &PlotSpec<'_>) {
+    let series = spec.series.start..spec.series.end.min(history.names.len());
+    ui.horizontal_wrapped(|ui| {
+        if !title.is_empty() {
+            ui.strong(title);
+        }
+        if series.len() > 1 {
+            for (k, s) in series.clone().enumerate() {
+                let colour = SERIES_COLOURS[k % SERIES_COLOURS.len()];
+                let (swatch, _) =
+                    ui.allocate_exact_size(egui::vec2(10.0, 10.0), egui::Sense::hover());
+                ui.painter().rect_filled(swatch, 2.0, colour);
+                ui.label(egui::RichText::new(history.names[s].as_str()).color(colour));
+            }
+        }
+    });
+    let y_names = spec.y_names;
+    let unit = spec.unit;
+    let mut plot = Plot::new(spec.id)
+        .height(ui.available_height().max(40.0))
         .allow_drag(false)
         .allow_zoom(false)
         .allow_scroll(false)
         .include_y(0.0)
-        .include_y(min_span)
-        .show(ui, |plot| {
-            for (s, name) in history.names.iter().enumerate() {
-                let points: Vec<[f64; 2]> =
-                    history.points(s).map(|[t, v]| [t, v * scale]).collect();
-                plot.line(Line::new(name.as_str(), PlotPoints::from(points)));
-            }
+        .include_y(spec.min_span)
+        .x_axis_label("time (s)")
+        .y_axis_label(spec.y_label)
+        .y_grid_spacer(few_round_marks)
+        .y_axis_formatter(|mark, _| tick_label(mark))
+        .label_formatter(move |hover| match hover {
+            HoverPosition::NearDataPoint {
+                plot_name,
+                position,
+                ..
+            } => Some(match y_names {
+                Some(names) => format!(
+                    "{plot_name}: {} at {:.2} s",
+                    state_name(names, position.y),
+                    position.x
+                ),
+                None => format!(
+                    "{plot_name}: {:.3} {unit} at {:.2} s",
+                    position.y, position.x
+                ),
+            }),
+            HoverPosition::Elsewhere { .. } => None,
         });
+    if let Some(names) = y_names {
+        plot = plot
+            .y_axis_min_width(70.0)
+            .y_grid_spacer(|input| {
+                (0..STATE_NAMES.len())
+                    .map(|k| GridMark {
+                        value: k as f64,
+                        step_size: 1.0,
+                    })
+                    .filter(|mark| mark.value >= input.bounds.0 && mark.value <= input.bounds.1)
+                    .collect()
+            })
+            .y_axis_formatter(move |mark, _| {
+                if mark.value.fract() == 0.0 {
+                    state_name(names, mark.value).to_owned()
+                } else {
+                    String::new()
+                }
+            });
+    }
+    plot.show(ui, |plot| {
+        for (k, s) in series.enumerate() {
+            let points: Vec<[f64; 2]> = history
+                .points(s)
+                .map(|[t, v]| [t, v * spec.scale])
+                .collect();
+            plot.line(
+                Line::new(history.names[s].as_str(), PlotPoints::from(points))
+                    .color(SERIES_COLOURS[k % SERIES_COLOURS.len()]),
+            );
+        }
+    });
+}
+
+/// Ticks for a short plot: three to five round values (1, 2 or 5 × 10ⁿ
+/// apart) across the shown range, so a plot 100 px tall still numbers its
+/// axis instead of showing only its 0.
+fn few_round_marks(input: GridInput) -> Vec<GridMark> {
+    let (low, high) = input.bounds;
+    let span = high - low;
+    if !(span.is_finite() && span > 0.0) {
+        return Vec::new();
+    }
+    let step = round_step(span / 4.0);
+    let first = (low / step).ceil();
+    let last = (high / step).floor();
+    if !(first.is_finite() && last.is_finite()) || last - first > 10.0 {
+        return Vec::new();
+    }
+    let mut marks = Vec::with_capacity(8);
+    let mut k = first;
+    while k <= last {
+        marks.push(GridMark {
+            value: k * step,
+            step_size: step,
+        });
+        k += 1.0;
+    }
+    marks
+}
+
+/// A tick's number with as many decimals as its step needs (0.5 → "0.5",
+/// 20 → "20"), and no "-0".
+fn tick_label(mark: GridMark) -> String {
+    let decimals = (-mark.step_size.log10().floor()).clamp(0.0, 6.0);
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "clamped to 0–6 above"
+    )]
+    let decimals = decimals as usize;
+    let value = if mark.value == 0.0 { 0.0 } else { mark.value };
+    format!("{value:.decimals$}")
+}
+
+/// The smallest of 1, 2 or 5 × 10ⁿ at least `wanted` (> 0).
+fn round_step(wanted: f64) -> f64 {
+    let decade = 10f64.powf(wanted.log10().floor());
+    [1.0, 2.0, 5.0, 10.0]
+        .into_iter()
+        .map(|m| m * decade)
+        .find(|&step| step >= wanted)
+        .unwrap_or(10.0 * decade)
+}
+
+/// The name of state index `value` (rounded), or "" outside the list.
+fn state_name(names: &'static [&'static str], value: f64) -> &'static str {
+    let rounded = value.round();
+    if rounded < 0.0 || !rounded.is_finite() {
+        return "";
+    }
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "a non-negative whole number, bounded by the list's length below"
+    )]
+    let index = rounded as usize;
+    names.get(index).copied().unwrap_or("")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_short_axis_gets_three_to_five_round_ticks() {
+        for (low, high, step) in [
+            (-63.0, 81.0, 50.0),
+            (0.0, 1.0, 0.5),
+            (0.0, 8.3, 5.0),
+            (-0.2, 4.2, 2.0),
+        ] {
+            let marks = few_round_marks(GridInput {
+                bounds: (low, high),
+                base_step_size: 0.001,
+            });
+            assert!(
+                (2..=5).contains(&marks.len()),
+                "{low}..{high}: {} marks",
+                marks.len()
+            );
+            for mark in &marks {
+                assert!(mark.value >= low && mark.value <= high);
+                assert!((mark.value / step - (mark.value / step).round()).abs() < 1e-9);
+                assert_eq!(mark.step_size, step, "{low}..{high}");
+            }
+        }
+        assert!(
+            few_round_marks(GridInput {
+                bounds: (1.0, 1.0),
+                base_step_size: 1.0
+            })
+            .is_empty()
+        );
+    }
+
+    #[test]
+    fn tick_labels_carry_the_decimals_their_step_needs() {
+        let label = |value, step_size| tick_label(GridMark { value, step_size });
+        assert_eq!(label(0.5, 0.5), "0.5");
+        assert_eq!(label(-0.0, 0.5), "0.0");
+        assert_eq!(label(40.0, 20.0), "40");
+        assert_eq!(label(0.02, 0.01), "0.02");
+    }
+
+    #[test]
+    fn the_state_axis_names_figure_4s_states() {
+        assert_eq!(state_name(&STATE_NAMES, 0.0), "flight");
+        assert_eq!(state_name(&STATE_NAMES, 3.2), "thrust");
+        assert_eq!(state_name(&STATE_NAMES, 4.0), "unloading");
+        assert_eq!(state_name(&STATE_NAMES, 5.0), "");
+        assert_eq!(state_name(&STATE_NAMES, -1.0), "");
+        assert_eq!(state_name(&STATE_NAMES, f64::NAN), "");
+    }
 }
