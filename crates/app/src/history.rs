@@ -78,6 +78,17 @@ impl History {
         Some(self.times[newest])
     }
 
+    /// The largest finite value of series `s` kept, if any.
+    #[must_use]
+    pub fn max_value(&self, s: usize) -> Option<f64> {
+        self.values
+            .get(s)?
+            .iter()
+            .copied()
+            .filter(|v| v.is_finite())
+            .reduce(f64::max)
+    }
+
     /// Samples kept.
     #[must_use]
     pub fn len(&self) -> usize {

@@ -14,6 +14,7 @@ pub mod lab;
 pub mod link;
 pub mod link_state;
 pub mod memory;
+pub mod plot_scale;
 pub mod settings;
 pub mod theme;
 pub mod ui;

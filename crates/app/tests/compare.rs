@@ -354,3 +354,47 @@ fn a_preset_with_its_own_ik_options_runs_with_them_and_the_panel_keeps_its_own_o
     // A link carries it.
     assert_eq!(lab.link_state()["limit_passes"], 3);
 }
+
+/// Every card's error plot shares one y range (issue 21 item 1): its top is at
+/// least every view's largest error, within a round-up of it, and a round
+/// 1, 2 or 5 × 10ⁿ mm.
+#[test]
+fn the_cards_error_plots_share_one_y_range() {
+    let mut lab = lab("human");
+    let command =
+        r#"{"compare":{"views":["transpose","pinv","dls","sdls"],"scenario":"singularity"}}"#;
+    if let Err(error) = lab.command(command) {
+        panic!("{error}");
+    }
+    run(&mut lab, 2.0);
+    let state = state(&lab);
+    let top = state["compare"]["plot_error_max_mm"]
+        .as_f64()
+        .unwrap_or(f64::NAN);
+    // Each view's largest error since the reset (2 s, all inside the plots'
+    // 10 s window), from its metrics.
+    let Some(metrics) = state["compare"]["metrics"].as_array() else {
+        panic!("no metrics in {state}")
+    };
+    let largest = metrics
+        .iter()
+        .filter_map(|m| m["max_error_m"].as_f64())
+        .fold(0.0, f64::max)
+        * 1e3;
+    println!("largest error {largest:.2} mm, shared top {top} mm");
+    assert!(
+        largest > 1.0,
+        "the singularity scenario leaves errors: {largest} mm"
+    );
+    assert!(
+        top >= largest && top <= 2.5 * largest,
+        "top {top} for {largest} mm"
+    );
+    let mantissa = top / 10f64.powf(top.log10().floor());
+    assert!(
+        [1.0, 2.0, 5.0, 10.0]
+            .iter()
+            .any(|m| (mantissa - m).abs() < 1e-9),
+        "{top} is not 1, 2 or 5 × 10ⁿ"
+    );
+}

@@ -30,6 +30,7 @@ use serde_json::{Value, json};
 
 use crate::history::History;
 use crate::lab::Stage;
+use crate::plot_scale::round_step;
 use crate::view::ViewOptions;
 
 mod config;
@@ -257,6 +258,20 @@ impl Comparison {
         }
     }
 
+    /// The top of the y range every card's error plot shares (mm): the
+    /// largest error any view shows, rounded up to 1, 2 or 5 × 10ⁿ, at least
+    /// 1 mm — so the cards compare by eye (issue 21 item 1).
+    #[must_use]
+    pub fn plot_error_max_mm(&self) -> f64 {
+        let largest = self
+            .views
+            .iter()
+            .filter_map(|v| v.stage.history.max_value(0))
+            .fold(0.0, f64::max)
+            * 1e3;
+        round_step(largest.max(1.0))
+    }
+
     /// The state's `compare` object: the configuration plus per-view metrics.
     #[must_use]
     pub fn state(&self) -> Value {
@@ -284,6 +299,10 @@ impl Comparison {
             .collect();
         if let Some(object) = value.as_object_mut() {
             object.insert("metrics".to_owned(), Value::Array(metrics));
+            object.insert(
+                "plot_error_max_mm".to_owned(),
+                json!(self.plot_error_max_mm()),
+            );
         }
         value
     }

@@ -9,7 +9,7 @@ use crate::lab::Lab;
 use crate::render::viewport;
 
 pub mod panels;
-mod plots;
+pub(crate) mod plots;
 
 /// Below this width (points, i.e. CSS pixels) the lab takes its phone layout:
 /// the 3-D view fills the screen under a slim bar, and the controls or the
