@@ -83,6 +83,7 @@ impl Lab {
                     && let Some(compare) = value.as_object_mut()
                 {
                     compare.remove("metrics");
+                    compare.remove("plot_error_max_mm");
                 }
                 out.insert((*key).to_owned(), value);
             }

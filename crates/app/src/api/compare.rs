@@ -58,6 +58,9 @@ pub struct CompareCommand {
     /// `state().compare.metrics`, ignored.
     #[cfg_attr(feature = "schema", schemars(with = "Option<serde_json::Value>"))]
     pub metrics: Option<serde::de::IgnoredAny>,
+    /// `state().compare.plot_error_max_mm`, ignored.
+    #[cfg_attr(feature = "schema", schemars(with = "Option<f64>"))]
+    pub plot_error_max_mm: Option<serde::de::IgnoredAny>,
 }
 
 /// The `compare` key's value.
