@@ -182,6 +182,12 @@ describe('full-state links (WebGL2 path)', () => {
         null, { timeout: 30_000, polling: 100 });
       const s = await state(p.page);
       assert.match(s.editor.error, /^file bad\.json: preset: skeleton\.joints\[0\]\.axis/);
+      // As the editor shows it: the joint's name after its index, and its line.
+      const root = JSON.parse(presetJson('human')).skeleton.joints[0].name;
+      assert.equal(s.editor.message,
+        `file bad.json: skeleton.joints[0] (${root}).axis: must be a non-zero vector`);
+      const axisLine = presetJson('human').split('\n').findIndex((l) => l.includes('"axis": [1, 0, 0]')) + 1;
+      assert.equal(s.editor.line, axisLine, 'the line of the bad axis');
       assert.equal(s.editor.open, true, 'the bad file opens in the editor');
       assert.equal(s.preset, 'ik-quadruped');
       p.assertClean();

@@ -3,7 +3,11 @@
 //! it and runs Apply / Revert, files loaded by picker or drag-and-drop, and
 //! "Download preset". Validation is the core's (DESIGN.md "Input limits"):
 //! errors read `preset: json.path: reason`, syntax errors name the line and
-//! column, and a bad edit leaves the running creature alone.
+//! column, and a bad edit leaves the running creature alone. The editor shows
+//! the problem in the user's terms ([`crate::editor_message`]) at its line,
+//! confirms a good Apply, and can undo it.
+
+use crate::editor_message::{EditorProblem, explain};
 
 /// The editor's state.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -14,6 +18,13 @@ pub struct PresetEditor {
     pub text: String,
     /// The last Apply's or file load's problem, shown under the editor.
     pub error: Option<String>,
+    /// `error` in the user's terms, with the line it stands on.
+    pub problem: Option<EditorProblem>,
+    /// What the last good Apply did ("Applied: NAME, 20 joints"), until the
+    /// text changes again.
+    pub applied_note: Option<String>,
+    /// The running preset's text before the last good Apply, for Undo.
+    pub before_apply: Option<String>,
     /// The text of the running preset the editor was filled from; `None`
     /// until it is filled (and after the preset changes).
     source: Option<String>,
@@ -48,13 +59,25 @@ impl PresetEditor {
     /// Forgets the filled text and the error, so the next fill replaces unapplied edits.
     pub(crate) fn clear(&mut self) {
         self.source = None;
-        self.error = None;
+        self.set_error(None);
+        self.applied_note = None;
     }
 
-    /// Records that `text` was applied: it is now the running preset's, with no error.
-    pub(crate) fn applied(&mut self, text: String) {
-        self.error = None;
+    /// Records that `text` was applied: it is now the running preset's, with
+    /// no error; `note` says what changed.
+    pub(crate) fn applied(&mut self, text: String, note: String) {
+        self.set_error(None);
+        self.applied_note = Some(note);
         self.source = Some(text);
+    }
+
+    /// Records the last problem (or none), explained against the text.
+    pub(crate) fn set_error(&mut self, error: Option<String>) {
+        self.problem = error.as_deref().map(|e| explain(e, &self.text));
+        self.error = error;
+        if self.error.is_some() {
+            self.applied_note = None;
+        }
     }
 }
 

@@ -9,6 +9,7 @@ pub mod api;
 pub mod bench;
 pub mod compare;
 pub mod editor;
+pub mod editor_message;
 pub mod history;
 pub mod lab;
 pub mod link;

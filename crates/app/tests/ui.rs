@@ -295,7 +295,17 @@ fn the_preset_editor_shows_the_json_path_of_a_bad_edit_and_keeps_the_creature() 
         error.contains("skeleton.joints[0].axis"),
         "the message names the JSON path: {error}"
     );
-    let shown = format!("Invalid preset: {error}");
+    // Shown in the user's terms: the joint's name after its index, and the
+    // line the axis stands on.
+    let line = bad
+        .lines()
+        .position(|l| l.contains("\"axis\": [0, 0, 0]"))
+        .map(|k| k + 1)
+        .expect("the edited line");
+    let first = harness.state().creature().skeleton.joints()[0].name.clone();
+    let shown = format!(
+        "Invalid preset (line {line}): skeleton.joints[0] ({first}).axis: must be a non-zero vector"
+    );
     harness.get_by_label(&shown);
     assert_eq!(
         harness.state().creature().name,
@@ -316,6 +326,14 @@ fn the_preset_editor_shows_the_json_path_of_a_bad_edit_and_keeps_the_creature() 
         harness.query_by_label(&shown).is_none(),
         "the message is gone"
     );
+    // A good Apply says so, and Undo runs the preset from before it again.
+    let joints = harness.state().creature().skeleton.joint_count();
+    harness.get_by_label(&format!("Applied: human-tall, {joints} joints"));
+    harness.get_by_label("Undo").click();
+    harness.run();
+    assert_eq!(harness.state().creature().name, "human");
+    harness.get_by_label("Undone: back to human");
+    assert!(!harness.state().editor().dirty());
 }
 
 #[test]

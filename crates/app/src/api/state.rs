@@ -164,6 +164,11 @@ pub struct EditorState {
     pub dirty: bool,
     /// The last apply's error.
     pub error: Option<String>,
+    /// That error as the editor shows it: the joint named after its index,
+    /// serde's type words put plainly.
+    pub message: Option<String>,
+    /// The editor line it stands on (1-based).
+    pub line: Option<usize>,
 }
 
 /// `recording`: the motion take.
@@ -395,6 +400,8 @@ impl State {
                 open: lab.editor.open,
                 dirty: lab.editor.dirty(),
                 error: lab.editor.error.clone(),
+                message: lab.editor.problem.as_ref().map(|p| p.message.clone()),
+                line: lab.editor.problem.as_ref().and_then(|p| p.line),
             },
             heading_deg: settings.heading_deg,
             backend: lab.backend.clone(),

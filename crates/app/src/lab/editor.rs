@@ -57,16 +57,40 @@ impl Lab {
     pub fn editor_apply(&mut self) -> Result<(), String> {
         self.editor_sync();
         let text = self.editor.text.clone();
+        let before = self.preset_text();
         match self.set_custom_preset(&text) {
             Ok(()) => {
-                self.editor.applied(text);
+                let creature = &self.session.creature;
+                let note = format!(
+                    "Applied: {}, {} joints",
+                    creature.name,
+                    creature.skeleton.joint_count()
+                );
+                self.editor.before_apply = Some(before);
+                self.editor.applied(text, note);
                 Ok(())
             }
             Err(error) => {
-                self.editor.error = Some(error.clone());
+                self.editor.set_error(Some(error.clone()));
                 Err(error)
             }
         }
+    }
+
+    /// Runs the preset as it was before the last good Apply again, and puts
+    /// its text in the editor.
+    ///
+    /// # Errors
+    /// When there is nothing to undo, or the old text no longer runs.
+    pub fn editor_undo_apply(&mut self) -> Result<(), String> {
+        let Some(before) = self.editor.before_apply.take() else {
+            return Err("editor: nothing applied to undo".to_owned());
+        };
+        self.set_custom_preset(&before)?;
+        self.editor.clear();
+        self.editor_sync();
+        self.editor.applied_note = Some(format!("Undone: back to {}", self.session.creature.name));
+        Ok(())
     }
 
     /// Loads a preset file (picked or dropped): at most the preset size limit,
@@ -101,7 +125,7 @@ impl Lab {
             }
         };
         if let Err(error) = &result {
-            self.editor.error = Some(error.clone());
+            self.editor.set_error(Some(error.clone()));
             self.report_error(error.clone());
         }
         result

@@ -120,12 +120,19 @@ pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
     let mut open = true;
     let mut apply = false;
     let mut revert = false;
+    let mut undo = false;
+    // Within the screen on a phone too.
+    let screen = ctx.content_rect();
     egui::Window::new("Preset editor")
         .open(&mut open)
-        .default_size([520.0, 520.0])
+        .default_size([
+            520f32.min(screen.width() - 16.0),
+            520f32.min(screen.height() * 0.8),
+        ])
+        .max_width(screen.width() - 16.0)
         .vscroll(false)
         .show(ctx, |ui| {
-            ui.horizontal(|ui| {
+            ui.horizontal_wrapped(|ui| {
                 apply = ui
                     .button("Apply")
                     .on_hover_text("Validate the JSON and run it (a bad preset changes nothing)")
@@ -152,21 +159,45 @@ pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
                     ui.label("edited, not applied");
                 }
             });
-            // Room under the text for the validation message.
-            let text_height = (ui.available_height() - 48.0).max(120.0);
-            egui::ScrollArea::vertical()
+            // Room under the text for the message.
+            let text_height = (ui.available_height() - 56.0).max(120.0);
+            let error_line = lab.editor.problem.as_ref().and_then(|p| p.line);
+            egui::ScrollArea::both()
                 .max_height(text_height)
                 .show(ui, |ui| {
-                    ui.add(
-                        egui::TextEdit::multiline(&mut lab.editor.text)
-                            .code_editor()
-                            .desired_width(f32::INFINITY)
-                            .desired_rows(24),
-                    )
-                    .on_hover_text("The preset JSON (DESIGN.md limits: 256 KiB, 512 joints)");
+                    ui.horizontal_top(|ui| {
+                        line_numbers(ui, &lab.editor.text, error_line);
+                        let mut layouter = |ui: &egui::Ui, text: &dyn egui::TextBuffer, _: f32| {
+                            ui.fonts_mut(|f| f.layout_job(code_job(ui, text.as_str(), error_line)))
+                        };
+                        ui.add(
+                            egui::TextEdit::multiline(&mut lab.editor.text)
+                                .code_editor()
+                                .desired_width(f32::INFINITY)
+                                .desired_rows(24)
+                                .layouter(&mut layouter),
+                        )
+                        .on_hover_text("The preset JSON (DESIGN.md limits: 256 KiB, 512 joints)");
+                    });
                 });
-            if let Some(error) = &lab.editor.error {
-                ui.colored_label(PROBLEM, format!("Invalid preset: {error}"));
+            if let Some(problem) = &lab.editor.problem {
+                let at = problem
+                    .line
+                    .map(|line| format!(" (line {line})"))
+                    .unwrap_or_default();
+                ui.colored_label(PROBLEM, format!("Invalid preset{at}: {}", problem.message));
+            } else if let Some(note) = &lab.editor.applied_note {
+                ui.horizontal(|ui| {
+                    ui.colored_label(APPLIED, note);
+                    if lab.editor.before_apply.is_some()
+                        && ui
+                            .button("Undo")
+                            .on_hover_text("Run the preset as it was before this Apply again")
+                            .clicked()
+                    {
+                        undo = true;
+                    }
+                });
             }
         });
     if apply {
@@ -176,7 +207,53 @@ pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
     if revert {
         lab.editor_revert();
     }
+    if undo && let Err(error) = lab.editor_undo_apply() {
+        lab.report_error(error);
+    }
     if !open {
         lab.set_editor_open(false);
     }
+}
+
+/// The colour of a good Apply's note.
+const APPLIED: egui::Color32 = egui::Color32::from_rgb(60, 160, 90);
+
+/// The editor's line numbers, one per line of `text`, the problem's line in
+/// the problem colour.
+fn line_numbers(ui: &mut egui::Ui, text: &str, error_line: Option<usize>) {
+    let lines = text.split('\n').count().max(1);
+    let width = lines.to_string().len();
+    let mut job = egui::text::LayoutJob::default();
+    let font = egui::TextStyle::Monospace.resolve(ui.style());
+    for line in 1..=lines {
+        let colour = if Some(line) == error_line {
+            PROBLEM
+        } else {
+            ui.visuals().weak_text_color()
+        };
+        let end = if line < lines { "\n" } else { "" };
+        job.append(
+            &format!("{line:>width$}{end}"),
+            0.0,
+            egui::TextFormat::simple(font.clone(), colour),
+        );
+    }
+    ui.label(job);
+}
+
+/// The editor's text laid out without soft wraps (lines keep the numbers
+/// beside them), the problem's line on a tinted background.
+fn code_job(ui: &egui::Ui, text: &str, error_line: Option<usize>) -> egui::text::LayoutJob {
+    let font = egui::TextStyle::Monospace.resolve(ui.style());
+    let colour = ui.visuals().text_color();
+    let mut job = egui::text::LayoutJob::default();
+    job.wrap.max_width = f32::INFINITY;
+    for (k, line) in text.split_inclusive('\n').enumerate() {
+        let mut format = egui::TextFormat::simple(font.clone(), colour);
+        if Some(k + 1) == error_line {
+            format.background = PROBLEM.gamma_multiply(0.3);
+        }
+        job.append(line, 0.0, format);
+    }
+    job
 }
