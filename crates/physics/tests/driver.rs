@@ -219,3 +219,31 @@ fn live_speed_and_hop_height_take_the_preset_ranges() {
     assert_eq!(error.path, "scenario.physics.hop_height_m");
     assert_eq!(error.reason, "must be a height in [0, 2] m");
 }
+
+/// Every tunable gain of every gait has words for people (the panel's label),
+/// with its unit; its wire key stays the parameter's name.
+#[test]
+fn every_tunable_gain_is_named_in_words() {
+    for name in ["raibert-biped", "raibert-quadruped", "raibert-kangaroo"] {
+        let preset = bundled(name);
+        let species = PhysicsDriver::new(&preset)
+            .expect("driver")
+            .sim()
+            .creature
+            .species;
+        for gait in gait_names(species) {
+            let mut params = preset.scenario.physics.clone().expect("physics");
+            params.gait = Some((*gait).to_owned());
+            let driver = PhysicsDriver::with_params(&preset, params).expect("gait builds");
+            for gain in driver.gains() {
+                assert_ne!(
+                    gain.label, gain.name,
+                    "{name} {gait}: {} has no words",
+                    gain.name
+                );
+                assert!(gain.label.contains(' '), "{}: words, not a key", gain.label);
+                assert!(!gain.unit.is_empty(), "{name} {gait}: {}", gain.name);
+            }
+        }
+    }
+}

@@ -6,6 +6,30 @@
 //! [`Gain`](crate::world::sim::Gain), part of the controller interface the
 //! loop calls; the macro here declares a controller's.
 
+/// A tunable gain's name in words, with the paper's symbol and equation
+/// where it has one; the wire key itself for a name not listed.
+#[must_use]
+pub fn words(name: &'static str) -> &'static str {
+    match name {
+        "leg_stiffness" => "Leg spring stiffness k (eq. 1)",
+        "leg_damping" => "Leg spring damping b (eq. 1)",
+        "placement_gain_s" => "Foot placement gain k_ẋ (eq. 3)",
+        "posture_kp" => "Posture stiffness k_p (eq. 4)",
+        "posture_kv" => "Posture damping k_v (eq. 4)",
+        "pitch_kp" => "Pitch stiffness k_p (eq. 4)",
+        "pitch_kv" => "Pitch damping k_v (eq. 4)",
+        "roll_kp" => "Roll stiffness (eq. 4)",
+        "roll_kv" => "Roll damping (eq. 4)",
+        "swing_kp" => "Swing hip stiffness (eq. 5)",
+        "swing_kv" => "Swing hip damping (eq. 5)",
+        "ankle_stiffness" => "Ankle spring stiffness (eq. 1)",
+        "ankle_damping" => "Ankle spring damping (eq. 1)",
+        "tail_stiffness" => "Tail spring stiffness",
+        "tail_damping" => "Tail spring damping",
+        other => other,
+    }
+}
+
 /// Declares `gains()` and `set_gain()` over named fields of `self.params`
 /// (given as `field => unit`), with `Default` supplying the defaults; or,
 /// as `params.sub = DEFAULT; …`, over the fields of `self.params.sub` with
@@ -17,7 +41,13 @@ macro_rules! tunable_gains {
         fn gains(&self) -> Vec<$crate::world::sim::Gain> {
             let d = $default;
             let now = &self.$($path).+;
-            vec![$($crate::world::sim::Gain::new(stringify!($field), $unit, now.$field, d.$field)),*]
+            vec![$($crate::world::sim::Gain::new(
+                stringify!($field),
+                $crate::control::gains::words(stringify!($field)),
+                $unit,
+                now.$field,
+                d.$field,
+            )),*]
         }
 
         fn set_gain(&mut self, name: &str, value: f64) -> bool {

@@ -135,8 +135,10 @@ pub trait Controller {
 /// the `gain` command), at scale 1 in the paper's units.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Gain {
-    /// Parameter name (`posture_kp`, `leg_stiffness`, …).
+    /// Parameter name (`posture_kp`, `leg_stiffness`, …), the wire key.
     pub name: &'static str,
+    /// The gain in words for people ("Leg spring stiffness k (eq. 1)").
+    pub label: &'static str,
     /// Unit, for labels.
     pub unit: &'static str,
     /// Current value.
@@ -148,9 +150,16 @@ pub struct Gain {
 impl Gain {
     /// A gain from its parts.
     #[must_use]
-    pub const fn new(name: &'static str, unit: &'static str, value: f64, default: f64) -> Self {
+    pub const fn new(
+        name: &'static str,
+        label: &'static str,
+        unit: &'static str,
+        value: f64,
+        default: f64,
+    ) -> Self {
         Self {
             name,
+            label,
             unit,
             value,
             default,

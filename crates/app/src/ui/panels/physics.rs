@@ -124,9 +124,12 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                         .add(
                             egui::Slider::new(&mut value, 0.0..=hi)
                                 .logarithmic(true)
-                                .text(format!("{} ({})", gain.name, gain.unit)),
+                                .text(format!("{} ({})", gain.label, gain.unit)),
                         )
-                        .on_hover_text(format!("Controller gain {} in {}; default {}", gain.name, gain.unit, gain.default))
+                        .on_hover_text(format!(
+                            "{}: {} {}, default {}; the preset's key is {}",
+                            gain.label, gain.value, gain.unit, gain.default, gain.name
+                        ))
                         .changed()
                     {
                         gain_edits.push((gain.name, value));
@@ -159,12 +162,25 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
             ui.label(format!(
                 "speed {:.2} m/s of {:.2} · friction needed {:.2}",
                 summary.speed_mean_mps, summary.speed_desired_mps, summary.friction_needed_max
-            ));
+            ))
+            .on_hover_text(
+                "Mean forward speed after 3 s, of the desired. Friction needed: the largest \
+                 ratio of a stance foot's horizontal to vertical ground force while it carries at \
+                 least 10 % of the body's weight — the friction coefficient real ground would \
+                 need so the foot does not slip (a running animal needs well under 1). High \
+                 values come at touchdown: the feet arrive with their swing speed and stop \
+                 within a few ms on the stiff ground springs, which hold them whatever the \
+                 ratio; the paper saw almost 2.0 for up to 10 ms (docs/physics.md).",
+            );
             let rows = compare(&summary, &current, &leg_names);
             if rows.is_empty() {
                 ui.label("Table 2 has no column for this gait.");
             } else {
-                ui.label("Table 2 (after 3 s settling)");
+                ui.label("Table 2 (after 3 s settling)").on_hover_text(
+                    "paper: Table 2's animation column (Raibert & Hodgins 1991); live: this run, \
+                     measured from 3 s on; diff: live against paper. Why rows miss, with the \
+                     experiments: docs/physics.md, \"Where and why the figures miss\".",
+                );
                 egui::Grid::new("gaitlab-table2")
                     .striped(true)
                     .show(ui, |ui| {
