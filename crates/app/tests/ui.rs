@@ -503,3 +503,53 @@ fn the_physics_plots_each_hold_one_unit_and_open_on_a_phone() {
     let lab = harness.state();
     assert!(lab.controls_open() && !lab.plots_open());
 }
+
+#[test]
+fn a_first_visit_finds_the_intro_the_help_and_presets_by_engine() {
+    let mut harness = harness();
+    harness.run();
+    harness.get_by_label(gaitlab_app::ui::panels::INTRO);
+    assert!(
+        harness.query_by_label("The 3-D view").is_none(),
+        "help starts closed"
+    );
+    harness.get_by_label("Help").click();
+    harness.run();
+    assert!(harness.state().help_open());
+    // The help window: the view's key, the controls, the engines.
+    for text in [
+        "The 3-D view",
+        "the figure's left side (joints named left…)",
+        "IK targets the effectors follow",
+        "Moving around",
+        "orbit the camera (one finger on a touch screen)",
+        "The engines",
+        "Physics (Raibert & Hodgins 1991)",
+    ] {
+        harness.get_by_label(text);
+    }
+    // The button (the window's title is "Help" too, and comes after it).
+    harness
+        .get_all_by_label("Help")
+        .next()
+        .expect("the Help button")
+        .click();
+    harness.run();
+    assert!(!harness.state().help_open(), "Help closes it again");
+    assert!(
+        harness.query_by_label("The 3-D view").is_none(),
+        "and the window goes"
+    );
+    // The preset menu groups the bundled presets by engine.
+    harness.get_by_label("Preset").click();
+    harness.run();
+    for text in ["PODA gaits", "raibert-kangaroo", "poda-quadruped"] {
+        assert!(
+            harness.query_all_by_label(text).next().is_some(),
+            "the menu lists {text}"
+        );
+    }
+    harness.get_by_label("raibert-kangaroo").click();
+    harness.run();
+    assert_eq!(harness.state().creature().name, "raibert-kangaroo");
+}

@@ -220,6 +220,8 @@ pub struct Command {
     /// Force the phone layout on (true) or off (false); null follows the width.
     #[serde(default, deserialize_with = "present")]
     pub narrow: Option<Option<bool>>,
+    /// Open or close the help window.
+    pub help: Option<bool>,
     /// View flags.
     #[serde(default, deserialize_with = "object")]
     pub views: Option<ViewsCommand>,
@@ -406,6 +408,9 @@ impl Lab {
         }
         if let Some(narrow) = c.narrow {
             self.layout.narrow_override = narrow;
+        }
+        if let Some(help) = c.help {
+            self.layout.help_open = help;
         }
         if let Some(views) = &c.views {
             let view = &mut self.session.settings.view;

@@ -197,6 +197,8 @@ pub struct LayoutState {
     pub controls_button_pt: [f32; 4],
     /// Whether the phone layout's plots drawer is open.
     pub plots_open: bool,
+    /// Whether the help window is open.
+    pub help_open: bool,
     /// The phone layout's plots button's rectangle, points.
     pub plots_button_pt: [f32; 4],
 }
@@ -425,6 +427,7 @@ impl State {
                 controls_open: lab.layout.controls_open,
                 controls_button_pt: lab.layout.controls_button_pt,
                 plots_open: lab.layout.plots_open,
+                help_open: lab.layout.help_open,
                 plots_button_pt: lab.layout.plots_button_pt,
             },
             video: VideoState {

@@ -11,6 +11,8 @@ pub struct Layout {
     pub narrow: bool,
     /// Whether the phone layout's controls drawer is open.
     pub controls_open: bool,
+    /// Whether the help window is open.
+    pub help_open: bool,
     /// Whether the phone layout's plots drawer is open (never with the
     /// controls drawer).
     pub plots_open: bool,
@@ -32,6 +34,7 @@ impl Default for Layout {
             narrow_override: None,
             narrow: false,
             controls_open: false,
+            help_open: false,
             plots_open: false,
             plots_button_pt: [0.0; 4],
             controls_button_pt: [0.0; 4],

@@ -64,6 +64,7 @@ impl Lab {
             }
         }
         panels::editor_window(&ui.ctx().clone(), self);
+        panels::help_window(&ui.ctx().clone(), self);
         egui::CentralPanel::default().show(ui, |ui| {
             if let Some(notice) = self.session.notice.clone() {
                 ui.horizontal_wrapped(|ui| {
@@ -226,6 +227,12 @@ impl Lab {
     #[must_use]
     pub fn controls_open(&self) -> bool {
         self.layout.controls_open
+    }
+
+    /// Whether the help window is open.
+    #[must_use]
+    pub fn help_open(&self) -> bool {
+        self.layout.help_open
     }
 
     /// Whether the phone layout's plots drawer is open.

@@ -3,7 +3,9 @@
 //! that gets a name or a path asks [`bundled_json`] first and reads a file only
 //! when the name is not bundled.
 
-use super::{Creature, PresetError};
+use std::sync::OnceLock;
+
+use super::{Creature, Engine, PresetError};
 
 /// Every bundled preset as `(name, json)`, the default (`human`) first.
 const BUNDLED: &[(&str, &str)] = &[
@@ -72,4 +74,55 @@ pub fn bundled_json(name: &str) -> Option<&'static str> {
 #[must_use]
 pub fn load_bundled(name: &str) -> Option<Result<Creature, PresetError>> {
     bundled_json(name).map(Creature::from_json)
+}
+
+/// What a menu shows of a bundled preset: its name, engine and description.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BundledInfo {
+    /// The preset's name.
+    pub name: &'static str,
+    /// The engine its scenario runs.
+    pub engine: Engine,
+    /// Its one-paragraph description.
+    pub description: String,
+}
+
+/// Every bundled preset's [`BundledInfo`], in [`bundled`]'s order, parsed
+/// once on first use. A preset that does not load (a build defect the
+/// `presets` tests catch) is left out.
+#[must_use]
+pub fn bundled_catalog() -> &'static [BundledInfo] {
+    static CATALOG: OnceLock<Vec<BundledInfo>> = OnceLock::new();
+    CATALOG.get_or_init(|| {
+        BUNDLED
+            .iter()
+            .filter_map(|(name, json)| {
+                let creature = Creature::from_json(json).ok()?;
+                Some(BundledInfo {
+                    name,
+                    engine: creature.scenario.engine,
+                    description: creature.description,
+                })
+            })
+            .collect()
+    })
+}
+
+#[cfg(test)]
+mod catalog_tests {
+    use super::*;
+
+    #[test]
+    fn the_catalog_lists_every_bundled_preset_with_its_engine_and_description() {
+        let catalog = bundled_catalog();
+        assert_eq!(catalog.len(), BUNDLED.len());
+        for (info, (name, _)) in catalog.iter().zip(BUNDLED) {
+            assert_eq!(info.name, *name);
+            assert!(!info.description.is_empty(), "{name} has no description");
+        }
+        let engine = |n: &str| catalog.iter().find(|i| i.name == n).map(|i| i.engine);
+        assert_eq!(engine("human"), Some(Engine::Ik));
+        assert_eq!(engine("poda-quadruped"), Some(Engine::Poda));
+        assert_eq!(engine("raibert-kangaroo"), Some(Engine::Physics));
+    }
 }

@@ -28,7 +28,10 @@ pub mod thesis;
 mod validate;
 
 pub use build::Creature;
-pub use bundled::{DEFAULT_PRESET, bundled, bundled_json, bundled_names, load_bundled};
+pub use bundled::{
+    BundledInfo, DEFAULT_PRESET, bundled, bundled_catalog, bundled_json, bundled_names,
+    load_bundled,
+};
 pub use deprecated::Deprecation;
 pub use edit::{MAX_EDIT_PATH_CHARS, set_preset_value};
 pub use error::{PresetError, ROOT_PATH, json_path};

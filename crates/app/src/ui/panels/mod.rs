@@ -6,6 +6,7 @@ mod buttons;
 mod compare;
 mod gait;
 mod ground_view;
+mod help;
 mod ik;
 mod motion;
 mod panel;
@@ -21,12 +22,14 @@ mod waypoints;
 
 pub use buttons::buttons;
 pub use compare::cards as compare_cards;
+pub use help::{INTRO, help_window};
 pub use panel::Panel;
 pub use share::editor_window;
 
 /// Every panel of the controls, top to bottom; each shows when its
 /// [`Panel::shown_for`] says so.
 pub static REGISTRY: &[&dyn Panel] = &[
+    &help::IntroPanel,
     &preset::EnginePanel,
     &preset::PresetPanel,
     &share::SharePanel,
@@ -65,7 +68,13 @@ mod tests {
 
     #[test]
     fn each_engine_gets_its_panels_from_the_registry() {
-        let common = ["Engine", "Preset", "Share", "Reset / Pause / Step"];
+        let common = [
+            "Introduction",
+            "Engine",
+            "Preset",
+            "Share",
+            "Reset / Pause / Step",
+        ];
         let tail = ["View", "Recording", "Readout"];
         let with = |middle: &[&'static str]| -> Vec<&'static str> {
             common.iter().chain(middle).chain(&tail).copied().collect()

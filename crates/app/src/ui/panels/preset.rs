@@ -1,6 +1,6 @@
 //! The engine selector and the preset picker, at the top of the controls.
 
-use gaitlab_core::preset::bundled_names;
+use gaitlab_core::preset::{Engine, bundled_catalog};
 
 use super::panel::Panel;
 use crate::lab::Lab;
@@ -34,16 +34,13 @@ impl Panel for PresetPanel {
 /// The engine selector: She 2006's IK tracking or PODA's gait synthesis
 /// (switching loads the matching creature).
 fn engine(ui: &mut egui::Ui, lab: &mut Lab) {
-    use gaitlab_core::preset::Engine;
     let mut engine = lab.engine();
     ui.horizontal(|ui| {
         ui.label("Engine");
-        ui.radio_value(&mut engine, Engine::Ik, "IK (She 2006)")
-            .on_hover_text("Sinusoidal effector targets tracked by Jacobian IK (She 2006)");
-        ui.radio_value(&mut engine, Engine::Poda, "PODA gaits")
-            .on_hover_text("Gait synthesis from period, duty factor and phases (Girard & Maciejewski 1985)");
-        ui.radio_value(&mut engine, Engine::Physics, "Physics")
-            .on_hover_text("Simulated runners under hopping, speed and posture control (Raibert & Hodgins 1991)");
+        for e in Engine::ALL {
+            ui.radio_value(&mut engine, e, engine_label(e))
+                .on_hover_text(engine_hover(e));
+        }
     });
     if engine != lab.engine()
         && let Err(error) = lab.set_engine(engine)
@@ -52,27 +49,59 @@ fn engine(ui: &mut egui::Ui, lab: &mut Lab) {
     }
 }
 
-/// The preset picker.
+/// An engine's name in the selector and the preset menu's groups.
+fn engine_label(engine: Engine) -> &'static str {
+    match engine {
+        Engine::Ik => "IK (She 2006)",
+        Engine::Poda => "PODA gaits",
+        Engine::Physics => "Physics",
+    }
+}
+
+fn engine_hover(engine: Engine) -> &'static str {
+    match engine {
+        Engine::Ik => "Sinusoidal effector targets tracked by Jacobian IK (She 2006)",
+        Engine::Poda => {
+            "Gait synthesis from period, duty factor and phases (Girard & Maciejewski 1985)"
+        }
+        Engine::Physics => {
+            "Simulated runners under hopping, speed and posture control (Raibert & Hodgins 1991)"
+        }
+    }
+}
+
+/// The preset picker: the bundled presets grouped by engine, each with its
+/// description as its tooltip; an edited or loaded preset is marked so.
 fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
     let current = lab.creature().name.clone();
+    let edited = lab.session.custom_preset.is_some();
+    let shown = if edited {
+        format!("{current} (edited)")
+    } else {
+        current.clone()
+    };
     let mut chosen = None;
     egui::ComboBox::from_label("Preset")
-        .selected_text(current.as_str())
+        .selected_text(shown)
+        .height(480.0)
         .show_ui(ui, |ui| {
-            for name in bundled_names() {
-                if ui
-                    .selectable_label(name == current, name)
-                    .on_hover_text("Load this bundled creature with its own scenario")
-                    .clicked()
-                {
-                    chosen = Some(name);
+            for engine in Engine::ALL {
+                ui.label(egui::RichText::new(engine_label(engine)).strong().small());
+                for info in bundled_catalog().iter().filter(|i| i.engine == engine) {
+                    if ui
+                        .selectable_label(!edited && info.name == current, info.name)
+                        .on_hover_text(info.description.as_str())
+                        .clicked()
+                    {
+                        chosen = Some(info.name);
+                    }
                 }
             }
         })
         .response
-        .on_hover_text("The creature and its scenario (bundled presets)");
+        .on_hover_text("The creature and its scenario: the bundled presets, by engine");
     if let Some(name) = chosen
-        && name != current
+        && (name != current || edited)
         && let Err(error) = lab.set_preset(name)
     {
         lab.report_error(error);

@@ -1,0 +1,155 @@
+//! First steps (issue 21 item 4): a one-line introduction at the top of the
+//! controls with a Help button, and the help window — what each colour of
+//! the 3-D view means, how to move the camera and time, and what each engine
+//! is.
+
+use egui::Color32;
+
+use super::panel::Panel;
+use crate::lab::Lab;
+use crate::render::gait_overlay::{FOOTHOLD_COLOR, FOOTPRINT_COLOR, PATH_COLOR};
+use crate::render::physics_overlay::OBSTACLE_COLOR;
+use crate::render::scene::{
+    CENTRE_COLOR, EFFECTOR_COLOR, ERROR_COLOR, LEFT_COLOR, RIGHT_COLOR, TARGET_COLOR,
+    TARGET_OUT_OF_REACH_COLOR, WORLD_AXIS_COLORS,
+};
+
+/// The introduction line and the Help button.
+pub struct IntroPanel;
+
+impl Panel for IntroPanel {
+    fn title(&self) -> &'static str {
+        "Introduction"
+    }
+
+    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.label(INTRO);
+            if ui
+                .button("Help")
+                .on_hover_text("What the colours mean, how to move the view, the three engines")
+                .clicked()
+            {
+                lab.layout.help_open = !lab.layout.help_open;
+            }
+        });
+    }
+}
+
+/// The introduction, one line.
+pub const INTRO: &str = "Legged figures animated by three classic papers: pick an engine and a preset, change what you like, compare.";
+
+/// The 3-D view's key: each colour and what it marks.
+const KEY: [([f32; 4], &str); 12] = [
+    (LEFT_COLOR, "the figure's left side (joints named left…)"),
+    (RIGHT_COLOR, "its right side"),
+    (CENTRE_COLOR, "its centre line: trunk, spine, head"),
+    (EFFECTOR_COLOR, "end effectors: hands and feet the IK moves"),
+    (TARGET_COLOR, "IK targets the effectors follow"),
+    (
+        TARGET_OUT_OF_REACH_COLOR,
+        "a target beyond its limb's reach",
+    ),
+    (ERROR_COLOR, "the gap from an effector to its target"),
+    (FOOTHOLD_COLOR, "PODA: a foot's next foothold"),
+    (FOOTPRINT_COLOR, "PODA: where feet stood"),
+    (PATH_COLOR, "PODA: the body's path"),
+    (OBSTACLE_COLOR, "physics: a box in the way"),
+    (
+        WORLD_AXIS_COLORS[0],
+        "world axes: x red, y green, z (forward) blue",
+    ),
+];
+
+/// How to drive the view and the clock.
+const CONTROLS: [(&str, &str); 6] = [
+    ("Drag", "orbit the camera (one finger on a touch screen)"),
+    ("Scroll or pinch", "zoom"),
+    ("Space", "pause or play"),
+    ("R", "reset to time 0"),
+    (".", "one frame forward while paused"),
+    ("Drop a .json", "load it as a preset (or Load file…)"),
+];
+
+/// The three engines, one line each.
+const ENGINES: [(&str, &str); 3] = [
+    (
+        "IK (She 2006)",
+        "hand and foot targets move on sinusoids; Jacobian IK (transpose, pseudoinverse, DLS, SDLS) makes the 20-joint figure follow. Side by side compares the methods.",
+    ),
+    (
+        "PODA gaits (Girard & Maciejewski 1985)",
+        "a gait (period, duty factor, leg phases) places footholds; feet swing on splines and the legs follow by IK. Any number of legs.",
+    ),
+    (
+        "Physics (Raibert & Hodgins 1991)",
+        "simulated biped, quadruped and kangaroo: springy legs, hopping, foot placement for speed and hip torque for posture.",
+    ),
+];
+
+/// The help window, when open.
+pub fn help_window(ctx: &egui::Context, lab: &mut Lab) {
+    if !lab.layout.help_open {
+        return;
+    }
+    let mut open = true;
+    let screen = ctx.content_rect();
+    // Over the 3-D view, clear of the controls and their Help button.
+    egui::Window::new("Help")
+        .open(&mut open)
+        .pivot(egui::Align2::CENTER_CENTER)
+        .default_pos(screen.center())
+        .default_width(440f32.min(screen.width() - 16.0))
+        .max_width(screen.width() - 16.0)
+        .constrain(true)
+        .max_height(screen.height() * 0.85)
+        .show(ctx, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| {
+                ui.label(INTRO);
+                ui.add_space(6.0);
+                ui.strong("The 3-D view");
+                for (colour, meaning) in KEY {
+                    ui.horizontal(|ui| {
+                        swatch(ui, colour);
+                        ui.add(egui::Label::new(meaning).wrap());
+                    });
+                }
+                ui.add_space(6.0);
+                ui.strong("Moving around");
+                egui::Grid::new("gaitlab-help-controls").show(ui, |ui| {
+                    for (key, what) in CONTROLS {
+                        ui.monospace(key);
+                        ui.add(egui::Label::new(what).wrap());
+                        ui.end_row();
+                    }
+                });
+                ui.add_space(6.0);
+                ui.strong("The engines");
+                for (name, what) in ENGINES {
+                    ui.label(egui::RichText::new(name).strong());
+                    ui.label(what);
+                }
+                ui.add_space(6.0);
+                ui.label(
+                    "Every control has a tooltip. Copy link shares the whole lab; the preset \
+                     editor shows a creature's JSON.",
+                );
+            });
+        });
+    if !open {
+        lab.layout.help_open = false;
+    }
+}
+
+/// A small square of `colour` (sRGB, 0–1).
+fn swatch(ui: &mut egui::Ui, colour: [f32; 4]) {
+    let [r, g, b, _] = colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round());
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "clamped to 0–255 above"
+    )]
+    let fill = Color32::from_rgb(r as u8, g as u8, b as u8);
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
+    ui.painter().rect_filled(rect, 3.0, fill);
+}
