@@ -553,3 +553,27 @@ fn a_first_visit_finds_the_intro_the_help_and_presets_by_engine() {
     harness.run();
     assert_eq!(harness.state().creature().name, "raibert-kangaroo");
 }
+
+#[test]
+fn a_recording_shows_a_red_dot_above_the_view() {
+    let mut harness = harness();
+    harness.run();
+    assert!(
+        harness
+            .query_all_by_label_contains("Recording motion")
+            .next()
+            .is_none()
+    );
+    harness.state_mut().start_recording();
+    harness.state_mut().single_step();
+    harness.run();
+    harness.get_by_label_contains("Recording motion ·");
+    harness.state_mut().stop_recording();
+    harness.run();
+    assert!(
+        harness
+            .query_all_by_label_contains("Recording motion")
+            .next()
+            .is_none()
+    );
+}

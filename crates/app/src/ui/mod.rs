@@ -93,6 +93,7 @@ impl Lab {
                     }
                 });
             }
+            self.recording_indicator(ui);
             let rect = match &self.compare {
                 Some(compare) => {
                     let labels: Vec<String> = compare
@@ -204,6 +205,30 @@ impl Lab {
                     self.controls(ui);
                 });
             });
+    }
+
+    /// A red dot and what is being recorded, above the 3-D view (outside the
+    /// rectangle a video copies), while a take or a video records.
+    fn recording_indicator(&self, ui: &mut egui::Ui) {
+        let what = match (self.recording(), self.video_recording()) {
+            (false, false) => return,
+            (true, false) => "Recording motion",
+            (false, true) => "Recording video",
+            (true, true) => "Recording motion and video",
+        };
+        let red = egui::Color32::from_rgb(220, 40, 40);
+        ui.horizontal(|ui| {
+            let (dot, _) = ui.allocate_exact_size(egui::vec2(12.0, 12.0), egui::Sense::hover());
+            ui.painter().circle_filled(dot.center(), 6.0, red);
+            let frames = self.take().map_or(0, gaitlab_engine::Take::frames);
+            let text = if self.recording() {
+                format!("{what} · {frames} frames")
+            } else {
+                what.to_owned()
+            };
+            ui.colored_label(red, text)
+                .on_hover_text("Stop it in the Recording panel");
+        });
     }
 
     /// Applies the chosen theme to egui (it takes effect from the next frame)
