@@ -1,6 +1,7 @@
 // Browser test of the PODA engine (Girard & Maciejewski 1985): switch to the PODA quadruped, trot,
 // then gallop through window.gaitlab.command; state() reflects each step, the figure keeps walking
-// without foot slip, the view is drawn, and nothing reaches the console.
+// without foot slip, the view is drawn, and nothing reaches the console; a six-legged wave at duty
+// 0.46 is flagged statically unstable and at 0.83 it is not (issue 21 item 3).
 
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
@@ -60,6 +61,34 @@ describe('PODA engine (WebGL2)', () => {
       await command(page, { paused: true });
       await sleep(500);
       assertDrawn(await shootCanvas(page, 'poda-quadruped-gallop.png'), 'PODA quadruped');
+      p.assertClean();
+    } finally {
+      await p.page.close().catch(() => {});
+    }
+  });
+
+  it('warns when a six-legged wave at duty 0.46 is statically unstable, and not at 0.83', T, async () => {
+    const p = await loadApp(browser, `${server.url}?preset=hexapod`);
+    try {
+      const { page } = p;
+      // Paused, stepped by frames: the same motion however fast the machine is.
+      const walk = async (duty) => {
+        assert.equal(await command(page, { paused: true, gait: 'wave', duty_factor: duty }), 'ok');
+        assert.equal(await command(page, { reset: true }), 'ok');
+        // 8 s at 60 fps; the steps queue and run one a frame.
+        for (let k = 0; k < 480; k++) assert.equal(await command(page, { step: true }), 'ok');
+        await page.waitForFunction(() => JSON.parse(window.gaitlab.state()).frame >= 480, null,
+          { timeout: 120_000, polling: 100 });
+        return (await state(page)).poda;
+      };
+      const slow = await walk(0.83);
+      assert.equal(slow.duty_factor, 0.83);
+      assert.equal(slow.stability_warning, false, `no warning at 0.83: ${JSON.stringify(slow)}`);
+      assert.equal(slow.unstable_share, 0);
+      assert.ok(slow.feet_down >= 4, `feet down ${slow.feet_down}`);
+      const fast = await walk(0.46);
+      assert.equal(fast.stability_warning, true, `a warning at 0.46: unstable ${fast.unstable_share}`);
+      assert.ok(fast.unstable_share > 0.2, `unstable share ${fast.unstable_share}`);
       p.assertClean();
     } finally {
       await p.page.close().catch(() => {});

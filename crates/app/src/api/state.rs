@@ -130,6 +130,15 @@ pub struct PodaState {
     pub path_error_max_m: f64,
     /// What the last gait edit derived.
     pub derived: Vec<&'static str>,
+    /// Feet on the ground now.
+    pub feet_down: usize,
+    /// The body centre's static stability margin over the support polygon
+    /// now, metres (negative: outside it); null in flight.
+    pub stability_margin_m: Option<f64>,
+    /// Share of the last gait period the body stood statically unstable (0–1).
+    pub unstable_share: f64,
+    /// Whether the gait panel warns that the walk is statically unstable.
+    pub stability_warning: bool,
 }
 
 /// `ik`: the solver options.
@@ -359,6 +368,11 @@ impl State {
                     foot_slip_max_m: driver.metrics().foot_slip_max_m(),
                     path_error_max_m: driver.path_error_max_m(),
                     derived: lab.gait_derived.clone(),
+                    feet_down: driver.stability().feet_down,
+                    stability_margin_m: driver.stability().margin_m,
+                    unstable_share: driver.stability().unstable_share,
+                    stability_warning: driver.stability().unstable_share
+                        > crate::ui::panels::UNSTABLE_WARNING_SHARE,
                 }
             }),
             method: settings.method.name(),

@@ -39,6 +39,7 @@ use super::leg_cycles::LegCycles;
 use super::leg_ik::{LegIk, LegIkOptions};
 use super::path::BodyPath;
 use super::spline::eval_open;
+use super::stability::{StabilityMeter, StabilityReport};
 use super::surge::{surge_coefficient, surge_superposition_m};
 use super::transition::{
     PlantedLeg, REACH, SAMPLES, TransitionBounds, eq9_centre_and_range_m, reach_ceiling_m,
@@ -113,6 +114,8 @@ pub struct PodaDriver {
     effectors: Vec<DVec3>,
     time: f64,
     metrics: GaitMetrics,
+    /// Static stability of the support feet, measured every frame.
+    stability: StabilityMeter,
     /// Gait values `([P, β], phases)` the vertical centre was computed for.
     centre_key: ([f64; 2], Vec<f64>),
     centre_m: f64,
@@ -319,6 +322,7 @@ impl PodaDriver {
             exact,
             time: 0.0,
             metrics,
+            stability: StabilityMeter::default(),
             centre_key: ([f64::NAN; 2], Vec::new()),
             centre_m: 0.0,
             report: IkFrameReport::new(creature.skeleton.effector_count()),
@@ -910,10 +914,41 @@ impl PodaDriver {
             .map(|(leg, run)| (effectors[leg.ik.effector()], run.support));
         if first {
             self.metrics = GaitMetrics::new(legs.iter().map(|l| l.name.as_str()));
+            self.stability.clear();
         }
         self.metrics
             .record(t_prev, t, feet, self.pose.root.position, self.pitch_rad);
         self.metrics.record_surge(self.surge_m);
+        // The support feet's polygon against the body's centre, where PODA's
+        // body dynamics put the mass.
+        let down = legs
+            .iter()
+            .zip(runs)
+            .filter(|(_, run)| run.support)
+            .map(|(leg, _)| effectors[leg.ik.effector()])
+            .map(|p| DVec2::new(p.x, p.z));
+        let root = self.pose.root.position;
+        self.stability.record(
+            t_prev,
+            t,
+            down,
+            DVec2::new(root.x, root.z),
+            self.gait.period_s(),
+        );
+    }
+
+    /// Static stability now: feet down, the margin of the body's centre over
+    /// their support polygon, and the share of the last gait period it stood
+    /// statically unstable ([`super::stability`]).
+    #[must_use]
+    pub fn stability(&self) -> StabilityReport {
+        self.stability.report()
+    }
+
+    /// The support polygon of the feet down now (ground x, z), counter-clockwise.
+    #[must_use]
+    pub fn support_polygon(&self) -> &[DVec2] {
+        self.stability.polygon()
     }
 }
 

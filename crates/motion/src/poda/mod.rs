@@ -14,6 +14,7 @@ pub mod leg_cycles;
 pub mod leg_ik;
 pub mod path;
 pub mod spline;
+pub mod stability;
 pub mod surge;
 pub mod transition;
 

@@ -41,6 +41,7 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
     let force_n = driver.leg_force_n();
     let weight_share = driver.weight_share_n();
     let shifting = driver.is_shifting();
+    let stability = driver.stability();
     let mut chosen = None;
     let mut edits: Vec<(&str, f64)> = Vec::new();
     egui::CollapsingHeader::new("Gait (PODA)")
@@ -120,6 +121,7 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
             if !lab.gait_derived().is_empty() {
                 ui.weak(format!("derived: {}", lab.gait_derived().join(", ")));
             }
+            super::stability::stability_lines(ui, stability);
             if shifting {
                 ui.weak("Legs taking the change on, each at its own mid-stance")
                     .on_hover_text(

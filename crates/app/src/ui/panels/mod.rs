@@ -17,6 +17,7 @@ mod readout;
 mod recording;
 mod separator;
 mod share;
+mod stability;
 mod view;
 mod waypoints;
 
@@ -25,6 +26,7 @@ pub use compare::cards as compare_cards;
 pub use help::{INTRO, help_window};
 pub use panel::Panel;
 pub use share::editor_window;
+pub use stability::UNSTABLE_WARNING_SHARE;
 
 /// Every panel of the controls, top to bottom; each shows when its
 /// [`Panel::shown_for`] says so.
