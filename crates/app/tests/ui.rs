@@ -556,24 +556,20 @@ fn a_first_visit_finds_the_intro_the_help_and_presets_by_engine() {
 
 #[test]
 fn a_recording_shows_a_red_dot_above_the_view() {
-    let mut harness = harness();
-    harness.run();
-    assert!(
+    let shown = |harness: &Harness<'static, Lab>| {
         harness
             .query_all_by_label_contains("Recording motion")
             .next()
-            .is_none()
-    );
+            .is_some()
+    };
+    let mut harness = harness();
+    harness.run();
+    assert!(!shown(&harness));
     harness.state_mut().start_recording();
     harness.state_mut().single_step();
     harness.run();
     harness.get_by_label_contains("Recording motion ·");
     harness.state_mut().stop_recording();
     harness.run();
-    assert!(
-        harness
-            .query_all_by_label_contains("Recording motion")
-            .next()
-            .is_none()
-    );
+    assert!(!shown(&harness));
 }

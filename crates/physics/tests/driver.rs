@@ -12,8 +12,9 @@ fn bundled(name: &str) -> PresetCreature {
     load_bundled(name).expect("bundled").expect("valid")
 }
 
-#[test]
-fn every_bundled_creature_runs_every_gait_with_finite_poses() {
+/// Calls `f(preset, gait, driver)` with a fresh driver of every gait of every
+/// bundled physics creature.
+fn each_gait(mut f: impl FnMut(&str, &str, PhysicsDriver)) {
     for name in ["raibert-biped", "raibert-quadruped", "raibert-kangaroo"] {
         let preset = bundled(name);
         let species = PhysicsDriver::new(&preset)
@@ -24,27 +25,37 @@ fn every_bundled_creature_runs_every_gait_with_finite_poses() {
         for gait in gait_names(species) {
             let mut params = preset.scenario.physics.clone().expect("physics");
             params.gait = Some((*gait).to_owned());
-            let mut driver = PhysicsDriver::with_params(&preset, params).expect("gait builds");
-            for _ in 0..120 {
-                driver.step(1.0 / 60.0);
-                assert!(
-                    driver.pose().joints.iter().all(|q| q.is_finite()),
-                    "{name} {gait}"
-                );
-                assert!(driver.pose().root.position.is_finite(), "{name} {gait}");
-            }
-            assert!(
-                driver.time() > 1.9,
-                "{name} {gait} advanced to {}",
-                driver.time()
-            );
-            assert!(
-                driver.message().is_none_or(|m| !m.contains("blew up")),
-                "{name} {gait}: {:?}",
-                driver.message()
+            f(
+                name,
+                gait,
+                PhysicsDriver::with_params(&preset, params).expect("gait builds"),
             );
         }
     }
+}
+
+#[test]
+fn every_bundled_creature_runs_every_gait_with_finite_poses() {
+    each_gait(|name, gait, mut driver| {
+        for _ in 0..120 {
+            driver.step(1.0 / 60.0);
+            assert!(
+                driver.pose().joints.iter().all(|q| q.is_finite()),
+                "{name} {gait}"
+            );
+            assert!(driver.pose().root.position.is_finite(), "{name} {gait}");
+        }
+        assert!(
+            driver.time() > 1.9,
+            "{name} {gait} advanced to {}",
+            driver.time()
+        );
+        assert!(
+            driver.message().is_none_or(|m| !m.contains("blew up")),
+            "{name} {gait}: {:?}",
+            driver.message()
+        );
+    });
 }
 
 #[test]
@@ -224,26 +235,15 @@ fn live_speed_and_hop_height_take_the_preset_ranges() {
 /// with its unit; its wire key stays the parameter's name.
 #[test]
 fn every_tunable_gain_is_named_in_words() {
-    for name in ["raibert-biped", "raibert-quadruped", "raibert-kangaroo"] {
-        let preset = bundled(name);
-        let species = PhysicsDriver::new(&preset)
-            .expect("driver")
-            .sim()
-            .creature
-            .species;
-        for gait in gait_names(species) {
-            let mut params = preset.scenario.physics.clone().expect("physics");
-            params.gait = Some((*gait).to_owned());
-            let driver = PhysicsDriver::with_params(&preset, params).expect("gait builds");
-            for gain in driver.gains() {
-                assert_ne!(
-                    gain.label, gain.name,
-                    "{name} {gait}: {} has no words",
-                    gain.name
-                );
-                assert!(gain.label.contains(' '), "{}: words, not a key", gain.label);
-                assert!(!gain.unit.is_empty(), "{name} {gait}: {}", gain.name);
-            }
+    each_gait(|name, gait, driver| {
+        for gain in driver.gains() {
+            assert_ne!(
+                gain.label, gain.name,
+                "{name} {gait}: {} has no words",
+                gain.name
+            );
+            assert!(gain.label.contains(' '), "{}: words, not a key", gain.label);
+            assert!(!gain.unit.is_empty(), "{name} {gait}: {}", gain.name);
         }
-    }
+    });
 }

@@ -156,25 +156,25 @@ impl Lab {
                 } else {
                     "Controls"
                 };
-                let toggle = ui
-                    .selectable_label(self.layout.controls_open, label)
-                    .on_hover_text(
-                        "Open or close the control panels over the lower part of the screen",
-                    );
-                let r = toggle.rect;
-                self.layout.controls_button_pt = [r.min.x, r.min.y, r.width(), r.height()];
-                if toggle.clicked() {
+                let (clicked, rect) = drawer_button(
+                    ui,
+                    self.layout.controls_open,
+                    label,
+                    "Open or close the control panels over the lower part of the screen",
+                );
+                self.layout.controls_button_pt = rect;
+                if clicked {
                     self.layout.controls_open = !self.layout.controls_open;
                     self.layout.plots_open &= !self.layout.controls_open;
                 }
-                let plots = ui
-                    .selectable_label(self.layout.plots_open, "Plots")
-                    .on_hover_text(
-                        "Open or close the live plots over the lower part of the screen",
-                    );
-                let r = plots.rect;
-                self.layout.plots_button_pt = [r.min.x, r.min.y, r.width(), r.height()];
-                if plots.clicked() {
+                let (clicked, rect) = drawer_button(
+                    ui,
+                    self.layout.plots_open,
+                    "Plots",
+                    "Open or close the live plots over the lower part of the screen",
+                );
+                self.layout.plots_button_pt = rect;
+                if clicked {
                     self.layout.plots_open = !self.layout.plots_open;
                     self.layout.controls_open &= !self.layout.plots_open;
                 }
@@ -288,4 +288,15 @@ impl Lab {
             self.single_step();
         }
     }
+}
+
+/// A phone-bar button that opens a drawer: whether it was clicked, and its
+/// rectangle in points `[x, y, w, h]` (for tests that tap it).
+fn drawer_button(ui: &mut egui::Ui, open: bool, label: &str, hover: &str) -> (bool, [f32; 4]) {
+    let response = ui.selectable_label(open, label).on_hover_text(hover);
+    let r = response.rect;
+    (
+        response.clicked(),
+        [r.min.x, r.min.y, r.width(), r.height()],
+    )
 }
