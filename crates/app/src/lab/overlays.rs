@@ -86,6 +86,12 @@ impl Overlays {
                         .position
                 }),
             );
+            let root = gaitlab_core::driver::Driver::pose(driver).root.position;
+            scene.add_support_overlay(
+                driver.support_polygon(),
+                glam::DVec2::new(root.x, root.z),
+                driver.stability().margin_m.is_some_and(|m| m >= 0.0),
+            );
         }
     }
 }

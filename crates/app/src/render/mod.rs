@@ -19,6 +19,7 @@ pub mod gpu;
 pub mod mesh;
 pub mod physics_overlay;
 pub mod scene;
+pub mod support_overlay;
 pub mod viewport;
 
 pub use camera::Camera;

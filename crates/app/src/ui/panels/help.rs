@@ -13,6 +13,7 @@ use crate::render::scene::{
     CENTRE_COLOR, EFFECTOR_COLOR, ERROR_COLOR, LEFT_COLOR, RIGHT_COLOR, TARGET_COLOR,
     TARGET_OUT_OF_REACH_COLOR, WORLD_AXIS_COLORS,
 };
+use crate::render::support_overlay::{SUPPORT_COLOR, UNSUPPORTED_COLOR};
 
 /// The introduction line and the Help button.
 pub struct IntroPanel;
@@ -40,7 +41,7 @@ impl Panel for IntroPanel {
 pub const INTRO: &str = "Legged figures animated by three classic papers: pick an engine and a preset, change what you like, compare.";
 
 /// The 3-D view's key: each colour and what it marks.
-const KEY: [([f32; 4], &str); 12] = [
+const KEY: [([f32; 4], &str); 14] = [
     (LEFT_COLOR, "the figure's left side (joints named left…)"),
     (RIGHT_COLOR, "its right side"),
     (CENTRE_COLOR, "its centre line: trunk, spine, head"),
@@ -54,6 +55,14 @@ const KEY: [([f32; 4], &str); 12] = [
     (FOOTHOLD_COLOR, "PODA: a foot's next foothold"),
     (FOOTPRINT_COLOR, "PODA: where feet stood"),
     (PATH_COLOR, "PODA: the body's path"),
+    (
+        SUPPORT_COLOR,
+        "PODA: the feet's support polygon and the body's centre",
+    ),
+    (
+        UNSUPPORTED_COLOR,
+        "the same while the centre is outside it (statically unstable)",
+    ),
     (OBSTACLE_COLOR, "physics: a box in the way"),
     (
         WORLD_AXIS_COLORS[0],
