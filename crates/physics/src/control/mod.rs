@@ -42,5 +42,6 @@ pub mod quadruped_run_params;
 pub mod scale;
 pub mod speed_trim;
 pub mod start;
+pub mod tested_speeds;
 
 pub use phase::Phase;

@@ -5,6 +5,7 @@
 
 use gaitlab_core::driver::Driver as _;
 use gaitlab_physics::control::gait_controller::gait_names;
+use gaitlab_physics::control::tested_speeds::tested_speeds_mps;
 use gaitlab_physics::engine::table2::compare;
 
 use super::panel::Panel;
@@ -34,6 +35,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     };
     let current = driver.gait().to_owned();
     let names = gait_names(driver.sim().creature.species);
+    let tested = tested_speeds_mps(driver.sim().creature.species, &current);
     let mut speed = driver.params().speed_mps;
     let mut hop = driver
         .hop_height_m()
@@ -84,6 +86,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
             {
                 edits.push(("speed_mps", speed));
             }
+            speed_range_line(ui, speed, tested);
             if ui
                 .add(egui::Slider::new(&mut hop, 0.02..=0.4).text("Hop height (m)"))
                 .on_hover_text("Eq. 2: the thrust in stance is set so each hop reaches this height")
@@ -229,5 +232,25 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
         if let Err(error) = lab.set_gain(name, value) {
             lab.report_error(error);
         }
+    }
+}
+
+/// The speeds the gait is tested at, under the speed slider, and a warning
+/// outside them.
+fn speed_range_line(ui: &mut egui::Ui, speed: f64, tested: Option<(f64, f64)>) {
+    let Some((low, high)) = tested else {
+        return;
+    };
+    let hover = "The 60-s sweep of docs/physics.md (\"Gaits: a minute at several speeds\") runs \
+                 this gait at these speeds: no fall, and the mean speed within 10 %";
+    if (low..=high).contains(&speed) {
+        ui.weak(format!("tested {low:.1}–{high:.1} m/s"))
+            .on_hover_text(hover);
+    } else {
+        ui.colored_label(
+            egui::Color32::from_rgb(230, 140, 40),
+            format!("Outside the tested {low:.1}–{high:.1} m/s: it may fall or miss the speed"),
+        )
+        .on_hover_text(hover);
     }
 }

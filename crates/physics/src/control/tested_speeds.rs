@@ -1,0 +1,71 @@
+//! The desired speeds each gait of the bundled presets is tested at (the
+//! issue's three speeds per gait; docs/physics.md, "Gaits: a minute at several speeds",
+//! `tools/physics_speed_sweep.py`): 60 s at each, with the presets' own lab
+//! additions, no fall and the mean speed within 10 %. The app shows the range
+//! beside the speed slider and warns outside it (issue 21 item 3).
+
+use crate::creatures::Species;
+
+/// The lowest and highest desired speed (m/s at scale 1) the sweep runs
+/// `gait` of `species` at; `None` for a gait the model does not have.
+#[must_use]
+pub fn tested_speeds_mps(species: Species, gait: &str) -> Option<(f64, f64)> {
+    match (species, gait) {
+        (Species::Biped, "run") => Some((1.0, 2.5)),
+        (Species::Biped, "gallop" | "gallop_alternate") => Some((1.0, 2.0)),
+        (Species::Quadruped, "trot") => Some((1.0, 2.3)),
+        (Species::Quadruped, "bound" | "gallop") => Some((1.5, 2.8)),
+        (Species::Kangaroo, "hop") => Some((2.0, 5.0)),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::control::gait_controller::gait_names;
+
+    #[test]
+    fn every_gait_of_every_model_has_a_tested_range() {
+        for species in [Species::Biped, Species::Quadruped, Species::Kangaroo] {
+            for gait in gait_names(species) {
+                let (low, high) = tested_speeds_mps(species, gait).expect("a range");
+                assert!(0.0 < low && low < high, "{gait}");
+            }
+        }
+        assert_eq!(tested_speeds_mps(Species::Kangaroo, "trot"), None);
+    }
+
+    /// The ranges are the sweep's: the lowest and highest of the speeds
+    /// `tools/physics_speed_sweep.py` runs each gait at.
+    #[test]
+    fn the_ranges_are_the_sweeps() {
+        let tool = include_str!("../../../../tools/physics_speed_sweep.py");
+        let mut checked = 0;
+        for line in tool.lines().map(str::trim) {
+            let Some(rest) = line.strip_prefix("(\"raibert-") else {
+                continue;
+            };
+            let fields: Vec<&str> = rest.split('"').collect();
+            let (model, gait) = (fields[0], fields[2]);
+            let speeds: Vec<f64> = rest[rest.find('[').expect("[") + 1..rest.find(']').expect("]")]
+                .split(',')
+                .map(|v| v.trim().parse().expect("a speed"))
+                .collect();
+            let species = match model {
+                "biped" => Species::Biped,
+                "quadruped" => Species::Quadruped,
+                _ => Species::Kangaroo,
+            };
+            let low = speeds.iter().copied().fold(f64::INFINITY, f64::min);
+            let high = speeds.iter().copied().fold(0.0, f64::max);
+            assert_eq!(
+                tested_speeds_mps(species, gait),
+                Some((low, high)),
+                "{model} {gait}"
+            );
+            checked += 1;
+        }
+        assert_eq!(checked, 7, "the sweep's seven gaits");
+    }
+}
