@@ -494,6 +494,14 @@ fn the_physics_plots_each_hold_one_unit_and_open_on_a_phone() {
         .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab);
     harness.run();
     assert!(harness.query_all_by_label("Ground force").next().is_none());
+    // Touch targets: the phone bar's buttons are at least 44 px tall.
+    for label in ["Controls", "Plots", "Reset", "Play", "Step"] {
+        let height = harness.get_by_label(label).rect().height();
+        assert!(
+            height >= gaitlab_app::ui::TOUCH_TARGET_PT,
+            "{label}: {height} px"
+        );
+    }
     harness.get_by_label("Plots").click();
     harness.run();
     assert!(harness.state().plots_open());

@@ -37,6 +37,7 @@ impl Lab {
             .layout
             .narrow_override
             .unwrap_or(ui.available_width() < NARROW_WIDTH_PT);
+        touch_spacing(ui.ctx(), self.layout.narrow);
         if self.layout.narrow {
             self.phone_layout(ui);
         } else {
@@ -149,7 +150,6 @@ impl Lab {
     /// lower [`DRAWER_HEIGHT_FRACTION`] of the screen with bigger touch targets.
     fn phone_layout(&mut self, ui: &mut egui::Ui) {
         egui::Panel::top("gaitlab-phone-bar").show(ui, |ui| {
-            ui.spacing_mut().button_padding = egui::vec2(10.0, 6.0);
             ui.horizontal_wrapped(|ui| {
                 let label = if self.layout.controls_open {
                     "Hide controls"
@@ -197,8 +197,6 @@ impl Lab {
             .exact_size(height)
             .show(ui, |ui| {
                 let spacing = ui.spacing_mut();
-                spacing.button_padding = egui::vec2(10.0, 6.0);
-                spacing.interact_size.y = 30.0;
                 spacing.item_spacing.y = 8.0;
                 egui::ScrollArea::vertical().show(ui, |ui| {
                     ui.set_width(ui.available_width());
@@ -293,10 +291,40 @@ impl Lab {
 /// A phone-bar button that opens a drawer: whether it was clicked, and its
 /// rectangle in points `[x, y, w, h]` (for tests that tap it).
 fn drawer_button(ui: &mut egui::Ui, open: bool, label: &str, hover: &str) -> (bool, [f32; 4]) {
-    let response = ui.selectable_label(open, label).on_hover_text(hover);
+    // A framed button, so it reads as one (a bare selectable label looked
+    // like plain text), highlighted while its drawer is open.
+    let response = ui
+        .add(egui::Button::new(label).selected(open))
+        .on_hover_text(hover);
     let r = response.rect;
     (
         response.clicked(),
         [r.min.x, r.min.y, r.width(), r.height()],
     )
+}
+
+/// Height of a touch target in the phone layout, points (CSS pixels): the
+/// 44 px that touch guidelines ask for (issue 21 item 7).
+pub const TOUCH_TARGET_PT: f32 = 44.0;
+
+/// egui's default interaction height and button padding, restored in the
+/// wide layout.
+const DESK_INTERACT_Y: f32 = 20.0;
+const DESK_BUTTON_PADDING: egui::Vec2 = egui::vec2(8.0, 2.0);
+
+/// In the phone layout every button, slider, checkbox and menu row is at
+/// least [`TOUCH_TARGET_PT`] tall (the whole context's style, so popups and
+/// windows too); the wide layout keeps egui's compact sizes.
+fn touch_spacing(ctx: &egui::Context, narrow: bool) {
+    let (interact_y, padding) = if narrow {
+        (TOUCH_TARGET_PT, egui::vec2(12.0, 12.0))
+    } else {
+        (DESK_INTERACT_Y, DESK_BUTTON_PADDING)
+    };
+    if ctx.global_style().spacing.interact_size.y != interact_y {
+        ctx.all_styles_mut(|style| {
+            style.spacing.interact_size.y = interact_y;
+            style.spacing.button_padding = padding;
+        });
+    }
 }
