@@ -87,3 +87,16 @@ fn null_is_absent_except_for_compare_and_narrow() {
     lab.command(r#"{"compare":null}"#).expect("leaves");
     assert!(lab.comparison().is_none());
 }
+
+#[test]
+fn the_playback_rate_is_set_within_its_range() {
+    let mut lab = Lab::new(Settings::default());
+    assert_eq!(state(&lab)["playback_rate"], 1.0);
+    assert!(lab.command(r#"{"playback_rate": 0.25}"#).is_ok());
+    assert_eq!(state(&lab)["playback_rate"], 0.25);
+    let error = lab
+        .command(r#"{"playback_rate": 5}"#)
+        .expect_err("out of range");
+    assert!(error.starts_with("playback_rate: 5 is outside"), "{error}");
+    assert_eq!(state(&lab)["playback_rate"], 0.25, "kept");
+}

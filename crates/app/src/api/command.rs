@@ -181,6 +181,8 @@ pub struct Command {
     pub reset: Option<bool>,
     /// true: one frame forward.
     pub step: Option<bool>,
+    /// Playback rate, simulated seconds per wall second, [0.1, 2].
+    pub playback_rate: Option<f64>,
     /// DLS damping λ, [1e-6, 10].
     pub lambda: Option<f64>,
     /// SDLS γmax, radians, [1e-3, π].
@@ -359,6 +361,10 @@ impl Lab {
         }
         for paused in [c.paused, c.pause].into_iter().flatten() {
             self.set_paused(paused);
+        }
+        if let Some(rate) = c.playback_rate {
+            let rate = range("playback_rate", rate, 0.1, 2.0)?;
+            self.playback.set_rate(rate);
         }
         if c.reset == Some(true) {
             self.reset();

@@ -264,6 +264,8 @@ pub struct State {
     pub compare: serde_json::Value,
     /// Whether time stands still.
     pub paused: bool,
+    /// Playback rate, simulated seconds per wall second.
+    pub playback_rate: f64,
     /// Frames since the last reset.
     pub frame: u64,
     /// Simulated time, seconds.
@@ -382,6 +384,7 @@ impl State {
             ),
             compare: lab.compare_state(),
             paused: lab.playback.paused,
+            playback_rate: lab.playback.rate(),
             frame: lab.stage.frame,
             time_s: lab.stage.driver.time(),
             fps: lab.playback.fps,

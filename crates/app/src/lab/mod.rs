@@ -37,7 +37,7 @@ pub use gait_shape::GaitShapeEdit;
 pub use layout::Layout;
 pub use outbox::{Download, Effect, Outbox};
 pub use overlays::Overlays;
-pub use playback::{Clock, MAX_FRAME_ADVANCE_S, Playback};
+pub use playback::{Clock, MAX_FRAME_ADVANCE_S, PLAYBACK_RATES, Playback};
 pub use plots::{MAX_PLOT_JOINTS, PHYSICS_ATTITUDE_SERIES, PHYSICS_BODY_SERIES, Plots};
 pub use session::Session;
 pub use stage::Stage;

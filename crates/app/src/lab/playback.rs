@@ -7,6 +7,9 @@
 /// that was hidden does not fast-forward).
 pub const MAX_FRAME_ADVANCE_S: f64 = 0.1;
 
+/// Slowest and fastest playback rate (simulated seconds per wall second).
+pub const PLAYBACK_RATES: std::ops::RangeInclusive<f64> = 0.1..=2.0;
+
 /// Most single steps queued at once.
 const MAX_PENDING_STEPS: u32 = 600;
 
@@ -26,6 +29,10 @@ pub struct Playback {
     /// Smoothed time spent advancing the driver per animation frame, µs.
     pub(crate) sim_us_per_frame: f64,
     pub(crate) clock: Option<Clock>,
+    /// Simulated seconds per wall second ([`PLAYBACK_RATES`]; 0 reads as 1):
+    /// the same fixed frames, fewer or more of them each second, so a slow
+    /// replay shows exactly the motion a real-time one does.
+    pub(crate) rate: f64,
 }
 
 impl Playback {
@@ -47,7 +54,8 @@ impl Playback {
             steps = self.pending_steps;
             self.accumulator_s = 0.0;
         } else if real_dt.is_finite() && real_dt > 0.0 {
-            self.accumulator_s += real_dt.min(MAX_FRAME_ADVANCE_S);
+            let rate = if self.rate > 0.0 { self.rate } else { 1.0 };
+            self.accumulator_s += real_dt.min(MAX_FRAME_ADVANCE_S) * rate;
             while self.accumulator_s >= frame_s {
                 self.accumulator_s -= frame_s;
                 steps += 1;
@@ -56,6 +64,17 @@ impl Playback {
         }
         self.pending_steps = 0;
         steps
+    }
+
+    /// The playback rate, simulated seconds per wall second.
+    #[must_use]
+    pub fn rate(&self) -> f64 {
+        if self.rate > 0.0 { self.rate } else { 1.0 }
+    }
+
+    /// Sets the playback rate, within [`PLAYBACK_RATES`].
+    pub fn set_rate(&mut self, rate: f64) {
+        self.rate = rate.clamp(*PLAYBACK_RATES.start(), *PLAYBACK_RATES.end());
     }
 
     /// The clock's time in milliseconds, when there is a clock.
@@ -86,5 +105,36 @@ impl Playback {
                 0.95 * self.fps + 0.05 * fps
             };
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A second of wall time in 60 UI frames advances the frames of `rate`
+    /// seconds of simulation.
+    fn frames_in_a_second(rate: Option<f64>) -> u32 {
+        let mut playback = Playback::default();
+        if let Some(rate) = rate {
+            playback.set_rate(rate);
+        }
+        (0..60)
+            .map(|_| playback.steps_for(1.0 / 60.0, 1.0 / 60.0))
+            .sum()
+    }
+
+    #[test]
+    fn the_rate_scales_the_frames_a_wall_second_advances() {
+        assert_eq!(frames_in_a_second(None), 60);
+        assert_eq!(frames_in_a_second(Some(1.0)), 60);
+        assert_eq!(frames_in_a_second(Some(0.1)), 6);
+        assert_eq!(frames_in_a_second(Some(2.0)), 120);
+        // Out of range: clamped.
+        let mut playback = Playback::default();
+        playback.set_rate(50.0);
+        assert_eq!(playback.rate(), 2.0);
+        playback.set_rate(0.0);
+        assert_eq!(playback.rate(), 0.1);
     }
 }

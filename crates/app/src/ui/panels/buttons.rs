@@ -1,5 +1,5 @@
 //! The Reset / Pause / Step buttons (keys R, space, .): in the side panel, or
-//! in the phone layout's bar above the drawer.
+//! in the phone layout's bar above the drawer; and the playback rate.
 
 use super::panel::Panel;
 use crate::lab::Lab;
@@ -48,4 +48,39 @@ pub fn buttons(ui: &mut egui::Ui, lab: &mut Lab) {
             lab.single_step();
         }
     });
+}
+
+/// The playback rate slider, under the buttons (and in the phone drawer).
+pub struct RatePanel;
+
+impl Panel for RatePanel {
+    fn title(&self) -> &'static str {
+        "Playback"
+    }
+
+    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+        rate(ui, lab);
+    }
+}
+
+/// The playback rate, 0.1× to 2× (the side panel; the same frames, slower or
+/// faster, for watching a motion frame by frame).
+fn rate(ui: &mut egui::Ui, lab: &mut Lab) {
+    let mut rate = lab.playback.rate();
+    let range = crate::lab::PLAYBACK_RATES;
+    if ui
+        .add(
+            egui::Slider::new(&mut rate, range)
+                .logarithmic(true)
+                .custom_formatter(|x, _| format!("{x:.2}×"))
+                .text("Playback"),
+        )
+        .on_hover_text(
+            "Simulated time per second of your time: 0.1× to watch a motion slowly, 2× to \
+             hurry it; the motion itself is the same",
+        )
+        .changed()
+    {
+        lab.playback.set_rate(rate);
+    }
 }

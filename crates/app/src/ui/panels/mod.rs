@@ -36,6 +36,7 @@ pub static REGISTRY: &[&dyn Panel] = &[
     &preset::PresetPanel,
     &share::SharePanel,
     &buttons::ButtonsPanel,
+    &buttons::RatePanel,
     &separator::Separator,
     &physics::PhysicsPanel,
     &waypoints::WaypointsPanel,
@@ -76,6 +77,7 @@ mod tests {
             "Preset",
             "Share",
             "Reset / Pause / Step",
+            "Playback",
         ];
         let tail = ["View", "Recording", "Readout"];
         let with = |middle: &[&'static str]| -> Vec<&'static str> {
