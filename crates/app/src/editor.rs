@@ -9,6 +9,15 @@
 
 use crate::editor_message::{EditorProblem, explain};
 
+/// The preset that ran before an Apply.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum BeforeApply {
+    /// A bundled preset, by name (Undo reloads it as bundled).
+    Bundled(String),
+    /// An edited or loaded preset's text.
+    Custom(String),
+}
+
 /// The editor's state.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct PresetEditor {
@@ -23,8 +32,8 @@ pub struct PresetEditor {
     /// What the last good Apply did ("Applied: NAME, 20 joints"), until the
     /// text changes again.
     pub applied_note: Option<String>,
-    /// The running preset's text before the last good Apply, for Undo.
-    pub before_apply: Option<String>,
+    /// The running preset before the last good Apply, for Undo.
+    pub before_apply: Option<BeforeApply>,
     /// The text of the running preset the editor was filled from; `None`
     /// until it is filled (and after the preset changes).
     source: Option<String>,

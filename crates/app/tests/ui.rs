@@ -334,6 +334,10 @@ fn the_preset_editor_shows_the_json_path_of_a_bad_edit_and_keeps_the_creature() 
     assert_eq!(harness.state().creature().name, "human");
     harness.get_by_label("Undone: back to human");
     assert!(!harness.state().editor().dirty());
+    // Back to the bundled preset itself, not a copy of its text.
+    let state: serde_json::Value =
+        serde_json::from_str(&harness.state().state_json()).expect("state JSON");
+    assert_eq!(state["custom_preset"], false);
 }
 
 #[test]

@@ -4,7 +4,7 @@
 
 use gaitlab_core::preset::MAX_PRESET_BYTES;
 
-use crate::editor::{PresetEditor, readable_json};
+use crate::editor::{BeforeApply, PresetEditor, readable_json};
 use crate::lab::{Download, Effect, Lab};
 
 impl Lab {
@@ -57,7 +57,10 @@ impl Lab {
     pub fn editor_apply(&mut self) -> Result<(), String> {
         self.editor_sync();
         let text = self.editor.text.clone();
-        let before = self.preset_text();
+        let before = match &self.session.custom_preset {
+            Some(text) => BeforeApply::Custom(text.clone()),
+            None => BeforeApply::Bundled(self.session.creature.name.clone()),
+        };
         match self.set_custom_preset(&text) {
             Ok(()) => {
                 let creature = &self.session.creature;
@@ -86,7 +89,10 @@ impl Lab {
         let Some(before) = self.editor.before_apply.take() else {
             return Err("editor: nothing applied to undo".to_owned());
         };
-        self.set_custom_preset(&before)?;
+        match &before {
+            BeforeApply::Bundled(name) => self.set_preset(name)?,
+            BeforeApply::Custom(text) => self.set_custom_preset(text)?,
+        }
         self.editor.clear();
         self.editor_sync();
         self.editor.applied_note = Some(format!("Undone: back to {}", self.session.creature.name));
