@@ -5,6 +5,12 @@
 
 use serde::{Deserialize, Serialize};
 
+/// The colour of a problem the lab reports (a refused edit, an error).
+pub const PROBLEM_COLOR: egui::Color32 = egui::Color32::from_rgb(230, 90, 70);
+
+/// The colour of a warning (a value outside what was tested, an unstable walk).
+pub const WARNING_COLOR: egui::Color32 = egui::Color32::from_rgb(230, 140, 40);
+
 /// The colour scheme (issue 6 "Comfort": light/dark theme, following the
 /// system preference by default).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]

@@ -182,7 +182,8 @@ fn draw(ui: &egui::Ui, rect: Rect, id: u64, scene: &Scene, camera: &Camera, view
     }
 }
 
-fn color32(c: [f32; 4]) -> Color32 {
+/// A scene colour (sRGB and alpha, 0–1) as egui's.
+pub(crate) fn color32(c: [f32; 4]) -> Color32 {
     let byte = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as u8;
     Color32::from_rgba_unmultiplied(byte(c[0]), byte(c[1]), byte(c[2]), byte(c[3]))
 }

@@ -81,10 +81,7 @@ impl Lab {
             }
             if let Some(error) = self.session.last_error.clone() {
                 ui.horizontal_wrapped(|ui| {
-                    ui.colored_label(
-                        egui::Color32::from_rgb(230, 90, 70),
-                        format!("Problem: {error}"),
-                    );
+                    ui.colored_label(crate::theme::PROBLEM_COLOR, format!("Problem: {error}"));
                     if ui
                         .small_button("Dismiss")
                         .on_hover_text("Hide this message")
@@ -307,11 +304,6 @@ fn drawer_button(ui: &mut egui::Ui, open: bool, label: &str, hover: &str) -> (bo
 /// 44 px that touch guidelines ask for (issue 21 item 7).
 pub const TOUCH_TARGET_PT: f32 = 44.0;
 
-/// egui's default interaction height and button padding, restored in the
-/// wide layout.
-const DESK_INTERACT_Y: f32 = 20.0;
-const DESK_BUTTON_PADDING: egui::Vec2 = egui::vec2(8.0, 2.0);
-
 /// In the phone layout every button, slider, checkbox and menu row is at
 /// least [`TOUCH_TARGET_PT`] tall (the whole context's style, so popups and
 /// windows too); the wide layout keeps egui's compact sizes.
@@ -319,7 +311,8 @@ fn touch_spacing(ctx: &egui::Context, narrow: bool) {
     let (interact_y, padding) = if narrow {
         (TOUCH_TARGET_PT, egui::vec2(12.0, 12.0))
     } else {
-        (DESK_INTERACT_Y, DESK_BUTTON_PADDING)
+        let desk = egui::style::Spacing::default();
+        (desk.interact_size.y, desk.button_padding)
     };
     if ctx.global_style().spacing.interact_size.y != interact_y {
         ctx.all_styles_mut(|style| {

@@ -19,7 +19,8 @@ const WINDOW_FRAMES: usize = 4096;
 /// than three distinct points stay as they are. Sorts `feet` in place.
 pub fn support_polygon(feet: &mut [DVec2], hull: &mut Vec<DVec2>) {
     hull.clear();
-    feet.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    // Unstable: sorts in place without a buffer (called every frame).
+    feet.sort_unstable_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
     let cross = |o: DVec2, a: DVec2, b: DVec2| (a - o).perp_dot(b - o);
     for &p in feet.iter() {
         while hull.len() >= 2 && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0 {

@@ -3,8 +3,6 @@
 //! the 3-D view means, how to move the camera and time, and what each engine
 //! is.
 
-use egui::Color32;
-
 use super::panel::Panel;
 use crate::lab::Lab;
 use crate::render::gait_overlay::{FOOTHOLD_COLOR, FOOTPRINT_COLOR, PATH_COLOR};
@@ -152,13 +150,7 @@ pub fn help_window(ctx: &egui::Context, lab: &mut Lab) {
 
 /// A small square of `colour` (sRGB, 0–1).
 fn swatch(ui: &mut egui::Ui, colour: [f32; 4]) {
-    let [r, g, b, _] = colour.map(|c| (c.clamp(0.0, 1.0) * 255.0).round());
-    #[expect(
-        clippy::cast_possible_truncation,
-        clippy::cast_sign_loss,
-        reason = "clamped to 0–255 above"
-    )]
-    let fill = Color32::from_rgb(r as u8, g as u8, b as u8);
     let (rect, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
-    ui.painter().rect_filled(rect, 3.0, fill);
+    ui.painter()
+        .rect_filled(rect, 3.0, crate::render::viewport::color32(colour));
 }

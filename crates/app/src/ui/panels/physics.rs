@@ -248,7 +248,7 @@ fn speed_range_line(ui: &mut egui::Ui, speed: f64, tested: Option<(f64, f64)>) {
             .on_hover_text(hover);
     } else {
         ui.colored_label(
-            egui::Color32::from_rgb(230, 140, 40),
+            crate::theme::WARNING_COLOR,
             format!("Outside the tested {low:.1}–{high:.1} m/s: it may fall or miss the speed"),
         )
         .on_hover_text(hover);

@@ -21,7 +21,7 @@ impl Panel for SharePanel {
 }
 
 /// Colour of problem messages.
-const PROBLEM: egui::Color32 = egui::Color32::from_rgb(230, 90, 70);
+use crate::theme::PROBLEM_COLOR as PROBLEM;
 
 /// The Share row: Copy link, Edit preset, Load preset file, Download preset.
 fn share(ui: &mut egui::Ui, lab: &mut Lab) {

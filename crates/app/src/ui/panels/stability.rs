@@ -23,7 +23,7 @@ pub(super) fn stability_lines(
         );
     if report.unstable_share > UNSTABLE_WARNING_SHARE {
         ui.colored_label(
-            egui::Color32::from_rgb(230, 140, 40),
+            crate::theme::WARNING_COLOR,
             format!(
                 "Warning: statically unstable {:.0} % of the last period: the body's centre \
                  leaves the feet's support polygon. Without dynamic balance a real animal would \
