@@ -2,14 +2,15 @@
 // ik-quadruped in the singularity scenario. The per-frame compute of all four views
 // (state().sim_us_per_frame, measured by the app around every view's driver step) stays under
 // 16 ms; the jitter metric ranks pinv worst; the canvas shows four labelled views, each with a
-// figure drawn in it (screenshot saved as an artifact); a bad compare command is refused with the
+// figure drawn in it (screenshot saved as an artifact); the overlay draws the four figures in one
+// view in four colours found in its pixels; a bad compare command is refused with the
 // field named and leaves the comparison running.
 
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
 import { PNG } from 'pngjs';
 import {
-  assertDrawn, command, launch, loadApp, serveDist, shootCanvas, state,
+  assertDrawn, command, launch, loadApp, serveDist, shootCanvas, sleep, state,
 } from './harness.mjs';
 
 const T = { timeout: 300_000 };
@@ -27,6 +28,42 @@ function saturatedPixels(buf, [x0, y0, w, h]) {
     }
   }
   return count;
+}
+
+/** Hue (degrees) and chroma (max − min, 0–255) of an sRGB pixel. */
+function hueChroma(r, g, b) {
+  const hi = Math.max(r, g, b);
+  const lo = Math.min(r, g, b);
+  const c = hi - lo;
+  if (c === 0) return [0, 0];
+  let h;
+  if (hi === r) h = ((g - b) / c) % 6;
+  else if (hi === g) h = (b - r) / c + 2;
+  else h = (r - g) / c + 4;
+  return [(h * 60 + 360) % 360, c];
+}
+
+/** The views' colours (the app's compare::VIEW_COLOURS, Okabe–Ito) and their hues. */
+const VIEW_COLOURS = [[0xE6, 0x9F, 0x00], [0x56, 0xB4, 0xE9], [0x00, 0x9E, 0x73], [0xCC, 0x79, 0xA7]];
+
+/** Pixels in `rect` of each view colour's hue (±10°, chroma over 60): lighting changes a colour's
+ * brightness, not its hue. */
+function pixelsPerViewColour(buf, [x0, y0, w, h]) {
+  const { width, height, data } = PNG.sync.read(buf);
+  const hues = VIEW_COLOURS.map(([r, g, b]) => hueChroma(r, g, b)[0]);
+  const counts = hues.map(() => 0);
+  for (let y = Math.max(0, Math.floor(y0)); y < Math.min(height, Math.ceil(y0 + h)); y++) {
+    for (let x = Math.max(0, Math.floor(x0)); x < Math.min(width, Math.ceil(x0 + w)); x++) {
+      const i = (y * width + x) * 4;
+      const [hue, chroma] = hueChroma(data[i], data[i + 1], data[i + 2]);
+      if (chroma <= 60) continue;
+      hues.forEach((want, k) => {
+        const d = Math.abs(hue - want);
+        if (Math.min(d, 360 - d) <= 10) counts[k]++;
+      });
+    }
+  }
+  return counts;
 }
 
 /** The 2 × 2 panes of the view rectangle (as the app's viewport::split_rects, 2-px gap). */
@@ -95,6 +132,22 @@ describe('side-by-side IK comparison (WebGL2)', () => {
       const counts = quadrants(rect).map((q) => saturatedPixels(shot.png, q));
       console.log(`# coloured pixels per pane: ${counts.join(', ')} (see ${shot.file})`);
       assert.ok(counts.every((c) => c > 100), `every pane draws a figure: ${counts}`);
+
+      // The overlay: the four figures in one view, each in its card's colour, the run carried on.
+      const frameBefore = s.compare.metrics[0].frame;
+      assert.equal(await command(page, { compare: { overlay: true } }), 'ok');
+      await sleep(300);
+      const overlaid = await shootCanvas(page, 'compare-overlay.png');
+      assertDrawn(overlaid, 'overlay');
+      s = await state(page);
+      assert.equal(s.compare.overlay, true);
+      assert.equal(s.compare.metrics[0].frame, frameBefore, 'the same run, still paused');
+      const perColour = pixelsPerViewColour(overlaid.png, s.view_rect_px);
+      console.log(`# overlay pixels per view colour (orange, sky blue, green, purple): ${perColour.join(', ')}`
+        + ` (see ${overlaid.file})`);
+      assert.ok(perColour.every((c) => c > 50), `four distinct colours drawn: ${perColour}`);
+      // Split panes have none of the overlay's colours but the first.
+      assert.equal(await command(page, { compare: { overlay: false } }), 'ok');
 
       // A bad compare command names the field and leaves the comparison as it was.
       assert.match(await command(page, { compare: { views: ['pinv', 'warp'] } }), /^compare\.views\[1\]/);

@@ -17,7 +17,7 @@ const T = { timeout: 240_000 };
 /**
  * state() fields that are live counters, not settings, and so differ between two labs opened from
  * one link: the frame counter, simulated time, frame rate and timing, the wasm memory size and heap counts,
- * `views` (each effector's error at the current frame) and the comparison's live metrics.
+ * `views` (each effector's error at the current frame) and the comparison's live metrics and plot range.
  * Everything else must match exactly.
  */
 const LIVE = ['frame', 'time_s', 'fps', 'sim_us_per_frame', 'views', 'wasm_memory_bytes', 'wasm_heap_live_bytes', 'wasm_heap_peak_bytes'];
@@ -27,8 +27,9 @@ const presetJson = (name) => readFileSync(join(repoRoot, 'presets', `${name}.jso
 function settled(s) {
   const out = { ...s };
   for (const key of LIVE) delete out[key];
-  // The side-by-side comparison's live figures (its configuration must match).
-  if (out.compare) out.compare = { ...out.compare, metrics: undefined };
+  // The side-by-side comparison's live figures: its metrics and the plots' shared y-range, which
+  // follows the errors measured so far (its configuration must match).
+  if (out.compare) out.compare = { ...out.compare, metrics: undefined, plot_error_max_mm: undefined };
   return out;
 }
 

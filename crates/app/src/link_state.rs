@@ -84,6 +84,7 @@ impl Lab {
                 {
                     compare.remove("metrics");
                     compare.remove("plot_error_max_mm");
+                    compare.remove("notice");
                 }
                 out.insert((*key).to_owned(), value);
             }

@@ -398,3 +398,82 @@ fn the_cards_error_plots_share_one_y_range() {
         "{top} is not 1, 2 or 5 × 10ⁿ"
     );
 }
+
+#[test]
+fn the_overlay_draws_every_view_in_one_scene_without_restarting_the_run() {
+    let mut lab = lab("human");
+    let command =
+        r#"{"compare":{"views":["transpose","pinv","dls","sdls"],"scenario":"singularity"}}"#;
+    if let Err(error) = lab.command(command) {
+        panic!("{error}");
+    }
+    run(&mut lab, 1.0);
+    let before = state(&lab);
+    assert_eq!(before["compare"]["overlay"], false);
+    let Some(compare) = lab.comparison() else {
+        panic!("no comparison")
+    };
+    assert!(
+        compare.overlay().capsules().is_empty(),
+        "off: nothing filled"
+    );
+    let bones: usize = compare
+        .views()
+        .iter()
+        .map(|v| v.stage().scene().capsules().len())
+        .sum();
+
+    if let Err(error) = lab.command(r#"{"compare":{"overlay":true}}"#) {
+        panic!("{error}");
+    }
+    let after = state(&lab);
+    assert_eq!(after["compare"]["overlay"], true);
+    // The same run: time and frames carry on.
+    assert_eq!(
+        after["compare"]["metrics"][0]["frame"],
+        before["compare"]["metrics"][0]["frame"]
+    );
+    let time_s = &after["compare"]["metrics"][0]["time_s"];
+    assert!(time_s.as_f64().unwrap_or(0.0) > 0.9, "{time_s}");
+    let Some(compare) = lab.comparison() else {
+        panic!("no comparison")
+    };
+    // Every view's figure in one scene: at least one figure's bones, each view's colour (shaded by side) among them.
+    let one_figure = bones / 4;
+    assert!(compare.overlay().capsules().len() >= one_figure);
+    for i in 0..4 {
+        let want = gaitlab_app::compare::view_colour_srgb(i);
+        let found = compare.overlay().capsules().iter().any(|c| {
+            let k = c.color[1] / want[1];
+            (0..3).all(|ch| (c.color[ch] - k * want[ch]).abs() < 1e-4)
+        });
+        assert!(found, "view {i}'s colour drawn");
+    }
+    // It follows the run.
+    run(&mut lab, 0.5);
+    let (Some(compare), Some(first)) = (
+        lab.comparison(),
+        lab.comparison().and_then(|c| c.views().first()),
+    ) else {
+        panic!("no comparison")
+    };
+    assert_eq!(
+        compare.overlay().bounds().map(|b| b.min.y.min(0.0)),
+        first.stage().scene().bounds().map(|b| b.min.y.min(0.0))
+    );
+    assert!(
+        compare
+            .overlay()
+            .capsules()
+            .iter()
+            .any(|c| c.a == first.stage().scene().capsules()[0].a),
+        "the first figure's first bone starts where it is now"
+    );
+    // The state object restores it.
+    let mut other = self::lab("human");
+    let restore = serde_json::json!({ "compare": after["compare"] }).to_string();
+    if let Err(error) = other.command(&restore) {
+        panic!("{error}");
+    }
+    assert_eq!(state(&other)["compare"]["overlay"], true);
+}

@@ -1,5 +1,5 @@
 //! The `compare` command's value: `false` (or `null`) leaves the side-by-side
-//! IK comparison, an object `{views, scenario, options}` starts or
+//! IK comparison, an object `{views, scenario, overlay, options}` starts or
 //! reconfigures it (see [`crate::compare`]). `metrics`, as `state().compare`
 //! writes it, is accepted and ignored, so a state's object can be sent back.
 
@@ -55,12 +55,18 @@ pub struct CompareCommand {
     pub scenario: Option<ScenarioName>,
     /// Options per view, one object per view.
     pub options: Option<Vec<CompareOptions>>,
+    /// Draw the views as colour-coded figures in one 3-D view (`true`) or
+    /// one pane each (`false`); left out, it stays as it is.
+    pub overlay: Option<bool>,
     /// `state().compare.metrics`, ignored.
     #[cfg_attr(feature = "schema", schemars(with = "Option<serde_json::Value>"))]
     pub metrics: Option<serde::de::IgnoredAny>,
     /// `state().compare.plot_error_max_mm`, ignored.
     #[cfg_attr(feature = "schema", schemars(with = "Option<f64>"))]
     pub plot_error_max_mm: Option<serde::de::IgnoredAny>,
+    /// `state().compare.notice`, ignored.
+    #[cfg_attr(feature = "schema", schemars(with = "Option<Vec<String>>"))]
+    pub notice: Option<serde::de::IgnoredAny>,
 }
 
 /// The `compare` key's value.
@@ -184,5 +190,8 @@ pub fn config_from_command(
         views,
         options,
         scenario,
+        overlay: command
+            .overlay
+            .unwrap_or_else(|| current.is_some_and(|c| c.overlay)),
     })
 }

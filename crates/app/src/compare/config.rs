@@ -47,6 +47,9 @@ pub struct CompareConfig {
     pub options: Vec<IkOptions>,
     /// Target scenario.
     pub scenario: CompareScenario,
+    /// Whether the views are drawn as colour-coded figures in one 3-D view
+    /// (the overlay) instead of one pane each; changing it keeps the run.
+    pub overlay: bool,
 }
 
 impl CompareConfig {
@@ -57,7 +60,17 @@ impl CompareConfig {
             views: views.to_vec(),
             options: views.iter().map(|m| m.options(base)).collect(),
             scenario,
+            overlay: false,
         }
+    }
+
+    /// Whether `other` runs the same views on the same targets, so it can
+    /// take over this one's run (they may differ in how they are drawn).
+    #[must_use]
+    pub fn same_run(&self, other: &Self) -> bool {
+        self.views == other.views
+            && self.options == other.options
+            && self.scenario == other.scenario
     }
 
     /// The configuration as the command's object (without metrics).
@@ -66,6 +79,7 @@ impl CompareConfig {
         json!({
             "views": self.views.iter().map(|m| m.name()).collect::<Vec<_>>(),
             "scenario": self.scenario.name(),
+            "overlay": self.overlay,
             "options": self.options.iter().map(|o| json!({
                 "lambda": o.lambda,
                 "gamma_max": o.gamma_max,

@@ -12,12 +12,13 @@
 //!
 //! # The `compare` command and state (DESIGN.md "Browser")
 //! `{"compare": {"views": [NAME, …], "scenario": "script" | "singularity",
-//! "options": [{"lambda", "gamma_max", "max_step", "rank_tolerance",
+//! "overlay": BOOL, "options": [{"lambda", "gamma_max", "max_step", "rank_tolerance",
 //! "null_space_gain"}, …]}}` starts (or reconfigures) a comparison; `views`
 //! holds 2 or 4 of [`CompareMethod::ALL`]'s names, `scenario` and `options`
 //! (one object per view, each key optional) may be left out. `{"compare":
 //! false}` leaves it. `state().compare` is that same object plus a
-//! `metrics` array (ignored by the command), so passing it back verbatim
+//! `metrics` array, the plots' shared `plot_error_max_mm` and the scenario's
+//! "what to notice" lines, `notice` (all ignored by the command), so passing it back verbatim
 //! restores the configuration; it is `null` when no comparison runs.
 
 use gaitlab_core::driver::{Driver, IkMetrics};
@@ -31,15 +32,20 @@ use serde_json::{Value, json};
 use crate::history::History;
 use crate::lab::Stage;
 use crate::plot_scale::round_step;
+use crate::render::Scene;
 use crate::view::ViewOptions;
 
+mod colours;
 mod config;
 mod method;
 mod metrics;
+mod notice;
 
+pub use colours::{VIEW_COLOURS, view_colour, view_colour_srgb};
 pub use config::{CompareConfig, CompareScenario, DEFAULT_VIEWS};
 pub use method::{CompareMethod, DEFAULT_NULL_SPACE_GAIN, Parameter};
 pub use metrics::{JITTER_WINDOW_FRAMES, ViewMetrics};
+pub use notice::{NoticeLine, notice};
 
 /// One view: its configuration, its stage (driver, scene, and as history the
 /// largest effector error per frame, one series in metres) and its figures.
@@ -166,6 +172,9 @@ pub struct Comparison {
     /// What runs.
     pub config: CompareConfig,
     pub(crate) views: Vec<CompareView>,
+    /// Every view's figure in its colour, in one scene (filled while
+    /// `config.overlay` is on).
+    overlay: Scene,
 }
 
 impl Comparison {
@@ -196,7 +205,38 @@ impl Comparison {
                 view_state
             })
             .collect();
-        Self { config, views }
+        let mut comparison = Self {
+            config,
+            views,
+            overlay: Scene::default(),
+        };
+        comparison.refresh_overlay();
+        comparison
+    }
+
+    /// The overlay's scene: every view's figure in its colour (empty while
+    /// the overlay is off).
+    #[must_use]
+    pub fn overlay(&self) -> &Scene {
+        &self.overlay
+    }
+
+    /// Draws the views overlaid (`true`) or one pane each, keeping the run.
+    pub fn set_overlay(&mut self, on: bool) {
+        self.config.overlay = on;
+        self.refresh_overlay();
+    }
+
+    /// Refills the overlay from the views' scenes when it is on.
+    fn refresh_overlay(&mut self) {
+        if self.config.overlay {
+            self.overlay.fill_overlay(
+                self.views
+                    .iter()
+                    .enumerate()
+                    .map(|(i, v)| (&v.stage.scene, view_colour_srgb(i))),
+            );
+        }
     }
 
     /// The views.
@@ -256,6 +296,7 @@ impl Comparison {
         for v in &mut self.views {
             v.stage.refresh_scene(view);
         }
+        self.refresh_overlay();
     }
 
     /// The top of the y range every card's error plot shares (mm): the
@@ -303,6 +344,11 @@ impl Comparison {
                 "plot_error_max_mm".to_owned(),
                 json!(self.plot_error_max_mm()),
             );
+            let lines: Vec<String> = notice(self.config.scenario)
+                .iter()
+                .map(|l| format!("{} ({})", l.text, l.source))
+                .collect();
+            object.insert("notice".to_owned(), json!(lines));
         }
         value
     }

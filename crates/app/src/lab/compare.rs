@@ -46,6 +46,24 @@ impl Lab {
         Ok(())
     }
 
+    /// Changes the running comparison to `config`: in place when only how it
+    /// is drawn changes (the overlay), else by [`Lab::start_compare`] (a
+    /// restart from time 0, also when nothing changes).
+    ///
+    /// # Errors
+    /// As [`Lab::start_compare`].
+    pub fn configure_compare(&mut self, config: CompareConfig) -> Result<(), String> {
+        if let Some(compare) = self.compare.as_mut()
+            && compare.config.same_run(&config)
+            && compare.config.overlay != config.overlay
+        {
+            compare.set_overlay(config.overlay);
+            self.outbox.push(Effect::LinkChanged);
+            return Ok(());
+        }
+        self.start_compare(config)
+    }
+
     /// She 2006 §5.3's comparison as the thesis runs it: opens the bundled
     /// `she-2006` preset (the §5.2.2 listing, no posture pull) and starts the
     /// four thesis methods side by side on the current motion.
@@ -90,7 +108,7 @@ impl Lab {
         let mut base = self.session.settings.ik.clone();
         base.method = self.session.settings.method;
         let config = config_from_command(command, &base, self.compare.as_ref().map(|c| &c.config))?;
-        self.start_compare(config)
+        self.configure_compare(config)
     }
 
     /// The state's `compare` value: `null`, or the configuration plus metrics.

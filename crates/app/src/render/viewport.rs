@@ -38,40 +38,66 @@ pub fn show(
 
 /// Shows several scenes through one shared camera, side by side: 2 panes split
 /// the space left and right, 4 make a 2 × 2 grid (any other count makes
-/// columns). Each pane is labelled with its text in the top-left corner.
-/// Gestures anywhere move the shared camera; framing and follow use the first
-/// scene.
+/// columns). Each pane is labelled with its text, after a swatch of its
+/// colour, in the top-left corner. Gestures anywhere move the shared camera;
+/// framing and follow use the first scene.
 pub fn show_split(
     ui: &mut egui::Ui,
-    panes: &[(&Scene, &str)],
+    panes: &[(&Scene, &str, Color32)],
     camera: &mut Camera,
     view: &ViewOptions,
 ) -> egui::Response {
     let (rect, response) = allocate(ui);
-    if let Some((first, _)) = panes.first() {
+    if let Some((first, _, _)) = panes.first() {
         let pane = split_rects(rect, panes.len())[0];
         steer(ui, &response, aspect(pane), first, camera, view);
     }
-    let text_color = ui.visuals().strong_text_color();
-    let backdrop = ui.visuals().extreme_bg_color.gamma_multiply(0.8);
-    for (i, ((scene, label), pane)) in panes.iter().zip(split_rects(rect, panes.len())).enumerate()
+    for (i, ((scene, label, colour), pane)) in
+        panes.iter().zip(split_rects(rect, panes.len())).enumerate()
     {
         draw(ui, pane, response.id.with(i).value(), scene, camera, view);
-        let painter = ui.painter().with_clip_rect(pane);
+        legend(ui, pane, &[(*colour, label)]);
+    }
+    response
+}
+
+/// Shows one scene holding several figures (the comparison's overlay) with a
+/// key in the top-left corner: each figure's colour and name.
+pub fn show_overlay(
+    ui: &mut egui::Ui,
+    scene: &Scene,
+    key: &[(Color32, &str)],
+    camera: &mut Camera,
+    view: &ViewOptions,
+) -> egui::Response {
+    let response = show(ui, scene, camera, view);
+    legend(ui, response.rect, key);
+    response
+}
+
+/// Rows of a colour swatch and a text on a backdrop, from the top-left corner of `rect`.
+fn legend(ui: &egui::Ui, rect: Rect, rows: &[(Color32, &str)]) {
+    let text_color = ui.visuals().strong_text_color();
+    let backdrop = ui.visuals().extreme_bg_color.gamma_multiply(0.8);
+    let painter = ui.painter().with_clip_rect(rect);
+    let swatch = 12.0;
+    let mut at = rect.left_top() + egui::vec2(6.0, 4.0);
+    for (colour, text) in rows {
         let galley = painter.layout_no_wrap(
-            (*label).to_owned(),
+            (*text).to_owned(),
             egui::FontId::proportional(14.0),
             text_color,
         );
-        let at = pane.left_top() + egui::vec2(6.0, 4.0);
-        painter.rect_filled(
-            Rect::from_min_size(at, galley.size()).expand(3.0),
-            3.0,
-            backdrop,
+        let size = egui::vec2(swatch + 6.0 + galley.size().x, galley.size().y.max(swatch));
+        painter.rect_filled(Rect::from_min_size(at, size).expand(3.0), 3.0, backdrop);
+        let square = Rect::from_center_size(
+            at + egui::vec2(swatch * 0.5, size.y * 0.5),
+            egui::vec2(swatch, swatch),
         );
-        painter.galley(at, galley, text_color);
+        painter.rect_filled(square, 2.0, *colour);
+        painter.galley(at + egui::vec2(swatch + 6.0, 0.0), galley, text_color);
+        at.y += size.y + 8.0;
     }
-    response
 }
 
 /// The panes of [`show_split`]: `count` rectangles tiling `rect` with a 2-point gap.

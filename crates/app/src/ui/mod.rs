@@ -5,6 +5,7 @@
 //! plots become drawers toggled from a slim top bar (one open at a time, the
 //! plots one under another), so the 3-D view keeps most of the screen.
 
+use crate::compare::view_colour;
 use crate::lab::Lab;
 use crate::render::viewport;
 
@@ -100,14 +101,30 @@ impl Lab {
                         .enumerate()
                         .map(|(i, v)| format!("{} · {}", i + 1, v.method.label()))
                         .collect();
-                    let panes: Vec<_> = compare
-                        .views()
+                    let key: Vec<_> = labels
                         .iter()
-                        .zip(&labels)
-                        .map(|(v, label)| (&v.stage.scene, label.as_str()))
+                        .enumerate()
+                        .map(|(i, label)| (view_colour(i), label.as_str()))
                         .collect();
-                    viewport::show_split(ui, &panes, &mut self.camera, &self.session.settings.view)
+                    let settings = &self.session.settings.view;
+                    if compare.config.overlay {
+                        viewport::show_overlay(
+                            ui,
+                            compare.overlay(),
+                            &key,
+                            &mut self.camera,
+                            settings,
+                        )
                         .rect
+                    } else {
+                        let panes: Vec<_> = compare
+                            .views()
+                            .iter()
+                            .zip(&key)
+                            .map(|(v, (colour, label))| (&v.stage.scene, *label, *colour))
+                            .collect();
+                        viewport::show_split(ui, &panes, &mut self.camera, settings).rect
+                    }
                 }
                 None => {
                     viewport::show(

@@ -7,7 +7,7 @@ use gaitlab_core::ik::Targets;
 use gaitlab_core::{Kinematics, Skeleton};
 use glam::{DVec3, Vec3};
 
-use super::frame::Scene;
+use super::frame::{Scene, TargetRanges};
 use super::palette::{
     CENTRE_COLOR, EFFECTOR_COLOR, ERROR_COLOR, PRISMATIC_AXIS_COLOR, REVOLUTE_AXIS_COLOR,
     TARGET_COLOR, TARGET_OUT_OF_REACH_COLOR, WORLD_AXIS_COLORS, shade, side_color,
@@ -149,6 +149,7 @@ impl Scene {
         }
 
         // Targets and error segments.
+        let (spheres_from, segments_from) = (frame.spheres.len(), frame.segments.len());
         if view.targets
             && let Some(targets) = targets
         {
@@ -190,6 +191,11 @@ impl Scene {
                 }
             }
         }
+
+        frame.targets = TargetRanges {
+            spheres: spheres_from..frame.spheres.len(),
+            segments: segments_from..frame.segments.len(),
+        };
 
         // Joint rotation (or sliding) axes.
         if view.joint_axes {

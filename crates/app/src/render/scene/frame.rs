@@ -26,6 +26,18 @@ pub struct SceneFrame {
     /// and the physics trunk; `None` before the first fill or when no
     /// position is finite.
     pub bounds: Option<Bounds>,
+    /// Where the IK targets lie in [`Self::spheres`] and their error
+    /// segments in [`Self::segments`] (the overlay keeps one set of targets).
+    pub targets: TargetRanges,
+}
+
+/// Index ranges of the targets' spheres and error segments in a frame's lists.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TargetRanges {
+    /// Target spheres.
+    pub spheres: std::ops::Range<usize>,
+    /// Effector-to-target error segments.
+    pub segments: std::ops::Range<usize>,
 }
 
 impl SceneFrame {
@@ -36,6 +48,7 @@ impl SceneFrame {
         self.segments.clear();
         self.ground_marks.clear();
         self.bounds = None;
+        self.targets = TargetRanges::default();
     }
 
     /// Grows [`Self::bounds`] to hold `p` (non-finite points are skipped).

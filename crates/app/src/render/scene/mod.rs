@@ -22,6 +22,7 @@
 //! - `bounds`: [`Bounds`], the box the camera frames and follows.
 //! - `frame`: [`SceneFrame`] (one frame's lists) and [`Scene`] (the shared, refilled frame).
 //! - `fill`: [`Scene::fill`], the figure from a skeleton's forward kinematics.
+//! - `tint`: [`Scene::fill_overlay`], several figures recoloured into one scene (the comparison's overlay).
 //! - `palette`: colours by side (left, right, centre line) and by role.
 //! - `sizes`: the ground's height, the sizes of bones, spheres and axes, shadow reach.
 
@@ -31,9 +32,10 @@ mod frame;
 mod palette;
 mod primitives;
 mod sizes;
+mod tint;
 
 pub use bounds::Bounds;
-pub use frame::{Scene, SceneFrame};
+pub use frame::{Scene, SceneFrame, TargetRanges};
 pub use palette::{
     CENTRE_COLOR, EFFECTOR_COLOR, ERROR_COLOR, LEFT_COLOR, PRISMATIC_AXIS_COLOR,
     REVOLUTE_AXIS_COLOR, RIGHT_COLOR, TARGET_COLOR, TARGET_OUT_OF_REACH_COLOR, WORLD_AXIS_COLORS,

@@ -7,10 +7,11 @@
 use egui_plot::{Line, Plot, PlotPoints};
 
 use crate::plot_scale::{few_round_marks, tick_label};
-use crate::ui::plots::SERIES_COLOURS;
 
 use super::panel::Panel;
-use crate::compare::{CompareConfig, CompareMethod, CompareScenario, DEFAULT_VIEWS, Parameter};
+use crate::compare::{
+    CompareConfig, CompareMethod, CompareScenario, DEFAULT_VIEWS, Parameter, notice, view_colour,
+};
 use crate::lab::Lab;
 
 /// The "Side by side" controls.
@@ -113,8 +114,28 @@ fn controls(ui: &mut egui::Ui, lab: &mut Lab) {
                     "Where the targets go: the thesis script of the chosen motion, or every \
                      limb pulled to its full reach and beyond (a singular, stretched pose)",
                 );
+            ui.horizontal(|ui| {
+                for (overlay, label, tip) in [
+                    (false, "Side by side", "One 3-D view per method"),
+                    (
+                        true,
+                        "Overlay",
+                        "Every method's figure in one 3-D view, each in its card's colour, \
+                         chasing the same targets; a bone where methods agree is striped in \
+                         their colours, a joint they share is grey",
+                    ),
+                ] {
+                    if ui
+                        .radio(config.overlay == overlay, label)
+                        .on_hover_text(tip)
+                        .clicked()
+                    {
+                        config.overlay = overlay;
+                    }
+                }
+            });
             if config != current
-                && let Err(error) = lab.start_compare(config)
+                && let Err(error) = lab.configure_compare(config)
             {
                 lab.report_error(error);
             }
@@ -160,14 +181,21 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
     let y_max_mm = compare.plot_error_max_mm();
     let mut edits = Vec::new();
     egui::ScrollArea::vertical().show(ui, |ui| {
+        notice_ui(ui, compare.config.scenario);
         ui.columns(count.max(1), |columns| {
             for (i, (column, view)) in columns.iter_mut().zip(compare.views()).enumerate() {
                 // Left-aligned, not justified: a wrapped formula keeps its
                 // letters together.
                 column.with_layout(egui::Layout::top_down(egui::Align::LEFT), |ui| {
                     let method = view.method;
-                    ui.strong(format!("{} · {}", i + 1, method.label()))
-                        .on_hover_text(method.behaviour());
+                    let colour = view_colour(i);
+                    ui.horizontal(|ui| {
+                        let (swatch, _) =
+                            ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
+                        ui.painter().rect_filled(swatch, 3.0, colour);
+                        ui.strong(format!("{} · {}", i + 1, method.label()))
+                            .on_hover_text(method.behaviour());
+                    });
                     let points: Vec<[f64; 2]> = view
                         .stage.history
                         .points(0)
@@ -189,7 +217,7 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
                         .show(ui, |plot| {
                             plot.line(
                                 Line::new("max error (mm)", PlotPoints::from(points))
-                                    .color(SERIES_COLOURS[i % SERIES_COLOURS.len()]),
+                                    .color(colour),
                             );
                         })
                         .response
@@ -240,6 +268,21 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
     for (i, options) in edits {
         compare.set_options(i, options);
     }
+}
+
+/// The scenario's "what to notice" lines, each with its thesis section.
+fn notice_ui(ui: &mut egui::Ui, scenario: CompareScenario) {
+    egui::CollapsingHeader::new("What to notice")
+        .id_salt("compare-notice")
+        .default_open(true)
+        .show(ui, |ui| {
+            for line in notice(scenario) {
+                ui.horizontal_wrapped(|ui| {
+                    ui.label(format!("• {}", line.text));
+                    ui.weak(line.source);
+                });
+            }
+        });
 }
 
 /// The view's posture pull (the lab's addition): its gain, or "off (thesis)".
