@@ -146,8 +146,40 @@ describe('side-by-side IK comparison (WebGL2)', () => {
       console.log(`# overlay pixels per view colour (orange, sky blue, green, purple): ${perColour.join(', ')}`
         + ` (see ${overlaid.file})`);
       assert.ok(perColour.every((c) => c > 50), `four distinct colours drawn: ${perColour}`);
-      // Split panes have none of the overlay's colours but the first.
       assert.equal(await command(page, { compare: { overlay: false } }), 'ok');
+
+      // The history scrubber: one second forward a frame at a time (each frame's pose digest
+      // noted), one second back, then forward again: the stored poses come back, and simulating
+      // again reproduces each frame bit for bit.
+      const stepOnce = async () => {
+        const before = (await state(page)).frame;
+        assert.equal(await command(page, { step: true }), 'ok');
+        await page.waitForFunction((f) => JSON.parse(window.gaitlab.state()).frame > f, before,
+          { timeout: 10_000, polling: 20 });
+        const r = (await state(page)).rewind;
+        return r;
+      };
+      const start = (await state(page)).rewind;
+      const digests = new Map([[start.frame, start.pose_digest]]);
+      for (let k = 0; k < 60; k++) {
+        const r = await stepOnce();
+        digests.set(r.frame, r.pose_digest);
+      }
+      const end = (await state(page)).rewind.frame;
+      assert.equal(await command(page, { step_back_s: 1 }), 'ok');
+      let r = (await state(page)).rewind;
+      assert.equal(r.frame, end - 60, 'one second back');
+      assert.equal(r.newest_frame, end);
+      assert.equal(r.pose_digest, digests.get(end - 60), `stored pose at frame ${r.frame}`);
+      let replayed = 0;
+      for (let k = 0; k < 60; k++) {
+        r = await stepOnce();
+        assert.equal(r.pose_digest, digests.get(r.frame), `frame ${r.frame} simulated again`);
+        assert.equal(r.pose_matches_stored, true, `frame ${r.frame}`);
+        replayed++;
+      }
+      console.log(`# history: stepped back 1 s from frame ${end}, ${replayed} frames simulated again, all bit-identical`);
+      s = await state(page);
 
       // A bad compare command names the field and leaves the comparison as it was.
       assert.match(await command(page, { compare: { views: ['pinv', 'warp'] } }), /^compare\.views\[1\]/);

@@ -9,7 +9,14 @@ use serde_json::Value;
 /// `state()` fields that count live time, not settings: the frame counter,
 /// simulated time, frame rate and timing, the per-frame effector errors, and
 /// the physics body's live readings.
-const LIVE: [&str; 5] = ["frame", "time_s", "fps", "sim_us_per_frame", "views"];
+const LIVE: [&str; 6] = [
+    "frame",
+    "time_s",
+    "fps",
+    "sim_us_per_frame",
+    "views",
+    "rewind",
+];
 
 fn settled_state(lab: &Lab) -> Value {
     let mut state: Value = serde_json::from_str(&lab.state_json()).expect("state is JSON");

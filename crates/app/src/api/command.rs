@@ -183,6 +183,11 @@ pub struct Command {
     pub step: Option<bool>,
     /// Playback rate, simulated seconds per wall second, [0.1, 2].
     pub playback_rate: Option<f64>,
+    /// Pause and step back this many seconds of simulated time, [0, 10]
+    /// (to the oldest stored frame at most); the history scrubber.
+    pub step_back_s: Option<f64>,
+    /// Pause and go to this frame of the stored history (clamped to it).
+    pub rewind_to_frame: Option<u64>,
     /// DLS damping λ, [1e-6, 10].
     pub lambda: Option<f64>,
     /// SDLS γmax, radians, [1e-3, π].
@@ -371,6 +376,14 @@ impl Lab {
         }
         if c.step == Some(true) {
             self.single_step();
+        }
+        if let Some(seconds) = c.step_back_s {
+            let seconds = range("step_back_s", seconds, 0.0, crate::lab::REWIND_S)?;
+            let frames = (seconds / self.frame_seconds()).round() as u64;
+            self.step_back(frames)?;
+        }
+        if let Some(frame) = c.rewind_to_frame {
+            self.rewind_to(frame)?;
         }
         self.apply_ik_command(c)?;
         if let Some(x) = c.heading_deg {

@@ -266,6 +266,9 @@ pub struct State {
     pub paused: bool,
     /// Playback rate, simulated seconds per wall second.
     pub playback_rate: f64,
+    /// The history scrubber: the frame shown, how far back one can go, and
+    /// whether frames simulated again matched the stored poses.
+    pub rewind: crate::lab::RewindState,
     /// Frames since the last reset.
     pub frame: u64,
     /// Simulated time, seconds.
@@ -385,6 +388,7 @@ impl State {
             compare: lab.compare_state(),
             paused: lab.playback.paused,
             playback_rate: lab.playback.rate(),
+            rewind: lab.rewind_state(),
             frame: lab.stage.frame,
             time_s: lab.stage.driver.time(),
             fps: lab.playback.fps,

@@ -42,6 +42,7 @@ impl Lab {
             &self.session.settings.view,
         ));
         self.stage.frame = 0;
+        self.rewind_restart();
         self.outbox.push(Effect::LinkChanged);
         Ok(())
     }
@@ -91,6 +92,7 @@ impl Lab {
     /// Leaves the comparison (the single view carries on).
     pub fn stop_compare(&mut self) {
         if self.compare.take().is_some() {
+            self.rewind_restart();
             self.outbox.push(Effect::LinkChanged);
         }
     }

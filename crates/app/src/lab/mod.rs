@@ -28,6 +28,7 @@ mod outbox;
 mod overlays;
 mod playback;
 mod plots;
+mod rewind;
 mod session;
 mod stage;
 mod take;
@@ -39,6 +40,7 @@ pub use outbox::{Download, Effect, Outbox};
 pub use overlays::Overlays;
 pub use playback::{Clock, MAX_FRAME_ADVANCE_S, PLAYBACK_RATES, Playback};
 pub use plots::{MAX_PLOT_JOINTS, PHYSICS_ATTITUDE_SERIES, PHYSICS_BODY_SERIES, Plots};
+pub use rewind::{KEY_EVERY_FRAMES, REWIND_S, RewindState};
 pub use session::Session;
 pub use stage::Stage;
 pub use take::TakeRecorder;
@@ -68,6 +70,8 @@ pub struct Lab {
     pub(crate) layout: Layout,
     /// The side-by-side IK comparison, when one runs (it replaces the single view).
     pub(crate) compare: Option<crate::compare::Comparison>,
+    /// The history scrubber's stored poses and keyframes.
+    pub(crate) rewind: rewind::Rewind,
     /// The preset editor.
     pub(crate) editor: crate::editor::PresetEditor,
     /// What the last PODA gait edit derived, to say so in the gait panel.
@@ -99,6 +103,7 @@ impl Lab {
             video: VideoStatus::default(),
             layout: Layout::default(),
             compare: None,
+            rewind: rewind::Rewind::default(),
             editor: crate::editor::PresetEditor::default(),
             gait_derived: Vec::new(),
             shown_link: None,
@@ -375,6 +380,7 @@ impl Lab {
             )
         };
         self.refresh_scene();
+        self.rewind_restart();
     }
 
     /// Frame length of the animation, seconds (the preset's fps).
@@ -393,17 +399,25 @@ impl Lab {
         }
         let started = self.playback.now_ms();
         for _ in 0..steps {
-            if let Some(compare) = self.compare.as_mut() {
-                // The views replace the single figure, in lock step.
-                compare.step(dt, self.playback.clock.as_deref());
-                self.stage.frame += 1;
-                continue;
-            }
-            self.stage.step(dt);
-            self.record_frame();
+            self.step_frame(dt);
         }
         self.playback.note_sim_time(started, steps);
         self.refresh_scene();
+    }
+
+    /// One frame of `dt` seconds: the single view or, in lock step, every
+    /// comparison view; then the plots, take and footprints and the history
+    /// scrubber's record.
+    fn step_frame(&mut self, dt: f64) {
+        if let Some(compare) = self.compare.as_mut() {
+            // The views replace the single figure, in lock step.
+            compare.step(dt, self.playback.clock.as_deref());
+            self.stage.frame += 1;
+        } else {
+            self.stage.step(dt);
+            self.record_frame();
+        }
+        self.rewind_note();
     }
 
     /// After a step of the single view: the plots, the take and the footprints.

@@ -18,6 +18,7 @@ const PATH_AHEAD_M: f64 = 4.0;
 const PATH_SAMPLES: u32 = 40;
 
 /// What the overlays remember between frames.
+#[derive(Clone)]
 pub struct Overlays {
     /// Recent PODA footprints (where supporting feet stood), oldest first.
     footprints: VecDeque<DVec3>,

@@ -1,6 +1,6 @@
 //! The lab's layout: controls on the left, live plots at the bottom, the 3-D
 //! view in the middle, an error banner on top when something went wrong, and
-//! the keyboard shortcuts (space pause, R reset, . single step). Below
+//! the keyboard shortcuts (space pause, R reset, . single step, comma one step back). Below
 //! [`NARROW_WIDTH_PT`] (a phone, issue 6 "Comfort") the controls and the
 //! plots become drawers toggled from a slim top bar (one open at a time, the
 //! plots one under another), so the 3-D view keeps most of the screen.
@@ -282,13 +282,17 @@ impl Lab {
         if ui.ctx().egui_wants_keyboard_input() {
             return;
         }
-        let (space, reset, step) = ui.input(|i| {
+        let (space, reset, step, back) = ui.input(|i| {
             (
                 i.key_pressed(egui::Key::Space),
                 i.key_pressed(egui::Key::R),
                 i.key_pressed(egui::Key::Period),
+                i.key_pressed(egui::Key::Comma),
             )
         });
+        if back && let Err(error) = self.step_back(1) {
+            self.report_error(error);
+        }
         if space {
             self.set_paused(!self.playback.paused);
         }

@@ -1,5 +1,6 @@
-//! The Reset / Pause / Step buttons (keys R, space, .): in the side panel, or
-//! in the phone layout's bar above the drawer; and the playback rate.
+//! The Reset / Pause / Back / Step buttons (keys R, space, comma, period):
+//! in the side panel, or in the phone layout's bar above the drawer; the
+//! playback rate and the history scrubber ([`crate::lab::REWIND_S`] seconds).
 
 use super::panel::Panel;
 use crate::lab::Lab;
@@ -21,7 +22,7 @@ impl Panel for ButtonsPanel {
     }
 }
 
-/// Reset / Pause / Step, with the keyboard shortcuts (space, R, .).
+/// Reset / Pause / Back / Step, with the keyboard shortcuts (R, space, comma, period).
 pub fn buttons(ui: &mut egui::Ui, lab: &mut Lab) {
     ui.horizontal(|ui| {
         if ui
@@ -38,6 +39,17 @@ pub fn buttons(ui: &mut egui::Ui, lab: &mut Lab) {
             .clicked()
         {
             lab.set_paused(!lab.paused());
+        }
+        if ui
+            .button("Back")
+            .on_hover_text(
+                "Pause and go back one animation frame (key ,); the last 10 s are kept, and \
+                 stepping forward again replays them exactly",
+            )
+            .clicked()
+            && let Err(error) = lab.step_back(1)
+        {
+            lab.report_error(error);
         }
         if ui
             .button("Step")
@@ -60,6 +72,40 @@ impl Panel for RatePanel {
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
         rate(ui, lab);
+        history(ui, lab);
+    }
+}
+
+/// The history scrubber: the frame shown among the stored ones, labelled in
+/// seconds before the newest; dragging it pauses and goes there.
+fn history(ui: &mut egui::Ui, lab: &mut Lab) {
+    let Some((oldest, newest)) = lab.rewind_range() else {
+        return;
+    };
+    let dt = lab.frame_seconds();
+    let mut frame = lab.frame().clamp(oldest, newest);
+    let response = ui
+        .add_enabled(
+            newest > oldest,
+            egui::Slider::new(&mut frame, oldest..=newest)
+                .custom_formatter(move |f, _| {
+                    let behind_s = (newest as f64 - f) * dt;
+                    if behind_s < 0.5 * dt {
+                        "now".to_owned()
+                    } else {
+                        format!("−{behind_s:.2} s")
+                    }
+                })
+                .text("History"),
+        )
+        .on_hover_text(
+            "Drag back through the last 10 s (pauses); Step and Play from there simulate \
+             again and replay the same frames exactly",
+        );
+    if response.changed()
+        && let Err(error) = lab.rewind_to(frame)
+    {
+        lab.report_error(error);
     }
 }
 

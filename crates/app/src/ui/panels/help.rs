@@ -69,12 +69,16 @@ const KEY: [([f32; 4], &str); 14] = [
 ];
 
 /// How to drive the view and the clock.
-const CONTROLS: [(&str, &str); 6] = [
+const CONTROLS: [(&str, &str); 7] = [
     ("Drag", "orbit the camera (one finger on a touch screen)"),
     ("Scroll or pinch", "zoom"),
     ("Space", "pause or play"),
     ("R", "reset to time 0"),
     (".", "one frame forward while paused"),
+    (
+        ",",
+        "one frame back (the last 10 s are kept; History slider under Playback)",
+    ),
     ("Drop a .json", "load it as a preset (or Load file…)"),
 ];
 
