@@ -106,6 +106,43 @@ describe('full-state links (WebGL2 path)', () => {
     }
   });
 
+  it('a lesson link opens with its note first and its panels hidden', T, async () => {
+    const a = await loadApp(first, server.url);
+    let link;
+    const lesson = {
+      note: 'Watch the hands: where a target is out of reach, which method shakes?',
+      hide_panels: ['Method', 'Recording', 'View'],
+      pin_plots: ['errors'],
+    };
+    try {
+      assert.equal(await command(a.page, { preset: 'she-2006', lesson }), 'ok');
+      const s = await state(a.page);
+      assert.deepEqual(s.lesson, lesson);
+      link = await a.page.evaluate(() => window.gaitlab.link());
+      a.assertClean();
+    } finally {
+      await a.page.close().catch(() => {});
+    }
+    const b = await loadApp(second, link);
+    try {
+      assert.ok(await frameExceeds(b.page, 3), 'the app runs');
+      const s = await state(b.page);
+      assert.equal(s.last_error, null);
+      assert.deepEqual(s.lesson, lesson);
+      assert.equal(s.layout.lesson_note_open, true, 'the note shows first');
+      for (const title of lesson.hide_panels) assert.ok(!s.layout.panels_shown.includes(title), `${title} hidden`);
+      for (const title of ['Motion', 'Lesson', 'Share']) assert.ok(s.layout.panels_shown.includes(title), `${title} shown`);
+      const shot = await shootCanvas(b.page, 'lesson-link.png');
+      assertDrawn(shot, 'lesson link');
+      console.log(`# lesson link: ${link.length} characters; note open, panels shown: ${s.layout.panels_shown.join(', ')} (see ${shot.file})`);
+      assert.equal(await command(b.page, { lesson_note_open: false }), 'ok');
+      assert.equal((await state(b.page)).layout.lesson_note_open, false);
+      b.assertClean();
+    } finally {
+      await b.page.close().catch(() => {});
+    }
+  });
+
   it('broken links leave the app running with a message and the default preset', T, async () => {
     const a = await loadApp(first, server.url);
     let payload;

@@ -12,6 +12,7 @@ pub mod editor;
 pub mod editor_message;
 pub mod history;
 pub mod lab;
+pub mod lesson;
 pub mod link;
 pub mod link_state;
 pub mod memory;

@@ -50,6 +50,7 @@ pub const LINK_KEYS: &[(&str, &str)] = &[
     ("compare", "/compare"),
     ("paused", "/paused"),
     ("editor_open", "/editor/open"),
+    ("lesson", "/lesson"),
 ];
 
 /// The limit passes every link ran with before links carried them.

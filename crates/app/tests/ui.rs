@@ -595,3 +595,50 @@ fn the_speed_slider_shows_the_tested_speeds_and_warns_outside_them() {
     harness.run();
     harness.get_by_label("Outside the tested 1.0–2.3 m/s: it may fall or miss the speed");
 }
+
+#[test]
+fn a_lesson_opens_with_its_note_and_leaves_out_its_hidden_panels() {
+    let mut harness = harness();
+    harness.run();
+    assert!(
+        layout(&harness)["panels_shown"]
+            .as_array()
+            .is_some_and(|p| p.contains(&"Method".into()))
+    );
+    if let Err(error) = harness.state_mut().command(
+        r#"{"lesson": {"note": "Watch the hands.", "hide_panels": ["Method", "Recording"], "pin_plots": ["errors"]}}"#,
+    ) {
+        panic!("{error}");
+    }
+    harness.run();
+    // The note first, in its window.
+    harness.get_by_label("Watch the hands.");
+    let shown = layout(&harness)["panels_shown"].clone();
+    let has = |title: &str| shown.as_array().is_some_and(|p| p.contains(&title.into()));
+    assert!(!has("Method") && !has("Recording"), "{shown}");
+    assert!(has("Motion") && has("Lesson"), "{shown}");
+    // The pinned plot only.
+    harness.get_by_label("Effector error (mm)");
+    assert!(harness.query_by_label("Joint angles").is_none());
+    harness.get_by_label("Start").click();
+    harness.run();
+    assert_eq!(layout(&harness)["lesson_note_open"], false);
+    assert!(harness.query_by_label("Watch the hands.").is_none());
+    harness.get_by_label("Leave the lesson").click();
+    harness.run();
+    assert!(harness.state().lesson().is_none());
+    harness.run();
+    assert!(
+        layout(&harness)["panels_shown"]
+            .as_array()
+            .is_some_and(|p| p.contains(&"Method".into()))
+    );
+    harness.get_by_label("Joint angles");
+}
+
+/// `state().layout` of the harness's lab.
+fn layout(harness: &Harness<'static, Lab>) -> serde_json::Value {
+    let state: serde_json::Value =
+        serde_json::from_str(&harness.state().state_json()).unwrap_or_default();
+    state["layout"].clone()
+}

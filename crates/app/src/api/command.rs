@@ -229,6 +229,11 @@ pub struct Command {
     pub narrow: Option<Option<bool>>,
     /// Open or close the help window.
     pub help: Option<bool>,
+    /// A teacher's lesson (note, hidden panels, pinned plots); `false` leaves it.
+    #[serde(default, deserialize_with = "present")]
+    pub lesson: Option<super::off_or::OffOr<crate::lesson::Lesson>>,
+    /// Open or close the lesson's note.
+    pub lesson_note_open: Option<bool>,
     /// View flags.
     #[serde(default, deserialize_with = "object")]
     pub views: Option<ViewsCommand>,
@@ -430,6 +435,15 @@ impl Lab {
         }
         if let Some(help) = c.help {
             self.layout.help_open = help;
+        }
+        if let Some(lesson) = &c.lesson {
+            self.set_lesson(match lesson {
+                super::off_or::OffOr::Off => None,
+                super::off_or::OffOr::On(lesson) => Some(lesson.clone()),
+            })?;
+        }
+        if let Some(open) = c.lesson_note_open {
+            self.layout.lesson_note_open = open && self.session.lesson.is_some();
         }
         if let Some(views) = &c.views {
             let view = &mut self.session.settings.view;

@@ -4,7 +4,8 @@
 //! writes it, is accepted and ignored, so a state's object can be sent back.
 
 use serde::Deserialize;
-use serde::de::{Deserializer, MapAccess, Visitor};
+
+use super::off_or::OffOr;
 
 use gaitlab_core::ik::IkOptions;
 
@@ -69,61 +70,9 @@ pub struct CompareCommand {
     pub notice: Option<serde::de::IgnoredAny>,
 }
 
-/// The `compare` key's value.
-#[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[cfg_attr(feature = "schema", schemars(untagged))]
-pub enum CompareValue {
-    /// `false` or `null`: leave the comparison.
-    #[cfg_attr(feature = "schema", schemars(with = "Option<False>"))]
-    Off,
-    /// Start or reconfigure it.
-    On(CompareCommand),
-}
-
-/// The JSON value `false`, for the schema.
-#[cfg(feature = "schema")]
-struct False;
-
-#[cfg(feature = "schema")]
-impl schemars::JsonSchema for False {
-    fn schema_name() -> std::borrow::Cow<'static, str> {
-        "False".into()
-    }
-    fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
-        schemars::json_schema!({ "const": false })
-    }
-}
-
-impl<'de> Deserialize<'de> for CompareValue {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        struct Value;
-        impl<'de> Visitor<'de> for Value {
-            type Value = CompareValue;
-            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str("an object or false")
-            }
-            fn visit_bool<E: serde::de::Error>(self, on: bool) -> Result<CompareValue, E> {
-                if on {
-                    Err(E::invalid_type(serde::de::Unexpected::Bool(true), &self))
-                } else {
-                    Ok(CompareValue::Off)
-                }
-            }
-            fn visit_unit<E: serde::de::Error>(self) -> Result<CompareValue, E> {
-                Ok(CompareValue::Off)
-            }
-            fn visit_none<E: serde::de::Error>(self) -> Result<CompareValue, E> {
-                Ok(CompareValue::Off)
-            }
-            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<CompareValue, A::Error> {
-                CompareCommand::deserialize(serde::de::value::MapAccessDeserializer::new(map))
-                    .map(CompareValue::On)
-            }
-        }
-        deserializer.deserialize_any(Value)
-    }
-}
+/// The `compare` key's value: `false` (or `null`) leaves the comparison, an
+/// object starts or reconfigures it.
+pub type CompareValue = OffOr<CompareCommand>;
 
 /// The comparison a `compare` object asks for (see the module docs),
 /// taking defaults from `base` and from `current` where its views match.

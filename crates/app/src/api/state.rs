@@ -208,6 +208,11 @@ pub struct LayoutState {
     pub plots_open: bool,
     /// Whether the help window is open.
     pub help_open: bool,
+    /// Whether the lesson's note window is open.
+    pub lesson_note_open: bool,
+    /// The titles of the control panels drawn, top to bottom (the lesson's
+    /// hidden ones left out).
+    pub panels_shown: Vec<&'static str>,
     /// The phone layout's plots button's rectangle, points.
     pub plots_button_pt: [f32; 4],
 }
@@ -317,6 +322,8 @@ pub struct State {
     pub video: VideoState,
     /// The last error shown.
     pub last_error: Option<String>,
+    /// The teacher's lesson: note, hidden panels, pinned plots; null without one.
+    pub lesson: Option<crate::lesson::Lesson>,
     /// The note shown about the running preset: the deprecated values it
     /// uses, which still run as it was made.
     pub notice: Option<String>,
@@ -449,6 +456,8 @@ impl State {
                 controls_button_pt: lab.layout.controls_button_pt,
                 plots_open: lab.layout.plots_open,
                 help_open: lab.layout.help_open,
+                lesson_note_open: lab.layout.lesson_note_open,
+                panels_shown: lab.layout.panels_shown.clone(),
                 plots_button_pt: lab.layout.plots_button_pt,
             },
             video: VideoState {
@@ -460,6 +469,7 @@ impl State {
                 size: settings.video_size.name(),
             },
             last_error: lab.session.last_error.clone(),
+            lesson: lab.session.lesson.clone(),
             notice: lab.session.notice.clone(),
         }
     }

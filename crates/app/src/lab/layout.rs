@@ -13,6 +13,10 @@ pub struct Layout {
     pub controls_open: bool,
     /// Whether the help window is open.
     pub help_open: bool,
+    /// Whether the lesson's note window is open.
+    pub lesson_note_open: bool,
+    /// The titles of the control panels the last frame drew, top to bottom.
+    pub panels_shown: Vec<&'static str>,
     /// Whether the phone layout's plots drawer is open (never with the
     /// controls drawer).
     pub plots_open: bool,
@@ -35,6 +39,8 @@ impl Default for Layout {
             narrow: false,
             controls_open: false,
             help_open: false,
+            lesson_note_open: false,
+            panels_shown: Vec::new(),
             plots_open: false,
             plots_button_pt: [0.0; 4],
             controls_button_pt: [0.0; 4],

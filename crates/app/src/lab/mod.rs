@@ -24,6 +24,7 @@ mod editor;
 mod gait;
 mod gait_shape;
 mod layout;
+mod lesson;
 mod outbox;
 mod overlays;
 mod playback;

@@ -21,6 +21,8 @@ pub struct Session {
     /// A note about the running preset: the deprecated values it uses
     /// ([`Creature::deprecations`]), which still run as the preset was made.
     pub notice: Option<String>,
+    /// The teacher's lesson the lab runs, if any ([`crate::lesson`]).
+    pub lesson: Option<crate::lesson::Lesson>,
 }
 
 /// The bundled preset `name`.
@@ -102,6 +104,7 @@ impl Session {
             custom_preset: None,
             last_error,
             notice: None,
+            lesson: None,
         };
         (session, driver)
     }

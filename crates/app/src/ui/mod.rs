@@ -58,7 +58,7 @@ impl Lab {
                     .resizable(true)
                     .default_size(330.0)
                     .show(ui, |ui| panels::compare_cards(ui, self));
-            } else if self.session.settings.plots {
+            } else if self.session.settings.plots || self.lesson_pins_plots() {
                 egui::Panel::bottom("gaitlab-plots")
                     .resizable(true)
                     .default_size(170.0)
@@ -67,6 +67,7 @@ impl Lab {
         }
         panels::editor_window(&ui.ctx().clone(), self);
         panels::help_window(&ui.ctx().clone(), self);
+        panels::lesson_window(&ui.ctx().clone(), self);
         egui::CentralPanel::default().show(ui, |ui| {
             if let Some(notice) = self.session.notice.clone() {
                 ui.horizontal_wrapped(|ui| {
@@ -152,8 +153,12 @@ impl Lab {
     /// Every control panel of the registry that shows for the lab, top to
     /// bottom (the wide layout's side panel and the phone layout's drawer).
     fn controls(&mut self, ui: &mut egui::Ui) {
+        self.layout.panels_shown.clear();
         for panel in panels::REGISTRY {
-            if panel.shown_for(self) {
+            if panel.shown_for(self) && !self.lesson_hides(panel.title()) {
+                if panel.title() != "—" {
+                    self.layout.panels_shown.push(panel.title());
+                }
                 panel.ui(self, ui);
             }
         }

@@ -53,15 +53,33 @@ struct PlotSpec<'a> {
 impl Lab {
     /// The plots side by side, filling `ui` (the wide layout's bottom panel).
     pub(crate) fn plots_ui(&mut self, ui: &mut egui::Ui) {
-        let count = self.plot_count();
+        let count = self.shown_plots().count().max(1);
         let gap = ui.spacing().item_spacing.x;
         let width = ((ui.available_width() - gap * (count - 1) as f32) / count as f32).max(0.0);
         let cell = egui::vec2(width, ui.available_height());
         ui.horizontal(|ui| {
-            for k in 0..count {
-                ui.allocate_ui(cell, |ui| ui.vertical(|ui| self.plot_cell(ui, k)));
+            for k in 0..self.plot_names().len() {
+                if self.plot_shown(self.plot_names()[k], self.plot_names()) {
+                    ui.allocate_ui(cell, |ui| ui.vertical(|ui| self.plot_cell(ui, k)));
+                }
             }
         });
+    }
+
+    /// The running engine's plots by name ([`crate::lesson::PLOT_NAMES`]),
+    /// in [`Lab::plot_cell`]'s order: four for physics, two for IK and PODA.
+    fn plot_names(&self) -> &'static [&'static str] {
+        if self.stage.driver.physics().is_some() {
+            &["lengths", "force", "attitude", "state"]
+        } else {
+            &["errors", "joints"]
+        }
+    }
+
+    /// The indices of the plots shown (a lesson may pin some).
+    fn shown_plots(&self) -> impl Iterator<Item = usize> + '_ {
+        let names = self.plot_names();
+        (0..names.len()).filter(move |&k| self.plot_shown(names[k], names))
     }
 
     /// The plots one under another, each `height` points tall, in a
@@ -69,24 +87,17 @@ impl Lab {
     pub(crate) fn plots_stacked_ui(&mut self, ui: &mut egui::Ui, height: f32) {
         egui::ScrollArea::vertical().show(ui, |ui| {
             let width = ui.available_width();
-            for k in 0..self.plot_count() {
-                ui.allocate_ui(egui::vec2(width, height), |ui| {
-                    ui.vertical(|ui| self.plot_cell(ui, k))
-                });
+            for k in 0..self.plot_names().len() {
+                if self.plot_shown(self.plot_names()[k], self.plot_names()) {
+                    ui.allocate_ui(egui::vec2(width, height), |ui| {
+                        ui.vertical(|ui| self.plot_cell(ui, k))
+                    });
+                }
             }
         });
     }
 
-    /// How many plots the running engine has: four for physics, two for IK.
-    fn plot_count(&self) -> usize {
-        if self.stage.driver.physics().is_some() {
-            4
-        } else {
-            2
-        }
-    }
-
-    /// Plot `k` of [`Lab::plot_count`], filling `ui`.
+    /// Plot `k` of [`Lab::plot_names`], filling `ui`.
     fn plot_cell(&mut self, ui: &mut egui::Ui, k: usize) {
         if self.stage.driver.physics().is_some() {
             let body = &self.stage.history;

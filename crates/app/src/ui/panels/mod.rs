@@ -8,6 +8,7 @@ mod gait;
 mod ground_view;
 mod help;
 mod ik;
+mod lesson;
 mod motion;
 mod panel;
 mod path;
@@ -24,6 +25,7 @@ mod waypoints;
 pub use buttons::buttons;
 pub use compare::cards as compare_cards;
 pub use help::{INTRO, help_window};
+pub use lesson::lesson_window;
 pub use panel::Panel;
 pub use share::editor_window;
 pub use stability::UNSTABLE_WARNING_SHARE;
@@ -35,6 +37,7 @@ pub static REGISTRY: &[&dyn Panel] = &[
     &preset::EnginePanel,
     &preset::PresetPanel,
     &share::SharePanel,
+    &lesson::LessonPanel,
     &buttons::ButtonsPanel,
     &buttons::RatePanel,
     &separator::Separator,
@@ -76,6 +79,7 @@ mod tests {
             "Engine",
             "Preset",
             "Share",
+            "Lesson",
             "Reset / Pause / Step",
             "Playback",
         ];

@@ -1,0 +1,53 @@
+//! The lab's side of a teacher's lesson ([`crate::lesson`]): setting and
+//! leaving it, which panels and plots it leaves on screen.
+
+use crate::lab::{Effect, Lab};
+use crate::lesson::Lesson;
+
+impl Lab {
+    /// Sets the lesson (`None` leaves it); a lesson with a note opens the note.
+    ///
+    /// # Errors
+    /// `lesson.…: reason` ([`Lesson::check`]); nothing changes then.
+    pub fn set_lesson(&mut self, lesson: Option<Lesson>) -> Result<(), String> {
+        if let Some(lesson) = &lesson {
+            lesson.check()?;
+        }
+        if self.session.lesson == lesson {
+            return Ok(());
+        }
+        self.layout.lesson_note_open = lesson.as_ref().is_some_and(|l| !l.note.trim().is_empty());
+        self.session.lesson = lesson;
+        self.outbox.push(Effect::LinkChanged);
+        Ok(())
+    }
+
+    /// The lesson, if one runs.
+    #[must_use]
+    pub fn lesson(&self) -> Option<&Lesson> {
+        self.session.lesson.as_ref()
+    }
+
+    /// Whether the lesson hides the control panel titled `title`.
+    #[must_use]
+    pub fn lesson_hides(&self, title: &str) -> bool {
+        self.lesson().is_some_and(|l| l.hides(title))
+    }
+
+    /// Whether plot `name` ([`crate::lesson::PLOT_NAMES`]) shows: every plot
+    /// without a lesson pinning any of `names` (the engine's plots), else
+    /// only the pinned ones.
+    #[must_use]
+    pub fn plot_shown(&self, name: &str, names: &[&str]) -> bool {
+        match self.lesson() {
+            Some(lesson) if names.iter().any(|n| lesson.pins(n)) => lesson.pins(name),
+            _ => true,
+        }
+    }
+
+    /// Whether the lesson pins any plot (the plot area then always shows).
+    #[must_use]
+    pub fn lesson_pins_plots(&self) -> bool {
+        self.lesson().is_some_and(|l| !l.pin_plots.is_empty())
+    }
+}

@@ -1,0 +1,148 @@
+//! Lessons as links (issue 21 item 6): a teacher's note and a lesson view —
+//! control panels hidden and plots pinned — carried by a link (`lesson` in
+//! [`crate::link_state::LINK_KEYS`]). Opening such a link shows the note
+//! first, in a window over the lab; the hidden panels stay out of the
+//! controls, and the pinned plots are the ones the plot area shows, always
+//! shown, until the student leaves the lesson.
+//!
+//! # The `lesson` command and state
+//! `{"lesson": {"note": TEXT, "hide_panels": [TITLE, …], "pin_plots": [NAME, …]}}`
+//! sets a lesson (each key optional) and opens its note when it has one;
+//! `{"lesson": false}` leaves it. `TITLE` is a control panel's title as the
+//! panel shows it ([`hideable_panels`]); `NAME` one of [`PLOT_NAMES`].
+//! `state().lesson` is that object, or `null`.
+
+use serde::{Deserialize, Serialize};
+
+/// Longest note, characters.
+pub const MAX_NOTE_CHARS: usize = 2000;
+
+/// The plots a lesson can pin: the IK and PODA engines' effector errors and
+/// joint angles, the physics engine's lengths, ground force, trunk attitude
+/// and Figure 4's state.
+pub const PLOT_NAMES: [&str; 6] = ["errors", "joints", "lengths", "force", "attitude", "state"];
+
+/// The panel that shows the lesson and leaves it, never hidden.
+pub const LESSON_PANEL: &str = "Lesson";
+
+/// A teacher's note and lesson view.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+pub struct Lesson {
+    /// What the student reads first (plain text, at most 2000 characters).
+    #[serde(default)]
+    pub note: String,
+    /// Control panels to hide, by title.
+    #[serde(default)]
+    pub hide_panels: Vec<String>,
+    /// Plots to pin, by name ([`PLOT_NAMES`]).
+    #[serde(default)]
+    pub pin_plots: Vec<String>,
+}
+
+/// The titles of the control panels a lesson can hide (every panel but the
+/// separators and the lesson's own), top to bottom.
+#[must_use]
+pub fn hideable_panels() -> Vec<&'static str> {
+    let mut titles: Vec<&'static str> = crate::ui::panels::REGISTRY
+        .iter()
+        .map(|p| p.title())
+        .filter(|t| *t != "—" && *t != LESSON_PANEL)
+        .collect();
+    titles.dedup();
+    titles
+}
+
+impl Lesson {
+    /// Checks the note's length and every name.
+    ///
+    /// # Errors
+    /// `lesson.FIELD: reason`, naming the entry and the names allowed.
+    pub fn check(&self) -> Result<(), String> {
+        let chars = self.note.chars().count();
+        if chars > MAX_NOTE_CHARS {
+            return Err(format!(
+                "lesson.note: {chars} characters, at most {MAX_NOTE_CHARS}"
+            ));
+        }
+        let panels = hideable_panels();
+        for (i, title) in self.hide_panels.iter().enumerate() {
+            if !panels.contains(&title.as_str()) {
+                return Err(format!(
+                    "lesson.hide_panels[{i}]: no panel {title:?} to hide (panels: {})",
+                    panels.join(", ")
+                ));
+            }
+        }
+        for (i, name) in self.pin_plots.iter().enumerate() {
+            if !PLOT_NAMES.contains(&name.as_str()) {
+                return Err(format!(
+                    "lesson.pin_plots[{i}]: no plot {name:?} (plots: {})",
+                    PLOT_NAMES.join(", ")
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Whether the panel titled `title` is hidden.
+    #[must_use]
+    pub fn hides(&self, title: &str) -> bool {
+        self.hide_panels.iter().any(|t| t == title)
+    }
+
+    /// Whether the plot `name` is pinned.
+    #[must_use]
+    pub fn pins(&self, name: &str) -> bool {
+        self.pin_plots.iter().any(|p| p == name)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_are_checked_and_errors_name_the_entry() {
+        let ok = Lesson {
+            note: "Watch pinv's hands.".to_owned(),
+            hide_panels: vec!["Method".to_owned(), "Recording".to_owned()],
+            pin_plots: vec!["errors".to_owned()],
+        };
+        assert_eq!(ok.check(), Ok(()));
+        assert!(ok.hides("Method") && !ok.hides("Motion"));
+        assert!(ok.pins("errors") && !ok.pins("joints"));
+
+        let bad_panel = Lesson {
+            hide_panels: vec!["Method".to_owned(), "Warp drive".to_owned()],
+            ..Lesson::default()
+        };
+        let error = bad_panel.check().unwrap_err();
+        assert!(
+            error.starts_with("lesson.hide_panels[1]: no panel \"Warp drive\""),
+            "{error}"
+        );
+        assert!(error.contains("Method"), "{error}");
+        let own = Lesson {
+            hide_panels: vec![LESSON_PANEL.to_owned()],
+            ..Lesson::default()
+        };
+        assert!(own.check().is_err(), "the lesson's own panel stays");
+        let bad_plot = Lesson {
+            pin_plots: vec!["joy".to_owned()],
+            ..Lesson::default()
+        };
+        assert!(
+            bad_plot
+                .check()
+                .unwrap_err()
+                .starts_with("lesson.pin_plots[0]")
+        );
+        let long = Lesson {
+            note: "x".repeat(MAX_NOTE_CHARS + 1),
+            ..Lesson::default()
+        };
+        assert!(long.check().unwrap_err().starts_with("lesson.note"));
+    }
+}
