@@ -9,7 +9,7 @@
 //! `{"lesson": {"note": TEXT, "hide_panels": [TITLE, …], "pin_plots": [NAME, …]}}`
 //! sets a lesson (each key optional) and opens its note when it has one;
 //! `{"lesson": false}` leaves it. `TITLE` is a control panel's title as the
-//! panel shows it ([`hideable_panels`]); `NAME` one of [`PLOT_NAMES`].
+//! panel shows it (`ui::panels::hideable_titles`); `NAME` one of [`PLOT_NAMES`].
 //! `state().lesson` is that object, or `null`.
 
 use serde::{Deserialize, Serialize};
@@ -41,34 +41,21 @@ pub struct Lesson {
     pub pin_plots: Vec<String>,
 }
 
-/// The titles of the control panels a lesson can hide (every panel but the
-/// separators and the lesson's own), top to bottom.
-#[must_use]
-pub fn hideable_panels() -> Vec<&'static str> {
-    let mut titles: Vec<&'static str> = crate::ui::panels::REGISTRY
-        .iter()
-        .map(|p| p.title())
-        .filter(|t| *t != "—" && *t != LESSON_PANEL)
-        .collect();
-    titles.dedup();
-    titles
-}
-
 impl Lesson {
-    /// Checks the note's length and every name.
+    /// Checks the note's length and every name; `panels` are the titles a
+    /// lesson may hide.
     ///
     /// # Errors
     /// `lesson.FIELD: reason`, naming the entry and the names allowed.
-    pub fn check(&self) -> Result<(), String> {
+    pub fn check(&self, panels: &[&str]) -> Result<(), String> {
         let chars = self.note.chars().count();
         if chars > MAX_NOTE_CHARS {
             return Err(format!(
                 "lesson.note: {chars} characters, at most {MAX_NOTE_CHARS}"
             ));
         }
-        let panels = hideable_panels();
         for (i, title) in self.hide_panels.iter().enumerate() {
-            if !panels.contains(&title.as_str()) {
+            if !panels.contains(&title.as_str()) || title == LESSON_PANEL {
                 return Err(format!(
                     "lesson.hide_panels[{i}]: no panel {title:?} to hide (panels: {})",
                     panels.join(", ")
@@ -103,6 +90,8 @@ impl Lesson {
 mod tests {
     use super::*;
 
+    const PANELS: &[&str] = &["Method", "Motion", "Recording", LESSON_PANEL];
+
     #[test]
     fn names_are_checked_and_errors_name_the_entry() {
         let ok = Lesson {
@@ -110,7 +99,7 @@ mod tests {
             hide_panels: vec!["Method".to_owned(), "Recording".to_owned()],
             pin_plots: vec!["errors".to_owned()],
         };
-        assert_eq!(ok.check(), Ok(()));
+        assert_eq!(ok.check(PANELS), Ok(()));
         assert!(ok.hides("Method") && !ok.hides("Motion"));
         assert!(ok.pins("errors") && !ok.pins("joints"));
 
@@ -118,7 +107,7 @@ mod tests {
             hide_panels: vec!["Method".to_owned(), "Warp drive".to_owned()],
             ..Lesson::default()
         };
-        let error = bad_panel.check().err().unwrap_or_default();
+        let error = bad_panel.check(PANELS).err().unwrap_or_default();
         assert!(
             error.starts_with("lesson.hide_panels[1]: no panel \"Warp drive\""),
             "{error}"
@@ -128,14 +117,14 @@ mod tests {
             hide_panels: vec![LESSON_PANEL.to_owned()],
             ..Lesson::default()
         };
-        assert!(own.check().is_err(), "the lesson's own panel stays");
+        assert!(own.check(PANELS).is_err(), "the lesson's own panel stays");
         let bad_plot = Lesson {
             pin_plots: vec!["joy".to_owned()],
             ..Lesson::default()
         };
         assert!(
             bad_plot
-                .check()
+                .check(PANELS)
                 .err()
                 .unwrap_or_default()
                 .starts_with("lesson.pin_plots[0]")
@@ -145,7 +134,7 @@ mod tests {
             ..Lesson::default()
         };
         assert!(
-            long.check()
+            long.check(PANELS)
                 .err()
                 .unwrap_or_default()
                 .starts_with("lesson.note")

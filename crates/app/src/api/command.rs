@@ -383,7 +383,7 @@ impl Lab {
             self.single_step();
         }
         if let Some(seconds) = c.step_back_s {
-            let seconds = range("step_back_s", seconds, 0.0, crate::lab::REWIND_S)?;
+            let seconds = range("step_back_s", seconds, 0.0, crate::lab::rewind::REWIND_S)?;
             let frames = (seconds / self.frame_seconds()).round() as u64;
             self.step_back(frames)?;
         }
@@ -437,10 +437,13 @@ impl Lab {
             self.layout.help_open = help;
         }
         if let Some(lesson) = &c.lesson {
-            self.set_lesson(match lesson {
-                super::off_or::OffOr::Off => None,
-                super::off_or::OffOr::On(lesson) => Some(lesson.clone()),
-            })?;
+            self.set_lesson(
+                match lesson {
+                    super::off_or::OffOr::Off => None,
+                    super::off_or::OffOr::On(lesson) => Some(lesson.clone()),
+                },
+                &crate::ui::panels::hideable_titles(),
+            )?;
         }
         if let Some(open) = c.lesson_note_open {
             self.layout.lesson_note_open = open && self.session.lesson.is_some();

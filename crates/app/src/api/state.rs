@@ -273,7 +273,7 @@ pub struct State {
     pub playback_rate: f64,
     /// The history scrubber: the frame shown, how far back one can go, and
     /// whether frames simulated again matched the stored poses.
-    pub rewind: crate::lab::RewindState,
+    pub rewind: crate::lab::rewind::RewindState,
     /// Frames since the last reset.
     pub frame: u64,
     /// Simulated time, seconds.

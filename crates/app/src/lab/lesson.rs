@@ -5,13 +5,14 @@ use crate::lab::{Effect, Lab};
 use crate::lesson::Lesson;
 
 impl Lab {
-    /// Sets the lesson (`None` leaves it); a lesson with a note opens the note.
+    /// Sets the lesson (`None` leaves it); a lesson with a note opens the
+    /// note. `panels` are the control panels' titles it may hide.
     ///
     /// # Errors
     /// `lesson.…: reason` ([`Lesson::check`]); nothing changes then.
-    pub fn set_lesson(&mut self, lesson: Option<Lesson>) -> Result<(), String> {
+    pub fn set_lesson(&mut self, lesson: Option<Lesson>, panels: &[&str]) -> Result<(), String> {
         if let Some(lesson) = &lesson {
-            lesson.check()?;
+            lesson.check(panels)?;
         }
         if self.session.lesson == lesson {
             return Ok(());

@@ -67,7 +67,7 @@ impl Lab {
         }
         panels::editor_window(&ui.ctx().clone(), self);
         panels::help_window(&ui.ctx().clone(), self);
-        panels::lesson_window(&ui.ctx().clone(), self);
+        panels::lesson::lesson_window(&ui.ctx().clone(), self);
         egui::CentralPanel::default().show(ui, |ui| {
             if let Some(notice) = self.session.notice.clone() {
                 ui.horizontal_wrapped(|ui| {

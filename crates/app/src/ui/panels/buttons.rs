@@ -1,6 +1,6 @@
 //! The Reset / Pause / Back / Step buttons (keys R, space, comma, period):
 //! in the side panel, or in the phone layout's bar above the drawer; the
-//! playback rate and the history scrubber ([`crate::lab::REWIND_S`] seconds).
+//! playback rate and the history scrubber ([`crate::lab::rewind::REWIND_S`] seconds).
 
 use super::panel::Panel;
 use crate::lab::Lab;

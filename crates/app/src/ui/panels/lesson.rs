@@ -5,7 +5,7 @@
 
 use super::panel::Panel;
 use crate::lab::Lab;
-use crate::lesson::{LESSON_PANEL, Lesson, PLOT_NAMES, hideable_panels};
+use crate::lesson::{LESSON_PANEL, Lesson, PLOT_NAMES};
 
 /// The "Lesson" panel.
 pub struct LessonPanel;
@@ -39,8 +39,8 @@ fn running(ui: &mut egui::Ui, lab: &mut Lab) {
             .on_hover_text("Show every panel and plot again")
             .clicked()
         {
-            // Leaving cannot fail.
-            let _ = lab.set_lesson(None);
+            // Leaving checks nothing and cannot fail.
+            let _ = lab.set_lesson(None, &[]);
         }
     });
 }
@@ -65,7 +65,7 @@ fn maker(ui: &mut egui::Ui, lab: &mut Lab) {
             );
             ui.label("Hide these panels:");
             ui.horizontal_wrapped(|ui| {
-                for title in hideable_panels() {
+                for title in super::hideable_titles() {
                     toggle(ui, &mut draft.hide_panels, title);
                 }
             });
@@ -83,7 +83,8 @@ fn maker(ui: &mut egui::Ui, lab: &mut Lab) {
                          hands the lesson out",
                     )
                     .clicked()
-                    && let Err(error) = lab.set_lesson(Some(draft.clone()))
+                    && let Err(error) =
+                        lab.set_lesson(Some(draft.clone()), &super::hideable_titles())
                 {
                     lab.report_error(error);
                 }

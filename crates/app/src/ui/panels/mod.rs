@@ -8,7 +8,7 @@ mod gait;
 mod ground_view;
 mod help;
 mod ik;
-mod lesson;
+pub(crate) mod lesson;
 mod motion;
 mod panel;
 mod path;
@@ -25,7 +25,6 @@ mod waypoints;
 pub use buttons::buttons;
 pub use compare::cards as compare_cards;
 pub use help::{INTRO, help_window};
-pub use lesson::lesson_window;
 pub use panel::Panel;
 pub use share::editor_window;
 pub use stability::UNSTABLE_WARNING_SHARE;
@@ -54,6 +53,19 @@ pub static REGISTRY: &[&dyn Panel] = &[
     &separator::Separator,
     &readout::ReadoutPanel,
 ];
+
+/// The titles of the control panels a lesson can hide (every panel but the
+/// separators and the lesson's own), top to bottom.
+#[must_use]
+pub fn hideable_titles() -> Vec<&'static str> {
+    let mut titles: Vec<&'static str> = REGISTRY
+        .iter()
+        .map(|p| p.title())
+        .filter(|t| *t != "—" && *t != crate::lesson::LESSON_PANEL)
+        .collect();
+    titles.dedup();
+    titles
+}
 
 #[cfg(test)]
 mod tests {
