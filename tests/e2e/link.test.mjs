@@ -1,7 +1,8 @@
 // Browser tests for full-state links and preset files (issue 6 items 2–3): "Copy link"
 // (window.gaitlab.link()) opened in a fresh browser context gives the same state() field by field;
 // broken links (flipped bytes, truncated, a 10 MB fragment) leave the app running with a message
-// and the default preset; a preset file set on the file input and one dropped on the canvas load.
+// and the default preset; a preset file set on the file input and one dropped on the canvas load;
+// a lesson link opens with its note and hidden panels; a target CSV dropped on the canvas is followed.
 // Run after ./build.sh: `cd tests/e2e && node --test --test-concurrency=1 link.test.mjs`.
 
 import { after, before, describe, it } from 'node:test';
@@ -228,6 +229,53 @@ describe('full-state links (WebGL2 path)', () => {
       assert.equal(s.editor.line, axisLine, 'the line of the bad axis');
       assert.equal(s.editor.open, true, 'the bad file opens in the editor');
       assert.equal(s.preset, 'ik-quadruped');
+      p.assertClean();
+    } finally {
+      await p.page.close().catch(() => {});
+    }
+  });
+
+  it('a target CSV dropped on the page is followed, alone and side by side', T, async () => {
+    const p = await loadApp(first, server.url);
+    try {
+      assert.equal((await state(p.page)).preset, 'human');
+      // Two seconds: the feet stepping in place, the hands swinging in front (world metres).
+      const rows = ['t,lf_x,lf_y,lf_z,rf_x,rf_y,rf_z,lh_x,lh_y,lh_z,rh_x,rh_y,rh_z'];
+      for (let k = 0; k <= 60; k++) {
+        const t = k / 30;
+        const s = Math.sin(2 * Math.PI * t);
+        rows.push([t, 0.1, 0.05 + 0.05 * Math.max(s, 0), 0, -0.1, 0.05 + 0.05 * Math.max(-s, 0), 0,
+          0.25, 1.0, 0.15 + 0.1 * s, -0.25, 1.0, 0.15 - 0.1 * s].join(','));
+      }
+      const csv = rows.join('\n');
+      await p.page.evaluate((text) => {
+        const transfer = new DataTransfer();
+        transfer.items.add(new File([text], 'steps.csv', { type: 'text/csv' }));
+        const canvas = document.getElementById('gaitlab-canvas');
+        for (const type of ['dragenter', 'dragover', 'drop']) {
+          canvas.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
+        }
+      }, csv);
+      await p.page.waitForFunction(() => JSON.parse(window.gaitlab.state()).track?.file === 'steps.csv',
+        null, { timeout: 30_000, polling: 100 });
+      let s = await state(p.page);
+      assert.deepEqual(s.track, { file: 'steps.csv', rows: 61, effectors: 4, duration_s: 2 });
+      assert.equal(s.last_error, null);
+      await p.page.waitForFunction(() => JSON.parse(window.gaitlab.state()).time_s > 1,
+        null, { timeout: 60_000, polling: 100 });
+      s = await state(p.page);
+      const errors = s.views[0].effectors.map((e) => e.error_m);
+      console.log(`# steps.csv followed at t = ${s.time_s.toFixed(2)} s: errors ${errors.map((e) => (e * 1e3).toFixed(1)).join(', ')} mm`);
+      assert.ok(errors.every((e) => Number.isFinite(e) && e < 0.05), `every target followed: ${errors}`);
+      assert.ok(s.layout.panels_shown.includes('Recorded targets'), s.layout.panels_shown.join(', '));
+      // Side by side on the same recording.
+      assert.equal(await command(p.page, { compare: { views: ['pinv', 'dls'] } }), 'ok');
+      await p.page.waitForFunction(() => JSON.parse(window.gaitlab.state()).compare.metrics[0].frame > 30,
+        null, { timeout: 60_000, polling: 100 });
+      s = await state(p.page);
+      assert.ok(s.compare.notice[0].includes('recording'), s.compare.notice[0]);
+      assert.equal(await command(p.page, { compare: false, track: false }), 'ok');
+      assert.equal((await state(p.page)).track, null);
       p.assertClean();
     } finally {
       await p.page.close().catch(() => {});

@@ -301,7 +301,10 @@ fn she_2006_as_written_opens_the_thesis_preset_with_the_four_methods() {
         panic!("comparing")
     };
     for view in compare.views() {
-        let params = view.driver().params();
+        let Some(thesis) = view.driver().thesis() else {
+            panic!("a thesis view")
+        };
+        let params = thesis.params();
         assert_eq!(params.posture_gain, 0.0, "no posture pull");
         assert_eq!(params.script.name(), "listing");
     }

@@ -9,7 +9,7 @@
 use gaitlab_core::Skeleton;
 use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
 use gaitlab_core::export::TargetTrack;
-use gaitlab_core::ik::Targets;
+use gaitlab_core::ik::{IkOptions, Method, Targets};
 use gaitlab_core::pose::Pose;
 use gaitlab_motion::{PodaDriver, ThesisDriver, TrackDriver};
 use gaitlab_physics::PhysicsDriver;
@@ -61,6 +61,51 @@ impl AnyDriver {
         match self {
             AnyDriver::Thesis(driver) => Some(driver),
             _ => None,
+        }
+    }
+
+    /// The recorded-target driver, when it follows a recording.
+    #[must_use]
+    pub fn track(&self) -> Option<&TrackDriver<TargetTrack>> {
+        match self {
+            AnyDriver::Track(driver) => Some(driver),
+            _ => None,
+        }
+    }
+
+    /// Whether the figure is posed by Jacobian IK toward targets of its own
+    /// (the thesis motions or a recording): the drivers whose IK method and
+    /// options a front end sets, and that an IK comparison can run.
+    #[must_use]
+    pub fn is_ik(&self) -> bool {
+        matches!(self, AnyDriver::Thesis(_) | AnyDriver::Track(_))
+    }
+
+    /// The IK options of an IK driver ([`AnyDriver::is_ik`]).
+    #[must_use]
+    pub fn ik_options(&self) -> Option<&IkOptions> {
+        match self {
+            AnyDriver::Thesis(driver) => Some(driver.options()),
+            AnyDriver::Track(driver) => Some(driver.options()),
+            _ => None,
+        }
+    }
+
+    /// Replaces an IK driver's options (others have none: nothing happens).
+    pub fn set_ik_options(&mut self, options: IkOptions) {
+        match self {
+            AnyDriver::Thesis(driver) => driver.set_options(options),
+            AnyDriver::Track(driver) => driver.set_options(options),
+            _ => {}
+        }
+    }
+
+    /// Switches an IK driver's method (others have none: nothing happens).
+    pub fn set_ik_method(&mut self, method: Method) {
+        match self {
+            AnyDriver::Thesis(driver) => driver.set_method(method),
+            AnyDriver::Track(driver) => driver.set_method(method),
+            _ => {}
         }
     }
 

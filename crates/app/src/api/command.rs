@@ -234,6 +234,9 @@ pub struct Command {
     pub lesson: Option<super::off_or::OffOr<crate::lesson::Lesson>>,
     /// Open or close the lesson's note.
     pub lesson_note_open: Option<bool>,
+    /// `false`: stop following the target recording (back to the creature's
+    /// own motion). Recordings load by file (Load file…, or a drop).
+    pub track: Option<bool>,
     /// View flags.
     #[serde(default, deserialize_with = "object")]
     pub views: Option<ViewsCommand>,
@@ -444,6 +447,16 @@ impl Lab {
                 },
                 &crate::ui::panels::hideable_titles(),
             )?;
+        }
+        match c.track {
+            Some(false) => self.stop_tracking()?,
+            Some(true) => {
+                return Err(
+                    "track: true is not a recording; load a target CSV with Load file… or drop one"
+                        .to_owned(),
+                );
+            }
+            None => {}
         }
         if let Some(open) = c.lesson_note_open {
             self.layout.lesson_note_open = open && self.session.lesson.is_some();

@@ -217,6 +217,20 @@ pub struct LayoutState {
     pub plots_button_pt: [f32; 4],
 }
 
+/// `track`: the target recording the figure follows.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct TrackState {
+    /// The file's name.
+    pub file: String,
+    /// Data rows.
+    pub rows: usize,
+    /// Effectors (one target each per row).
+    pub effectors: usize,
+    /// From the first row's time to the last's, seconds.
+    pub duration_s: f64,
+}
+
 /// `video`: the video recording.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -322,6 +336,8 @@ pub struct State {
     pub video: VideoState,
     /// The last error shown.
     pub last_error: Option<String>,
+    /// The target recording the figure follows, or null.
+    pub track: Option<TrackState>,
     /// The teacher's lesson: note, hidden panels, pinned plots; null without one.
     pub lesson: Option<crate::lesson::Lesson>,
     /// The note shown about the running preset: the deprecated values it
@@ -470,6 +486,12 @@ impl State {
             },
             last_error: lab.session.last_error.clone(),
             lesson: lab.session.lesson.clone(),
+            track: lab.tracking().map(|t| TrackState {
+                file: t.name.clone(),
+                rows: t.targets.row_count(),
+                effectors: t.targets.effector_count(),
+                duration_s: t.targets.end_time() - t.targets.start_time(),
+            }),
             notice: lab.session.notice.clone(),
         }
     }

@@ -23,8 +23,8 @@
 
 use gaitlab_core::driver::{Driver, IkMetrics};
 use gaitlab_core::ik::IkOptions;
+use gaitlab_engine::AnyDriver;
 use gaitlab_engine::metrics::EffectorMetrics;
-use gaitlab_motion::ThesisDriver;
 use gaitlab_motion::stretch::StretchOptions;
 use serde::Serialize;
 use serde_json::{Value, json};
@@ -52,20 +52,20 @@ pub use notice::{NoticeLine, notice};
 pub struct CompareView {
     /// The configuration.
     pub method: CompareMethod,
-    pub(crate) stage: Stage<ThesisDriver>,
+    pub(crate) stage: Stage<AnyDriver>,
     pub(crate) metrics: ViewMetrics,
 }
 
 impl CompareView {
     /// The view's driver.
     #[must_use]
-    pub fn driver(&self) -> &ThesisDriver {
+    pub fn driver(&self) -> &AnyDriver {
         &self.stage.driver
     }
 
     /// The view's stage.
     #[must_use]
-    pub fn stage(&self) -> &Stage<ThesisDriver> {
+    pub fn stage(&self) -> &Stage<AnyDriver> {
         &self.stage
     }
 
@@ -178,20 +178,25 @@ pub struct Comparison {
 }
 
 impl Comparison {
-    /// Builds one driver per view from `template` (the lab's thesis driver:
-    /// its skeleton, parameters, mode and origin), reset to time 0.
+    /// Builds one driver per view from `template` (the lab's IK driver: the
+    /// thesis driver with its skeleton, parameters, mode and origin, or a
+    /// recording's), reset to time 0. The singularity scenario stretches
+    /// the thesis targets; a recording's stay as recorded.
     #[must_use]
-    pub fn new(config: CompareConfig, template: &ThesisDriver, view: &ViewOptions) -> Self {
+    pub fn new(config: CompareConfig, template: &AnyDriver, view: &ViewOptions) -> Self {
         let views = config
             .views
             .iter()
             .zip(&config.options)
             .map(|(&method, options)| {
                 let mut driver = template.clone();
-                driver.set_options(options.clone());
-                driver.set_stretch(
-                    (config.scenario == CompareScenario::Singularity).then(StretchOptions::default),
-                );
+                driver.set_ik_options(options.clone());
+                if let Some(thesis) = driver.thesis_mut() {
+                    thesis.set_stretch(
+                        (config.scenario == CompareScenario::Singularity)
+                            .then(StretchOptions::default),
+                    );
+                }
                 driver.reset();
                 let mut view_state = CompareView {
                     method,
@@ -212,6 +217,14 @@ impl Comparison {
         };
         comparison.refresh_overlay();
         comparison
+    }
+
+    /// Whether the views follow a recording (not the thesis script).
+    #[must_use]
+    pub fn recorded(&self) -> bool {
+        self.views
+            .first()
+            .is_some_and(|v| v.driver().track().is_some())
     }
 
     /// The overlay's scene: every view's figure in its colour (empty while
@@ -251,7 +264,7 @@ impl Comparison {
             self.views.get_mut(index),
             self.config.options.get_mut(index),
         ) {
-            view.stage.driver.set_options(options.clone());
+            view.stage.driver.set_ik_options(options.clone());
             *slot = options;
         }
     }
@@ -287,7 +300,9 @@ impl Comparison {
     /// Sets the thesis motion of every view.
     pub fn set_mode(&mut self, mode: gaitlab_core::preset::thesis::ThesisMode) {
         for view in &mut self.views {
-            view.stage.driver.set_mode(mode);
+            if let Some(thesis) = view.stage.driver.thesis_mut() {
+                thesis.set_mode(mode);
+            }
         }
     }
 
@@ -344,7 +359,7 @@ impl Comparison {
                 "plot_error_max_mm".to_owned(),
                 json!(self.plot_error_max_mm()),
             );
-            let lines: Vec<String> = notice(self.config.scenario)
+            let lines: Vec<String> = notice(self.config.scenario, self.recorded())
                 .iter()
                 .map(|l| format!("{} ({})", l.text, l.source))
                 .collect();

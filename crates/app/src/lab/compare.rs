@@ -28,13 +28,13 @@ impl Lab {
     /// # Errors
     /// `compare: …` when the engine is not `ik`; nothing changes then.
     pub fn start_compare(&mut self, config: CompareConfig) -> Result<(), String> {
-        let Some(template) = self.stage.driver.thesis() else {
+        if !self.stage.driver.is_ik() {
             return Err(format!(
                 "compare: engine {} has no IK methods to compare (use the ik engine: human, she-2006 or ik-quadruped)",
                 self.session.engine_name()
             ));
-        };
-        let mut template = template.clone();
+        }
+        let mut template = self.stage.driver.clone();
         gaitlab_core::driver::Driver::reset(&mut template);
         self.compare = Some(Comparison::new(
             config,
@@ -126,7 +126,7 @@ impl Lab {
         let Some(config) = self.compare.take().map(|c| c.config) else {
             return;
         };
-        if self.stage.driver.thesis().is_none() {
+        if !self.stage.driver.is_ik() {
             self.outbox.push(Effect::LinkChanged);
             return;
         }

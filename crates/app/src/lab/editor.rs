@@ -175,8 +175,8 @@ impl Lab {
             |n| n.to_string_lossy().into_owned(),
         );
         match file.bytes() {
-            // The error is shown by load_preset_file.
-            Ok(bytes) => drop(self.load_preset_file(&name, &bytes)),
+            // The error is shown by load_file.
+            Ok(bytes) => drop(self.load_file(&name, &bytes)),
             Err(error) => self.report_error(format!("file {name}: {error}")),
         }
     }

@@ -33,6 +33,7 @@ pub mod rewind;
 mod session;
 mod stage;
 mod take;
+mod track;
 mod video;
 
 pub use gait_shape::GaitShapeEdit;
@@ -242,6 +243,8 @@ impl Lab {
         self.stage = Stage::new(driver, History::default());
         self.session.creature = creature;
         self.session.custom_preset = custom;
+        // A recording belongs to its skeleton.
+        self.session.track = None;
         self.editor.preset_changed();
         // A take belongs to its skeleton.
         self.take.clear();
@@ -270,9 +273,7 @@ impl Lab {
     pub fn set_method(&mut self, method: Method) {
         self.session.settings.method = method;
         self.session.settings.ik.method = method;
-        if let Some(driver) = self.stage.driver.thesis_mut() {
-            driver.set_method(method);
-        }
+        self.stage.driver.set_ik_method(method);
         self.outbox.push(Effect::LinkChanged);
     }
 
@@ -296,9 +297,7 @@ impl Lab {
     pub fn apply_ik_options(&mut self) {
         let mut options = self.session.settings.ik.clone();
         options.method = self.session.settings.method;
-        if let Some(driver) = self.stage.driver.thesis_mut() {
-            driver.set_options(options);
-        }
+        self.stage.driver.set_ik_options(options);
     }
 
     /// Applies a new figure heading (restarts the motion facing that way).

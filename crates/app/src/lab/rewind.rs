@@ -19,7 +19,6 @@ use std::collections::VecDeque;
 use gaitlab_core::Pose;
 use gaitlab_core::driver::Driver;
 use gaitlab_engine::AnyDriver;
-use gaitlab_motion::ThesisDriver;
 use serde::Serialize;
 
 use super::Lab;
@@ -43,7 +42,7 @@ enum Snapshot {
         overlays: Overlays,
     },
     /// Each comparison view's driver, plot and figures.
-    Compare(Vec<(ThesisDriver, History, ViewMetrics)>),
+    Compare(Vec<(AnyDriver, History, ViewMetrics)>),
 }
 
 /// A keyframe: the state after `frame` frames.

@@ -23,6 +23,17 @@ pub struct Session {
     pub notice: Option<String>,
     /// The teacher's lesson the lab runs, if any ([`crate::lesson`]).
     pub lesson: Option<crate::lesson::Lesson>,
+    /// The recorded targets the figure follows instead of its own motion, if any.
+    pub track: Option<LoadedTrack>,
+}
+
+/// A target CSV the lab follows: its file name and its targets.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LoadedTrack {
+    /// The file's name, as picked or dropped.
+    pub name: String,
+    /// The recorded targets (one per effector per row).
+    pub targets: gaitlab_core::export::TargetTrack,
 }
 
 /// The bundled preset `name`.
@@ -52,11 +63,29 @@ fn default_creature() -> Creature {
 /// `settings.PATH: reason` for a bad setting, `preset NAME: PATH: reason` for
 /// a creature that cannot drive.
 pub fn driver_for(creature: &Creature, settings: &Settings) -> Result<AnyDriver, String> {
+    driver_with(creature, settings, None)
+}
+
+/// As [`driver_for`], following `track`'s recorded targets (or the
+/// creature's own motion when `None`).
+///
+/// # Errors
+/// As [`driver_for`]; `preset NAME: targets: …` when the recording does not
+/// fit the skeleton.
+pub fn driver_with(
+    creature: &Creature,
+    settings: &Settings,
+    track: Option<&gaitlab_core::export::TargetTrack>,
+) -> Result<AnyDriver, String> {
     let overrides = Overrides {
         mode: Some(settings.mode),
         method: Some(settings.method),
         ik: Some(settings.ik.clone()),
         heading_deg: Some(settings.heading_deg),
+        tracking: track.map(|targets| gaitlab_engine::Tracking {
+            targets: targets.clone(),
+            iterations_per_frame: None,
+        }),
         ..Overrides::default()
     };
     gaitlab_engine::driver_for(creature, &overrides).map_err(|e| {
@@ -105,6 +134,7 @@ impl Session {
             last_error,
             notice: None,
             lesson: None,
+            track: None,
         };
         (session, driver)
     }

@@ -1,8 +1,9 @@
-//! Preset files into the browser app (wasm32 only; issue 6 item 3): a hidden
+//! Preset files and target recordings (`.csv`, issue 21 item 5) into the
+//! browser app (wasm32 only; issue 6 item 3): a hidden
 //! `<input type=file id="gaitlab-preset-file">` that "Load file…" clicks, and
 //! files dropped on the canvas (eframe hands them over as handles whose bytes
 //! arrive asynchronously). Files land in an [`Inbox`] the app empties each
-//! frame into [`crate::Lab::load_preset_file`], which checks the size limit
+//! frame into [`crate::Lab::load_file`], which checks the size limit
 //! before parsing; a file over the limit is refused here before it is read.
 
 use std::cell::RefCell;
@@ -21,16 +22,28 @@ pub type Arrived = (String, Result<Vec<u8>, String>);
 /// Files read and waiting for the next frame.
 pub type Inbox = Rc<RefCell<Vec<Arrived>>>;
 
+/// The size limit for a file named `name`: a target recording's for a
+/// `.csv`, else a preset's; bytes and the limit's words.
+fn limit_for(name: &str) -> (usize, String) {
+    if name.to_ascii_lowercase().ends_with(".csv") {
+        let limit = gaitlab_core::export::MAX_TARGET_CSV_BYTES;
+        (limit, format!("{} MiB target-file", limit / (1024 * 1024)))
+    } else {
+        (
+            MAX_PRESET_BYTES,
+            format!("{} KiB preset", MAX_PRESET_BYTES / 1024),
+        )
+    }
+}
+
 fn too_big(name: &str, size: f64) -> Option<Arrived> {
-    #[expect(clippy::cast_precision_loss, reason = "256 KiB is exact in f64")]
-    let limit = MAX_PRESET_BYTES as f64;
+    let (limit, words) = limit_for(name);
+    #[expect(clippy::cast_precision_loss, reason = "64 MiB is exact in f64")]
+    let limit = limit as f64;
     (size > limit).then(|| {
         (
             name.to_owned(),
-            Err(format!(
-                "{size} bytes, more than the {} KiB preset limit",
-                MAX_PRESET_BYTES / 1024
-            )),
+            Err(format!("{size} bytes, more than the {words} limit")),
         )
     })
 }
@@ -70,9 +83,9 @@ pub fn install_input(
         .map_err(|_| JsValue::from_str("could not create a file input"))?;
     input.set_type("file");
     input.set_id(INPUT_ID);
-    input.set_accept(".json,application/json");
+    input.set_accept(".json,application/json,.csv,text/csv");
     input.set_attribute("style", "display:none")?;
-    input.set_attribute("aria-label", "Load a preset JSON file")?;
+    input.set_attribute("aria-label", "Load a preset JSON or target CSV file")?;
     let inbox = Rc::clone(inbox);
     let ctx = ctx.clone();
     let target = input.clone();

@@ -152,14 +152,14 @@ impl WebApp {
         self.lab.open_link(&query, &fragment);
     }
 
-    /// Loads preset files that were picked or dropped.
+    /// Loads preset and target files that were picked or dropped.
     fn load_files(&mut self, ctx: &egui::Context) {
         file::take_dropped(ctx, &self.files);
         let arrived: Vec<file::Arrived> = self.files.borrow_mut().drain(..).collect();
         for (name, bytes) in arrived {
             match bytes {
-                // load_preset_file shows its own problems.
-                Ok(bytes) => drop(self.lab.load_preset_file(&name, &bytes)),
+                // load_file shows its own problems.
+                Ok(bytes) => drop(self.lab.load_file(&name, &bytes)),
                 Err(error) => self.lab.report_error(format!("file {name}: {error}")),
             }
         }

@@ -23,7 +23,7 @@ impl Panel for SideBySidePanel {
     }
 
     fn shown_for(&self, lab: &Lab) -> bool {
-        lab.driver().thesis().is_some()
+        lab.driver().is_ik()
     }
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
@@ -102,18 +102,11 @@ fn controls(ui: &mut egui::Ui, lab: &mut Lab) {
                     config.options[i] = method.options(&base(lab));
                 }
             }
-            egui::ComboBox::from_label("Scenario")
-                .selected_text(scenario_label(config.scenario))
-                .show_ui(ui, |ui| {
-                    for s in [CompareScenario::Script, CompareScenario::Singularity] {
-                        ui.selectable_value(&mut config.scenario, s, scenario_label(s));
-                    }
-                })
-                .response
-                .on_hover_text(
-                    "Where the targets go: the thesis script of the chosen motion, or every \
-                     limb pulled to its full reach and beyond (a singular, stretched pose)",
-                );
+            if lab.tracking().is_some() {
+                ui.label("Targets: the recording (Recorded targets panel)");
+            } else {
+                scenario_combo(ui, &mut config);
+            }
             ui.horizontal(|ui| {
                 for (overlay, label, tip) in [
                     (false, "Side by side", "One 3-D view per method"),
@@ -140,6 +133,22 @@ fn controls(ui: &mut egui::Ui, lab: &mut Lab) {
                 lab.report_error(error);
             }
         });
+}
+
+/// The scenario menu: the thesis script or the singularity stretch.
+fn scenario_combo(ui: &mut egui::Ui, config: &mut CompareConfig) {
+    egui::ComboBox::from_label("Scenario")
+        .selected_text(scenario_label(config.scenario))
+        .show_ui(ui, |ui| {
+            for s in [CompareScenario::Script, CompareScenario::Singularity] {
+                ui.selectable_value(&mut config.scenario, s, scenario_label(s));
+            }
+        })
+        .response
+        .on_hover_text(
+            "Where the targets go: the thesis script of the chosen motion, or every \
+             limb pulled to its full reach and beyond (a singular, stretched pose)",
+        );
 }
 
 fn scenario_label(scenario: CompareScenario) -> &'static str {
@@ -181,7 +190,7 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
     let y_max_mm = compare.plot_error_max_mm();
     let mut edits = Vec::new();
     egui::ScrollArea::vertical().show(ui, |ui| {
-        notice_ui(ui, compare.config.scenario);
+        notice_ui(ui, compare.config.scenario, compare.recorded());
         ui.columns(count.max(1), |columns| {
             for (i, (column, view)) in columns.iter_mut().zip(compare.views()).enumerate() {
                 // Left-aligned, not justified: a wrapped formula keeps its
@@ -271,12 +280,12 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
 }
 
 /// The scenario's "what to notice" lines, each with its thesis section.
-fn notice_ui(ui: &mut egui::Ui, scenario: CompareScenario) {
+fn notice_ui(ui: &mut egui::Ui, scenario: CompareScenario, recorded: bool) {
     egui::CollapsingHeader::new("What to notice")
         .id_salt("compare-notice")
         .default_open(true)
         .show(ui, |ui| {
-            for line in notice(scenario) {
+            for line in notice(scenario, recorded) {
                 ui.horizontal_wrapped(|ui| {
                     ui.label(format!("• {}", line.text));
                     ui.weak(line.source);
@@ -287,7 +296,10 @@ fn notice_ui(ui: &mut egui::Ui, scenario: CompareScenario) {
 
 /// The view's posture pull (the lab's addition): its gain, or "off (thesis)".
 fn posture_pull(view: &crate::compare::CompareView) -> String {
-    let gain = view.driver().params().posture_gain;
+    let gain = view
+        .driver()
+        .thesis()
+        .map_or(0.0, |t| t.params().posture_gain);
     if gain > 0.0 {
         format!("{gain:.2} (lab)")
     } else {

@@ -15,7 +15,7 @@ impl Panel for MethodPanel {
     }
 
     fn shown_for(&self, lab: &Lab) -> bool {
-        lab.driver().thesis().is_some() && lab.comparison().is_none()
+        lab.driver().is_ik() && lab.comparison().is_none()
     }
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {

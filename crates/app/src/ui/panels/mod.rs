@@ -19,6 +19,7 @@ mod recording;
 mod separator;
 mod share;
 mod stability;
+mod track;
 mod view;
 mod waypoints;
 
@@ -40,6 +41,7 @@ pub static REGISTRY: &[&dyn Panel] = &[
     &buttons::ButtonsPanel,
     &buttons::RatePanel,
     &separator::Separator,
+    &track::TrackPanel,
     &physics::PhysicsPanel,
     &waypoints::WaypointsPanel,
     &gait::GaitPanel,

@@ -56,7 +56,10 @@ fn share(ui: &mut egui::Ui, lab: &mut Lab) {
         }
         if ui
             .button("Load file…")
-            .on_hover_text("Load a preset JSON file (or drop one onto the page); at most 256 KiB")
+            .on_hover_text(
+                "Load a preset JSON file (at most 256 KiB), or a target CSV to follow (header t, \
+                 then x,y,z per effector, as gaitlab track reads); or drop one onto the page",
+            )
             .clicked()
         {
             lab.request_file_pick();
@@ -143,7 +146,9 @@ pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
                     .clicked();
                 if ui
                     .button("Load file…")
-                    .on_hover_text("Load a preset JSON file (or drop one onto the page)")
+                    .on_hover_text(
+                        "Load a preset JSON file or a target CSV (or drop one onto the page)",
+                    )
                     .clicked()
                 {
                     lab.request_file_pick();
