@@ -1,6 +1,7 @@
 // Browser tests of the comfort features (issue 6 item 5): the phone layout (a 390 × 844 touch
 // screen: the 3-D view fills the width, a tap on "Controls" opens the drawer, the view keeps
-// drawing; a tap on "Plots" opens the live plots, issue 21 item 7) and the light/dark theme (the panels' pixels follow the setting). Touch orbit and
+// drawing; a tap on "Plots" opens the live plots, or side by side the comparison's cards, every
+// interactive widget at least 44 px, issue 21 item 7) and the light/dark theme (the panels' pixels follow the setting). Touch orbit and
 // pinch zoom are tested in features.test.mjs ("high-DPI and touch").
 
 import { after, before, describe, it } from 'node:test';
@@ -78,6 +79,12 @@ describe('phone layout (WebGL2, 390 × 844 touch screen)', () => {
       const view = pngStats(shot.png, { x0: 0.1, y0: 0.1, x1: 0.9, y1: 0.4 });
       assert.ok(view.stddev > 5, `the view above the drawer still draws (stddev ${view.stddev.toFixed(1)})`);
 
+      // Every interactive widget egui registered in the drawer is a 44-px touch target.
+      console.log(`# phone drawer: ${s.layout.touch_targets_checked} touch targets, `
+        + `${s.layout.small_touch_targets_pt.length} under 44 px`);
+      assert.ok(s.layout.touch_targets_checked >= 15, `${s.layout.touch_targets_checked} targets measured`);
+      assert.deepEqual(s.layout.small_touch_targets_pt, [], 'every target at least 44 × 44 px');
+
       // The app keeps working in this layout: a method change reaches the state.
       assert.equal(await command(page, { method: 'sdls' }), 'ok');
       assert.equal((await state(page)).method, 'sdls');
@@ -99,6 +106,22 @@ describe('phone layout (WebGL2, 390 × 844 touch screen)', () => {
       assert.ok(sheet.distinct > 8, `the drawer shows plots (${sheet.distinct} colours); see ${shot.file}`);
       s = await tapUntil(page, s.layout.controls_button_pt, (x) => x.layout.controls_open, 'the controls to open');
       assert.equal(s.layout.plots_open, false, 'opening the controls closes the plots');
+    });
+  });
+
+  it('shows the comparison cards in the plots drawer, every target 44 px', T, async () => {
+    await withApp(browser, async ({ page }) => {
+      assert.equal(await command(page, { compare: { views: ['transpose', 'pinv', 'dls', 'sdls'], scenario: 'singularity' } }), 'ok');
+      let s = await until(page, (x) => x.layout.narrow && x.layout.plots_button_pt[2] > 0, 'the phone layout');
+      s = await tapUntil(page, s.layout.plots_button_pt, (x) => x.layout.plots_open, 'the cards to open');
+      await sleep(1500);
+      s = await until(page, (x) => x.layout.touch_targets_checked > 10, 'the cards laid out');
+      const shot = await shootCanvas(page, 'phone-cards.png');
+      const sheet = pngStats(shot.png, { x0: 0.05, y0: 0.6, x1: 0.95, y1: 0.95 });
+      assert.ok(sheet.distinct > 8, `the drawer shows the cards (${sheet.distinct} colours); see ${shot.file}`);
+      console.log(`# phone cards: ${s.layout.touch_targets_checked} touch targets (sliders of 4 cards), `
+        + `${s.layout.small_touch_targets_pt.length} under 44 px`);
+      assert.deepEqual(s.layout.small_touch_targets_pt, [], 'every target at least 44 × 44 px');
     });
   });
 });

@@ -207,6 +207,20 @@ describe('high-DPI and touch (WebGL2, device pixel ratio 2, touch screen)', () =
       await touch('touchEnd', []);
       assert.ok(pinched.distance_m < orbited.distance_m * 0.9,
         `a pinch zooms in: ${orbited.distance_m.toFixed(2)} m → ${pinched.distance_m.toFixed(2)} m`);
+      // A long pinch stops with the eye outside the 1.8-m figure (issue 21 item 7): the camera
+      // stays at least the figure box's half diagonal (about 0.9 m or more) from its target.
+      for (let round = 0; round < 3; round++) {
+        await touch('touchStart', [[x0 - 10, y0], [x0 + 10, y0]]);
+        for (let k = 1; k <= 5; k++) {
+          await touch('touchMove', [[x0 - 10 - 30 * k, y0], [x0 + 10 + 30 * k, y0]]);
+          await settle();
+        }
+        await touch('touchEnd', []);
+        await settle();
+      }
+      const deep = (await state(page)).camera;
+      console.log(`# pinch: ${orbited.distance_m.toFixed(2)} m → ${pinched.distance_m.toFixed(2)} m → ${deep.distance_m.toFixed(2)} m after three long pinches`);
+      assert.ok(deep.distance_m >= 0.85, `the eye stops outside the figure: ${deep.distance_m.toFixed(2)} m`);
     });
   });
 });

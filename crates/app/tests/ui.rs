@@ -642,3 +642,82 @@ fn layout(harness: &Harness<'static, Lab>) -> serde_json::Value {
         serde_json::from_str(&harness.state().state_json()).unwrap_or_default();
     state["layout"].clone()
 }
+
+#[test]
+fn every_touch_target_on_a_phone_measures_at_least_44_points() {
+    for (preset, setup) in [
+        ("human", r#"{"narrow": true}"#),
+        (
+            "human",
+            r#"{"narrow": true, "compare": {"views": ["pinv", "dls", "sdls", "transpose"]}}"#,
+        ),
+        ("hexapod", r#"{"narrow": true}"#),
+        ("raibert-quadruped", r#"{"narrow": true}"#),
+    ] {
+        let mut lab = Lab::new(Settings::default());
+        if let Err(error) = lab.set_preset(preset) {
+            panic!("{error}");
+        }
+        lab.set_paused(true);
+        if let Err(error) = lab.command(setup) {
+            panic!("{error}");
+        }
+        let mut harness = Harness::builder()
+            .with_size(egui::vec2(390.0, 844.0))
+            .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab);
+        harness.run();
+        harness.get_by_label("Controls").click();
+        harness.run();
+        // Every section open, so its widgets are laid out and measured.
+        for header in [
+            "Side by side",
+            "Method",
+            "Motion",
+            "Speed",
+            "Target positions",
+            "View",
+            "Object transformation",
+            "Recording",
+            "Make a lesson",
+            "Gait",
+            "Path",
+            "Path (waypoints)",
+        ] {
+            let found = harness
+                .query_all_by_label(header)
+                .next()
+                .map(|node| node.click());
+            if found.is_some() {
+                harness.run();
+            }
+        }
+        harness.run();
+        let checked = layout(&harness);
+        println!(
+            "{preset} {setup}: controls drawer {} targets, small {}",
+            checked["touch_targets_checked"], checked["small_touch_targets_pt"]
+        );
+        assert!(
+            checked["touch_targets_checked"].as_u64().unwrap_or(0) >= 40,
+            "{checked}"
+        );
+        assert_eq!(
+            checked["small_touch_targets_pt"],
+            serde_json::json!([]),
+            "{preset} {setup}"
+        );
+        harness.get_by_label("Plots").click();
+        harness.run();
+        harness.run();
+        let checked = layout(&harness);
+        println!(
+            "{preset} {setup}: plots drawer {} targets, small {}",
+            checked["touch_targets_checked"], checked["small_touch_targets_pt"]
+        );
+        assert_eq!(
+            checked["small_touch_targets_pt"],
+            serde_json::json!([]),
+            "{preset} {setup}"
+        );
+    }
+}

@@ -213,6 +213,10 @@ pub struct LayoutState {
     /// The titles of the control panels drawn, top to bottom (the lesson's
     /// hidden ones left out).
     pub panels_shown: Vec<&'static str>,
+    /// The phone layout's interactive widgets measured in the last frame (0 wide).
+    pub touch_targets_checked: usize,
+    /// Those under 44 CSS px wide or tall, `[x, y, w, h]` (points).
+    pub small_touch_targets_pt: Vec<[f32; 4]>,
     /// The phone layout's plots button's rectangle, points.
     pub plots_button_pt: [f32; 4],
 }
@@ -474,6 +478,8 @@ impl State {
                 help_open: lab.layout.help_open,
                 lesson_note_open: lab.layout.lesson_note_open,
                 panels_shown: lab.layout.panels_shown.clone(),
+                touch_targets_checked: lab.layout.touch_targets_checked,
+                small_touch_targets_pt: lab.layout.small_touch_targets_pt.clone(),
                 plots_button_pt: lab.layout.plots_button_pt,
             },
             video: VideoState {

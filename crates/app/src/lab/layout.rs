@@ -17,6 +17,10 @@ pub struct Layout {
     pub lesson_note_open: bool,
     /// The titles of the control panels the last frame drew, top to bottom.
     pub panels_shown: Vec<&'static str>,
+    /// The phone layout's interactive widgets the last frame measured.
+    pub touch_targets_checked: usize,
+    /// Those under the 44-point touch size, points `[x, y, w, h]`.
+    pub small_touch_targets_pt: Vec<[f32; 4]>,
     /// Whether the phone layout's plots drawer is open (never with the
     /// controls drawer).
     pub plots_open: bool,
@@ -41,6 +45,8 @@ impl Default for Layout {
             help_open: false,
             lesson_note_open: false,
             panels_shown: Vec::new(),
+            touch_targets_checked: 0,
+            small_touch_targets_pt: Vec::new(),
             plots_open: false,
             plots_button_pt: [0.0; 4],
             controls_button_pt: [0.0; 4],

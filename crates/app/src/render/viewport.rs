@@ -160,6 +160,9 @@ fn steer(
     if camera.handle_input(response) {
         ui.ctx().request_repaint();
     }
+    if let Some(bounds) = scene.bounds() {
+        camera.keep_outside(&bounds);
+    }
     if response.dragged() {
         ui.ctx().set_cursor_icon(egui::CursorIcon::Grabbing);
     }

@@ -11,6 +11,7 @@ use crate::render::viewport;
 
 pub mod panels;
 pub(crate) mod plots;
+mod touch;
 
 /// Below this width (points, i.e. CSS pixels) the lab takes its phone layout:
 /// the 3-D view fills the screen under a slim bar, and the controls or the
@@ -18,7 +19,7 @@ pub(crate) mod plots;
 pub const NARROW_WIDTH_PT: f32 = 600.0;
 
 /// Height of one plot in the phone layout's plots drawer (points).
-const PHONE_PLOT_HEIGHT_PT: f32 = 170.0;
+const PHONE_PLOT_HEIGHT_PT: f32 = 230.0;
 
 /// Share of the screen height the phone layout's drawers take.
 const DRAWER_HEIGHT_FRACTION: f32 = 0.45;
@@ -57,7 +58,7 @@ impl Lab {
                 egui::Panel::bottom("gaitlab-compare")
                     .resizable(true)
                     .default_size(330.0)
-                    .show(ui, |ui| panels::compare_cards(ui, self));
+                    .show(ui, |ui| panels::compare_cards(ui, self, false));
             } else if self.session.settings.plots || self.lesson_pins_plots() {
                 egui::Panel::bottom("gaitlab-plots")
                     .resizable(true)
@@ -145,6 +146,13 @@ impl Lab {
                 rect.height() * ppp,
             ];
         });
+        if self.layout.narrow {
+            self.layout.touch_targets_checked =
+                touch::audit(ui.ctx(), &mut self.layout.small_touch_targets_pt);
+        } else {
+            self.layout.touch_targets_checked = 0;
+            self.layout.small_touch_targets_pt.clear();
+        }
         if !self.playback.paused {
             ui.ctx().request_repaint();
         }
@@ -190,7 +198,8 @@ impl Lab {
                     ui,
                     self.layout.plots_open,
                     "Plots",
-                    "Open or close the live plots over the lower part of the screen",
+                    "Open or close the live plots (side by side: each method's card) over the \
+                     lower part of the screen",
                 );
                 self.layout.plots_button_pt = rect;
                 if clicked {
@@ -205,7 +214,14 @@ impl Lab {
             egui::Panel::bottom("gaitlab-phone-plots")
                 .resizable(false)
                 .exact_size(height)
-                .show(ui, |ui| self.plots_stacked_ui(ui, PHONE_PLOT_HEIGHT_PT));
+                .show(ui, |ui| {
+                    if self.compare.is_some() {
+                        // The comparison's cards, one under another.
+                        panels::compare_cards(ui, self, true);
+                    } else {
+                        self.plots_stacked_ui(ui, PHONE_PLOT_HEIGHT_PT);
+                    }
+                });
             return;
         }
         if !self.layout.controls_open {
@@ -217,10 +233,13 @@ impl Lab {
             .show(ui, |ui| {
                 let spacing = ui.spacing_mut();
                 spacing.item_spacing.y = 8.0;
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    ui.set_width(ui.available_width());
-                    self.controls(ui);
-                });
+                // Scrolled by dragging the drawer: no thin bar to aim at.
+                egui::ScrollArea::vertical()
+                    .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysHidden)
+                    .show(ui, |ui| {
+                        ui.set_width(ui.available_width());
+                        self.controls(ui);
+                    });
             });
     }
 
@@ -334,16 +353,25 @@ pub const TOUCH_TARGET_PT: f32 = 44.0;
 /// least [`TOUCH_TARGET_PT`] tall (the whole context's style, so popups and
 /// windows too); the wide layout keeps egui's compact sizes.
 fn touch_spacing(ctx: &egui::Context, narrow: bool) {
-    let (interact_y, padding) = if narrow {
-        (TOUCH_TARGET_PT, egui::vec2(12.0, 12.0))
+    let (interact, padding) = if narrow {
+        (
+            egui::vec2(TOUCH_TARGET_PT, TOUCH_TARGET_PT),
+            egui::vec2(12.0, 12.0),
+        )
     } else {
         let desk = egui::style::Spacing::default();
-        (desk.interact_size.y, desk.button_padding)
+        (desk.interact_size, desk.button_padding)
     };
-    if ctx.global_style().spacing.interact_size.y != interact_y {
+    // Text that selects on a drag fights the drawer's scrolling on a
+    // phone (and would be a 15-point-tall target): labels are plain there.
+    let selectable = !narrow;
+    let style = ctx.global_style();
+    if style.spacing.interact_size != interact || style.interaction.selectable_labels != selectable
+    {
         ctx.all_styles_mut(|style| {
-            style.spacing.interact_size.y = interact_y;
+            style.spacing.interact_size = interact;
             style.spacing.button_padding = padding;
+            style.interaction.selectable_labels = selectable;
         });
     }
 }

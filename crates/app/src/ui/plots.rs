@@ -85,16 +85,19 @@ impl Lab {
     /// The plots one under another, each `height` points tall, in a
     /// scrolling sheet (the phone layout's plots drawer).
     pub(crate) fn plots_stacked_ui(&mut self, ui: &mut egui::Ui, height: f32) {
-        egui::ScrollArea::vertical().show(ui, |ui| {
-            let width = ui.available_width();
-            for k in 0..self.plot_names().len() {
-                if self.plot_shown(self.plot_names()[k], self.plot_names()) {
-                    ui.allocate_ui(egui::vec2(width, height), |ui| {
-                        ui.vertical(|ui| self.plot_cell(ui, k))
-                    });
+        // Scrolled by dragging the sheet: no thin bar to aim at on a phone.
+        egui::ScrollArea::vertical()
+            .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysHidden)
+            .show(ui, |ui| {
+                let width = ui.available_width();
+                for k in 0..self.plot_names().len() {
+                    if self.plot_shown(self.plot_names()[k], self.plot_names()) {
+                        ui.allocate_ui(egui::vec2(width, height), |ui| {
+                            ui.vertical(|ui| self.plot_cell(ui, k))
+                        });
+                    }
                 }
-            }
-        });
+            });
     }
 
     /// Plot `k` of [`Lab::plot_names`], filling `ui`.
@@ -269,6 +272,7 @@ fn series_plot(ui: &mut egui::Ui, title: &str, history: &History, spec: &PlotSpe
         .allow_drag(false)
         .allow_zoom(false)
         .allow_scroll(false)
+        .allow_axis_zoom_drag(false)
         .include_y(0.0)
         .include_y(spec.min_span)
         .x_axis_label("time (s)")

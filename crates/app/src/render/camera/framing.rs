@@ -15,6 +15,20 @@ pub const FRAME_FILL: f32 = 0.8;
 pub const FRAME_PAD_M: f32 = 0.06;
 
 impl Camera {
+    /// Keeps the eye out of the figure (issue 21 item 7: a pinch went inside
+    /// the mesh): the distance to the target stays at least the half
+    /// diagonal of `bounds`, grown by [`FRAME_PAD_M`], so with the target on
+    /// the figure the eye stays outside its box. Returns whether it moved.
+    pub fn keep_outside(&mut self, bounds: &Bounds) -> bool {
+        let half = (bounds.max - bounds.min).as_vec3() * 0.5 + Vec3::splat(FRAME_PAD_M);
+        let nearest = half.length().max(MIN_DISTANCE);
+        if nearest.is_finite() && self.distance < nearest {
+            self.distance = nearest;
+            return true;
+        }
+        false
+    }
+
     /// Frames `bounds` for a view of aspect ratio 1 (see [`Self::frame_for`]).
     pub fn frame(&mut self, bounds: &Bounds) {
         self.frame_for(bounds, 1.0);
@@ -132,5 +146,35 @@ mod tests {
             let p = ndc(&camera, 1.0, corner.as_vec3());
             assert!(p.x.abs() < 1.0 && p.y.abs() < 1.0, "{p} is off screen");
         }
+    }
+
+    #[test]
+    fn a_pinch_stops_outside_the_figure() {
+        let bounds = Bounds {
+            min: DVec3::new(-0.3, 0.0, -0.2),
+            max: DVec3::new(0.3, 1.8, 0.2),
+        };
+        let mut camera = Camera::default();
+        camera.frame(&bounds);
+        // Pinch far in: the eye stops at the box's half diagonal (padded) from the target.
+        camera.zoom(1e6);
+        assert!(camera.keep_outside(&bounds));
+        let half = (bounds.max - bounds.min).as_vec3() * 0.5 + Vec3::splat(FRAME_PAD_M);
+        assert!(
+            (camera.distance - half.length()).abs() < 1e-6,
+            "{}",
+            camera.distance
+        );
+        // With the target at the box's centre, the eye is outside the box.
+        let eye = camera.eye();
+        let inside = (eye - bounds.centre().as_vec3())
+            .abs()
+            .cmplt(half - Vec3::splat(FRAME_PAD_M));
+        assert!(!inside.all(), "eye {eye} inside the figure's box");
+        // Farther than that, nothing changes.
+        camera.zoom(0.5);
+        let far = camera.distance;
+        assert!(!camera.keep_outside(&bounds));
+        assert_eq!(camera.distance, far);
     }
 }

@@ -180,103 +180,135 @@ fn resize(config: &mut CompareConfig, count: usize, base: &gaitlab_core::ik::IkO
     }
 }
 
-/// One card per view, in columns: formula, behaviour, parameter sliders,
-/// figures and the live error plot.
-pub fn cards(ui: &mut egui::Ui, lab: &mut Lab) {
+/// One card per view — in columns, or `stacked` one under another (the
+/// phone's drawer) — under the scenario's notes and the views' jitter and
+/// oscillation on shared scales.
+pub fn cards(ui: &mut egui::Ui, lab: &mut Lab, stacked: bool) {
     let Some(compare) = lab.comparison_mut() else {
         return;
     };
     let count = compare.views().len();
     let y_max_mm = compare.plot_error_max_mm();
     let mut edits = Vec::new();
-    egui::ScrollArea::vertical().show(ui, |ui| {
-        notice_ui(ui, compare.config.scenario, compare.recorded());
-        ui.columns(count.max(1), |columns| {
-            for (i, (column, view)) in columns.iter_mut().zip(compare.views()).enumerate() {
-                // Left-aligned, not justified: a wrapped formula keeps its
-                // letters together.
-                column.with_layout(egui::Layout::top_down(egui::Align::LEFT), |ui| {
-                    let method = view.method;
-                    let colour = view_colour(i);
-                    ui.horizontal(|ui| {
-                        let (swatch, _) =
-                            ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
-                        ui.painter().rect_filled(swatch, 3.0, colour);
-                        ui.strong(format!("{} · {}", i + 1, method.label()))
-                            .on_hover_text(method.behaviour());
-                    });
-                    let points: Vec<[f64; 2]> = view
-                        .stage.history
-                        .points(0)
-                        .map(|[t, v]| [t, v * 1e3])
-                        .collect();
-                    // Every card on one y range, so the cards compare by eye: 0 to the
-                    // shared top, which no view's error exceeds.
-                    Plot::new(("compare-plot", i))
-                        .height(110.0)
-                        .allow_drag(false)
-                        .allow_zoom(false)
-                        .allow_scroll(false)
-                        .include_y(0.0)
-                        .include_y(y_max_mm)
-                        .x_axis_label("time (s)")
-                        .y_axis_label("max error (mm)")
-                        .y_grid_spacer(few_round_marks)
-                        .y_axis_formatter(|mark, _| tick_label(mark))
-                        .show(ui, |plot| {
-                            plot.line(
-                                Line::new("max error (mm)", PlotPoints::from(points))
-                                    .color(colour),
-                            );
-                        })
-                        .response
-                        .on_hover_text(
-                            "Largest effector error per frame, mm; every card's plot has the same \
-                             scale",
-                        );
-                    ui.monospace(method.formula())
-                        .on_hover_text("The update rule of one IK iteration");
-                    ui.label(method.behaviour());
-                    let mut options = compare.config.options[i].clone();
-                    let mut changed = false;
-                    for &parameter in method.parameters() {
-                        changed |= slider(ui, parameter, &mut options);
-                    }
-                    if changed {
+    // On a phone (stacked) the sheet scrolls by dragging: no thin bar to aim at.
+    let bar = if stacked {
+        egui::scroll_area::ScrollBarVisibility::AlwaysHidden
+    } else {
+        egui::scroll_area::ScrollBarVisibility::VisibleWhenNeeded
+    };
+    egui::ScrollArea::vertical()
+        .scroll_bar_visibility(bar)
+        .show(ui, |ui| {
+            notice_ui(ui, compare.config.scenario, compare.recorded());
+            super::compare_bars::bars(ui, compare, stacked);
+            if stacked {
+                for (i, view) in compare.views().iter().enumerate() {
+                    ui.separator();
+                    if let Some(options) = card(ui, i, view, &compare.config.options[i], y_max_mm) {
                         edits.push((i, options));
                     }
-                    let m = view.metrics();
-                    egui::Grid::new(("compare-table", i))
-                        .num_columns(2)
-                        .striped(true)
-                        .show(ui, |ui| {
-                            let rows = [
-                                ("mean error", format!("{:.2} mm", view.mean_error_m() * 1e3), "Mean effector-to-target distance since the reset, averaged over the effectors"),
-                                ("max error", format!("{:.2} mm", view.max_error_m() * 1e3), "Largest effector-to-target distance since the reset"),
-                                ("µs / iteration", format!("{:.1}", m.us_per_iteration()), "Wall time per IK iteration (forward kinematics, Jacobian, solve)"),
-                                ("jitter", format!("{:.2e} rad", m.jitter_rad()), "Joint-velocity jitter: mean |Δ²θ| over the joints and the last 4 s, radians per frame²"),
-                                ("limit hits", m.limit_hits.to_string(), "Times a joint ran into one of its limits since the reset"),
-                                ("posture pull", posture_pull(view), "The lab's addition, not in She 2006: before each frame's IK every joint moves this fraction of its joint gain toward its centre angle (Motion panel; the she-2006 preset has it off)"),
-                                ("joint limits", limit_rule(&compare.config.options[i]), "How a joint past its limit is handled: clamped to the limit (She 2006 §6.1.1.1), or clamped and the IK solved again without it (the lab's addition; Method panel, Limit passes)"),
-                                ("oscillation", optional(view.oscillation_hz(), 1.0, "Hz", 2), "Sign changes of each limb joint's per-frame Δθ (|Δθ| ≥ 1e-6 rad) per second, averaged over the limb's joints and the effectors since the reset (She 2006 §5.3's oscillation; a smooth swing at the gait's f Hz gives 2f)"),
-                                ("reachable", optional(view.reachable(), 100.0, "%", 0), "Share of frames whose target lay within the limb's length of its first joint, averaged over the effectors (She 2006 §5.3's reachable targets)"),
-                                ("error, reachable", optional(view.mean_error_reachable_m(), 1e3, "mm", 2), "Mean effector error over the frames its target was within reach, averaged over the effectors"),
-                                ("error, unreachable", optional(view.mean_error_unreachable_m(), 1e3, "mm", 2), "Mean effector error over the frames its target was out of reach, averaged over the effectors"),
-                            ];
-                            for (name, value, tip) in rows {
-                                ui.label(name).on_hover_text(tip);
-                                ui.label(value).on_hover_text(tip);
-                                ui.end_row();
-                            }
-                        });
-                    effector_table(ui, i, view);
-                });
+                }
+                return;
             }
+            ui.columns(count.max(1), |columns| {
+                for (i, (column, view)) in columns.iter_mut().zip(compare.views()).enumerate() {
+                    // Left-aligned, not justified: a wrapped formula keeps its
+                    // letters together.
+                    column.with_layout(egui::Layout::top_down(egui::Align::LEFT), |ui| {
+                        if let Some(options) =
+                            card(ui, i, view, &compare.config.options[i], y_max_mm)
+                        {
+                            edits.push((i, options));
+                        }
+                    });
+                }
+            });
         });
-    });
     for (i, options) in edits {
         compare.set_options(i, options);
     }
+}
+
+/// View `i`'s card: its method and colour, the error plot on the shared
+/// scale `y_max_mm`, formula, behaviour, parameter sliders (the edited
+/// options when one moved), figures and per-effector table.
+fn card(
+    ui: &mut egui::Ui,
+    i: usize,
+    view: &crate::compare::CompareView,
+    options: &gaitlab_core::ik::IkOptions,
+    y_max_mm: f64,
+) -> Option<gaitlab_core::ik::IkOptions> {
+    let method = view.method;
+    let colour = view_colour(i);
+    ui.horizontal(|ui| {
+        let (swatch, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
+        ui.painter().rect_filled(swatch, 3.0, colour);
+        ui.strong(format!("{} · {}", i + 1, method.label()))
+            .on_hover_text(method.behaviour());
+    });
+    let points: Vec<[f64; 2]> = view
+        .stage
+        .history
+        .points(0)
+        .map(|[t, v]| [t, v * 1e3])
+        .collect();
+    // Every card on one y range, so the cards compare by eye: 0 to the
+    // shared top, which no view's error exceeds.
+    Plot::new(("compare-plot", i))
+        .height(110.0)
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_scroll(false)
+        .allow_axis_zoom_drag(false)
+        .include_y(0.0)
+        .include_y(y_max_mm)
+        .x_axis_label("time (s)")
+        .y_axis_label("max error (mm)")
+        .y_grid_spacer(few_round_marks)
+        .y_axis_formatter(|mark, _| tick_label(mark))
+        .show(ui, |plot| {
+            plot.line(Line::new("max error (mm)", PlotPoints::from(points)).color(colour));
+        })
+        .response
+        .on_hover_text(
+            "Largest effector error per frame, mm; every card's plot has the same \
+             scale",
+        );
+    ui.monospace(method.formula())
+        .on_hover_text("The update rule of one IK iteration");
+    ui.label(method.behaviour());
+    let mut edited = options.clone();
+    let mut changed = false;
+    for &parameter in method.parameters() {
+        changed |= slider(ui, parameter, &mut edited);
+    }
+    let m = view.metrics();
+    egui::Grid::new(("compare-table", i))
+        .num_columns(2)
+        .striped(true)
+        .show(ui, |ui| {
+            let rows = [
+                ("mean error", format!("{:.2} mm", view.mean_error_m() * 1e3), "Mean effector-to-target distance since the reset, averaged over the effectors"),
+                ("max error", format!("{:.2} mm", view.max_error_m() * 1e3), "Largest effector-to-target distance since the reset"),
+                ("µs / iteration", format!("{:.1}", m.us_per_iteration()), "Wall time per IK iteration (forward kinematics, Jacobian, solve)"),
+                ("jitter", format!("{:.2e} rad", m.jitter_rad()), "Joint-velocity jitter: mean |Δ²θ| over the joints and the last 4 s, radians per frame²"),
+                ("limit hits", m.limit_hits.to_string(), "Times a joint ran into one of its limits since the reset"),
+                ("posture pull", posture_pull(view), "The lab's addition, not in She 2006: before each frame's IK every joint moves this fraction of its joint gain toward its centre angle (Motion panel; the she-2006 preset has it off)"),
+                ("joint limits", limit_rule(options), "How a joint past its limit is handled: clamped to the limit (She 2006 §6.1.1.1), or clamped and the IK solved again without it (the lab's addition; Method panel, Limit passes)"),
+                ("oscillation", optional(view.oscillation_hz(), 1.0, "Hz", 2), "Sign changes of each limb joint's per-frame Δθ (|Δθ| ≥ 1e-6 rad) per second, averaged over the limb's joints and the effectors since the reset (She 2006 §5.3's oscillation; a smooth swing at the gait's f Hz gives 2f)"),
+                ("reachable", optional(view.reachable(), 100.0, "%", 0), "Share of frames whose target lay within the limb's length of its first joint, averaged over the effectors (She 2006 §5.3's reachable targets)"),
+                ("error, reachable", optional(view.mean_error_reachable_m(), 1e3, "mm", 2), "Mean effector error over the frames its target was within reach, averaged over the effectors"),
+                ("error, unreachable", optional(view.mean_error_unreachable_m(), 1e3, "mm", 2), "Mean effector error over the frames its target was out of reach, averaged over the effectors"),
+            ];
+            for (name, value, tip) in rows {
+                ui.label(name).on_hover_text(tip);
+                ui.label(value).on_hover_text(tip);
+                ui.end_row();
+            }
+        });
+    effector_table(ui, i, view);
+    changed.then_some(edited)
 }
 
 /// The scenario's "what to notice" lines, each with its thesis section.
@@ -285,11 +317,15 @@ fn notice_ui(ui: &mut egui::Ui, scenario: CompareScenario, recorded: bool) {
         .id_salt("compare-notice")
         .default_open(true)
         .show(ui, |ui| {
+            let font = egui::TextStyle::Body.resolve(ui.style());
+            let (text, weak) = (ui.visuals().text_color(), ui.visuals().weak_text_color());
             for line in notice(scenario, recorded) {
-                ui.horizontal_wrapped(|ui| {
-                    ui.label(format!("• {}", line.text));
-                    ui.weak(line.source);
-                });
+                // One wrapped paragraph: the line, then its source in grey.
+                let mut job = egui::text::LayoutJob::default();
+                let plain = |color| egui::TextFormat::simple(font.clone(), color);
+                job.append(&format!("• {}  ", line.text), 0.0, plain(text));
+                job.append(line.source, 0.0, plain(weak));
+                ui.add(egui::Label::new(job).wrap());
             }
         });
 }

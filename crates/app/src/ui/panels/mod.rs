@@ -4,6 +4,7 @@
 
 mod buttons;
 mod compare;
+mod compare_bars;
 mod gait;
 mod ground_view;
 mod help;

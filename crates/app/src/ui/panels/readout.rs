@@ -33,7 +33,11 @@ fn readout(ui: &mut egui::Ui, lab: &Lab) {
         lab.playback.fps
     ));
     if lab.comparison().is_some() {
-        ui.label("Side by side: each view's errors are in its card below.");
+        ui.label(if lab.narrow() {
+            "Side by side: each view's errors are in its card (Plots)."
+        } else {
+            "Side by side: each view's errors are in its card below."
+        });
         return;
     }
     let sim_us_per_frame = lab.sim_us_per_frame();
