@@ -11,6 +11,10 @@ pub const PROBLEM_COLOR: egui::Color32 = egui::Color32::from_rgb(230, 90, 70);
 /// The colour of a warning (a value outside what was tested, an unstable walk).
 pub const WARNING_COLOR: egui::Color32 = egui::Color32::from_rgb(230, 140, 40);
 
+/// The colour of a range known to hold (a slider's tested band): Okabe and
+/// Ito's bluish green, apart from the warning's orange for colour-blind eyes.
+pub const TESTED_COLOR: egui::Color32 = egui::Color32::from_rgb(0, 158, 115);
+
 /// The colour scheme (issue 6 "Comfort": light/dark theme, following the
 /// system preference by default).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]

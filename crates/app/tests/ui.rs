@@ -590,7 +590,7 @@ fn a_recording_shows_a_red_dot_above_the_view() {
 fn the_speed_slider_shows_the_tested_speeds_and_warns_outside_them() {
     let mut harness = poda_harness("raibert-quadruped", 1400.0);
     harness.run();
-    harness.get_by_label("tested 1.0–2.3 m/s");
+    harness.get_by_label("tested 1.0–2.3 m/s (the green band)");
     assert!(harness.state_mut().command(r#"{"speed_mps": 3.6}"#).is_ok());
     harness.run();
     harness.get_by_label("Outside the tested 1.0–2.3 m/s: it may fall or miss the speed");

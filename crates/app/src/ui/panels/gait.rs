@@ -28,7 +28,10 @@ impl Panel for GaitPanel {
 }
 
 /// Height of one leg's row in the footfall diagram, points.
-const ROW_HEIGHT: f32 = 12.0;
+const ROW_HEIGHT: f32 = 18.0;
+
+/// Size of the footfall diagram's leg names, points.
+const LABEL_FONT_PT: f32 = 13.0;
 
 /// The gait panel (shown for PODA creatures).
 fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
@@ -290,7 +293,18 @@ fn footfall_diagram(ui: &mut egui::Ui, lab: &Lab) {
     };
     let gait = driver.gait();
     let names: Vec<&str> = driver.leg_names().collect();
-    let label_width = 80.0;
+    let font = egui::FontId::proportional(LABEL_FONT_PT);
+    // As wide as the longest name, so none is clipped.
+    let label_width = names
+        .iter()
+        .map(|name| {
+            ui.painter()
+                .layout_no_wrap((*name).to_owned(), font.clone(), egui::Color32::WHITE)
+                .size()
+                .x
+        })
+        .fold(40.0_f32, f32::max)
+        + 8.0;
     let width = ui.available_width().max(label_width + 40.0);
     let height = ROW_HEIGHT * names.len() as f32;
     let (rect, _) = ui.allocate_exact_size(egui::vec2(width, height), egui::Sense::hover());
@@ -310,7 +324,7 @@ fn footfall_diagram(ui: &mut egui::Ui, lab: &Lab) {
             egui::pos2(rect.left(), top + ROW_HEIGHT * 0.5),
             egui::Align2::LEFT_CENTER,
             *name,
-            egui::FontId::proportional(10.0),
+            font.clone(),
             text,
         );
         let row = egui::Rect::from_min_max(

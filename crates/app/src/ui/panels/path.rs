@@ -152,6 +152,7 @@ fn top_down(
     let painter = ui.painter_at(view.rect);
     let visuals = ui.visuals();
     painter.rect_filled(view.rect, 2.0, visuals.extreme_bg_color);
+    view.draw_scale(&painter, visuals);
     let scale = view.scale;
     let to_screen = |p: DVec2| view.to_screen(p);
     let line: Vec<egui::Pos2> = samples.iter().map(|&p| to_screen(p)).collect();
@@ -167,6 +168,13 @@ fn top_down(
         );
     }
     painter.circle_filled(to_screen(body), 4.0, visuals.warn_fg_color);
+    painter.text(
+        to_screen(body) + egui::vec2(7.0, -7.0),
+        egui::Align2::LEFT_BOTTOM,
+        "body",
+        egui::FontId::proportional(12.0),
+        visuals.warn_fg_color,
+    );
     let mut moved = false;
     for (k, point) in spec.points.iter_mut().enumerate() {
         let at = to_screen(DVec2::from(*point));

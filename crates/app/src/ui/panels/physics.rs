@@ -79,11 +79,13 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 })
                 .response
                 .on_hover_text("The gait the controllers' state machine runs");
-            if ui
-                .add(egui::Slider::new(&mut speed, -1.0..=6.0).text("Desired speed (m/s)"))
-                .on_hover_text("ẋ_d of eq. 3: foot placement about the neutral point regulates it")
-                .changed()
-            {
+            let response = ui
+                .add(egui::Slider::new(&mut speed, SPEED_RANGE_MPS).text("Desired speed (m/s)"))
+                .on_hover_text("ẋ_d of eq. 3: foot placement about the neutral point regulates it");
+            if let Some(band) = tested {
+                band_under_slider(ui, response.rect, SPEED_RANGE_MPS, band);
+            }
+            if response.changed() {
                 edits.push(("speed_mps", speed));
             }
             speed_range_line(ui, speed, tested);
@@ -235,6 +237,33 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     }
 }
 
+/// The desired-speed slider's range, m/s.
+const SPEED_RANGE_MPS: std::ops::RangeInclusive<f64> = -1.0..=6.0;
+
+/// A green band under a slider's rail (egui's: [`egui::style::Spacing::slider_width`]
+/// wide at the left of `slider`, handles inset by the rail height / 2.5)
+/// from `band.0` to `band.1` of `range`: the values known to hold.
+fn band_under_slider(
+    ui: &egui::Ui,
+    slider: egui::Rect,
+    range: std::ops::RangeInclusive<f64>,
+    band: (f64, f64),
+) {
+    let spacing = ui.spacing();
+    let inset = spacing.interact_size.y / 2.5;
+    let (left, right) = (
+        slider.left() + inset,
+        slider.left() + spacing.slider_width - inset,
+    );
+    let (lo, hi) = (*range.start(), *range.end());
+    let x = |v: f64| left + ((v.clamp(lo, hi) - lo) / (hi - lo)) as f32 * (right - left);
+    let y = slider.bottom() - 1.5;
+    ui.painter().line_segment(
+        [egui::pos2(x(band.0), y), egui::pos2(x(band.1), y)],
+        egui::Stroke::new(3.0, crate::theme::TESTED_COLOR),
+    );
+}
+
 /// The speeds the gait is tested at, under the speed slider, and a warning
 /// outside them.
 fn speed_range_line(ui: &mut egui::Ui, speed: f64, tested: Option<(f64, f64)>) {
@@ -244,7 +273,7 @@ fn speed_range_line(ui: &mut egui::Ui, speed: f64, tested: Option<(f64, f64)>) {
     let hover = "The 60-s sweep of docs/physics.md (\"Gaits: a minute at several speeds\") runs \
                  this gait at these speeds: no fall, and the mean speed within 10 %";
     if (low..=high).contains(&speed) {
-        ui.weak(format!("tested {low:.1}–{high:.1} m/s"))
+        ui.weak(format!("tested {low:.1}–{high:.1} m/s (the green band)"))
             .on_hover_text(hover);
     } else {
         ui.colored_label(

@@ -79,6 +79,7 @@ fn waypoints(ui: &mut egui::Ui, lab: &mut Lab) {
         let painter = ui.painter_at(view.rect);
         let visuals = ui.visuals();
         painter.rect_filled(view.rect, 2.0, visuals.extreme_bg_color);
+        view.draw_scale(&painter, visuals);
         let mut line: Vec<egui::Pos2> = vec![view.to_screen(body)];
         line.extend(
             points
