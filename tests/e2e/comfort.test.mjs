@@ -84,6 +84,14 @@ describe('phone layout (WebGL2, 390 × 844 touch screen)', () => {
         + `${s.layout.small_touch_targets_pt.length} under 44 px`);
       assert.ok(s.layout.touch_targets_checked >= 15, `${s.layout.touch_targets_checked} targets measured`);
       assert.deepEqual(s.layout.small_touch_targets_pt, [], 'every target at least 44 × 44 px');
+      // The help window too: fixed, no title bar, a full-size Close button.
+      assert.equal(await command(page, { help: true }), 'ok');
+      s = await until(page, (x) => x.layout.help_open && x.layout.touch_targets_checked > 0, 'the help window');
+      await sleep(300);
+      s = await state(page);
+      assertDrawn(await shootCanvas(page, 'phone-help.png'), 'phone help');
+      assert.deepEqual(s.layout.small_touch_targets_pt, [], 'help: every target at least 44 × 44 px');
+      assert.equal(await command(page, { help: false }), 'ok');
 
       // The app keeps working in this layout: a method change reaches the state.
       assert.equal(await command(page, { method: 'sdls' }), 'ok');

@@ -721,3 +721,45 @@ fn every_touch_target_on_a_phone_measures_at_least_44_points() {
         );
     }
 }
+
+#[test]
+fn the_windows_on_a_phone_have_only_full_size_targets_and_close() {
+    for (setup, title) in [
+        (r#"{"narrow": true, "help": true}"#, "Help"),
+        (r#"{"narrow": true, "editor_open": true}"#, "Preset editor"),
+        (
+            r#"{"narrow": true, "lesson": {"note": "Watch the hands."}}"#,
+            "Lesson",
+        ),
+    ] {
+        let mut lab = Lab::new(Settings::default());
+        lab.set_paused(true);
+        if let Err(error) = lab.command(setup) {
+            panic!("{error}");
+        }
+        let mut harness = Harness::builder()
+            .with_size(egui::vec2(390.0, 844.0))
+            .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab);
+        harness.run();
+        harness.run();
+        let checked = layout(&harness);
+        assert!(
+            checked["touch_targets_checked"].as_u64().unwrap_or(0) >= 5,
+            "{checked}"
+        );
+        assert_eq!(
+            checked["small_touch_targets_pt"],
+            serde_json::json!([]),
+            "{setup}"
+        );
+        // The title heads the content; Close closes it.
+        assert!(
+            harness.query_all_by_label(title).next().is_some(),
+            "{title}"
+        );
+        harness.get_by_label("Close").click();
+        harness.run();
+        harness.run();
+        assert!(harness.query_by_label("Close").is_none(), "{setup}: closed");
+    }
+}

@@ -12,6 +12,7 @@ use crate::render::viewport;
 pub mod panels;
 pub(crate) mod plots;
 mod touch;
+pub(crate) mod window;
 
 /// Below this width (points, i.e. CSS pixels) the lab takes its phone layout:
 /// the 3-D view fills the screen under a slim bar, and the controls or the

@@ -126,15 +126,22 @@ pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
     let mut undo = false;
     // Within the screen on a phone too.
     let screen = ctx.content_rect();
-    egui::Window::new("Preset editor")
-        .open(&mut open)
-        .default_size([
-            520f32.min(screen.width() - 16.0),
-            520f32.min(screen.height() * 0.8),
-        ])
-        .max_width(screen.width() - 16.0)
-        .vscroll(false)
-        .show(ctx, |ui| {
+    let narrow = lab.narrow();
+    crate::ui::window::show(
+        ctx,
+        "Preset editor",
+        narrow,
+        &mut open,
+        |window| {
+            window
+                .default_size([
+                    520f32.min(screen.width() - 16.0),
+                    520f32.min(screen.height() * 0.8),
+                ])
+                .max_width(screen.width() - 16.0)
+                .vscroll(false)
+        },
+        |ui| {
             ui.horizontal_wrapped(|ui| {
                 apply = ui
                     .button("Apply")
@@ -168,6 +175,7 @@ pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
             let text_height = (ui.available_height() - 56.0).max(120.0);
             let error_line = lab.editor.problem.as_ref().and_then(|p| p.line);
             egui::ScrollArea::both()
+                .scroll_bar_visibility(crate::ui::window::scroll_bars(narrow))
                 .max_height(text_height)
                 .show(ui, |ui| {
                     ui.horizontal_top(|ui| {
@@ -204,7 +212,8 @@ pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
                     }
                 });
             }
-        });
+        },
+    );
     if apply {
         // The message is kept in the editor; the creature stays on a bad edit.
         let _ = lab.editor_apply();
