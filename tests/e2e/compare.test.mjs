@@ -115,6 +115,16 @@ describe('side-by-side IK comparison (WebGL2)', () => {
           + `mean error ${(m.mean_error_m * 1e3).toFixed(1)} mm, max ${(m.max_error_m * 1e3).toFixed(1)} mm, `
           + `limit hits ${m.limit_hits}`);
       }
+      // The cards' error plots share one y-range: 0 to a round top above every view's largest
+      // error in the plots' 10-s window (here the whole run since the reset).
+      const largestMm = Math.max(...s.compare.metrics.map((m) => m.max_error_m * 1e3));
+      const top = s.compare.plot_error_max_mm;
+      console.log(`# cards' shared y-range: 0 to ${top} mm (largest error ${largestMm.toFixed(1)} mm)`);
+      // Past 600 frames the largest error may have left the plots' window: then only half of it.
+      const within = s.compare.metrics[0].frame <= 600 ? largestMm : 0.5 * largestMm;
+      assert.ok(top >= within && top <= 2.5 * Math.max(largestMm, 1), `shared top ${top} mm for ${largestMm} mm`);
+      const mantissa = top / 10 ** Math.floor(Math.log10(top));
+      assert.ok([1, 2, 5, 10].some((m) => Math.abs(mantissa - m) < 1e-9), `${top} is 1, 2 or 5 × 10ⁿ`);
       const pinv = s.compare.metrics.find((m) => m.method === 'pinv');
       for (const m of s.compare.metrics) {
         if (m.method !== 'pinv') {

@@ -47,6 +47,17 @@ fn run(lab: &mut Lab, seconds: f64) -> Vec<(String, f64, f64, u64)> {
         .collect()
 }
 
+/// The human with the four thesis methods in the singularity scenario.
+fn four_views_at_full_reach() -> Lab {
+    let mut lab = lab("human");
+    let command =
+        r#"{"compare":{"views":["transpose","pinv","dls","sdls"],"scenario":"singularity"}}"#;
+    if let Err(error) = lab.command(command) {
+        panic!("{error}");
+    }
+    lab
+}
+
 /// Asserts pinv's jitter is at least `factor` times every other view's.
 fn assert_pinv_worst(preset: &str, views: &str, factor: f64) {
     let mut lab = lab(preset);
@@ -363,12 +374,7 @@ fn a_preset_with_its_own_ik_options_runs_with_them_and_the_panel_keeps_its_own_o
 /// 1, 2 or 5 × 10ⁿ mm.
 #[test]
 fn the_cards_error_plots_share_one_y_range() {
-    let mut lab = lab("human");
-    let command =
-        r#"{"compare":{"views":["transpose","pinv","dls","sdls"],"scenario":"singularity"}}"#;
-    if let Err(error) = lab.command(command) {
-        panic!("{error}");
-    }
+    let mut lab = four_views_at_full_reach();
     run(&mut lab, 2.0);
     let state = state(&lab);
     let top = state["compare"]["plot_error_max_mm"]
@@ -404,12 +410,7 @@ fn the_cards_error_plots_share_one_y_range() {
 
 #[test]
 fn the_overlay_draws_every_view_in_one_scene_without_restarting_the_run() {
-    let mut lab = lab("human");
-    let command =
-        r#"{"compare":{"views":["transpose","pinv","dls","sdls"],"scenario":"singularity"}}"#;
-    if let Err(error) = lab.command(command) {
-        panic!("{error}");
-    }
+    let mut lab = four_views_at_full_reach();
     run(&mut lab, 1.0);
     let before = state(&lab);
     assert_eq!(before["compare"]["overlay"], false);

@@ -636,6 +636,21 @@ fn a_lesson_opens_with_its_note_and_leaves_out_its_hidden_panels() {
     harness.get_by_label("Joint angles");
 }
 
+/// A paused lab of `preset` on a 390 × 844 phone after the command `setup`.
+fn phone_harness(preset: &str, setup: &str) -> Harness<'static, Lab> {
+    let mut lab = Lab::new(Settings::default());
+    if let Err(error) = lab.set_preset(preset) {
+        panic!("{error}");
+    }
+    lab.set_paused(true);
+    if let Err(error) = lab.command(setup) {
+        panic!("{error}");
+    }
+    Harness::builder()
+        .with_size(egui::vec2(390.0, 844.0))
+        .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab)
+}
+
 /// `state().layout` of the harness's lab.
 fn layout(harness: &Harness<'static, Lab>) -> serde_json::Value {
     let state: serde_json::Value =
@@ -654,17 +669,7 @@ fn every_touch_target_on_a_phone_measures_at_least_44_points() {
         ("hexapod", r#"{"narrow": true}"#),
         ("raibert-quadruped", r#"{"narrow": true}"#),
     ] {
-        let mut lab = Lab::new(Settings::default());
-        if let Err(error) = lab.set_preset(preset) {
-            panic!("{error}");
-        }
-        lab.set_paused(true);
-        if let Err(error) = lab.command(setup) {
-            panic!("{error}");
-        }
-        let mut harness = Harness::builder()
-            .with_size(egui::vec2(390.0, 844.0))
-            .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab);
+        let mut harness = phone_harness(preset, setup);
         harness.run();
         harness.get_by_label("Controls").click();
         harness.run();
@@ -732,14 +737,7 @@ fn the_windows_on_a_phone_have_only_full_size_targets_and_close() {
             "Lesson",
         ),
     ] {
-        let mut lab = Lab::new(Settings::default());
-        lab.set_paused(true);
-        if let Err(error) = lab.command(setup) {
-            panic!("{error}");
-        }
-        let mut harness = Harness::builder()
-            .with_size(egui::vec2(390.0, 844.0))
-            .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab);
+        let mut harness = phone_harness("human", setup);
         harness.run();
         harness.run();
         let checked = layout(&harness);

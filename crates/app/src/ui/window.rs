@@ -16,21 +16,61 @@ pub(crate) fn scroll_bars(narrow: bool) -> egui::scroll_area::ScrollBarVisibilit
     }
 }
 
-/// Shows the window `title` while `open`; `wide` sets up the wide screen's
-/// window (size, place), `contents` fills it. Closing clears `open`.
+/// How a window sits on a wide screen, and whether its content scrolls.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Placement {
+    /// Width to start at, points (at most the screen's less 16).
+    pub width_pt: f32,
+    /// Height to start at, points (`None`: as tall as the content).
+    pub height_pt: Option<f32>,
+    /// Tallest share of the screen it may take.
+    pub height_share: f32,
+    /// Whether it opens in the middle of the screen (else egui's place).
+    pub centred: bool,
+    /// Whether its content scrolls vertically (in a scroll area of its own).
+    pub scrolls: bool,
+}
+
+/// Shows the window `title` while `open`, placed as `placement` says on a
+/// wide screen; `contents` fills it. Closing clears `open`.
 pub(crate) fn show(
     ctx: &egui::Context,
     title: &'static str,
     narrow: bool,
     open: &mut bool,
-    wide: impl for<'w> FnOnce(egui::Window<'w>) -> egui::Window<'w>,
+    placement: Placement,
     contents: impl FnOnce(&mut egui::Ui),
 ) {
+    let screen = ctx.content_rect();
+    let body = |ui: &mut egui::Ui| {
+        if placement.scrolls {
+            egui::ScrollArea::vertical()
+                .scroll_bar_visibility(scroll_bars(narrow))
+                .show(ui, contents);
+        } else {
+            contents(ui);
+        }
+    };
     if !narrow {
-        wide(egui::Window::new(title).open(open)).show(ctx, contents);
+        let mut window = egui::Window::new(title)
+            .open(open)
+            .collapsible(false)
+            .default_width(placement.width_pt.min(screen.width() - 16.0))
+            .max_width(screen.width() - 16.0)
+            .max_height(screen.height() * placement.height_share)
+            .vscroll(false);
+        if let Some(height) = placement.height_pt {
+            window = window.default_height(height.min(screen.height() * placement.height_share));
+        }
+        if placement.centred {
+            window = window
+                .pivot(egui::Align2::CENTER_CENTER)
+                .default_pos(screen.center())
+                .constrain(true);
+        }
+        window.show(ctx, body);
         return;
     }
-    let screen = ctx.content_rect();
     egui::Window::new(title)
         .title_bar(false)
         .resizable(false)
@@ -50,6 +90,6 @@ pub(crate) fn show(
                 });
             });
             ui.separator();
-            contents(ui);
+            body(ui);
         });
 }

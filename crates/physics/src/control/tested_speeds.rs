@@ -1,8 +1,10 @@
 //! The desired speeds each gait of the bundled presets is tested at (the
 //! issue's three speeds per gait; docs/physics.md, "Gaits: a minute at several speeds",
 //! `tools/physics_speed_sweep.py`): 60 s at each, with the presets' own lab
-//! additions, no fall and the mean speed within 10 %. The app shows the range
-//! beside the speed slider and warns outside it (issue 21 item 3).
+//! additions, no fall and the mean speed within 10 %; and the dynamic scales L
+//! (Table 1) each holds at the middle of those speeds, by the same test
+//! (`tools/physics_band_sweep.py`). The app draws both ranges as bands under
+//! their sliders and warns outside the speeds (issue 21 item 3).
 
 use crate::creatures::Species;
 
@@ -18,6 +20,19 @@ pub fn tested_speeds_mps(species: Species, gait: &str) -> Option<(f64, f64)> {
         (Species::Kangaroo, "hop") => Some((2.0, 5.0)),
         _ => None,
     }
+}
+
+/// The dynamic scales L the band sweep finds a gait holding at the middle
+/// of its tested speeds, 60 s, no fall, the mean speed within 10 % (of L =
+/// 0.25, 0.5, 1, 2, 4); `None` for a gait the model does not have. The trot
+/// falls at L = 4.
+#[must_use]
+pub fn tested_scales(species: Species, gait: &str) -> Option<(f64, f64)> {
+    tested_speeds_mps(species, gait)?;
+    Some(match (species, gait) {
+        (Species::Quadruped, "trot") => (0.25, 2.0),
+        _ => (0.25, 4.0),
+    })
 }
 
 #[cfg(test)]

@@ -104,59 +104,45 @@ pub fn help_window(ctx: &egui::Context, lab: &mut Lab) {
         return;
     }
     let mut open = true;
-    let screen = ctx.content_rect();
-    let narrow = lab.narrow();
     // Over the 3-D view, clear of the controls and their Help button.
-    crate::ui::window::show(
-        ctx,
-        "Help",
-        narrow,
-        &mut open,
-        |window| {
-            window
-                .pivot(egui::Align2::CENTER_CENTER)
-                .default_pos(screen.center())
-                .default_width(440f32.min(screen.width() - 16.0))
-                .max_width(screen.width() - 16.0)
-                .constrain(true)
-                .max_height(screen.height() * 0.85)
-        },
-        |ui| {
-            egui::ScrollArea::vertical()
-                .scroll_bar_visibility(crate::ui::window::scroll_bars(narrow))
-                .show(ui, |ui| {
-                    ui.label(INTRO);
-                    ui.add_space(6.0);
-                    ui.strong("The 3-D view");
-                    for (colour, meaning) in KEY {
-                        ui.horizontal(|ui| {
-                            swatch(ui, colour);
-                            ui.add(egui::Label::new(meaning).wrap());
-                        });
-                    }
-                    ui.add_space(6.0);
-                    ui.strong("Moving around");
-                    egui::Grid::new("gaitlab-help-controls").show(ui, |ui| {
-                        for (key, what) in CONTROLS {
-                            ui.monospace(key);
-                            ui.add(egui::Label::new(what).wrap());
-                            ui.end_row();
-                        }
-                    });
-                    ui.add_space(6.0);
-                    ui.strong("The engines");
-                    for (name, what) in ENGINES {
-                        ui.label(egui::RichText::new(name).strong());
-                        ui.label(what);
-                    }
-                    ui.add_space(6.0);
-                    ui.label(
-                        "Every control has a tooltip. Copy link shares the whole lab; the preset \
+    let placement = crate::ui::window::Placement {
+        width_pt: 440.0,
+        height_pt: None,
+        height_share: 0.85,
+        centred: true,
+        scrolls: true,
+    };
+    crate::ui::window::show(ctx, "Help", lab.narrow(), &mut open, placement, |ui| {
+        ui.label(INTRO);
+        ui.add_space(6.0);
+        ui.strong("The 3-D view");
+        for (colour, meaning) in KEY {
+            ui.horizontal(|ui| {
+                swatch(ui, colour);
+                ui.add(egui::Label::new(meaning).wrap());
+            });
+        }
+        ui.add_space(6.0);
+        ui.strong("Moving around");
+        egui::Grid::new("gaitlab-help-controls").show(ui, |ui| {
+            for (key, what) in CONTROLS {
+                ui.monospace(key);
+                ui.add(egui::Label::new(what).wrap());
+                ui.end_row();
+            }
+        });
+        ui.add_space(6.0);
+        ui.strong("The engines");
+        for (name, what) in ENGINES {
+            ui.label(egui::RichText::new(name).strong());
+            ui.label(what);
+        }
+        ui.add_space(6.0);
+        ui.label(
+            "Every control has a tooltip. Copy link shares the whole lab; the preset \
                      editor shows a creature's JSON.",
-                    );
-                });
-        },
-    );
+        );
+    });
     if !open {
         lab.layout.help_open = false;
     }

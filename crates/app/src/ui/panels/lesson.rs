@@ -115,36 +115,21 @@ pub fn lesson_window(ctx: &egui::Context, lab: &mut Lab) {
     };
     let mut open = true;
     let mut start = false;
-    let screen = ctx.content_rect();
-    let narrow = lab.narrow();
-    crate::ui::window::show(
-        ctx,
-        "Lesson",
-        narrow,
-        &mut open,
-        |window| {
-            window
-                .collapsible(false)
-                .pivot(egui::Align2::CENTER_CENTER)
-                .default_pos(screen.center())
-                .default_width(420f32.min(screen.width() - 16.0))
-                .max_width(screen.width() - 16.0)
-                .constrain(true)
-                .max_height(screen.height() * 0.8)
-        },
-        |ui| {
-            egui::ScrollArea::vertical()
-                .scroll_bar_visibility(crate::ui::window::scroll_bars(narrow))
-                .show(ui, |ui| {
-                    ui.add(egui::Label::new(note.as_str()).wrap());
-                    ui.add_space(8.0);
-                    start = ui
-                        .button("Start")
-                        .on_hover_text("Close the note (Lesson panel: Show the note)")
-                        .clicked();
-                });
-        },
-    );
+    let placement = crate::ui::window::Placement {
+        width_pt: 420.0,
+        height_pt: None,
+        height_share: 0.8,
+        centred: true,
+        scrolls: true,
+    };
+    crate::ui::window::show(ctx, "Lesson", lab.narrow(), &mut open, placement, |ui| {
+        ui.add(egui::Label::new(note.as_str()).wrap());
+        ui.add_space(8.0);
+        start = ui
+            .button("Start")
+            .on_hover_text("Close the note (Lesson panel: Show the note)")
+            .clicked();
+    });
     if !open || start {
         lab.layout.lesson_note_open = false;
     }

@@ -5,7 +5,7 @@
 
 use gaitlab_core::driver::Driver as _;
 use gaitlab_physics::control::gait_controller::gait_names;
-use gaitlab_physics::control::tested_speeds::tested_speeds_mps;
+use gaitlab_physics::control::tested_speeds::{tested_scales, tested_speeds_mps};
 use gaitlab_physics::engine::table2::compare;
 
 use super::panel::Panel;
@@ -36,6 +36,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     let current = driver.gait().to_owned();
     let names = gait_names(driver.sim().creature.species);
     let tested = tested_speeds_mps(driver.sim().creature.species, &current);
+    let tested_scale = tested_scales(driver.sim().creature.species, &current);
     let mut speed = driver.params().speed_mps;
     let mut hop = driver
         .hop_height_m()
@@ -83,7 +84,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 .add(egui::Slider::new(&mut speed, SPEED_RANGE_MPS).text("Desired speed (m/s)"))
                 .on_hover_text("ẋ_d of eq. 3: foot placement about the neutral point regulates it");
             if let Some(band) = tested {
-                band_under_slider(ui, response.rect, SPEED_RANGE_MPS, band);
+                band_under_slider(ui, response.rect, SPEED_RANGE_MPS, band, false);
             }
             if response.changed() {
                 edits.push(("speed_mps", speed));
@@ -98,14 +99,18 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
             }
             let response = ui
                 .add(
-                    egui::Slider::new(&mut scale, 0.25..=4.0)
+                    egui::Slider::new(&mut scale, SCALE_RANGE)
                         .logarithmic(true)
                         .text("Scale L"),
                 )
                 .on_hover_text(
                     "Table 1's dynamic scaling: lengths ×L, masses ×L³, speeds and times ×√L; \
-                     the creature restarts at the new size",
+                     the creature restarts at the new size. The green band: the scales this \
+                     gait was tested to hold at (tools/physics_band_sweep.py)",
                 );
+            if let Some(band) = tested_scale {
+                band_under_slider(ui, response.rect, SCALE_RANGE, band, true);
+            }
             if response.drag_stopped() || (response.changed() && !response.dragged()) {
                 new_scale = Some(scale);
             }
@@ -240,14 +245,19 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
 /// The desired-speed slider's range, m/s.
 const SPEED_RANGE_MPS: std::ops::RangeInclusive<f64> = -1.0..=6.0;
 
+/// The scale slider's range (logarithmic).
+const SCALE_RANGE: std::ops::RangeInclusive<f64> = 0.25..=4.0;
+
 /// A green band under a slider's rail (egui's: [`egui::style::Spacing::slider_width`]
 /// wide at the left of `slider`, handles inset by the rail height / 2.5)
-/// from `band.0` to `band.1` of `range`: the values known to hold.
+/// from `band.0` to `band.1` of `range` (`log`: a logarithmic slider): the
+/// values known to hold.
 fn band_under_slider(
     ui: &egui::Ui,
     slider: egui::Rect,
     range: std::ops::RangeInclusive<f64>,
     band: (f64, f64),
+    log: bool,
 ) {
     let spacing = ui.spacing();
     let inset = spacing.interact_size.y / 2.5;
@@ -256,7 +266,15 @@ fn band_under_slider(
         slider.left() + spacing.slider_width - inset,
     );
     let (lo, hi) = (*range.start(), *range.end());
-    let x = |v: f64| left + ((v.clamp(lo, hi) - lo) / (hi - lo)) as f32 * (right - left);
+    let at = |v: f64| {
+        let v = v.clamp(lo, hi);
+        if log {
+            (v.ln() - lo.ln()) / (hi.ln() - lo.ln())
+        } else {
+            (v - lo) / (hi - lo)
+        }
+    };
+    let x = |v: f64| left + at(v) as f32 * (right - left);
     let y = slider.bottom() - 1.5;
     ui.painter().line_segment(
         [egui::pos2(x(band.0), y), egui::pos2(x(band.1), y)],

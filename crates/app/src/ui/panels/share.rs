@@ -125,95 +125,86 @@ pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
     let mut revert = false;
     let mut undo = false;
     // Within the screen on a phone too.
-    let screen = ctx.content_rect();
     let narrow = lab.narrow();
-    crate::ui::window::show(
-        ctx,
-        "Preset editor",
-        narrow,
-        &mut open,
-        |window| {
-            window
-                .default_size([
-                    520f32.min(screen.width() - 16.0),
-                    520f32.min(screen.height() * 0.8),
-                ])
-                .max_width(screen.width() - 16.0)
-                .vscroll(false)
-        },
-        |ui| {
-            ui.horizontal_wrapped(|ui| {
-                apply = ui
-                    .button("Apply")
-                    .on_hover_text("Validate the JSON and run it (a bad preset changes nothing)")
-                    .clicked();
-                revert = ui
-                    .add_enabled(lab.editor.dirty(), egui::Button::new("Revert"))
-                    .on_hover_text("Put the running preset's JSON back")
-                    .clicked();
-                if ui
-                    .button("Load file…")
-                    .on_hover_text(
-                        "Load a preset JSON file or a target CSV (or drop one onto the page)",
+    let placement = crate::ui::window::Placement {
+        width_pt: 520.0,
+        height_pt: Some(520.0),
+        height_share: 0.8,
+        centred: false,
+        scrolls: false,
+    };
+    crate::ui::window::show(ctx, "Preset editor", narrow, &mut open, placement, |ui| {
+        ui.horizontal_wrapped(|ui| {
+            apply = ui
+                .button("Apply")
+                .on_hover_text("Validate the JSON and run it (a bad preset changes nothing)")
+                .clicked();
+            revert = ui
+                .add_enabled(lab.editor.dirty(), egui::Button::new("Revert"))
+                .on_hover_text("Put the running preset's JSON back")
+                .clicked();
+            if ui
+                .button("Load file…")
+                .on_hover_text(
+                    "Load a preset JSON file or a target CSV (or drop one onto the page)",
+                )
+                .clicked()
+            {
+                lab.request_file_pick();
+            }
+            if ui
+                .button("Download")
+                .on_hover_text("Save the running preset as a JSON file")
+                .clicked()
+            {
+                lab.download_preset();
+            }
+            if lab.editor.dirty() {
+                ui.label("edited, not applied");
+            }
+        });
+        // Room under the text for the message.
+        let text_height = (ui.available_height() - 56.0).max(120.0);
+        let error_line = lab.editor.problem.as_ref().and_then(|p| p.line);
+        egui::ScrollArea::both()
+            .scroll_bar_visibility(crate::ui::window::scroll_bars(narrow))
+            .max_height(text_height)
+            .show(ui, |ui| {
+                ui.horizontal_top(|ui| {
+                    line_numbers(ui, &lab.editor.text, error_line);
+                    let mut layouter = |ui: &egui::Ui, text: &dyn egui::TextBuffer, _: f32| {
+                        ui.fonts_mut(|f| f.layout_job(code_job(ui, text.as_str(), error_line)))
+                    };
+                    ui.add(
+                        egui::TextEdit::multiline(&mut lab.editor.text)
+                            .code_editor()
+                            .desired_width(f32::INFINITY)
+                            .desired_rows(24)
+                            .layouter(&mut layouter),
                     )
-                    .clicked()
+                    .on_hover_text("The preset JSON (DESIGN.md limits: 256 KiB, 512 joints)");
+                });
+            });
+        if let Some(problem) = &lab.editor.problem {
+            let at = problem
+                .line
+                .map(|line| format!(" (line {line})"))
+                .unwrap_or_default();
+            ui.colored_label(PROBLEM, format!("Invalid preset{at}: {}", problem.message));
+        } else if let Some(note) = &lab.editor.applied_note {
+            ui.horizontal(|ui| {
+                ui.colored_label(APPLIED, note);
+                if lab.editor.before_apply.is_some()
+                    && ui
+                        .button("Undo")
+                        .on_hover_text("Run the preset as it was before this Apply again")
+                        .clicked()
                 {
-                    lab.request_file_pick();
-                }
-                if ui
-                    .button("Download")
-                    .on_hover_text("Save the running preset as a JSON file")
-                    .clicked()
-                {
-                    lab.download_preset();
-                }
-                if lab.editor.dirty() {
-                    ui.label("edited, not applied");
+                    undo = true;
                 }
             });
-            // Room under the text for the message.
-            let text_height = (ui.available_height() - 56.0).max(120.0);
-            let error_line = lab.editor.problem.as_ref().and_then(|p| p.line);
-            egui::ScrollArea::both()
-                .scroll_bar_visibility(crate::ui::window::scroll_bars(narrow))
-                .max_height(text_height)
-                .show(ui, |ui| {
-                    ui.horizontal_top(|ui| {
-                        line_numbers(ui, &lab.editor.text, error_line);
-                        let mut layouter = |ui: &egui::Ui, text: &dyn egui::TextBuffer, _: f32| {
-                            ui.fonts_mut(|f| f.layout_job(code_job(ui, text.as_str(), error_line)))
-                        };
-                        ui.add(
-                            egui::TextEdit::multiline(&mut lab.editor.text)
-                                .code_editor()
-                                .desired_width(f32::INFINITY)
-                                .desired_rows(24)
-                                .layouter(&mut layouter),
-                        )
-                        .on_hover_text("The preset JSON (DESIGN.md limits: 256 KiB, 512 joints)");
-                    });
-                });
-            if let Some(problem) = &lab.editor.problem {
-                let at = problem
-                    .line
-                    .map(|line| format!(" (line {line})"))
-                    .unwrap_or_default();
-                ui.colored_label(PROBLEM, format!("Invalid preset{at}: {}", problem.message));
-            } else if let Some(note) = &lab.editor.applied_note {
-                ui.horizontal(|ui| {
-                    ui.colored_label(APPLIED, note);
-                    if lab.editor.before_apply.is_some()
-                        && ui
-                            .button("Undo")
-                            .on_hover_text("Run the preset as it was before this Apply again")
-                            .clicked()
-                    {
-                        undo = true;
-                    }
-                });
-            }
-        },
-    );
+        }
+    });
     if apply {
         // The message is kept in the editor; the creature stays on a bad edit.
         let _ = lab.editor_apply();
