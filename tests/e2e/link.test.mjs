@@ -34,6 +34,18 @@ function settled(s) {
   return out;
 }
 
+/** Drops a file named `name` holding `text` on the canvas, as a person dragging it from a folder. */
+async function dropFile(page, name, type, text) {
+  await page.evaluate(([fileName, mime, body]) => {
+    const transfer = new DataTransfer();
+    transfer.items.add(new File([body], fileName, { type: mime }));
+    const canvas = document.getElementById('gaitlab-canvas');
+    for (const kind of ['dragenter', 'dragover', 'drop']) {
+      canvas.dispatchEvent(new DragEvent(kind, { dataTransfer: transfer, bubbles: true, cancelable: true }));
+    }
+  }, [name, type, text]);
+}
+
 /** The app's last_error once it has one (links are read before the first frame). */
 async function lastError(page) {
   return (await state(page)).last_error ?? '';
@@ -201,14 +213,7 @@ describe('full-state links (WebGL2 path)', () => {
       assert.equal((await state(p.page)).custom_preset, true);
 
       const text = presetJson('ik-quadruped');
-      await p.page.evaluate((json) => {
-        const transfer = new DataTransfer();
-        transfer.items.add(new File([json], 'quadruped.json', { type: 'application/json' }));
-        const canvas = document.getElementById('gaitlab-canvas');
-        for (const type of ['dragenter', 'dragover', 'drop']) {
-          canvas.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
-        }
-      }, text);
+      await dropFile(p.page, 'quadruped.json', 'application/json', text);
       await p.page.waitForFunction(() => JSON.parse(window.gaitlab.state()).preset === 'ik-quadruped',
         null, { timeout: 30_000, polling: 100 });
 
@@ -248,14 +253,7 @@ describe('full-state links (WebGL2 path)', () => {
           0.25, 1.0, 0.15 + 0.1 * s, -0.25, 1.0, 0.15 - 0.1 * s].join(','));
       }
       const csv = rows.join('\n');
-      await p.page.evaluate((text) => {
-        const transfer = new DataTransfer();
-        transfer.items.add(new File([text], 'steps.csv', { type: 'text/csv' }));
-        const canvas = document.getElementById('gaitlab-canvas');
-        for (const type of ['dragenter', 'dragover', 'drop']) {
-          canvas.dispatchEvent(new DragEvent(type, { dataTransfer: transfer, bubbles: true, cancelable: true }));
-        }
-      }, csv);
+      await dropFile(p.page, 'steps.csv', 'text/csv', csv);
       await p.page.waitForFunction(() => JSON.parse(window.gaitlab.state()).track?.file === 'steps.csv',
         null, { timeout: 30_000, polling: 100 });
       let s = await state(p.page);
