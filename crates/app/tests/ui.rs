@@ -761,3 +761,19 @@ fn the_windows_on_a_phone_have_only_full_size_targets_and_close() {
         assert!(harness.query_by_label("Close").is_none(), "{setup}: closed");
     }
 }
+
+#[test]
+fn the_scale_slider_warns_outside_the_tested_scales() {
+    let mut harness = poda_harness("raibert-quadruped", 1400.0);
+    harness.run();
+    let warning = "Outside the tested L = 0.25–2: it may fall";
+    assert!(harness.query_by_label(warning).is_none(), "L = 1 is tested");
+    assert!(
+        harness
+            .state_mut()
+            .command(r#"{"physics_scale": 3}"#)
+            .is_ok()
+    );
+    harness.run();
+    harness.get_by_label(warning);
+}

@@ -114,6 +114,18 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
             if response.drag_stopped() || (response.changed() && !response.dragged()) {
                 new_scale = Some(scale);
             }
+            if let Some((low, high)) = tested_scale
+                && !(low..=high).contains(&scale)
+            {
+                ui.colored_label(
+                    crate::theme::WARNING_COLOR,
+                    format!("Outside the tested L = {low}–{high}: it may fall"),
+                )
+                .on_hover_text(
+                    "tools/physics_band_sweep.py runs this gait 60 s at L = 0.25, 0.5, 1, 2 and 4 \
+                     at the middle of its tested speeds; this scale was not among those that held",
+                );
+            }
             if current == "hop"
                 && ui
                     .button("Place a box 3 m ahead")
