@@ -178,16 +178,18 @@ impl Lab {
     /// lower [`DRAWER_HEIGHT_FRACTION`] of the screen with bigger touch targets.
     fn phone_layout(&mut self, ui: &mut egui::Ui) {
         egui::Panel::top("gaitlab-phone-bar").show(ui, |ui| {
+            // Six 44-point buttons in one row of a 390-point screen: less
+            // padding beside the words than the drawers' buttons have.
+            let spacing = ui.spacing_mut();
+            spacing.button_padding.x = 8.0;
+            spacing.item_spacing.x = 6.0;
             ui.horizontal_wrapped(|ui| {
-                let label = if self.layout.controls_open {
-                    "Hide controls"
-                } else {
-                    "Controls"
-                };
+                // Highlighted while open (a longer "Hide controls" pushed
+                // Step off a 390-px screen).
                 let (clicked, rect) = drawer_button(
                     ui,
                     self.layout.controls_open,
-                    label,
+                    "Controls",
                     "Open or close the control panels over the lower part of the screen",
                 );
                 self.layout.controls_button_pt = rect;

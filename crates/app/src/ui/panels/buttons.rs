@@ -18,48 +18,51 @@ impl Panel for ButtonsPanel {
     }
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
-        buttons(ui, lab);
+        ui.horizontal(|ui| buttons(ui, lab));
     }
 }
 
-/// Reset / Pause / Back / Step, with the keyboard shortcuts (R, space, comma, period).
+/// Reset / Pause / Back / Step, with the keyboard shortcuts (R, space,
+/// comma, period), added to `ui` as they are: the side panel puts them in a
+/// row, the phone bar in its wrapping row (a row of their own would not
+/// wrap, and Step went off a narrow screen).
 pub fn buttons(ui: &mut egui::Ui, lab: &mut Lab) {
-    ui.horizontal(|ui| {
-        if ui
-            .button("Reset")
-            .on_hover_text("Back to time 0 and the rest pose (key R)")
-            .clicked()
-        {
-            lab.reset();
-        }
-        let label = if lab.paused() { "Play" } else { "Pause" };
-        if ui
-            .button(label)
-            .on_hover_text("Pause or resume the animation (space bar)")
-            .clicked()
-        {
-            lab.set_paused(!lab.paused());
-        }
-        if ui
-            .button("Back")
-            .on_hover_text(
-                "Pause and go back one animation frame (key ,); the last 10 s are kept, and \
-                 stepping forward again replays them exactly",
-            )
-            .clicked()
-            && let Err(error) = lab.step_back(1)
-        {
-            lab.report_error(error);
-        }
-        if ui
-            .button("Step")
-            .on_hover_text("Pause and advance exactly one animation frame (key .)")
-            .clicked()
-        {
-            lab.set_paused(true);
-            lab.single_step();
-        }
-    });
+    if bar_button(ui, "Reset")
+        .on_hover_text("Back to time 0 and the rest pose (key R)")
+        .clicked()
+    {
+        lab.reset();
+    }
+    let label = if lab.paused() { "Play" } else { "Pause" };
+    if bar_button(ui, label)
+        .on_hover_text("Pause or resume the animation (space bar)")
+        .clicked()
+    {
+        lab.set_paused(!lab.paused());
+    }
+    if bar_button(ui, "Back")
+        .on_hover_text(
+            "Pause and go back one animation frame (key ,); the last 10 s are kept, and \
+             stepping forward again replays them exactly",
+        )
+        .clicked()
+        && let Err(error) = lab.step_back(1)
+    {
+        lab.report_error(error);
+    }
+    if bar_button(ui, "Step")
+        .on_hover_text("Pause and advance exactly one animation frame (key .)")
+        .clicked()
+    {
+        lab.set_paused(true);
+        lab.single_step();
+    }
+}
+
+/// A button at least [`crate::ui::TOUCH_TARGET_PT`] wide (short words such
+/// as Step stay a full touch target in the phone bar's tighter padding).
+fn bar_button(ui: &mut egui::Ui, text: &str) -> egui::Response {
+    ui.add(egui::Button::new(text).min_size(egui::vec2(crate::ui::TOUCH_TARGET_PT, 0.0)))
 }
 
 /// The playback rate slider, under the buttons (and in the phone drawer).
