@@ -65,7 +65,7 @@ mod tests {
                 egui::pos2(ui.ctx().content_rect().max.x - 20.0, 0.0),
                 egui::vec2(60.0, 60.0),
             );
-            ui.interact(beyond, egui::Id::new("beyond"), egui::Sense::click());
+            ui.interact(beyond, ui.scope_id().with("beyond"), egui::Sense::click());
             ui.add(egui::Label::new("words").selectable(false));
             // A region, not a target.
             ui.allocate_exact_size(egui::vec2(300.0, 300.0), egui::Sense::drag());
