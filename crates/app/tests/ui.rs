@@ -15,23 +15,26 @@ fn harness() -> Harness<'static, Lab> {
         .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab)
 }
 
+/// The IK engine's collapsible sections, top to bottom.
+const THESIS_SECTIONS: [&str; 7] = [
+    "Method",
+    "Motion",
+    "Speed",
+    "Target positions",
+    "View",
+    "Object transformation",
+    "Recording",
+];
+
 #[test]
 fn the_thesis_panels_are_there() {
     let mut harness = harness();
     harness.run();
-    for label in [
-        "Method",
-        "Motion",
-        "Speed",
-        "Target positions",
-        "View",
-        "Object transformation",
-        "Recording",
-        "Effector error (mm)",
-        "Joint angles",
-        "Reset",
-        "Play",
-    ] {
+    for label in
+        THESIS_SECTIONS
+            .into_iter()
+            .chain(["Effector error (mm)", "Joint angles", "Reset", "Play"])
+    {
         harness.get_by_label(label);
     }
 }
@@ -651,6 +654,22 @@ fn phone_harness(preset: &str, setup: &str) -> Harness<'static, Lab> {
         .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab)
 }
 
+/// Asserts the last frame's touch audit found no target under 44 points
+/// (or cut off) and returns how many it measured.
+fn no_small_targets(harness: &Harness<'static, Lab>, what: &str) -> u64 {
+    let checked = layout(harness);
+    println!(
+        "{what}: {} targets, small {}",
+        checked["touch_targets_checked"], checked["small_touch_targets_pt"]
+    );
+    assert_eq!(
+        checked["small_touch_targets_pt"],
+        serde_json::json!([]),
+        "{what}"
+    );
+    checked["touch_targets_checked"].as_u64().unwrap_or(0)
+}
+
 /// `state().layout` of the harness's lab.
 fn layout(harness: &Harness<'static, Lab>) -> serde_json::Value {
     let state: serde_json::Value =
@@ -674,20 +693,14 @@ fn every_touch_target_on_a_phone_measures_at_least_44_points() {
         harness.get_by_label("Controls").click();
         harness.run();
         // Every section open, so its widgets are laid out and measured.
-        for header in [
+        let others = [
             "Side by side",
-            "Method",
-            "Motion",
-            "Speed",
-            "Target positions",
-            "View",
-            "Object transformation",
-            "Recording",
             "Make a lesson",
             "Gait",
             "Path",
             "Path (waypoints)",
-        ] {
+        ];
+        for header in THESIS_SECTIONS.into_iter().chain(others) {
             let found = harness
                 .query_all_by_label(header)
                 .next()
@@ -697,33 +710,12 @@ fn every_touch_target_on_a_phone_measures_at_least_44_points() {
             }
         }
         harness.run();
-        let checked = layout(&harness);
-        println!(
-            "{preset} {setup}: controls drawer {} targets, small {}",
-            checked["touch_targets_checked"], checked["small_touch_targets_pt"]
-        );
-        assert!(
-            checked["touch_targets_checked"].as_u64().unwrap_or(0) >= 40,
-            "{checked}"
-        );
-        assert_eq!(
-            checked["small_touch_targets_pt"],
-            serde_json::json!([]),
-            "{preset} {setup}"
-        );
+        let targets = no_small_targets(&harness, &format!("{preset} {setup}: controls drawer"));
+        assert!(targets >= 40, "{targets} targets");
         harness.get_by_label("Plots").click();
         harness.run();
         harness.run();
-        let checked = layout(&harness);
-        println!(
-            "{preset} {setup}: plots drawer {} targets, small {}",
-            checked["touch_targets_checked"], checked["small_touch_targets_pt"]
-        );
-        assert_eq!(
-            checked["small_touch_targets_pt"],
-            serde_json::json!([]),
-            "{preset} {setup}"
-        );
+        no_small_targets(&harness, &format!("{preset} {setup}: plots drawer"));
     }
 }
 
@@ -740,16 +732,7 @@ fn the_windows_on_a_phone_have_only_full_size_targets_and_close() {
         let mut harness = phone_harness("human", setup);
         harness.run();
         harness.run();
-        let checked = layout(&harness);
-        assert!(
-            checked["touch_targets_checked"].as_u64().unwrap_or(0) >= 5,
-            "{checked}"
-        );
-        assert_eq!(
-            checked["small_touch_targets_pt"],
-            serde_json::json!([]),
-            "{setup}"
-        );
+        assert!(no_small_targets(&harness, setup) >= 5);
         // The title heads the content; Close closes it.
         assert!(
             harness.query_all_by_label(title).next().is_some(),
