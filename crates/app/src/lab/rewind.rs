@@ -257,7 +257,6 @@ impl Lab {
     /// Puts keyframe `k` back.
     fn rewind_restore(&mut self, k: usize) {
         let key = &self.rewind.keys[k];
-        self.stage.frame = key.frame;
         match (&key.snapshot, self.compare.as_mut()) {
             (Snapshot::Compare(views), Some(compare)) => {
                 for (view, (driver, history, metrics)) in compare.views.iter_mut().zip(views) {
@@ -266,6 +265,7 @@ impl Lab {
                     view.metrics.clone_from(metrics);
                     view.stage.frame = key.frame;
                 }
+                self.stage.frame = key.frame;
             }
             (
                 Snapshot::Single {
@@ -280,8 +280,10 @@ impl Lab {
                 self.stage.history.clone_from(history);
                 self.plots.joint_history.clone_from(joint_history);
                 self.overlays.clone_from(overlays);
+                self.stage.frame = key.frame;
             }
-            // The mode changed since (rewind_note restarts on the next frame).
+            // A keyframe of the other mode cannot be here (starting or
+            // leaving a comparison restarts the history); nothing to restore.
             _ => {}
         }
         self.rewind.matched = None;
