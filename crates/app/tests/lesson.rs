@@ -24,10 +24,7 @@ fn a_lesson_link_opens_with_its_note_hidden_panels_and_pinned_plots() {
     );
     assert_eq!(s["layout"]["lesson_note_open"], true);
     assert!(teacher.lesson_hides("Method") && !teacher.lesson_hides("Motion"));
-    assert!(teacher.plot_shown("errors", &["errors", "joints"]));
-    assert!(!teacher.plot_shown("joints", &["errors", "joints"]));
-    // Physics plots are not pinned by an IK lesson's pins: all show.
-    assert!(teacher.plot_shown("force", &["lengths", "force"]));
+    assert_eq!(teacher.plots_shown().collect::<Vec<_>>(), ["errors"]);
 
     let link = match teacher.share_link() {
         Ok(link) => link,
@@ -71,4 +68,23 @@ fn bad_lessons_are_refused_with_the_entry_named() {
         assert!(error.contains(want), "{command}: {error}");
         assert_eq!(state(&lab)["lesson"], Value::Null, "{command}");
     }
+}
+
+#[test]
+fn pins_of_another_engines_plots_hide_none() {
+    let mut lab = Lab::new(Settings::default());
+    for command in [r#"{"preset": "raibert-biped"}"#, LESSON] {
+        if let Err(error) = lab.command(command) {
+            panic!("{command}: {error}");
+        }
+    }
+    assert!(lab.lesson().is_some());
+    assert_eq!(
+        lab.plots_shown().collect::<Vec<_>>(),
+        ["lengths", "force", "attitude", "state"]
+    );
+    if let Err(error) = lab.command(r#"{"lesson": {"pin_plots": ["force"]}}"#) {
+        panic!("{error}");
+    }
+    assert_eq!(lab.plots_shown().collect::<Vec<_>>(), ["force"]);
 }

@@ -35,17 +35,6 @@ impl Lab {
         self.lesson().is_some_and(|l| l.hides(title))
     }
 
-    /// Whether plot `name` ([`crate::lesson::PLOT_NAMES`]) shows: every plot
-    /// without a lesson pinning any of `names` (the engine's plots), else
-    /// only the pinned ones.
-    #[must_use]
-    pub fn plot_shown(&self, name: &str, names: &[&str]) -> bool {
-        match self.lesson() {
-            Some(lesson) if names.iter().any(|n| lesson.pins(n)) => lesson.pins(name),
-            _ => true,
-        }
-    }
-
     /// Whether the lesson pins any plot (the plot area then always shows).
     #[must_use]
     pub fn lesson_pins_plots(&self) -> bool {

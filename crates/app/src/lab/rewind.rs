@@ -115,15 +115,22 @@ impl Rewind {
 impl Lab {
     /// The pose of what is shown (the figure, or every comparison view's) into the scratch.
     fn rewind_capture(&mut self) {
-        let scratch = &mut self.rewind.scratch;
+        let mut scratch = std::mem::take(&mut self.rewind.scratch);
         scratch.clear();
+        self.capture_into(&mut scratch);
+        self.rewind.scratch = scratch;
+    }
+
+    /// Appends the pose of what is shown (the figure, or every comparison
+    /// view's) to `out`: what the history stores for a frame.
+    fn capture_into(&self, out: &mut Vec<f64>) {
         match &self.compare {
             Some(compare) => {
                 for view in compare.views() {
-                    write_pose(scratch, view.driver().pose());
+                    write_pose(out, view.driver().pose());
                 }
             }
-            None => write_pose(scratch, self.stage.driver.pose()),
+            None => write_pose(out, self.stage.driver.pose()),
         }
     }
 
@@ -299,14 +306,7 @@ impl Lab {
     #[must_use]
     pub fn rewind_state(&self) -> RewindState {
         let mut scratch = Vec::with_capacity(self.rewind.width);
-        match &self.compare {
-            Some(compare) => {
-                for view in compare.views() {
-                    write_pose(&mut scratch, view.driver().pose());
-                }
-            }
-            None => write_pose(&mut scratch, self.stage.driver.pose()),
-        }
+        self.capture_into(&mut scratch);
         let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
         for byte in scratch.iter().flat_map(|x| x.to_bits().to_le_bytes()) {
             hash = (hash ^ u64::from(byte)).wrapping_mul(0x0100_0000_01b3);

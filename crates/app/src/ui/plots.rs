@@ -59,7 +59,7 @@ impl Lab {
         let cell = egui::vec2(width, ui.available_height());
         ui.horizontal(|ui| {
             for k in 0..self.plot_names().len() {
-                if self.plot_shown(self.plot_names()[k], self.plot_names()) {
+                if self.plot_shown(k) {
                     ui.allocate_ui(cell, |ui| ui.vertical(|ui| self.plot_cell(ui, k)));
                 }
             }
@@ -76,10 +76,25 @@ impl Lab {
         }
     }
 
+    /// Whether plot `k` of [`Lab::plot_names`] shows: every plot when the
+    /// lesson pins none of this engine's plots, else only the pinned ones.
+    fn plot_shown(&self, k: usize) -> bool {
+        let names = self.plot_names();
+        match self.lesson() {
+            Some(lesson) if names.iter().any(|n| lesson.pins(n)) => lesson.pins(names[k]),
+            _ => true,
+        }
+    }
+
+    /// The names of the plots shown ([`crate::lesson::PLOT_NAMES`]), in order.
+    pub fn plots_shown(&self) -> impl Iterator<Item = &'static str> + '_ {
+        let names = self.plot_names();
+        self.shown_plots().map(move |k| names[k])
+    }
+
     /// The indices of the plots shown (a lesson may pin some).
     fn shown_plots(&self) -> impl Iterator<Item = usize> + '_ {
-        let names = self.plot_names();
-        (0..names.len()).filter(move |&k| self.plot_shown(names[k], names))
+        (0..self.plot_names().len()).filter(move |&k| self.plot_shown(k))
     }
 
     /// The plots one under another, each `height` points tall, in a
@@ -91,7 +106,7 @@ impl Lab {
             .show(ui, |ui| {
                 let width = ui.available_width();
                 for k in 0..self.plot_names().len() {
-                    if self.plot_shown(self.plot_names()[k], self.plot_names()) {
+                    if self.plot_shown(k) {
                         ui.allocate_ui(egui::vec2(width, height), |ui| {
                             ui.vertical(|ui| self.plot_cell(ui, k))
                         });

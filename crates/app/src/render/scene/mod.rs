@@ -4,7 +4,7 @@
 //! leaves on the ground (blob shadows and foot contacts).
 //!
 //! [`Scene::fill`] rebuilds everything from a skeleton's forward kinematics
-//! once per frame. The lists live in one [`SceneFrame`] behind an [`Arc`]: the
+//! once per frame. The lists live in one [`SceneFrame`] behind an [`Arc`](std::sync::Arc): the
 //! renderer takes a cheap clone of the `Arc` for the frame it draws, and once
 //! that frame is on screen the next `fill` reuses the same allocations (no
 //! per-frame allocation after warm-up). Should a drawn frame still be held

@@ -13,18 +13,23 @@ const CHART_HEIGHT_PT: f32 = 120.0;
 /// Jitter below this shows as this (the log scale's floor), rad per frame².
 const JITTER_FLOOR: f64 = 1e-9;
 
+/// The most views a comparison has (one colour each).
+const MAX_VIEWS: usize = crate::compare::VIEW_COLOURS.len();
+
 /// The two charts, side by side, or one under the other when `stacked`.
 pub(super) fn bars(ui: &mut egui::Ui, compare: &Comparison, stacked: bool) {
+    // At most four views: fixed arrays, nothing allocated for them per frame.
     let views = compare.views();
-    let names: Vec<&'static str> = views.iter().map(|v| v.method.name()).collect();
-    let jitter: Vec<f64> = views
-        .iter()
-        .map(|v| v.metrics().jitter_rad().max(JITTER_FLOOR).log10())
-        .collect();
-    let oscillation: Vec<f64> = views
-        .iter()
-        .map(|v| v.oscillation_hz().unwrap_or(0.0))
-        .collect();
+    let n = views.len().min(MAX_VIEWS);
+    let mut names = [""; MAX_VIEWS];
+    let mut jitter = [0.0; MAX_VIEWS];
+    let mut oscillation = [0.0; MAX_VIEWS];
+    for (i, v) in views.iter().take(n).enumerate() {
+        names[i] = v.method.name();
+        jitter[i] = v.metrics().jitter_rad().max(JITTER_FLOOR).log10();
+        oscillation[i] = v.oscillation_hz().unwrap_or(0.0);
+    }
+    let (jitter, oscillation) = (&jitter[..n], &oscillation[..n]);
     let jitter_chart = |ui: &mut egui::Ui| {
         // Bars rise from a whole power of ten below the smallest.
         let base = jitter.iter().copied().fold(f64::INFINITY, f64::min).floor() - 1.0;
@@ -32,8 +37,8 @@ pub(super) fn bars(ui: &mut egui::Ui, compare: &Comparison, stacked: bool) {
             ui,
             "compare-jitter",
             "jitter (rad/frame², log)",
-            &names,
-            &jitter,
+            names,
+            jitter,
             base,
             true,
         )
@@ -47,8 +52,8 @@ pub(super) fn bars(ui: &mut egui::Ui, compare: &Comparison, stacked: bool) {
             ui,
             "compare-oscillation",
             "oscillation (Hz)",
-            &names,
-            &oscillation,
+            names,
+            oscillation,
             0.0,
             false,
         )
@@ -74,7 +79,7 @@ fn chart(
     ui: &mut egui::Ui,
     id: &str,
     y_label: &str,
-    names: &[&'static str],
+    names: [&'static str; MAX_VIEWS],
     values: &[f64],
     base: f64,
     log: bool,
@@ -96,7 +101,7 @@ fn chart(
         })
         .collect();
     let top = values.iter().copied().fold(base, f64::max);
-    let labels: Vec<&'static str> = names.to_vec();
+    let labels = &names[..values.len()];
     Plot::new(id)
         .height(CHART_HEIGHT_PT)
         .allow_drag(false)

@@ -109,10 +109,10 @@ pub fn lesson_window(ctx: &egui::Context, lab: &mut Lab) {
     if !lab.layout.lesson_note_open {
         return;
     }
-    let Some(note) = lab.lesson().map(|l| l.note.clone()) else {
+    if lab.lesson().is_none() {
         lab.layout.lesson_note_open = false;
         return;
-    };
+    }
     let mut open = true;
     let mut start = false;
     let placement = crate::ui::window::Placement {
@@ -122,8 +122,10 @@ pub fn lesson_window(ctx: &egui::Context, lab: &mut Lab) {
         centred: true,
         scrolls: true,
     };
-    crate::ui::window::show(ctx, "Lesson", lab.narrow(), &mut open, placement, |ui| {
-        ui.add(egui::Label::new(note.as_str()).wrap());
+    let narrow = lab.narrow();
+    crate::ui::window::show(ctx, "Lesson", narrow, &mut open, placement, |ui| {
+        let note = lab.lesson().map_or("", |l| l.note.as_str());
+        ui.add(egui::Label::new(note).wrap());
         ui.add_space(8.0);
         start = ui
             .button("Start")
