@@ -195,6 +195,8 @@ cmd_test() {
   cargo fmt --all -- --check
   echo "== cargo clippy (native, all targets, warnings are errors)"
   cargo clippy --workspace --all-targets --quiet -- -D warnings
+  echo "== cargo doc (broken intra-doc links are errors)"
+  RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
   echo "== cargo clippy (wasm32: the crates the browser app uses, the tuner it will run in Web Workers, and the app)"
   cargo clippy -p gaitlab-core -p gaitlab-motion -p gaitlab-physics -p gaitlab-engine -p gaitlab-tuner -p gaitlab-app --target "$WASM_TARGET" --quiet -- -D warnings
   echo "== import cycles between modules (tools/module_cycles.py)"

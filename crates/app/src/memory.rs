@@ -4,7 +4,7 @@
 //! - The WebAssembly module's linear memory: it only grows, so its size is the
 //!   high-water mark of the Rust heap plus the allocator's fragmentation.
 //! - The Rust heap itself: in the browser every allocation goes through
-//!   [`Counting`], which adds up the bytes live now and the most ever live, so a
+//!   `Counting`, which adds up the bytes live now and the most ever live, so a
 //!   leak (live bytes climbing) can be told from a one-off peak.
 //!
 //! Natively there is no linear memory and the system allocator is left alone

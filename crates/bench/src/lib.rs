@@ -4,7 +4,7 @@
 //! steps per second of each Raibert & Hodgins 1991 creature — run by
 //! `gaitlab bench` natively and by `window.gaitlab.bench('{"suite": true}')`
 //! in the browser, so the two reports have the same cases and fields; and the
-//! check of a run against a committed baseline ([`compare`]).
+//! check of a run against a committed baseline ([`compare()`]).
 //!
 //! Nothing here reads a clock: callers pass `clock_ms` (`Instant` natively,
 //! `performance.now()` in the browser).

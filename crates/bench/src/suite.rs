@@ -7,7 +7,7 @@
 //!
 //! The report is JSON with `ik`, `poda` and `physics` rows, plus `cases`: one
 //! name → median µs map (lower is better; physics as µs per step) that the
-//! regression check ([`crate::compare`]) reads.
+//! regression check ([`crate::compare()`]) reads.
 
 use std::fmt;
 

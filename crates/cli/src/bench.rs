@@ -4,7 +4,7 @@
 //! (Girard & Maciejewski 1985), physics steps per second (Raibert & Hodgins
 //! 1991) — the same suite `window.gaitlab.bench('{"suite": true}')` runs in the
 //! browser. `--check` compares the run with a committed baseline
-//! ([`gaitlab_bench::compare`]) and fails on a case more than 25 % slower.
+//! ([`gaitlab_bench::compare()`]) and fails on a case more than 25 % slower.
 
 use std::time::Instant;
 

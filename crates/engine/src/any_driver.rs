@@ -4,7 +4,7 @@
 //! ([`PhysicsDriver`]), or recorded targets followed by the thesis IK
 //! ([`TrackDriver`], `gaitlab track`). Everything generic goes through
 //! [`Driver`]; front ends ask for the concrete driver they edit. Built by
-//! [`crate::driver_for`] only.
+//! [`crate::driver_for()`] only.
 
 use gaitlab_core::Skeleton;
 use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};

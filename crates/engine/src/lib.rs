@@ -2,7 +2,7 @@
 //! in — She 2006's thesis motions and recorded-target tracking, Girard &
 //! Maciejewski 1985's PODA gaits, Raibert & Hodgins 1991's simulation. Front
 //! ends (the page, the CLI, the benchmark suite) build every driver with
-//! [`driver_for`], hold it as an [`AnyDriver`], report its figures as
+//! [`driver_for()`], hold it as an [`AnyDriver`], report its figures as
 //! [`RunMetrics`], write its frames with a [`take::FrameWriter`] (a page's
 //! recording is a [`Take`]) and a simulation's every step with a [`StepTrace`].
 //!

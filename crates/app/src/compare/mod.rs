@@ -1,6 +1,6 @@
 //! Side-by-side comparison of IK methods (She 2006 §4.4: transpose, pinv,
 //! DLS, SDLS; PODA eq. 6's null-space centering; CCD as a non-Jacobian
-//! contrast): 2 or 4 views, each its own [`ThesisDriver`] with its own solver
+//! contrast): 2 or 4 views, each its own thesis driver with its own solver
 //! configuration, on the same creature, mode and parameters, advanced in lock
 //! step (same `dt`, same frame), so every view sees the same targets. Per view:
 //! tracking error (She 2006 §5.3's `d`), wall time per IK iteration, joint

@@ -3,7 +3,7 @@
 
 use std::fmt;
 
-/// Why a target CSV (or a [`TargetTrack`]) was refused. Shown as
+/// Why a target CSV (or a [`super::TargetTrack`]) was refused. Shown as
 /// `line 7, column 4: reason`, `line 7: reason` or just `reason`.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CsvError {
