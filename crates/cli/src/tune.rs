@@ -26,10 +26,16 @@ pub struct TuneArgs {
     /// Desired speed of the tuned runs, m/s at scale 1 (default: the preset's).
     #[arg(long)]
     pub speed: Option<f64>,
-    /// Weighted terms to minimise: fall, speed, table2, energy (`fall=10,speed=1,table2=1,energy=0.5`).
+    /// Weighted terms to minimise: fall, speed, table2, energy, jump (`fall=10,speed=1,table2=1,energy=0.5`).
     #[arg(long, default_value = "fall=10,speed=1")]
     pub objective: String,
-    /// Simulated runs in all (the start's included).
+    /// Further desired speeds every candidate also runs at, m/s at scale 1
+    /// (`2,3.5`): fall, speed and energy are averaged over every speed,
+    /// table2 stays the tuned speed's.
+    #[arg(long, value_delimiter = ',')]
+    pub also_at: Vec<f64>,
+    /// Candidates evaluated in all (the start's included): one simulated run
+    /// each, more with `--also-at` and the `jump` term.
     #[arg(long, default_value_t = 200)]
     pub budget: usize,
     /// Random seed: the same seed gives the same tuned preset.
@@ -71,8 +77,16 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
         .clone()
         .or_else(|| physics.gait.clone())
         .unwrap_or_default();
-    let problem =
+    let mut problem =
         Problem::new(&creature, &gait, args.seconds, objective).map_err(Failure::input)?;
+    for (i, &speed) in args.also_at.iter().enumerate() {
+        gaitlab_core::preset::physics::check_speed_mps(&format!("also_at[{i}]"), speed)
+            .map_err(Failure::input)?;
+    }
+    if args.also_at.len() > 8 {
+        return Err(Failure::input("also_at: at most 8 speeds"));
+    }
+    problem.also_at_mps.clone_from(&args.also_at);
     let threads = args
         .threads
         .unwrap_or_else(rayon::current_num_threads)
@@ -81,8 +95,15 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
         .num_threads(threads)
         .build()
         .map_err(|e| Failure::input(format!("threads: {e}")))?;
+    let also = if args.also_at.is_empty() {
+        String::new()
+    } else {
+        let speeds: Vec<String> = args.also_at.iter().map(f64::to_string).collect();
+        format!(" · also at {} m/s", speeds.join(", "))
+    };
+    let per = runs_per_candidate(&problem);
     outln!(
-        "tuning {} · gait {gait} · {} gains ({}) · objective {} · budget {} runs of {} s · seed {} · {threads} threads",
+        "tuning {} · gait {gait} · {} gains ({}) · objective {}{also} · budget {} candidates of {per} runs of {} s · seed {} · {threads} threads",
         args.preset,
         problem.names().len(),
         problem.names().join(", "),
@@ -107,9 +128,10 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
         })
     };
     let budget = args.budget;
+    let unit = if per > 1 { "candidates" } else { "runs" };
     let mut progress = |g: &Generation| {
         outln!(
-            "generation {:>3} · {:>5} runs · best {:.5} · best so far {:.5} · σ {:.3}",
+            "generation {:>3} · {:>5} {unit} · best {:.5} · best so far {:.5} · σ {:.3}",
             g.index,
             g.evaluations,
             g.best_cost,
@@ -119,7 +141,7 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
         if tty {
             let filled = (30 * g.evaluations / budget.max(1)).min(30);
             eprint!(
-                "\r[{}{}] {}/{budget} runs",
+                "\r[{}{}] {}/{budget} {unit}",
                 "#".repeat(filled),
                 ".".repeat(30 - filled),
                 g.evaluations
@@ -133,6 +155,17 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
     let wall_s = started.elapsed().as_secs_f64();
     report(&problem, &tuned, wall_s, threads);
     write_preset(args, &gait, &problem, &tuned)
+}
+
+/// Simulated runs per candidate: the tuned speed's, the `--also-at` ones and
+/// the `jump` term's boxes.
+fn runs_per_candidate(problem: &Problem) -> usize {
+    let boxes = if problem.objective.jump > 0.0 {
+        gaitlab_tuner::objective::JUMP_BOXES.len()
+    } else {
+        0
+    };
+    1 + problem.also_at_mps.len() + boxes
 }
 
 fn report(problem: &Problem, tuned: &Tuned, wall_s: f64, threads: usize) {
@@ -149,11 +182,16 @@ fn report(problem: &Problem, tuned: &Tuned, wall_s: f64, threads: usize) {
     } else {
         "to 0".to_owned()
     };
+    let per = runs_per_candidate(problem);
+    let runs = if per > 1 {
+        format!("{} candidates of {per} runs", tuned.evaluations)
+    } else {
+        format!("{} runs", tuned.evaluations)
+    };
     outln!(
-        "objective {:.5} → {:.5} (lowered {factor}) · {} runs in {wall_s:.1} s on {threads} threads",
+        "objective {:.5} → {:.5} (lowered {factor}) · {runs} in {wall_s:.1} s on {threads} threads",
         tuned.start_cost,
         tuned.cost,
-        tuned.evaluations
     );
 }
 
@@ -190,8 +228,11 @@ fn write_preset(
     if let Some(d) = preset.get_mut("description") {
         let before = d.as_str().unwrap_or_default().to_owned();
         *d = format!(
-            "{before} Gains of its {gait} tuned by `gaitlab tune` (objective {}, seed {}, {} runs).",
-            args.objective, args.seed, tuned.evaluations
+            "{before} Gains of its {gait} tuned by `gaitlab tune` (objective {}{}, seed {}, {} runs).",
+            args.objective,
+            if args.also_at.is_empty() { "" } else { ", also at other speeds" },
+            args.seed,
+            tuned.evaluations
         )
         .into();
     }

@@ -97,6 +97,11 @@ fn bad_tune_arguments_are_named() {
         (vec!["--sigma", "0"], "sigma:"),
         (vec!["--gait", "canter"], "scenario.physics.gait"),
         (vec!["--speed", "99"], "speed"),
+        (vec!["--also-at", "1,99"], "also_at[1]"),
+        (
+            vec!["--objective", "jump=1"],
+            "objective.jump: only the kangaroo",
+        ),
     ] {
         let mut all = vec!["tune", "raibert-biped", "--out", out];
         all.extend(args);

@@ -9,12 +9,21 @@
 //!   undefined "error in running speed" rows are left out.
 //! - `energy`: the cost of transport (positive actuator work over weight ×
 //!   distance, [`GaitSummary::cost_of_transport`]), capped at 10.
+//! - `jump`: the share of runs with a box in the path ([`JUMP_BOXES`]) that
+//!   fell: the kangaroo's jump ("Results": "to make the kangaroo jump over
+//!   an obstacle, a number of additional states were added"). Costed by
+//!   [`crate::Problem`], which runs them; [`Objective::cost`] leaves it out.
 
 use gaitlab_physics::engine::metrics::GaitSummary;
 use gaitlab_physics::engine::table2::compare;
 
 /// The names [`Objective::parse`] knows.
-pub const TERMS: [&str; 4] = ["fall", "speed", "table2", "energy"];
+pub const TERMS: [&str; 5] = ["fall", "speed", "table2", "energy", "jump"];
+
+/// The boxes of the `jump` term, one run each: the near face's distance
+/// from the start, height and depth (m at scale 1). Met at different speeds
+/// on the way up to the desired one, 0.2 m high as in the app's obstacle.
+pub const JUMP_BOXES: [(f64, f64, f64); 3] = [(4.0, 0.2, 0.3), (10.0, 0.2, 0.3), (16.0, 0.2, 0.3)];
 
 /// Weighted terms; a weight of 0 leaves a term out.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -27,6 +36,8 @@ pub struct Objective {
     pub table2: f64,
     /// Weight of `energy`.
     pub energy: f64,
+    /// Weight of `jump`.
+    pub jump: f64,
 }
 
 impl Default for Objective {
@@ -37,6 +48,7 @@ impl Default for Objective {
             speed: 1.0,
             table2: 0.0,
             energy: 0.0,
+            jump: 0.0,
         }
     }
 }
@@ -52,6 +64,7 @@ impl Objective {
             speed: 0.0,
             table2: 0.0,
             energy: 0.0,
+            jump: 0.0,
         };
         for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
             let (name, weight) = part
@@ -70,6 +83,7 @@ impl Objective {
                 "speed" => o.speed = w,
                 "table2" => o.table2 = w,
                 "energy" => o.energy = w,
+                "jump" => o.jump = w,
                 other => {
                     return Err(format!(
                         "objective: unknown term \"{other}\" (terms: {})",
@@ -78,14 +92,14 @@ impl Objective {
                 }
             }
         }
-        if o.fall + o.speed + o.table2 + o.energy <= 0.0 {
+        if o.fall + o.speed + o.table2 + o.energy + o.jump <= 0.0 {
             return Err("objective: every weight is 0".to_owned());
         }
         Ok(o)
     }
 
     /// The cost of a run of `gait` with figures `s` (legs named `legs`);
-    /// `fell` also counts a blow-up.
+    /// `fell` also counts a blow-up. Every term but `jump`.
     #[must_use]
     pub fn cost(&self, s: &GaitSummary, fell: bool, gait: &str, legs: &[&str]) -> f64 {
         let mut cost = 0.0;
@@ -127,6 +141,7 @@ mod tests {
         assert!(Objective::parse("speed=-1").is_err_and(|e| e.starts_with("objective.speed")));
         assert!(Objective::parse("speed").is_err());
         assert!(Objective::parse("speed=0").is_err());
+        assert_eq!(Objective::parse("jump=3").map(|o| o.jump), Ok(3.0));
     }
 
     #[test]

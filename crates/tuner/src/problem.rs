@@ -3,15 +3,19 @@
 //! and the cost of the run (Raibert & Hodgins 1991 §5's "we adjusted the
 //! spring and damping constants … until", as a search). A candidate is a
 //! point `x` in log space: gain `i` = start value · e^{x_i}, so one step size
-//! moves every gain by the same fraction whatever its unit.
+//! moves every gain by the same fraction whatever its unit. A candidate may
+//! also run at further desired speeds ([`Problem::also_at_mps`]), so a tune
+//! holds a gait over the speeds it is used at, not only the one tuned at.
 
 use gaitlab_core::driver::Driver as _;
 use gaitlab_core::portable::Portable;
-use gaitlab_core::preset::physics::PhysicsParams;
+use gaitlab_core::preset::physics::{ObstacleSpec, PhysicsParams};
 use gaitlab_core::{Creature, PresetError};
 use gaitlab_physics::PhysicsDriver;
+use gaitlab_physics::creatures::Species;
+use gaitlab_physics::engine::metrics::GaitSummary;
 
-use crate::objective::Objective;
+use crate::objective::{JUMP_BOXES, Objective};
 
 /// The frame step of a candidate's run (s): the page's 60 Hz.
 const FRAME_S: f64 = 1.0 / 60.0;
@@ -24,10 +28,17 @@ pub struct Problem {
     gait: String,
     names: Vec<&'static str>,
     start: Vec<f64>,
+    /// The creature's legs by name (Table 2's per-pair rows need them).
+    legs: Vec<String>,
     /// Simulated seconds of each candidate's run.
     pub seconds: f64,
     /// What the run's figures cost.
     pub objective: Objective,
+    /// Further desired speeds (m/s at scale 1) every candidate also runs at.
+    /// The `fall`, `speed` and `energy` terms are then the mean over the
+    /// preset's speed and these; `table2` stays the preset speed's (Table 2
+    /// gives one speed per gait). Empty: one run, as before.
+    pub also_at_mps: Vec<f64>,
 }
 
 /// One candidate's run.
@@ -47,7 +58,8 @@ impl Problem {
     ///
     /// # Errors
     /// `scenario.physics…` when the preset is not a physics creature or the
-    /// gait is unknown; `seconds` when not in (0, 600].
+    /// gait is unknown; `seconds` when not in (0, 600]; `objective.jump`
+    /// for a creature without jump states.
     pub fn new(
         preset: &Creature,
         gait: &str,
@@ -63,6 +75,12 @@ impl Problem {
             })?;
         params.gait = Some(gait.to_owned());
         let driver = PhysicsDriver::with_params(preset, params.clone())?;
+        if objective.jump > 0.0 && driver.sim().creature.species != Species::Kangaroo {
+            return Err(PresetError::new(
+                "objective.jump",
+                "only the kangaroo has jump states (Raibert & Hodgins 1991, \"Results\")",
+            ));
+        }
         let gains = driver.gains();
         Ok(Self {
             preset: preset.clone(),
@@ -70,8 +88,16 @@ impl Problem {
             gait: gait.to_owned(),
             names: gains.iter().map(|g| g.name).collect(),
             start: gains.iter().map(|g| g.value).collect(),
+            legs: driver
+                .sim()
+                .creature
+                .legs
+                .iter()
+                .map(|l| l.name.clone())
+                .collect(),
             seconds,
             objective,
+            also_at_mps: Vec::new(),
         })
     }
 
@@ -122,13 +148,71 @@ impl Problem {
     #[must_use]
     pub fn evaluate(&self, x: &[f64]) -> Evaluation {
         let params = self.params_with(&self.values(x));
-        let Ok(mut driver) = PhysicsDriver::with_params(&self.preset, params) else {
-            return Evaluation {
-                cost: self.objective.fall + self.objective.speed + self.objective.table2,
-                fell: true,
-                speed_mean_mps: 0.0,
-            };
+        let Some((main, fell)) = self.run(params.clone()) else {
+            return self.refused();
         };
+        let gait = self.gait.as_str();
+        let legs: Vec<&str> = self.legs.iter().map(String::as_str).collect();
+        let o = &self.objective;
+        let mut cost = if self.also_at_mps.is_empty() {
+            o.cost(&main, fell, gait, &legs)
+        } else {
+            // Table 2 from the preset's speed; the other terms averaged over every speed.
+            let table2 = Objective {
+                fall: 0.0,
+                speed: 0.0,
+                energy: 0.0,
+                ..*o
+            };
+            let rest = Objective { table2: 0.0, ..*o };
+            let mut sum = rest.cost(&main, fell, gait, &legs);
+            for &speed in &self.also_at_mps {
+                let mut at = params.clone();
+                at.speed_mps = speed;
+                let Some((s, fell)) = self.run(at) else {
+                    return self.refused();
+                };
+                sum += rest.cost(&s, fell, gait, &legs);
+            }
+            sum / (1 + self.also_at_mps.len()) as f64 + table2.cost(&main, fell, gait, &legs)
+        };
+        if o.jump > 0.0 {
+            let mut falls = 0;
+            for (at_m, height_m, depth_m) in JUMP_BOXES {
+                let mut with_box = params.clone();
+                with_box.obstacles.push(ObstacleSpec {
+                    at_m,
+                    depth_m,
+                    height_m,
+                });
+                if self.run(with_box).is_none_or(|(_, fell)| fell) {
+                    falls += 1;
+                }
+            }
+            cost += o.jump * f64::from(falls) / JUMP_BOXES.len() as f64;
+        }
+        Evaluation {
+            cost,
+            fell,
+            speed_mean_mps: main.speed_mean_mps,
+        }
+    }
+
+    /// What a candidate the controller refuses costs: a fall, a missed
+    /// speed, every Table-2 row missed and every box a fall.
+    fn refused(&self) -> Evaluation {
+        let o = &self.objective;
+        Evaluation {
+            cost: o.fall + o.speed + o.table2 + o.jump,
+            fell: true,
+            speed_mean_mps: 0.0,
+        }
+    }
+
+    /// One run of `seconds` with `params`: its figures and whether it fell
+    /// (or blew up); `None` when the controller refuses it.
+    fn run(&self, params: PhysicsParams) -> Option<(GaitSummary, bool)> {
+        let mut driver = PhysicsDriver::with_params(&self.preset, params).ok()?;
         driver.reset_after_fall = false;
         let frames = (self.seconds / FRAME_S).round() as usize;
         let mut fell = false;
@@ -141,17 +225,6 @@ impl Problem {
         }
         let s = driver.summary();
         let fell = fell || s.fell || driver.resets() > 0;
-        let legs: Vec<&str> = driver
-            .sim()
-            .creature
-            .legs
-            .iter()
-            .map(|l| l.name.as_str())
-            .collect();
-        Evaluation {
-            cost: self.objective.cost(&s, fell, &self.gait, &legs),
-            fell,
-            speed_mean_mps: s.speed_mean_mps,
-        }
+        Some((s, fell))
     }
 }

@@ -1,0 +1,88 @@
+//! A candidate costed over several speeds and over jumps (issue 20 item 6):
+//! with `also_at_mps`, the `fall`/`speed`/`energy` terms are the mean over
+//! the speeds and `table2` the tuned speed's, which two independent sets of
+//! single-speed problems must reproduce; the `jump` term counts the box runs
+//! that fell, in steps of one box, and only the kangaroo may ask for it.
+
+use gaitlab_core::Creature;
+use gaitlab_core::preset::load_bundled;
+use gaitlab_tuner::objective::JUMP_BOXES;
+use gaitlab_tuner::{Objective, Problem};
+
+fn bundled(name: &str, speed_mps: f64) -> Creature {
+    let Some(Ok(mut creature)) = load_bundled(name) else {
+        panic!("{name} is bundled")
+    };
+    if let Some(physics) = creature.scenario.physics.as_mut() {
+        physics.speed_mps = speed_mps;
+    }
+    creature
+}
+
+fn problem(name: &str, gait: &str, speed_mps: f64, seconds: f64, objective: &str) -> Problem {
+    let objective = match Objective::parse(objective) {
+        Ok(o) => o,
+        Err(error) => panic!("{error}"),
+    };
+    match Problem::new(&bundled(name, speed_mps), gait, seconds, objective) {
+        Ok(p) => p,
+        Err(error) => panic!("{error}"),
+    }
+}
+
+#[test]
+fn other_speeds_average_every_term_but_table_2() {
+    const SECONDS: f64 = 4.0;
+    let weights = "fall=10,speed=1,table2=1,energy=0.5";
+    let mut both = problem("raibert-biped", "run", 1.6, SECONDS, weights);
+    let x = vec![0.05; both.names().len()];
+    let alone = both.evaluate(&x).cost;
+    both.also_at_mps = vec![1.0];
+    let averaged = both.evaluate(&x).cost;
+
+    // The same figures, one speed at a time.
+    let rest = "fall=10,speed=1,energy=0.5";
+    let at_16 = problem("raibert-biped", "run", 1.6, SECONDS, rest).evaluate(&x);
+    let at_10 = problem("raibert-biped", "run", 1.0, SECONDS, rest).evaluate(&x);
+    let table2 = problem("raibert-biped", "run", 1.6, SECONDS, "table2=1").evaluate(&x);
+    let want = 0.5 * (at_16.cost + at_10.cost) + table2.cost;
+    println!(
+        "alone {alone:.6}, with 1.0 m/s {averaged:.6}: rest {:.6} / {:.6}, table2 {:.6}",
+        at_16.cost, at_10.cost, table2.cost
+    );
+    assert!((averaged - want).abs() < 1e-9, "{averaged} vs {want}");
+    assert!(
+        (alone - (at_16.cost + table2.cost)).abs() < 1e-9,
+        "one speed: the old cost"
+    );
+    assert!(
+        (at_16.cost - at_10.cost).abs() > 1e-6,
+        "the two speeds cost differently, so the average is seen"
+    );
+
+    // The tuned speed again as the other one: the same cost as alone.
+    both.also_at_mps = vec![1.6];
+    assert!((both.evaluate(&x).cost - alone).abs() < 1e-9);
+}
+
+#[test]
+fn the_jump_term_counts_the_boxes_that_felled_the_kangaroo() {
+    // Long enough to pass the last box (16 m) at 2 m/s.
+    const SECONDS: f64 = 10.0;
+    let jumps = problem("raibert-kangaroo", "hop", 2.0, SECONDS, "jump=1");
+    let n = jumps.names().len();
+    let start = jumps.evaluate(&vec![0.0; n]).cost;
+    let boxes = JUMP_BOXES.len() as f64;
+    println!("bundled kangaroo at 2 m/s: {start:.3} of the boxes felled it");
+    // In steps of one box of three.
+    assert!(((start * boxes) - (start * boxes).round()).abs() < 1e-12);
+    assert!(start < 1.0, "the bundled kangaroo jumps some box at 2 m/s");
+    // A limp ankle (every gain at e⁻³ ≈ 5 % of its value) falls at each.
+    let limp = jumps.evaluate(&vec![-3.0; n]).cost;
+    assert!((limp - 1.0).abs() < 1e-12, "limp: {limp}");
+
+    // Only the kangaroo has jump states.
+    let objective = Objective::parse("fall=10,jump=1").unwrap_or_default();
+    let refused = Problem::new(&bundled("raibert-biped", 1.6), "run", 4.0, objective);
+    assert!(refused.is_err_and(|e| e.to_string().starts_with("objective.jump")));
+}
