@@ -101,9 +101,14 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
         let speeds: Vec<String> = args.also_at.iter().map(f64::to_string).collect();
         format!(" · also at {} m/s", speeds.join(", "))
     };
-    let per = runs_per_candidate(&problem);
+    let per = problem.runs_per_candidate();
+    let budget_of = if per > 1 {
+        format!("candidates of {per} runs")
+    } else {
+        "runs".to_owned()
+    };
     outln!(
-        "tuning {} · gait {gait} · {} gains ({}) · objective {}{also} · budget {} candidates of {per} runs of {} s · seed {} · {threads} threads",
+        "tuning {} · gait {gait} · {} gains ({}) · objective {}{also} · budget {} {budget_of} of {} s · seed {} · {threads} threads",
         args.preset,
         problem.names().len(),
         problem.names().join(", "),
@@ -157,17 +162,6 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
     write_preset(args, &gait, &problem, &tuned)
 }
 
-/// Simulated runs per candidate: the tuned speed's, the `--also-at` ones and
-/// the `jump` term's boxes.
-fn runs_per_candidate(problem: &Problem) -> usize {
-    let boxes = if problem.objective.jump > 0.0 {
-        gaitlab_tuner::objective::JUMP_BOXES.len()
-    } else {
-        0
-    };
-    1 + problem.also_at_mps.len() + boxes
-}
-
 fn report(problem: &Problem, tuned: &Tuned, wall_s: f64, threads: usize) {
     for ((name, start), value) in problem
         .names()
@@ -182,7 +176,7 @@ fn report(problem: &Problem, tuned: &Tuned, wall_s: f64, threads: usize) {
     } else {
         "to 0".to_owned()
     };
-    let per = runs_per_candidate(problem);
+    let per = problem.runs_per_candidate();
     let runs = if per > 1 {
         format!("{} candidates of {per} runs", tuned.evaluations)
     } else {

@@ -113,6 +113,18 @@ impl Problem {
         &self.start
     }
 
+    /// Simulated runs per candidate: the tuned speed's, one per
+    /// [`Problem::also_at_mps`] and, with the `jump` term, one per box.
+    #[must_use]
+    pub fn runs_per_candidate(&self) -> usize {
+        let boxes = if self.objective.jump > 0.0 {
+            JUMP_BOXES.len()
+        } else {
+            0
+        };
+        1 + self.also_at_mps.len() + boxes
+    }
+
     /// The gait tuned.
     #[must_use]
     pub fn gait(&self) -> &str {

@@ -37,7 +37,9 @@ fn other_speeds_average_every_term_but_table_2() {
     let mut both = problem("raibert-biped", "run", 1.6, SECONDS, weights);
     let x = vec![0.05; both.names().len()];
     let alone = both.evaluate(&x).cost;
+    assert_eq!(both.runs_per_candidate(), 1);
     both.also_at_mps = vec![1.0];
+    assert_eq!(both.runs_per_candidate(), 2);
     let averaged = both.evaluate(&x).cost;
 
     // The same figures, one speed at a time.
@@ -71,6 +73,7 @@ fn the_jump_term_counts_the_boxes_that_felled_the_kangaroo() {
     const SECONDS: f64 = 10.0;
     let jumps = problem("raibert-kangaroo", "hop", 2.0, SECONDS, "jump=1");
     let n = jumps.names().len();
+    assert_eq!(jumps.runs_per_candidate(), 1 + JUMP_BOXES.len());
     let start = jumps.evaluate(&vec![0.0; n]).cost;
     let boxes = JUMP_BOXES.len() as f64;
     println!("bundled kangaroo at 2 m/s: {start:.3} of the boxes felled it");
