@@ -749,14 +749,18 @@ fn the_windows_on_a_phone_have_only_full_size_targets_and_close() {
 fn the_scale_slider_warns_outside_the_tested_scales() {
     let mut harness = poda_harness("raibert-quadruped", 1400.0);
     harness.run();
-    let warning = "Outside the tested L = 0.25–2: it may fall";
+    let warning = "Outside the tested L = 0.25–4: it may fall";
     assert!(harness.query_by_label(warning).is_none(), "L = 1 is tested");
     assert!(
         harness
             .state_mut()
-            .command(r#"{"physics_scale": 3}"#)
+            .command(r#"{"physics_scale": 6}"#)
             .is_ok()
     );
     harness.run();
     harness.get_by_label(warning);
+    // Beyond the slider's own range: the creature keeps the L it was given.
+    let state: serde_json::Value =
+        serde_json::from_str(&harness.state().state_json()).unwrap_or_default();
+    assert_eq!(state["physics"]["scale"], 6.0);
 }

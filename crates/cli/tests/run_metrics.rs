@@ -97,6 +97,26 @@ fn a_preset_with_the_deprecated_vertical_gain_runs_as_it_was_made() {
     assert_eq!(got, want);
 }
 
+/// The fixture preset `name`.json run 10 s: all its figures, those of them
+/// the recording has, and the figures recorded then (`name`.run-10s.json).
+fn replay(name: &str) -> (Value, Value, Value) {
+    let fixtures: PathBuf = [env!("CARGO_MANIFEST_DIR"), "tests", "fixtures"]
+        .iter()
+        .collect();
+    let preset = fixtures.join(format!("{name}.json"));
+    let path = preset.to_str().expect("utf-8 path");
+    let all = without_timing(run_json(path, "10", &[]));
+    let text = std::fs::read_to_string(fixtures.join(format!("{name}.run-10s.json")))
+        .expect("recorded figures");
+    let mut want: Value = serde_json::from_str(&text).expect("JSON");
+    let mut got = all.clone();
+    if let (Some(got), Some(want)) = (got.as_object_mut(), want.as_object_mut()) {
+        want.remove("gaits_available");
+        got.retain(|key, _| want.contains_key(key));
+    }
+    (all, got, want)
+}
+
 /// DESIGN.md "Versions": the biped preset as it was on 2026-12-02, before
 /// the lab's additions to the physics control were optional (no
 /// `lab_additions`), runs exactly as recorded then: with the speed trim and
@@ -104,23 +124,11 @@ fn a_preset_with_the_deprecated_vertical_gain_runs_as_it_was_made() {
 /// laws.
 #[test]
 fn a_physics_preset_made_before_the_lab_additions_runs_as_it_was_made() {
-    let fixtures: PathBuf = [env!("CARGO_MANIFEST_DIR"), "tests", "fixtures"]
-        .iter()
-        .collect();
-    let preset = fixtures.join("raibert-biped_2026_12_02.json");
-    let path = preset.to_str().expect("utf-8 path");
-    let mut got = without_timing(run_json(path, "10", &[]));
-    let text = std::fs::read_to_string(fixtures.join("raibert-biped_2026_12_02.run-10s.json"))
-        .expect("recorded figures");
-    let mut want: Value = serde_json::from_str(&text).expect("JSON");
+    let (all, got, want) = replay("raibert-biped_2026_12_02");
     assert_eq!(
-        got["lab_additions"],
+        all["lab_additions"],
         serde_json::json!(["speed_trim", "unloading_posture"])
     );
-    if let (Some(got), Some(want)) = (got.as_object_mut(), want.as_object_mut()) {
-        want.remove("gaits_available");
-        got.retain(|key, _| want.contains_key(key));
-    }
     assert_eq!(got, want);
     // The bundled preset now runs the biped by the paper's laws alone.
     let now = run_json("raibert-biped", "10", &[]);
@@ -135,24 +143,24 @@ fn a_physics_preset_made_before_the_lab_additions_runs_as_it_was_made() {
 /// every 0.4 ms step, the controller's own yaw damping).
 #[test]
 fn a_physics_preset_made_before_control_every_two_ms_runs_as_it_was_made() {
-    let fixtures: PathBuf = [env!("CARGO_MANIFEST_DIR"), "tests", "fixtures"]
-        .iter()
-        .collect();
-    let preset = fixtures.join("raibert-biped_2026_12_02b.json");
-    let path = preset.to_str().expect("utf-8 path");
-    let mut got = without_timing(run_json(path, "10", &[]));
-    let text = std::fs::read_to_string(fixtures.join("raibert-biped_2026_12_02b.run-10s.json"))
-        .expect("recorded figures");
-    let mut want: Value = serde_json::from_str(&text).expect("JSON");
+    let (all, got, want) = replay("raibert-biped_2026_12_02b");
     assert_eq!(
-        got["lab_additions"],
+        all["lab_additions"],
         serde_json::json!(["unloading_posture"])
     );
-    if let (Some(got), Some(want)) = (got.as_object_mut(), want.as_object_mut()) {
-        want.remove("gaits_available");
-        got.retain(|key, _| want.contains_key(key));
-    }
     assert_eq!(got, want);
+}
+
+/// DESIGN.md "Versions": the bundled quadruped as it was on 2026-12-03,
+/// before its trot carried gains of its own (`controller_by_gait.trot`):
+/// the file runs exactly as recorded then, with the trot controller's own
+/// gains, and the bundled quadruped now trots differently.
+#[test]
+fn the_quadruped_preset_from_before_its_trot_gains_runs_as_it_was_made() {
+    let (_, got, want) = replay("raibert-quadruped_2026_12_03");
+    assert_eq!(got, want);
+    let now = run_json("raibert-quadruped", "10", &[]);
+    assert_ne!(now["pitch_magnitude_deg"], want["pitch_magnitude_deg"]);
 }
 
 fn cli_metrics(preset: &str, seconds: &str) -> Value {

@@ -39,14 +39,7 @@ fn tables() -> Result<String, Box<dyn std::error::Error>> {
                 driver.step(1.0 / 60.0);
             }
             let s = driver.summary();
-            let legs: Vec<String> = driver
-                .sim()
-                .creature
-                .legs
-                .iter()
-                .map(|l| l.name.clone())
-                .collect();
-            let legs: Vec<&str> = legs.iter().map(String::as_str).collect();
+            let legs: Vec<&str> = driver.leg_names().collect();
             writeln!(out, "### {preset_name} · {gait} at {speed} m/s\n")?;
             writeln!(
                 out,

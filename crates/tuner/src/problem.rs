@@ -88,13 +88,7 @@ impl Problem {
             gait: gait.to_owned(),
             names: gains.iter().map(|g| g.name).collect(),
             start: gains.iter().map(|g| g.value).collect(),
-            legs: driver
-                .sim()
-                .creature
-                .legs
-                .iter()
-                .map(|l| l.name.clone())
-                .collect(),
+            legs: driver.leg_names().map(str::to_owned).collect(),
             seconds,
             objective,
             also_at_mps: Vec::new(),

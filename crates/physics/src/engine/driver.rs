@@ -219,6 +219,12 @@ impl PhysicsDriver {
         &self.sim
     }
 
+    /// The creature's legs by name, in leg order (Table 2's per-pair rows
+    /// and the gait metrics name them).
+    pub fn leg_names(&self) -> impl Iterator<Item = &str> + Clone {
+        self.sim.creature.legs.iter().map(|l| l.name.as_str())
+    }
+
     /// The gait running.
     #[must_use]
     pub fn gait(&self) -> &str {

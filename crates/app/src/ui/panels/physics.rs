@@ -43,20 +43,16 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
         .or(driver.params().hop_height_m)
         .unwrap_or(0.1);
     let summary = driver.summary();
-    let legs: Vec<String> = driver
-        .sim()
-        .creature
-        .legs
-        .iter()
-        .map(|l| l.name.clone())
-        .collect();
-    let leg_names: Vec<&str> = legs.iter().map(String::as_str).collect();
+    let leg_names: Vec<&str> = driver.leg_names().collect();
     let phase = driver.phase_name();
     let time = driver.time();
     let resets = driver.resets();
     let gains = driver.gains();
     let additions = driver.lab_additions();
-    let mut scale = driver.params().scale;
+    // The running creature's L; the slider below clamps its own copy to
+    // its range, so a scale set from a command or a file is judged as it is.
+    let running_scale = driver.params().scale;
+    let mut scale = running_scale;
     let mut new_scale = None;
     let mut place_box = false;
     let mut chosen = None;
@@ -115,7 +111,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 new_scale = Some(scale);
             }
             if let Some((low, high)) = tested_scale
-                && !(low..=high).contains(&scale)
+                && !(low..=high).contains(&running_scale)
             {
                 ui.colored_label(
                     crate::theme::WARNING_COLOR,
