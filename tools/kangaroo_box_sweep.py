@@ -4,7 +4,8 @@
 0.2 m high and 0.3 m deep with its near face AT metres from the start, at
 the desired SPEED (with the speed ramp, boxes further on are met faster).
 Prints one character per position ('.' cleared and still up after SECONDS,
-'F' fell) and the count cleared, for each preset given.
+'F' fell, blew up or was refused) and the count cleared, for each preset
+given.
 
 Usage: python3 tools/kangaroo_box_sweep.py [PRESET ...] [--speed 5]
        [--seconds 20] [--at 3,5,...,25] [--gaitlab PATH]
@@ -32,7 +33,8 @@ def main():
             r = run(args.gaitlab, preset, [
                 "--speed", str(args.speed), "--seconds", str(args.seconds),
                 "--set", f"scenario.physics.obstacles={box}"])
-            marks += "F" if r.get("error") or r.get("fell") else "."
+            fell = r.get("error") or r.get("fell") or r.get("blow_up")
+            marks += "F" if fell else "."
         cleared = marks.count(".")
         print(f"{preset}: {marks} · {cleared} of {len(positions)} cleared "
               f"(boxes at {args.at} m, {args.speed} m/s, {args.seconds} s)")

@@ -22,7 +22,9 @@ pub const TERMS: [&str; 5] = ["fall", "speed", "table2", "energy", "jump"];
 
 /// The boxes of the `jump` term, one run each: the near face's distance
 /// from the start, height and depth (m at scale 1). Met at different speeds
-/// on the way up to the desired one, 0.2 m high as in the app's obstacle.
+/// on the way up to the desired one. 0.2 m × 0.3 m, the box of
+/// `tools/kangaroo_box_sweep.py` and the docs' traces (the app's "Place a
+/// box" is the kangaroo's own `obstacle_height_m`, 0.25 m).
 pub const JUMP_BOXES: [(f64, f64, f64); 3] = [(4.0, 0.2, 0.3), (10.0, 0.2, 0.3), (16.0, 0.2, 0.3)];
 
 /// Weighted terms; a weight of 0 leaves a term out.

@@ -46,7 +46,8 @@ pub struct Problem {
 pub struct Evaluation {
     /// The objective's cost (lower is better).
     pub cost: f64,
-    /// Whether it fell or blew up.
+    /// Whether its run at the tuned speed fell or blew up (the runs at
+    /// [`Problem::also_at_mps`] and the jump term's count in `cost` only).
     pub fell: bool,
     /// Its mean speed after settling (m/s).
     pub speed_mean_mps: f64,
