@@ -27,8 +27,8 @@ pub struct Additions {
 
 /// Which of the lab's additions a controller has, each with its default
 /// for a file whose `lab_additions` does not name it; `None`: the
-/// controller has no such addition. Each controller's parameters declare
-/// theirs (`LAB_ADDITIONS`).
+/// controller has no such addition. The table of offers is below
+/// ([`Offered::BIPED_RUN`] and its neighbours).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Offered {
     /// [`Additions::speed_trim`].
@@ -41,19 +41,49 @@ pub struct Offered {
     pub tail_feedback: Option<bool>,
 }
 
+/// Each controller's offer, in one table: which of the lab's additions it
+/// has, and each one's default for a file that does not name it.
 impl Offered {
     /// No addition: the controller runs the paper's laws only.
-    pub const NONE: Self = Self {
+    const NONE: Self = Self {
         speed_trim: None,
         unloading_posture: None,
         speed_ramp: None,
         tail_feedback: None,
     };
 
-    /// Only the speed trim, on unless the file turns it off: the gaits that
-    /// do not yet hold their speed by eq. 3 alone (the gallops, the bound).
-    pub const SPEED_TRIM_ON: Self = Self {
+    /// The biped run: the speed trim (off: eq. 3 alone holds the speed) and
+    /// Unloading's posture servo (on for a file that does not say, as files
+    /// of 2026-12-02 ran).
+    pub const BIPED_RUN: Self = Self {
+        speed_trim: Some(false),
+        unloading_posture: Some(true),
+        ..Self::NONE
+    };
+
+    /// The biped gallops: the speed trim, on (without it they miss the
+    /// desired speed by 25–46 %).
+    pub const BIPED_GALLOP: Self = Self {
         speed_trim: Some(true),
+        ..Self::NONE
+    };
+
+    /// The trot: none (it holds its speed by eq. 3 alone).
+    pub const TROT: Self = Self::NONE;
+
+    /// The quadruped bound and gallop: the speed trim, on (without it the
+    /// skip bound and gallop run 38–54 % slow).
+    pub const BOUND: Self = Self {
+        speed_trim: Some(true),
+        ..Self::NONE
+    };
+
+    /// The kangaroo hop: the speed trim (off), the speed ramp and the tail
+    /// feedback (on: without them it falls at 3.5 and 5 m/s).
+    pub const KANGAROO_HOP: Self = Self {
+        speed_trim: Some(false),
+        speed_ramp: Some(true),
+        tail_feedback: Some(true),
         ..Self::NONE
     };
 }

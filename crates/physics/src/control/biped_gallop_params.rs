@@ -1,7 +1,6 @@
 //! Parameters of biped galloping (Raibert & Hodgins 1991, "Gaits"), at scale
 //! 1, and the two swing styles.
 
-use super::additions::Offered;
 use super::hopper_params::HopperParams;
 
 /// How the legs swing forward (Raibert & Hodgins 1991, "Gaits").
@@ -70,12 +69,6 @@ pub struct BipedGallopParams {
     /// Fraction of the trunk's pitching in flight that the posture servo
     /// anticipates in stance (0 = level in stance, 0.5 = pitch about level).
     pub pitch_feedforward: f64,
-}
-
-impl BipedGallopParams {
-    /// The lab's additions this controller has: the speed trim, on (without
-    /// it the gallops miss the desired speed by 25–46 %).
-    pub const LAB_ADDITIONS: Offered = Offered::SPEED_TRIM_ON;
 }
 
 impl Default for BipedGallopParams {

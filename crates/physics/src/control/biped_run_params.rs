@@ -2,7 +2,6 @@
 //! at scale 1: gains, spring and thrust settings, and the lab's additions
 //! this controller has.
 
-use super::additions::Offered;
 use super::hopper_params::HopperParams;
 
 /// Parameters of biped running; lengths are leg-spring coordinates
@@ -24,17 +23,6 @@ pub struct BipedRunParams {
     /// (`lab_additions.unloading_posture`); Figure 4 zeroes the active hip's
     /// torque there.
     pub unloading_posture: bool,
-}
-
-impl BipedRunParams {
-    /// The lab's additions this controller has: the speed trim (off: eq. 3
-    /// alone holds the speed) and Unloading's posture servo (on for a file
-    /// that does not say, as files of 2026-12-02 ran).
-    pub const LAB_ADDITIONS: Offered = Offered {
-        speed_trim: Some(false),
-        unloading_posture: Some(true),
-        ..Offered::NONE
-    };
 }
 
 impl Default for BipedRunParams {

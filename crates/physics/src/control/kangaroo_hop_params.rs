@@ -1,8 +1,6 @@
 //! Parameters of the kangaroo's hop and jump (Raibert & Hodgins 1991,
 //! "Kangaroo", Figure 5), at scale 1.
 
-use super::additions::Offered;
-
 /// Parameters of kangaroo hopping, at dynamic scale 1 (the controller scales
 /// them by the creature's L).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -108,18 +106,6 @@ pub struct KangarooHopParams {
     pub jump_stiffness_factor: f64,
     /// Ankle damping multiplier for the landing stance after a jump.
     pub landing_damping_factor: f64,
-}
-
-impl KangarooHopParams {
-    /// The lab's additions this controller has: the speed trim (off), the
-    /// speed ramp and the tail feedback (on: without them it falls at 3.5
-    /// and 5 m/s).
-    pub const LAB_ADDITIONS: Offered = Offered {
-        speed_trim: Some(false),
-        speed_ramp: Some(true),
-        tail_feedback: Some(true),
-        ..Offered::NONE
-    };
 }
 
 impl Default for KangarooHopParams {

@@ -177,7 +177,7 @@ fn biped_run(
     params: &PhysicsParams,
 ) -> Result<GaitController, Misfit> {
     biped_legs(creature)?;
-    let additions = additions(params, BipedRunParams::LAB_ADDITIONS);
+    let additions = additions(params, Offered::BIPED_RUN);
     let d = if additions.legacy {
         BipedRunParams::before_lab_additions()
     } else {
@@ -214,7 +214,7 @@ fn biped_gallop(
         GallopStyle::AlternateSwing => "gallop_alternate",
     };
     let mut p = with_parameters(p, params, gait)?;
-    p.speed_trim = additions(params, BipedGallopParams::LAB_ADDITIONS).speed_trim;
+    p.speed_trim = additions(params, Offered::BIPED_GALLOP).speed_trim;
     Ok(GaitController::BipedGallop(Box::new(BipedGallop::new(
         p, creature,
     ))))
@@ -245,7 +245,7 @@ fn bound(
         ..QuadrupedBoundParams::default()
     };
     let mut p = with_parameters(p, params, style.name())?;
-    p.speed_trim = additions(params, QuadrupedBoundParams::LAB_ADDITIONS).speed_trim;
+    p.speed_trim = additions(params, Offered::BOUND).speed_trim;
     if let Some(h) = params.hop_height_m {
         p.stride_flight_s = flight_for_height(h);
     }
@@ -280,7 +280,7 @@ fn kangaroo_hop(
         ..d
     };
     let mut p = with_parameters(p, params, "hop")?;
-    let additions = additions(params, KangarooHopParams::LAB_ADDITIONS);
+    let additions = additions(params, Offered::KANGAROO_HOP);
     p.speed_trim = additions.speed_trim;
     p.speed_ramp = additions.speed_ramp;
     p.tail_feedback = additions.tail_feedback;

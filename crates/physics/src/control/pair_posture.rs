@@ -36,10 +36,9 @@ pub struct PairPosture {
     /// Legs that share the pair's torque (count toward `legs` and the yaw
     /// lever).
     pub sharing: [bool; 4],
-    /// Legs whose hips apply their share now.
-    pub applying: [bool; 4],
-    /// Each leg's spring rest in stance (m), for its push.
-    pub rest: [f64; 4],
+    /// Legs whose hips apply their share now, each with its spring rest in
+    /// stance (m) for its push; `None`: the leg applies none.
+    pub applying_rest_m: [Option<f64>; 4],
     /// Each leg's hip-to-foot length at full extension (m).
     pub leg_m: [f64; 4],
     /// Share among at least one leg (the trot) rather than among the
@@ -51,7 +50,7 @@ impl PairPosture {
     /// Whether any leg applies a share.
     #[must_use]
     pub fn active(&self) -> bool {
-        self.applying.iter().any(|&a| a)
+        self.applying_rest_m.iter().any(Option::is_some)
     }
 
     /// Apply each applying leg's share of eq. 4's torque for the state in
@@ -75,7 +74,7 @@ impl PairPosture {
         let roll_t = axis_torque(err.dot(fwd), rate.dot(fwd), rkp, rkv);
         let yaw_t = axis_torque(err.y, rate.y, ykp, ykv);
         for pair in pairs {
-            if !pair.iter().any(|&i| self.applying[i]) {
+            if !pair.iter().any(|&i| self.applying_rest_m[i].is_some()) {
                 continue;
             }
             let mut n = 0.0_f64;
@@ -95,13 +94,13 @@ impl PairPosture {
                 force_ratio: self.force_ratio,
             };
             for &i in pair {
-                if !self.applying[i] {
+                let Some(rest) = self.applying_rest_m[i] else {
                     continue;
-                }
+                };
                 let leg = &creature.legs[i];
                 let hip_world = trunk_rot * leg.hip_in_trunk + trunk_pos;
                 let q = data.q[leg.spring];
-                let spring_force = (self.stiffness * (self.rest[i] - q)).max(0.0);
+                let spring_force = (self.stiffness * (rest - q)).max(0.0);
                 let foot = input.contacts[i].position;
                 let stance =
                     StanceLeg::new(leg, data, hip_world, foot, spring_force, self.leg_m[i]);

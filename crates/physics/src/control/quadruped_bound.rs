@@ -279,8 +279,7 @@ impl Controller for QuadrupedBound {
                     let angles = hip_angles(trunk_rot, hip_world, foot, reach);
                     servo.set(drives, &leg.hip, angles, &mut self.hip_target[i]);
                 } else if touching && servoing(pair.phase) && sharing {
-                    posture.applying[i] = true;
-                    posture.rest[i] = rest;
+                    posture.applying_rest_m[i] = Some(rest);
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 } else {
                     release(drives, &leg.hip, &data.q, &mut self.hip_target[i]);

@@ -1,8 +1,6 @@
 //! Parameters of the quadruped bound and gallop (Raibert & Hodgins 1991,
 //! "Gaits", Table 2), at scale 1, and the two styles.
 
-use super::additions::Offered;
-
 /// The pairs: front then rear; within a pair the leg that lands first in
 /// the gallop comes first (front-right 1, front-left 0, rear-right 3, rear-left 2).
 pub const PAIRS: [[usize; 2]; 2] = [[1, 0], [3, 2]];
@@ -129,12 +127,6 @@ pub struct QuadrupedBoundParams {
     pub gallop_shorter_m: f64,
     /// Gallop: how much further forward the second foot lands (m).
     pub gallop_spread_m: f64,
-}
-
-impl QuadrupedBoundParams {
-    /// The lab's additions this controller has: the speed trim, on (without
-    /// it the skip bound and gallop run 38–54 % slow).
-    pub const LAB_ADDITIONS: Offered = Offered::SPEED_TRIM_ON;
 }
 
 impl Default for QuadrupedBoundParams {

@@ -246,8 +246,7 @@ impl Controller for QuadrupedRun {
                     release(drives, &leg.hip, &data.q, &mut self.hip_target[i]);
                 }
                 Phase::Compression | Phase::Thrust => {
-                    posture.applying[i] = true;
-                    posture.rest[i] = self.stance_rest[i];
+                    posture.applying_rest_m[i] = Some(self.stance_rest[i]);
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 }
             }

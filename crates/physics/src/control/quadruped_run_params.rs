@@ -1,8 +1,6 @@
 //! Parameters of the quadruped trot on diagonal virtual legs (Raibert &
 //! Hodgins 1991, "Gaits"), at scale 1.
 
-use super::additions::Offered;
-
 /// The trot's tuning in [`QuadrupedRun`](super::quadruped_run::QuadrupedRun) (values at scale 1).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GaitTuning {
@@ -81,11 +79,6 @@ pub struct QuadrupedRunParams {
     pub swing_kv: f64,
     /// Largest hip torque (N·m).
     pub max_hip_torque: f64,
-}
-
-impl QuadrupedRunParams {
-    /// The trot has none of the lab's additions.
-    pub const LAB_ADDITIONS: Offered = Offered::NONE;
 }
 
 impl Default for QuadrupedRunParams {
