@@ -34,6 +34,11 @@ pub struct TuneArgs {
     /// table2 stays the tuned speed's.
     #[arg(long, value_delimiter = ',')]
     pub also_at: Vec<f64>,
+    /// Further controller parameters to tune beyond the gait's gains
+    /// (`landing_rest_m,thrust_m`: the keys of `scenario.physics.controller`),
+    /// each scaled from the preset's value (so none may start at 0).
+    #[arg(long, value_delimiter = ',')]
+    pub vary: Vec<String>,
     /// Candidates evaluated in all (the start's included): one simulated run
     /// each, more with `--also-at` and the `jump` term.
     #[arg(long, default_value_t = 200)]
@@ -87,6 +92,7 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
         return Err(Failure::input("also_at: at most 8 speeds"));
     }
     problem.also_at_mps.clone_from(&args.also_at);
+    problem.vary(&args.vary).map_err(Failure::input)?;
     let threads = args
         .threads
         .unwrap_or_else(rayon::current_num_threads)
@@ -108,7 +114,7 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
         "runs".to_owned()
     };
     outln!(
-        "tuning {} · gait {gait} · {} gains ({}) · objective {}{also} · budget {} {budget_of} of {} s · seed {} · {threads} threads",
+        "tuning {} · gait {gait} · {} gains and parameters ({}) · objective {}{also} · budget {} {budget_of} of {} s · seed {} · {threads} threads",
         args.preset,
         problem.names().len(),
         problem.names().join(", "),
@@ -216,7 +222,7 @@ fn write_preset(
         .map(|m| m.entry(gait).or_insert_with(|| serde_json::json!({})));
     if let Some(map) = own.and_then(serde_json::Value::as_object_mut) {
         for (name, value) in problem.names().iter().zip(&tuned.values) {
-            map.insert((*name).to_owned(), (*value).into());
+            map.insert(name.clone(), (*value).into());
         }
     }
     if let Some(d) = preset.get_mut("description") {

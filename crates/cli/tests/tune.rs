@@ -99,6 +99,10 @@ fn bad_tune_arguments_are_named() {
         (vec!["--speed", "99"], "speed"),
         (vec!["--also-at", "1,99"], "also_at[1]"),
         (
+            vec!["--vary", "thrust_m,stance"],
+            "vary[1]: the run controller has no parameter `stance`",
+        ),
+        (
             vec!["--objective", "jump=1"],
             "objective.jump: only the kangaroo",
         ),

@@ -17,6 +17,9 @@ use gaitlab_physics::engine::metrics::GaitSummary;
 
 use crate::objective::{JUMP_BOXES, Objective};
 
+/// Most parameters [`Problem::vary`] adds.
+pub const MAX_VARY: usize = 16;
+
 /// The frame step of a candidate's run (s): the page's 60 Hz.
 const FRAME_S: f64 = 1.0 / 60.0;
 
@@ -26,7 +29,7 @@ pub struct Problem {
     preset: Creature,
     params: PhysicsParams,
     gait: String,
-    names: Vec<&'static str>,
+    names: Vec<String>,
     start: Vec<f64>,
     /// The creature's legs by name (Table 2's per-pair rows need them).
     legs: Vec<String>,
@@ -87,7 +90,7 @@ impl Problem {
             preset: preset.clone(),
             params,
             gait: gait.to_owned(),
-            names: gains.iter().map(|g| g.name).collect(),
+            names: gains.iter().map(|g| g.name.to_owned()).collect(),
             start: gains.iter().map(|g| g.value).collect(),
             legs: driver.leg_names().map(str::to_owned).collect(),
             seconds,
@@ -98,8 +101,55 @@ impl Problem {
 
     /// The gains tuned, by name.
     #[must_use]
-    pub fn names(&self) -> &[&'static str] {
+    pub fn names(&self) -> &[String] {
         &self.names
+    }
+
+    /// Tune these parameters of the gait's controller too (its `controller`
+    /// keys beyond the gains: the paper's "we reduced the standing length of
+    /// the legs" is `landing_rest_m`), each from the value the preset gives
+    /// it. A name tuned already is passed over.
+    ///
+    /// # Errors
+    /// `vary[i]: …` for a name the controller does not have, or one that
+    /// starts at 0 (the search scales each value, so 0 stays 0); `vary`
+    /// for more than [`MAX_VARY`] names.
+    pub fn vary(&mut self, names: &[String]) -> Result<(), PresetError> {
+        if names.len() > MAX_VARY {
+            return Err(PresetError::new(
+                "vary",
+                format!("at most {MAX_VARY} parameters"),
+            ));
+        }
+        let driver = PhysicsDriver::with_params(&self.preset, self.params.clone())?;
+        for (i, name) in names.iter().enumerate() {
+            let field = format!("vary[{i}]");
+            let Some(start) = driver.parameter(name) else {
+                return Err(PresetError::new(
+                    &field,
+                    format!(
+                        "the {} controller has no parameter `{name}` (it has: {})",
+                        self.gait,
+                        driver.parameter_names().join(", ")
+                    ),
+                ));
+            };
+            if self.names.contains(name) {
+                continue;
+            }
+            if !(start.is_finite() && start != 0.0) {
+                return Err(PresetError::new(
+                    &field,
+                    format!(
+                        "`{name}` starts at {start}; the search scales each value, so give it a non-zero start in controller_by_gait.{}",
+                        self.gait
+                    ),
+                ));
+            }
+            self.names.push(name.clone());
+            self.start.push(start);
+        }
+        Ok(())
     }
 
     /// Their starting values (scale 1, the paper's units).
@@ -132,7 +182,7 @@ impl Problem {
         self.start
             .iter()
             .zip(x)
-            .map(|(s, xi)| s.max(1e-9) * xi.clamp(-20.0, 20.0).pexp())
+            .map(|(s, xi)| nonzero(*s) * xi.clamp(-20.0, 20.0).pexp())
             .collect()
     }
 
@@ -145,7 +195,7 @@ impl Problem {
             .entry(self.gait.clone())
             .or_default();
         for (name, v) in self.names.iter().zip(values) {
-            own.insert((*name).to_owned(), *v);
+            own.insert(name.clone(), *v);
         }
         params
     }
@@ -234,4 +284,10 @@ impl Problem {
         let fell = fell || s.fell || driver.resets() > 0;
         Some((s, fell))
     }
+}
+
+/// A start value the search can scale: itself, or 1e-9 for a gain that
+/// starts at 0 (as before; a signed parameter keeps its sign).
+fn nonzero(start: f64) -> f64 {
+    if start < 0.0 { start } else { start.max(1e-9) }
 }

@@ -31,6 +31,7 @@ pub fn words(name: &'static str) -> &'static str {
 }
 
 /// Declares `gains()` and `set_gain()` over named fields of `self.params`
+/// (and `parameter()` over all of `self.params`'s named parameters)
 /// (given as `field => unit`), with `Default` supplying the defaults; or,
 /// as `params.sub = DEFAULT; …`, over the fields of `self.params.sub` with
 /// their defaults in `DEFAULT`.
@@ -60,6 +61,14 @@ macro_rules! tunable_gains {
                 _ => return false,
             }
             true
+        }
+
+        fn parameter(&self, name: &str) -> Option<f64> {
+            $crate::control::parameters::NamedParameters::parameter(&self.params, name)
+        }
+
+        fn parameter_names(&self) -> &'static [&'static str] {
+            $crate::control::parameters::names_of(&self.params)
         }
     };
     ($params:ty; $($field:ident => $unit:literal),* $(,)?) => {

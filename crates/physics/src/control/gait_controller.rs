@@ -141,6 +141,14 @@ impl Controller for GaitController {
     fn set_gain(&mut self, name: &str, value: f64) -> bool {
         self.inner_mut().set_gain(name, value)
     }
+
+    fn parameter(&self, name: &str) -> Option<f64> {
+        self.inner().parameter(name)
+    }
+
+    fn parameter_names(&self) -> &'static [&'static str] {
+        self.inner().parameter_names()
+    }
 }
 
 /// Put `sim` in the starting state of `controller` where it has its own:

@@ -12,13 +12,31 @@ use crate::control::kangaroo_hop_params::KangarooHopParams;
 use crate::control::quadruped_bound_params::QuadrupedBoundParams;
 use crate::control::quadruped_run_params::QuadrupedRunParams;
 
-/// A gait controller's parameters, settable by name.
-pub trait NamedParameters {
-    /// Every name [`NamedParameters::set_parameter`] takes.
+/// A gait controller's parameters, readable and settable by name.
+pub trait NamedParameters: Copy {
+    /// Every name [`NamedParameters::slot`] takes.
     const NAMES: &'static [&'static str];
 
+    /// The field named `name`; `None` when there is none.
+    fn slot(&mut self, name: &str) -> Option<&mut f64>;
+
     /// Sets the parameter `name` to `value`; `false` when there is none.
-    fn set_parameter(&mut self, name: &str, value: f64) -> bool;
+    fn set_parameter(&mut self, name: &str, value: f64) -> bool {
+        self.slot(name).map(|v| *v = value).is_some()
+    }
+
+    /// The parameter `name`'s value; `None` when there is none.
+    fn parameter(&self, name: &str) -> Option<f64> {
+        let mut copy = *self;
+        copy.slot(name).map(|v| *v)
+    }
+}
+
+/// The names `params`'s type takes (for a controller that has the value,
+/// not the type, at hand).
+#[must_use]
+pub fn names_of<P: NamedParameters>(_params: &P) -> &'static [&'static str] {
+    P::NAMES
 }
 
 /// Implements [`NamedParameters`] over plain `f64` fields, in groups: `[a, b]`
@@ -29,18 +47,15 @@ macro_rules! named_parameters {
         impl NamedParameters for $params {
             const NAMES: &'static [&'static str] = &[$($(stringify!($field),)*)+];
 
-            fn set_parameter(&mut self, name: &str, value: f64) -> bool {
-                $({
+            fn slot(&mut self, name: &str) -> Option<&mut f64> {
+                $(if [$(stringify!($field)),*].contains(&name) {
                     let fields = &mut (*self)$(.$path)*;
-                    match name {
-                        $(stringify!($field) => {
-                            fields.$field = value;
-                            return true;
-                        })*
-                        _ => {}
-                    }
+                    return match name {
+                        $(stringify!($field) => Some(&mut fields.$field),)*
+                        _ => None,
+                    };
                 })+
-                false
+                None
             }
         }
     };
@@ -99,9 +114,9 @@ impl NamedParameters for QuadrupedRunParams {
         "max_hip_torque",
     ];
 
-    fn set_parameter(&mut self, name: &str, value: f64) -> bool {
+    fn slot(&mut self, name: &str) -> Option<&mut f64> {
         let t = &mut self.trot;
-        let slot = match name {
+        Some(match name {
             "leg_stiffness" => &mut t.leg_stiffness,
             "leg_damping" => &mut t.leg_damping,
             "leg_air_damping" => &mut t.leg_air_damping,
@@ -128,10 +143,8 @@ impl NamedParameters for QuadrupedRunParams {
             "swing_kp" => &mut self.swing_kp,
             "swing_kv" => &mut self.swing_kv,
             "max_hip_torque" => &mut self.max_hip_torque,
-            _ => return false,
-        };
-        *slot = value;
-        true
+            _ => return None,
+        })
     }
 }
 
@@ -144,8 +157,10 @@ mod tests {
             let mut p = P::default();
             assert!(p.set_parameter(name, 12.345), "{name}");
             assert_ne!(p, P::default(), "{name} changed nothing");
+            assert_eq!(p.parameter(name), Some(12.345), "{name} reads back");
         }
         assert!(!P::default().set_parameter("no_such_parameter", 1.0));
+        assert_eq!(P::default().parameter("no_such_parameter"), None);
     }
 
     #[test]

@@ -399,6 +399,19 @@ impl PhysicsDriver {
         self.controller.gains()
     }
 
+    /// The running controller's parameter `name` (a `controller` key of the
+    /// preset, at scale 1); `None` when it has none of that name.
+    #[must_use]
+    pub fn parameter(&self, name: &str) -> Option<f64> {
+        self.controller.parameter(name)
+    }
+
+    /// The names [`PhysicsDriver::parameter`] takes.
+    #[must_use]
+    pub fn parameter_names(&self) -> &'static [&'static str] {
+        self.controller.parameter_names()
+    }
+
     /// Set one of [`PhysicsDriver::gains`] by name (finite, ≥ 0; no upper
     /// limit: an absurd gain blows up and the guard resets the creature).
     ///

@@ -129,6 +129,17 @@ pub trait Controller {
     fn set_gain(&mut self, _name: &str, _value: f64) -> bool {
         false
     }
+
+    /// Any of its parameters by name (the preset's `controller` keys, at
+    /// scale 1), gains included; `None` when it has no such parameter.
+    fn parameter(&self, _name: &str) -> Option<f64> {
+        None
+    }
+
+    /// The names [`Controller::parameter`] takes.
+    fn parameter_names(&self) -> &'static [&'static str] {
+        &[]
+    }
 }
 
 /// One gain a person may tune while a controller runs (the app's sliders,
