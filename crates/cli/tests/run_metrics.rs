@@ -163,6 +163,25 @@ fn the_quadruped_preset_from_before_its_trot_gains_runs_as_it_was_made() {
     assert_ne!(now["pitch_magnitude_deg"], want["pitch_magnitude_deg"]);
 }
 
+/// DESIGN.md "Versions": the bundled biped as it was on 2026-12-03, before
+/// its gallops carried gains of their own (`controller_by_gait.gallop`,
+/// `.gallop_alternate`) and turned the speed trim off, saved galloping: the
+/// file runs exactly as recorded then (the trim on, the controller's own
+/// gains), and the bundled biped now gallops by the paper's laws alone.
+#[test]
+fn the_biped_preset_from_before_its_gallop_gains_runs_as_it_was_made() {
+    let (all, got, want) = replay("raibert-biped_2026_12_03");
+    assert_eq!(all["lab_additions"], serde_json::json!(["speed_trim"]));
+    assert_eq!(got, want);
+    let now = run_json(
+        "raibert-biped",
+        "10",
+        &["--gait", "gallop", "--speed", "1.5"],
+    );
+    assert_eq!(now["lab_additions"], serde_json::json!([]));
+    assert_ne!(now["pitch_magnitude_deg"], want["pitch_magnitude_deg"]);
+}
+
 fn cli_metrics(preset: &str, seconds: &str) -> Value {
     run_json(preset, seconds, &[])
 }

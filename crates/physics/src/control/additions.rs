@@ -61,8 +61,9 @@ impl Offered {
         ..Self::NONE
     };
 
-    /// The biped gallops: the speed trim, on (without it they miss the
-    /// desired speed by 25–46 %).
+    /// The biped gallops: the speed trim, on (with the controller's own
+    /// gains they miss the desired speed by 25–46 % without it; the bundled
+    /// biped carries gallop gains that need none and turns it off).
     pub const BIPED_GALLOP: Self = Self {
         speed_trim: Some(true),
         ..Self::NONE
