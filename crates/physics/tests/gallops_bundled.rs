@@ -7,31 +7,14 @@
 //! the alternate-swing one ("pitching of the body in response to swinging
 //! of the legs is greatly reduced in the second form").
 
-use gaitlab_core::driver::Driver;
-use gaitlab_core::preset::load_bundled;
-use gaitlab_physics::PhysicsDriver;
+mod common;
+
+use common::{bundled, paper_only_run, speed_error};
 use gaitlab_physics::engine::metrics::GaitSummary;
 
 /// The bundled biped's `gait` at `speed` (m/s) for 60 s of simulated time.
 fn gallop(gait: &str, speed: f64) -> GaitSummary {
-    let Some(Ok(preset)) = load_bundled("raibert-biped") else {
-        panic!("the biped is bundled")
-    };
-    let Some(mut params) = preset.scenario.physics.clone() else {
-        panic!("a physics preset")
-    };
-    params.gait = Some(gait.to_owned());
-    params.speed_mps = speed;
-    let mut driver = match PhysicsDriver::with_params(&preset, params) {
-        Ok(driver) => driver,
-        Err(error) => panic!("{error}"),
-    };
-    assert_eq!(driver.lab_additions().count(), 0, "paper-only");
-    while driver.time() < 60.0 {
-        driver.step(1.0 / 60.0);
-    }
-    assert_eq!(driver.resets(), 0, "{gait} at {speed} m/s fell");
-    driver.summary()
+    paper_only_run(&bundled("raibert-biped"), Some(gait), speed, 60.0).0
 }
 
 #[test]
@@ -40,13 +23,7 @@ fn both_gallops_hold_their_speed_a_minute_by_the_papers_laws() {
     for (k, gait) in ["gallop", "gallop_alternate"].into_iter().enumerate() {
         for speed in [1.0, 1.5, 2.0] {
             let s = gallop(gait, speed);
-            let off = (s.speed_mean_mps - speed) / speed;
-            println!(
-                "{gait} at {speed} m/s: mean {:.3} ({:+.1} %), pitch {:.1}°",
-                s.speed_mean_mps,
-                100.0 * off,
-                s.pitch_magnitude_deg
-            );
+            let off = speed_error(&s, gait, speed);
             assert!(
                 !s.fell && off.abs() < 0.10,
                 "{gait} at {speed}: {:+.1} %",
