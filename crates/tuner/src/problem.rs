@@ -108,12 +108,14 @@ impl Problem {
     /// Tune these parameters of the gait's controller too (its `controller`
     /// keys beyond the gains: the paper's "we reduced the standing length of
     /// the legs" is `landing_rest_m`), each from the value the preset gives
-    /// it. A name tuned already is passed over.
+    /// it. A name tuned already is passed over. On an error nothing is
+    /// added.
     ///
     /// # Errors
-    /// `vary[i]: …` for a name the controller does not have, or one that
-    /// starts at 0 (the search scales each value, so 0 stays 0); `vary`
-    /// for more than [`MAX_VARY`] names.
+    /// `vary[i]: …` for a name the controller does not have, one that
+    /// starts at 0 (the search scales each value, so 0 stays 0) or one
+    /// another field of the preset sets (the bound's `stride_flight_s`
+    /// follows `hop_height_m`); `vary` for more than [`MAX_VARY`] names.
     pub fn vary(&mut self, names: &[String]) -> Result<(), PresetError> {
         if names.len() > MAX_VARY {
             return Err(PresetError::new(
@@ -122,6 +124,7 @@ impl Problem {
             ));
         }
         let driver = PhysicsDriver::with_params(&self.preset, self.params.clone())?;
+        let mut added: Vec<(String, f64)> = Vec::new();
         for (i, name) in names.iter().enumerate() {
             let field = format!("vary[{i}]");
             let Some(start) = driver.parameter(name) else {
@@ -134,7 +137,7 @@ impl Problem {
                     ),
                 ));
             };
-            if self.names.contains(name) {
+            if self.names.contains(name) || added.iter().any(|(n, _)| n == name) {
                 continue;
             }
             if !(start.is_finite() && start != 0.0) {
@@ -146,7 +149,29 @@ impl Problem {
                     ),
                 ));
             }
-            self.names.push(name.clone());
+            // A value written for the gait must reach its controller.
+            let probe = 1.5 * start;
+            let mut params = self.params.clone();
+            params
+                .controller_by_gait
+                .entry(self.gait.clone())
+                .or_default()
+                .insert(name.clone(), probe);
+            let reached = PhysicsDriver::with_params(&self.preset, params)
+                .ok()
+                .and_then(|d| d.parameter(name));
+            if reached != Some(probe) {
+                return Err(PresetError::new(
+                    &field,
+                    format!(
+                        "another field of the preset sets `{name}` (the hop height?), so tuning it would change nothing"
+                    ),
+                ));
+            }
+            added.push((name.clone(), start));
+        }
+        for (name, start) in added {
+            self.names.push(name);
             self.start.push(start);
         }
         Ok(())

@@ -96,6 +96,27 @@ fn names_the_search_cannot_use_are_refused_by_field() {
     assert!(error.starts_with("vary[0]:"), "{error}");
     assert!(error.contains("starts at 0"), "{error}");
 
+    // The bound's flight per stride follows the preset's hop height.
+    let Some(Ok(mut quadruped)) = load_bundled("raibert-quadruped") else {
+        panic!("raibert-quadruped is bundled")
+    };
+    if let Some(physics) = quadruped.scenario.physics.as_mut() {
+        physics.hop_height_m = Some(0.05);
+    }
+    let objective = Objective::parse("fall=10").unwrap_or_default();
+    let mut bound = match Problem::new(&quadruped, "bound", SECONDS, objective) {
+        Ok(p) => p,
+        Err(error) => panic!("{error}"),
+    };
+    let gains = bound.names().len();
+    let error = bound
+        .vary(&names(&["thrust_m", "stride_flight_s"]))
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(error.starts_with("vary[1]: another field"), "{error}");
+    assert_eq!(bound.names().len(), gains, "nothing added on an error");
+
     let many: Vec<String> = (0..17).map(|_| "thrust_m".to_owned()).collect();
     let error = p
         .vary(&many)

@@ -31,10 +31,11 @@ pub fn words(name: &'static str) -> &'static str {
 }
 
 /// Declares `gains()` and `set_gain()` over named fields of `self.params`
-/// (and `parameter()` over all of `self.params`'s named parameters)
 /// (given as `field => unit`), with `Default` supplying the defaults; or,
 /// as `params.sub = DEFAULT; …`, over the fields of `self.params.sub` with
-/// their defaults in `DEFAULT`.
+/// their defaults in `DEFAULT`. Also `parameter()` and `parameter_names()`
+/// over every named parameter of `self.params`
+/// ([`NamedParameters`](crate::control::parameters::NamedParameters)).
 #[macro_export]
 #[doc(hidden)]
 macro_rules! tunable_gains {
