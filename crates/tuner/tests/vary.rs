@@ -41,6 +41,15 @@ fn names(list: &[&str]) -> Vec<String> {
     list.iter().map(|&s| s.to_owned()).collect()
 }
 
+/// Why `problem` refuses to vary `list` ("" when it accepts them).
+fn refusal(problem: &mut Problem, list: &[&str]) -> String {
+    problem
+        .vary(&names(list))
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default()
+}
+
 #[test]
 fn a_varied_parameter_starts_at_the_presets_value_and_reaches_the_run() {
     let mut varied = problem(&biped(Some(0.031)));
@@ -71,11 +80,7 @@ fn a_varied_parameter_starts_at_the_presets_value_and_reaches_the_run() {
 #[test]
 fn names_the_search_cannot_use_are_refused_by_field() {
     let mut p = problem(&biped(None));
-    let error = p
-        .vary(&names(&["thrust_m", "no_such_key"]))
-        .err()
-        .map(|e| e.to_string())
-        .unwrap_or_default();
+    let error = refusal(&mut p, &["thrust_m", "no_such_key"]);
     assert!(error.starts_with("vary[1]:"), "{error}");
     assert!(error.contains("no parameter `no_such_key`"), "{error}");
     assert!(error.contains("landing_rest_m"), "lists the keys: {error}");
@@ -88,11 +93,7 @@ fn names_the_search_cannot_use_are_refused_by_field() {
             .or_default()
             .insert("thrust_m".to_owned(), 0.0);
     }
-    let error = problem(&creature)
-        .vary(&names(&["thrust_m"]))
-        .err()
-        .map(|e| e.to_string())
-        .unwrap_or_default();
+    let error = refusal(&mut problem(&creature), &["thrust_m"]);
     assert!(error.starts_with("vary[0]:"), "{error}");
     assert!(error.contains("starts at 0"), "{error}");
 
@@ -109,19 +110,10 @@ fn names_the_search_cannot_use_are_refused_by_field() {
         Err(error) => panic!("{error}"),
     };
     let gains = bound.names().len();
-    let error = bound
-        .vary(&names(&["thrust_m", "stride_flight_s"]))
-        .err()
-        .map(|e| e.to_string())
-        .unwrap_or_default();
+    let error = refusal(&mut bound, &["thrust_m", "stride_flight_s"]);
     assert!(error.starts_with("vary[1]: another field"), "{error}");
     assert_eq!(bound.names().len(), gains, "nothing added on an error");
 
-    let many: Vec<String> = (0..17).map(|_| "thrust_m".to_owned()).collect();
-    let error = p
-        .vary(&many)
-        .err()
-        .map(|e| e.to_string())
-        .unwrap_or_default();
+    let error = refusal(&mut p, &["thrust_m"; 17]);
     assert!(error.starts_with("vary:"), "{error}");
 }
