@@ -7,7 +7,8 @@ use gaitlab_core::preset::physics::LabAdditions;
 
 /// Which additions a gait's controller runs with. Defaults for a file with
 /// `lab_additions`: the trim off for the biped run and the kangaroo hop (the
-/// gallops and the bound do not yet hold their speed without it);
+/// gallops and the bound do not hold their speed without it with the
+/// controllers' own gains);
 /// Unloading's posture servo on, as such files ran when it was made (the
 /// bundled biped turns it off: with its yaw damping it runs without).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
