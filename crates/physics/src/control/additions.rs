@@ -43,7 +43,8 @@ pub struct Offered {
 }
 
 /// Each controller's offer, in one table: which of the lab's additions it
-/// has, and each one's default for a file that does not name it.
+/// has, and each one's default for a file that does not name it. The trot
+/// has none (it holds its speed by eq. 3 alone) and asks for none.
 impl Offered {
     /// No addition: the controller runs the paper's laws only.
     const NONE: Self = Self {
@@ -69,9 +70,6 @@ impl Offered {
         speed_trim: Some(true),
         ..Self::NONE
     };
-
-    /// The trot: none (it holds its speed by eq. 3 alone).
-    pub const TROT: Self = Self::NONE;
 
     /// The quadruped bound and gallop: the speed trim, on (without it the
     /// skip bound and gallop run 38–54 % slow).
