@@ -9,6 +9,7 @@
 
 use crate::dynamics::data::Data;
 use crate::dynamics::model::Model;
+use crate::dynamics::sparse;
 use crate::dynamics::spatial::{Force, Motion};
 
 /// Why the dynamics could not be solved.
@@ -29,7 +30,15 @@ impl std::error::Error for DynamicsError {}
 /// Gravity on body `i` as a spatial force in body coordinates.
 pub(crate) fn gravity_force(model: &Model, data: &Data, i: usize) -> Force {
     let body = &model.bodies()[i];
-    let g_body = data.world[i].rot.transpose() * model.gravity;
+    let rot = &data.world[i].rot;
+    let g = model.gravity;
+    let g_body = if g.x == 0.0 && g.z == 0.0 {
+        // Vertical gravity: only the world-vertical row of the rotation
+        // contributes (the same bits as the full product).
+        glam::DVec3::new(rot.x_axis.y, rot.y_axis.y, rot.z_axis.y) * g.y
+    } else {
+        rot.transpose() * g
+    };
     Force::at_point(body.com, g_body * body.mass)
 }
 
@@ -55,8 +64,8 @@ pub fn accelerations(model: &Model, data: &mut Data) -> Result<(), DynamicsError
     let bodies = model.bodies();
     // Pass 1: rigid-body inertias and bias forces.
     for i in 0..bodies.len() {
-        let inertia = *model.inertia(i);
-        data.art_inertia[i] = inertia;
+        data.art_inertia[i] = *model.inertia(i);
+        let inertia = &data.art_inertia[i];
         data.art_bias[i] = if bodies[i].mass > 0.0 {
             let v = data.velocity[i];
             v.cross_force(inertia.mul(v)) - data.external[i] - gravity_force(model, data, i)
@@ -69,7 +78,7 @@ pub fn accelerations(model: &Model, data: &mut Data) -> Result<(), DynamicsError
     for i in (0..bodies.len()).rev() {
         let Some(k) = model.dof_of(i) else { continue };
         let s = bodies[i].joint.subspace();
-        let ia = data.art_inertia[i];
+        let ia = &data.art_inertia[i];
         let u_force = match bodies[i].joint {
             crate::dynamics::model::Joint::Revolute(axis) => ia.mul_angular(axis),
             crate::dynamics::model::Joint::Prismatic(axis) => ia.mul_linear(axis),
@@ -89,9 +98,12 @@ pub fn accelerations(model: &Model, data: &mut Data) -> Result<(), DynamicsError
             let ia_child = ia.minus_outer(u_force, d);
             let pa_child =
                 data.art_bias[i] + ia_child.mul(data.velocity_product[i]) + u_force.scale(u / d);
-            let link = data.link[i];
-            data.art_inertia[p] += link.inertia_to_parent(&ia_child);
-            data.art_bias[p] += link.force_to_parent(pa_child);
+            let link = &data.link[i];
+            let shape = model.link_shape(i);
+            let to_parent = sparse::inertia_to_parent(link, shape, &ia_child);
+            let bias_to_parent = sparse::force_to_parent(link, shape, pa_child);
+            data.art_inertia[p] += to_parent;
+            data.art_bias[p] += bias_to_parent;
         }
     }
     // Pass 3: accelerations, root to leaves.
@@ -108,7 +120,11 @@ pub fn accelerations(model: &Model, data: &mut Data) -> Result<(), DynamicsError
             }
             Some(k) => {
                 let parent_acc = match bodies[i].parent {
-                    Some(p) => data.link[i].motion_to_child(data.acceleration[p]),
+                    Some(p) => sparse::motion_to_child(
+                        &data.link[i],
+                        model.link_shape(i),
+                        data.acceleration[p],
+                    ),
                     None => Motion::ZERO,
                 };
                 let a = parent_acc + data.velocity_product[i];

@@ -8,20 +8,32 @@ use glam::DMat3;
 
 use crate::dynamics::data::Data;
 use crate::dynamics::model::{Joint, Model};
+use crate::dynamics::sparse;
 use crate::dynamics::spatial::{Motion, ParentLink};
 
-/// The joint's frame in its parent for coordinate `q`.
+/// The joint's frame in its parent for coordinate `q` (an unrotated
+/// placement's identity product left out: the same bits).
 #[must_use]
 pub fn joint_link(placement: &ParentLink, joint: &Joint, q: f64) -> ParentLink {
+    let unrotated = placement.rot == DMat3::IDENTITY;
     match *joint {
         Joint::Free => *placement,
         Joint::Revolute(axis) => ParentLink {
-            rot: placement.rot * DMat3::from_axis_angle(axis, q),
+            rot: if unrotated {
+                DMat3::from_axis_angle(axis, q)
+            } else {
+                placement.rot * DMat3::from_axis_angle(axis, q)
+            },
             pos: placement.pos,
         },
         Joint::Prismatic(axis) => ParentLink {
             rot: placement.rot,
-            pos: placement.pos + placement.rot * (axis * q),
+            pos: placement.pos
+                + if unrotated {
+                    axis * q
+                } else {
+                    placement.rot * (axis * q)
+                },
         },
     }
 }
@@ -29,6 +41,7 @@ pub fn joint_link(placement: &ParentLink, joint: &Joint, q: f64) -> ParentLink {
 /// Run the kinematics pass.
 pub fn kinematics(model: &Model, data: &mut Data) {
     for (i, body) in model.bodies().iter().enumerate() {
+        let shape = model.link_shape(i);
         let (link, vel_joint) = match model.dof_of(i) {
             None => (
                 ParentLink {
@@ -47,8 +60,8 @@ pub fn kinematics(model: &Model, data: &mut Data) {
             (None, _) => (link, vel_joint),
             (Some(_), None) => (link, vel_joint),
             (Some(_), Some(p)) => (
-                data.world[p].then(&link),
-                link.motion_to_child(data.velocity[p]) + vel_joint,
+                sparse::then(&data.world[p], &link, shape),
+                sparse::motion_to_child(&link, shape, data.velocity[p]) + vel_joint,
             ),
         };
         data.world[i] = world;

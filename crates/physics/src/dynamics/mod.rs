@@ -2,9 +2,10 @@
 //! equations of motion that move it (Raibert & Hodgins 1991, "Modeling";
 //! Featherstone 2008).
 //!
-//! [`spatial`] algebra; the immutable [`model`] and its mutable [`data`];
-//! [`kinematics`] → [`aba`] (forward dynamics, O(n)) → [`integrate`]; [`crba`]
-//! and [`rnea`], the independent O(n³) path; [`energy`] and momentum, what the
+//! [`spatial`] algebra and its [`sparse`] forms for coordinate-axis joints;
+//! the immutable [`model`] and its mutable [`data`]; [`kinematics`] →
+//! [`aba`] (forward dynamics, O(n)) → [`integrate`]; [`crba`] and [`rnea`],
+//! the independent O(n³) path; [`energy`] and momentum, what the
 //! tests hold the others to. Knows nothing of legs, ground or control.
 
 pub mod aba;
@@ -15,4 +16,5 @@ pub mod integrate;
 pub mod kinematics;
 pub mod model;
 pub mod rnea;
+pub mod sparse;
 pub mod spatial;

@@ -12,6 +12,20 @@ use glam::{DMat3, DVec3};
 
 use crate::dynamics::spatial::{Inertia, Motion, ParentLink};
 
+/// Which entries of a link's rotation (in its parent) are known to be
+/// exactly zero, from its joint and placement ([`Model::link_shape`]); the
+/// products of [`crate::dynamics::sparse`] leave them out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RotShape {
+    /// The rotation is the identity (a slider with an unrotated placement).
+    Identity,
+    /// A rotation about coordinate axis 0, 1 or 2 (x, y, z): row and column
+    /// off the diagonal are zero.
+    About(usize),
+    /// Nothing known.
+    General,
+}
+
 /// How a body moves relative to its parent.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Joint {
@@ -61,6 +75,30 @@ impl Body {
     pub fn spatial_inertia(&self) -> Inertia {
         Inertia::rigid(self.mass, self.com, self.inertia_com)
     }
+
+    /// The zero pattern of this body's rotation in its parent: the identity
+    /// for a slider placed unrotated, a rotation about a coordinate axis for
+    /// a hinge placed unrotated on that axis (`DMat3::from_axis_angle` gives
+    /// exact zeros off the diagonal in the axis' row and column).
+    #[must_use]
+    pub fn link_shape(&self) -> RotShape {
+        if self.placement.rot != DMat3::IDENTITY {
+            return RotShape::General;
+        }
+        match self.joint {
+            Joint::Free => RotShape::General,
+            Joint::Prismatic(_) => RotShape::Identity,
+            Joint::Revolute(axis) => {
+                let zeros = axis.to_array().map(|c| c == 0.0);
+                match zeros {
+                    [false, true, true] => RotShape::About(0),
+                    [true, false, true] => RotShape::About(1),
+                    [true, true, false] => RotShape::About(2),
+                    _ => RotShape::General,
+                }
+            }
+        }
+    }
 }
 
 /// Why a model is rejected.
@@ -86,6 +124,7 @@ pub struct Model {
     bodies: Vec<Body>,
     /// Each body's spatial inertia about its origin (cached from the body).
     inertias: Vec<Inertia>,
+    shapes: Vec<RotShape>,
     /// Each body's joint coordinate index (`None` for the free root).
     dof: Vec<Option<usize>>,
     dof_count: usize,
@@ -163,8 +202,10 @@ impl Model {
         }
         let free_base = bodies[0].joint == Joint::Free;
         let inertias = bodies.iter().map(Body::spatial_inertia).collect();
+        let shapes = bodies.iter().map(Body::link_shape).collect();
         Ok(Self {
             inertias,
+            shapes,
             bodies,
             dof,
             dof_count: count,
@@ -185,7 +226,13 @@ impl Model {
         &self.inertias[body]
     }
 
-    /// Body `i`'s joint coordinate index (`None` for the free root).
+    /// Which entries of body `body`'s rotation in its parent are exactly
+    /// zero at every joint coordinate ([`crate::dynamics::sparse`]).
+    #[must_use]
+    pub fn link_shape(&self, body: usize) -> RotShape {
+        self.shapes[body]
+    }
+
     #[must_use]
     pub fn dof_of(&self, body: usize) -> Option<usize> {
         self.dof[body]
