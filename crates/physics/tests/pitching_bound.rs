@@ -11,6 +11,8 @@ mod common;
 
 use common::{paper_only_run, speed_error, table2_diffs};
 use gaitlab_core::Creature;
+use gaitlab_core::driver::Driver;
+use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::engine::metrics::GaitSummary;
 
 const PRESET: &str =
@@ -50,4 +52,33 @@ fn the_experiment_holds_a_minute_at_a_low_speed() {
     let (s, _) = bound(1.5, 60.0);
     let off = speed_error(&s, "bound", 1.5);
     assert!(off.abs() < 0.12, "{:+.1} %", 100.0 * off);
+}
+
+/// With the lab's speed trim turned on at the experiment's own trim gain
+/// (`speed_integral_gain` 0.05; at the bound's default 0.11 it falls at
+/// 2.0 and 2.3 m/s) the experiment holds its speed there within 2 %.
+#[test]
+fn with_the_labs_trim_at_its_gain_the_experiment_holds_its_speed() {
+    let preset = match Creature::from_json(PRESET) {
+        Ok(preset) => preset,
+        Err(error) => panic!("{error}"),
+    };
+    for speed in [2.0, 2.3] {
+        let Some(mut params) = preset.scenario.physics.clone() else {
+            panic!("a physics preset")
+        };
+        params.speed_mps = speed;
+        params.lab_additions.get_or_insert_default().speed_trim = Some(true);
+        let mut driver = match PhysicsDriver::with_params(&preset, params) {
+            Ok(driver) => driver,
+            Err(error) => panic!("{error}"),
+        };
+        assert_eq!(driver.lab_additions().collect::<Vec<_>>(), ["speed_trim"]);
+        while driver.time() < 60.0 && driver.resets() == 0 {
+            driver.step(1.0 / 60.0);
+        }
+        assert_eq!(driver.resets(), 0, "fell at {speed} m/s");
+        let off = speed_error(&driver.summary(), "bound, trim on", speed);
+        assert!(off.abs() < 0.02, "{:+.1} %", 100.0 * off);
+    }
 }

@@ -10,7 +10,8 @@ use gaitlab_physics::engine::metrics::GaitSummary;
 
 /// `preset`'s `gait` (its own when `None`) at `speed` (m/s) for `seconds`
 /// of simulated time, asserting it runs with none of the lab's additions
-/// and does not fall; its summary and leg names.
+/// and does not fall (the run stops at a fall's restart, which would
+/// otherwise start the clock again); its summary and leg names.
 pub fn paper_only_run(
     preset: &Creature,
     gait: Option<&str>,
@@ -29,7 +30,7 @@ pub fn paper_only_run(
         Err(error) => panic!("{error}"),
     };
     assert_eq!(driver.lab_additions().count(), 0, "paper-only");
-    while driver.time() < seconds {
+    while driver.time() < seconds && driver.resets() == 0 {
         driver.step(1.0 / 60.0);
     }
     assert_eq!(driver.resets(), 0, "{gait:?} at {speed} m/s fell");
