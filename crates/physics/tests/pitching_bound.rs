@@ -9,10 +9,9 @@
 
 mod common;
 
-use common::{paper_only_run, speed_error, table2_diffs};
+use common::{paper_only_run, run, speed_error, table2_diffs};
 use gaitlab_core::Creature;
-use gaitlab_core::driver::Driver;
-use gaitlab_physics::PhysicsDriver;
+use gaitlab_core::preset::physics::PhysicsParams;
 use gaitlab_physics::engine::metrics::GaitSummary;
 
 const PRESET: &str =
@@ -64,21 +63,11 @@ fn with_the_labs_trim_at_its_gain_the_experiment_holds_its_speed() {
         Err(error) => panic!("{error}"),
     };
     for speed in [2.0, 2.3] {
-        let Some(mut params) = preset.scenario.physics.clone() else {
-            panic!("a physics preset")
+        let trim_on = |p: &mut PhysicsParams| {
+            p.lab_additions.get_or_insert_default().speed_trim = Some(true);
         };
-        params.speed_mps = speed;
-        params.lab_additions.get_or_insert_default().speed_trim = Some(true);
-        let mut driver = match PhysicsDriver::with_params(&preset, params) {
-            Ok(driver) => driver,
-            Err(error) => panic!("{error}"),
-        };
-        assert_eq!(driver.lab_additions().collect::<Vec<_>>(), ["speed_trim"]);
-        while driver.time() < 60.0 && driver.resets() == 0 {
-            driver.step(1.0 / 60.0);
-        }
-        assert_eq!(driver.resets(), 0, "fell at {speed} m/s");
-        let off = speed_error(&driver.summary(), "bound, trim on", speed);
+        let (s, _) = run(&preset, None, speed, 60.0, trim_on, &["speed_trim"]);
+        let off = speed_error(&s, "bound, trim on", speed);
         assert!(off.abs() < 0.02, "{:+.1} %", 100.0 * off);
     }
 }

@@ -5,18 +5,34 @@
 
 use gaitlab_core::Creature;
 use gaitlab_core::driver::Driver;
+use gaitlab_core::preset::physics::PhysicsParams;
 use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::engine::metrics::GaitSummary;
 
 /// `preset`'s `gait` (its own when `None`) at `speed` (m/s) for `seconds`
 /// of simulated time, asserting it runs with none of the lab's additions
-/// and does not fall (the run stops at a fall's restart, which would
-/// otherwise start the clock again); its summary and leg names.
+/// and does not fall; its summary and leg names.
 pub fn paper_only_run(
     preset: &Creature,
     gait: Option<&str>,
     speed: f64,
     seconds: f64,
+) -> (GaitSummary, Vec<String>) {
+    run(preset, gait, speed, seconds, |_| {}, &[])
+}
+
+/// `preset`'s `gait` (its own when `None`) at `speed` (m/s) for `seconds`
+/// of simulated time, after `edit` has changed its physics parameters,
+/// asserting it runs with exactly the lab's additions `additions` and does
+/// not fall (the run stops at a fall's restart, which would otherwise start
+/// the clock again); its summary and leg names.
+pub fn run(
+    preset: &Creature,
+    gait: Option<&str>,
+    speed: f64,
+    seconds: f64,
+    edit: impl FnOnce(&mut PhysicsParams),
+    additions: &[&str],
 ) -> (GaitSummary, Vec<String>) {
     let Some(mut params) = preset.scenario.physics.clone() else {
         panic!("a physics preset")
@@ -25,11 +41,16 @@ pub fn paper_only_run(
         params.gait = Some(gait.to_owned());
     }
     params.speed_mps = speed;
+    edit(&mut params);
     let mut driver = match PhysicsDriver::with_params(preset, params) {
         Ok(driver) => driver,
         Err(error) => panic!("{error}"),
     };
-    assert_eq!(driver.lab_additions().count(), 0, "paper-only");
+    assert_eq!(
+        driver.lab_additions().collect::<Vec<_>>(),
+        additions,
+        "the lab's additions"
+    );
     while driver.time() < seconds && driver.resets() == 0 {
         driver.step(1.0 / 60.0);
     }
