@@ -85,7 +85,11 @@ describe('physics engine (WebGL2)', () => {
       const until = (test, arg, timeout) => page.waitForFunction(test, arg, { timeout, polling: 50 })
         .then(() => true, () => false);
 
-      // A box 3 m ahead: the kangaroo's jump states run, and it lands beyond the box, still up.
+      // It starts on its hopping cycle at the preset's 5 m/s, where it does not jump a box; its
+      // speed ramp brings it to 3 m/s at 0.25 m/s² (8 s). Then a box 3 m ahead: the kangaroo's
+      // jump states run, and it lands beyond the box, still up.
+      assert.equal(await command(page, { speed_mps: 3 }), 'ok');
+      assert.ok(await until(() => JSON.parse(window.gaitlab.state()).physics.steps > 25_000, null, 120_000), 'slowed to 3 m/s');
       let s = await phys();
       const start = s.position_m[1];
       assert.equal(await command(page, { obstacle_ahead_m: 3 }), 'ok');

@@ -399,13 +399,13 @@ fn the_gait_panel_says_while_legs_take_a_switch_on() {
 #[test]
 fn the_physics_panel_names_the_lab_additions_and_has_every_creatures_inputs() {
     // The bundled biped runs by the paper's laws alone; the kangaroo keeps
-    // its speed ramp and tail feedback; the trot uses none of the named
-    // additions.
+    // its speed ramp (for changes of speed) and starts on its cycle; the
+    // trot uses none of the named additions.
     for (preset, want) in [
         ("raibert-biped", "Lab's additions: none"),
         (
             "raibert-kangaroo",
-            "Lab's additions (not in the paper): speed ramp, tail feedback",
+            "Lab's additions (not in the paper): speed ramp",
         ),
         ("raibert-quadruped", "Lab's additions: none"),
     ] {
@@ -414,6 +414,15 @@ fn the_physics_panel_names_the_lab_additions_and_has_every_creatures_inputs() {
         assert!(
             harness.query_all_by_label(want).next().is_some(),
             "{preset}: no line \"{want}\""
+        );
+        let on_cycle = harness
+            .query_all_by_label("Start: on the gait's cycle (the lab's)")
+            .next()
+            .is_some();
+        assert_eq!(
+            on_cycle,
+            preset == "raibert-kangaroo",
+            "{preset}: the start line"
         );
         let jump = harness
             .query_all_by_label("Place a box 3 m ahead")

@@ -163,6 +163,30 @@ fn the_quadruped_preset_from_before_its_trot_gains_runs_as_it_was_made() {
     assert_ne!(now["pitch_magnitude_deg"], want["pitch_magnitude_deg"]);
 }
 
+/// DESIGN.md "Versions": the bundled kangaroo as it was on 2026-12-03,
+/// before it started on its hopping cycle with the tuner's gains and the
+/// tail only stepped: the file runs exactly as recorded then (from the
+/// gait's own start at 2 m/s, the speed ramp and the tail feedback on), and
+/// the bundled kangaroo now starts at speed by the paper's laws.
+#[test]
+fn the_kangaroo_preset_from_before_its_start_on_the_cycle_runs_as_it_was_made() {
+    let (all, got, want) = replay("raibert-kangaroo_2026_12_03");
+    assert_eq!(all["start"], "gait");
+    assert_eq!(
+        all["lab_additions"],
+        serde_json::json!(["speed_ramp", "tail_feedback"])
+    );
+    assert_eq!(got, want);
+    let now = run_json("raibert-kangaroo", "10", &[]);
+    assert_eq!(now["start"], "on_cycle");
+    assert_eq!(now["lab_additions"], serde_json::json!(["speed_ramp"]));
+    let (was, is) = (&want["speed_mean_mps"], &now["speed_mean_mps"]);
+    assert!(
+        was.as_f64() < Some(4.0) && is.as_f64() > Some(4.5),
+        "{was} → {is}"
+    );
+}
+
 /// DESIGN.md "Versions": the bundled biped as it was on 2026-12-03, before
 /// its gallops carried gains of their own (`controller_by_gait.gallop`,
 /// `.gallop_alternate`) and turned the speed trim off, saved galloping: the

@@ -458,6 +458,12 @@ pub struct PhysicsRunMetrics {
     /// The lab's additions to the paper's control this run used (empty:
     /// the paper's laws only).
     pub lab_additions: Vec<&'static str>,
+    /// The state the run started from: `gait` (the gait's own start) or
+    /// `on_cycle` (`scenario.physics.start`).
+    pub start: &'static str,
+    /// Why the start on the cycle asked for was not found, if it was not.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub start_note: Option<String>,
     /// Integration steps.
     pub steps: u64,
     /// Integration steps per wall second.
@@ -494,7 +500,10 @@ impl PhysicsRunMetrics {
             ),
             scale: driver.params().scale,
             fell: s.fell || driver.resets() > 0,
-            blow_up: driver.message().map(str::to_owned),
+            blow_up: driver
+                .message()
+                .filter(|m| Some(*m) != driver.start_note())
+                .map(str::to_owned),
             speed_desired_mps: s.speed_desired_mps,
             speed_mean_mps: s.speed_mean_mps,
             stride_length_m: s.stride_length_m,
@@ -511,6 +520,12 @@ impl PhysicsRunMetrics {
             friction_needed_max: s.friction_needed_max,
             cost_of_transport: s.cost_of_transport,
             lab_additions: driver.lab_additions().collect(),
+            start: if driver.started_on_cycle() {
+                "on_cycle"
+            } else {
+                "gait"
+            },
+            start_note: driver.start_note().map(str::to_owned),
             table2: {
                 let names: Vec<&str> = sim.creature.legs.iter().map(|l| l.name.as_str()).collect();
                 gaitlab_physics::engine::table2::compare(&s, driver.gait(), &names)

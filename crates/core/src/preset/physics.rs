@@ -163,6 +163,25 @@ pub enum PhysicsBase {
     Planar,
 }
 
+/// The state a run starts from (`scenario.physics.start`). The paper leaves
+/// it to the animator: "the animator must also initialize the state of the
+/// model" (Figure 2's text).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(rename_all = "snake_case")]
+pub enum PhysicsStart {
+    /// The gait's own start: the kangaroo just before a landing, the
+    /// quadruped in level flight, the biped in the preset's pose.
+    #[default]
+    Gait,
+    /// On the gait's cycle at the desired speed (the kangaroo; other
+    /// creatures take their gait's start): before t = 0, out of sight, the
+    /// lab runs the gait from its own start, ramping the commanded speed up
+    /// to the desired one, and the run begins at a flight apex once it has
+    /// hopped there a while (docs/physics.md, "The start on the cycle").
+    OnCycle,
+}
+
 /// A rigid body's mass properties (Table 3's columns).
 ///
 /// ```json
@@ -308,6 +327,14 @@ pub struct PhysicsParams {
     /// paper's laws only where the gait holds its speed with them.
     #[serde(default)]
     pub lab_additions: Option<LabAdditions>,
+    /// The state the run starts from. Default `gait` (as every file made
+    /// before 2026-12-04 started).
+    #[serde(default, skip_serializing_if = "is_gait_start")]
+    pub start: PhysicsStart,
+}
+
+fn is_gait_start(start: &PhysicsStart) -> bool {
+    *start == PhysicsStart::Gait
 }
 
 /// The lab's additions to Raibert & Hodgins' control, none of them in the

@@ -43,6 +43,7 @@ use super::speed_trim::SpeedTrim;
 use crate::world::sim::{ControlInput, Controller, Drive};
 
 mod ankle;
+mod cycle_start;
 mod stride;
 mod tail;
 

@@ -37,6 +37,15 @@ impl SpeedTrim {
         self.mark = Some((time, position));
     }
 
+    /// Move the mark into a clock `elapsed_s` (s) later and a world moved
+    /// by `-moved` (m): the same stride, seen from a new origin.
+    pub fn move_origin(&mut self, elapsed_s: f64, moved: DVec3) {
+        if let Some((t, p)) = &mut self.mark {
+            *t -= elapsed_s;
+            *p -= moved;
+        }
+    }
+
     /// Close a stride at `time` and `position`: correct the bias by the
     /// stride's mean-speed error against `desired_mps` along `along`, then
     /// start the next one.

@@ -5,7 +5,7 @@
 //! says why when the simulation blows up (Raibert & Hodgins 1991, Figure 2).
 
 use gaitlab_core::driver::Driver;
-use gaitlab_core::preset::physics::{check_hop_height_m, check_speed_mps};
+use gaitlab_core::preset::physics::{PhysicsStart, check_hop_height_m, check_speed_mps};
 use gaitlab_core::preset::{Creature as PresetCreature, PhysicsParams, PresetError};
 use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
@@ -16,6 +16,7 @@ use crate::control::kangaroo_hop::kangaroo_ground;
 use crate::control::make_controller::make_controller;
 use crate::creatures::Species;
 use crate::dynamics::model::Joint as BodyJoint;
+use crate::engine::cycle_start::on_cycle;
 use crate::engine::metrics::{GaitRecorder, GaitSummary};
 use crate::engine::preset::creature_from_preset;
 use crate::engine::probe::{self, PhysicsProbe};
@@ -37,6 +38,11 @@ pub struct PhysicsDriver {
     additions: Additions,
     sim: Sim,
     start: Sim,
+    /// The controller a restart begins with, where the start carries its
+    /// state (a start on the cycle); else a fresh one is made.
+    start_controller: Option<GaitController>,
+    /// Why a start on the cycle asked for was not found, if it was not.
+    start_note: Option<String>,
     controller: GaitController,
     recorder: GaitRecorder,
     pose: Pose,
@@ -152,6 +158,24 @@ impl PhysicsDriver {
         sim.data.q.copy_from_slice(&start_q);
         start_state(&mut sim, &controller, params.speed_mps);
         crate::dynamics::kinematics::kinematics(&sim.creature.model, &mut sim.data);
+        let mut controller = controller;
+        let mut start_controller = None;
+        let mut message = None;
+        if params.start == PhysicsStart::OnCycle {
+            match on_cycle(&sim, &controller, params.speed_mps) {
+                Some(Ok((settled, resumed))) => {
+                    sim = settled;
+                    controller = resumed;
+                    start_controller = Some(controller.clone());
+                }
+                Some(Err(why)) => {
+                    message = Some(format!(
+                        "start: no start on the gait's cycle ({why}); the gait's own start instead"
+                    ));
+                }
+                None => {}
+            }
+        }
         let legs = sim.creature.legs.len();
         let mut driver = Self {
             pose: Pose {
@@ -170,13 +194,15 @@ impl PhysicsDriver {
             params,
             gait,
             start: sim.clone(),
+            start_controller,
+            start_note: message.clone(),
             sim,
             controller,
             fell_at: None,
             steering: Steering::default(),
             pending: None,
             reset_after_fall: true,
-            message: None,
+            message,
             resets: 0,
         };
         driver.update_pose();
@@ -308,6 +334,21 @@ impl PhysicsDriver {
     /// Read and clear the message.
     pub fn take_message(&mut self) -> Option<String> {
         self.message.take()
+    }
+
+    /// Whether the run started on the gait's cycle
+    /// ([`crate::engine::cycle_start`]).
+    #[must_use]
+    pub fn started_on_cycle(&self) -> bool {
+        self.start_controller.is_some()
+    }
+
+    /// Why the start on the cycle the preset asks for was not found (the
+    /// run then starts from the gait's own start); `None` when it was, or
+    /// was not asked for.
+    #[must_use]
+    pub fn start_note(&self) -> Option<&str> {
+        self.start_note.as_deref()
     }
 
     /// How many times the creature was put back after a blow-up or a fall.
@@ -580,7 +621,12 @@ impl PhysicsDriver {
             0.0,
             3.0 * self.params.scale.sqrt(),
         );
-        if let Ok(c) = make_controller(&self.sim.creature, &self.gait, &self.params) {
+        // Only the kangaroo's hop starts on its cycle, and it is the
+        // kangaroo's one gait: the stored controller is the gait's.
+        if let Some(c) = &self.start_controller {
+            self.controller = c.clone();
+            self.controller.set_speed(self.params.speed_mps);
+        } else if let Ok(c) = make_controller(&self.sim.creature, &self.gait, &self.params) {
             self.controller = c;
         }
         self.pending = None;

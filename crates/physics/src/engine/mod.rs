@@ -5,8 +5,10 @@
 //! the app and the CLI, steering it ([`steering`]) and showing it ([`probe`]);
 //! [`metrics`] measures the Table-2 figures and
 //! [`table2`] holds the paper's; [`mjcf`] exports the creature to MuJoCo;
-//! [`trace`] writes its state after every step.
+//! [`trace`] writes its state after every step; [`cycle_start`] starts a
+//! run on the gait's cycle.
 
+pub mod cycle_start;
 pub mod driver;
 pub mod metrics;
 pub mod mjcf;

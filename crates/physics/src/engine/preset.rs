@@ -287,6 +287,7 @@ pub fn to_preset(creature: &PhysicalCreature, meta: &PresetMeta) -> Preset {
         obstacles: Vec::new(),
         waypoints: Vec::new(),
         lab_additions: Some(gaitlab_core::preset::physics::LabAdditions::default()),
+        start: gaitlab_core::preset::physics::PhysicsStart::default(),
     };
     Preset {
         schema: None,

@@ -49,6 +49,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     let resets = driver.resets();
     let gains = driver.gains();
     let additions = driver.lab_additions();
+    let on_cycle = driver.started_on_cycle();
     // The running creature's L; the slider below clamps its own copy to
     // its range, so a scale set from a command or a file is judged as it is.
     let running_scale = driver.params().scale;
@@ -177,6 +178,11 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 )
             };
             ui.label(text).on_hover_text(hover);
+            if on_cycle {
+                ui.label("Start: on the gait's cycle (the lab's)").on_hover_text(
+                    "The paper leaves the start to the animator. Before t = 0, out of sight, the lab ran this hop up to the desired speed with its ramp and started the run at a flight apex; from t = 0 only the control above acts (scenario.physics.start, docs/physics.md \"The start on the cycle\")",
+                );
+            }
             ui.label(format!(
                 "speed {:.2} m/s of {:.2} · friction needed {:.2}",
                 summary.speed_mean_mps, summary.speed_desired_mps, summary.friction_needed_max
