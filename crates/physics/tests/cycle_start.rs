@@ -151,3 +151,36 @@ fn with_the_labs_ramp_and_trim_it_holds_its_speed() {
     );
     assert!(speed_error(&s, "hop with trim", 3.5).abs() < 0.05);
 }
+
+/// Every addition on, the tail feedback with the bundled preset's own gains
+/// (`tail_pitch_gain` −1: with these gains the sign is reversed) holds
+/// 5 m/s; with the controller's gains (4 and 0.3 s) it falls on its
+/// run-up to speed.
+#[test]
+fn with_every_addition_on_it_holds_5_mps_with_the_presets_tail_feedback_gains() {
+    let all_on = |p: &mut gaitlab_core::preset::physics::PhysicsParams| {
+        p.lab_additions = Some(LabAdditions {
+            speed_ramp: Some(true),
+            speed_trim: Some(true),
+            tail_feedback: Some(true),
+            ..LabAdditions::default()
+        });
+    };
+    let additions = ["speed_trim", "speed_ramp", "tail_feedback"];
+    let roo = bundled("raibert-kangaroo");
+    let (s, _) = run(&roo, None, 5.0, 15.0, all_on, &additions);
+    assert!(speed_error(&s, "hop, all on", 5.0).abs() < 0.02);
+
+    let Some(mut params) = roo.scenario.physics.clone() else {
+        panic!("a physics preset")
+    };
+    all_on(&mut params);
+    params.controller.remove("tail_pitch_gain");
+    params.controller.remove("tail_rate_gain_s");
+    let d = match PhysicsDriver::with_params(&roo, params) {
+        Ok(driver) => driver,
+        Err(error) => panic!("{error}"),
+    };
+    let note = d.start_note().unwrap_or_default();
+    assert!(note.contains("fell on its way up to speed"), "{note}");
+}
