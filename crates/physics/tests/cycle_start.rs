@@ -8,7 +8,7 @@ mod common;
 use common::{bundled, paper_only_run, run, speed_error, table2_diffs};
 use gaitlab_core::Creature;
 use gaitlab_core::driver::Driver;
-use gaitlab_core::preset::physics::{LabAdditions, PhysicsStart};
+use gaitlab_core::preset::physics::{LabAdditions, PhysicsParams, PhysicsStart};
 use gaitlab_physics::PhysicsDriver;
 
 /// Every one of the lab's additions off.
@@ -129,18 +129,23 @@ fn a_start_on_the_cycle_not_found_says_why_and_others_ignore_it() {
     assert!(!biped.started_on_cycle() && biped.start_note().is_none());
 }
 
+/// A preset edit: the speed ramp and trim on, the tail feedback as `tail`.
+fn ramp_and_trim(tail: bool) -> impl Fn(&mut PhysicsParams) {
+    move |p| {
+        p.lab_additions = Some(LabAdditions {
+            speed_ramp: Some(true),
+            speed_trim: Some(true),
+            tail_feedback: Some(tail),
+            ..LabAdditions::default()
+        });
+    }
+}
+
 /// With the speed ramp and trim on (the lab's additions; the tail still
 /// stepped), it holds its speed too.
 #[test]
 fn with_the_labs_ramp_and_trim_it_holds_its_speed() {
-    let edit = |p: &mut gaitlab_core::preset::physics::PhysicsParams| {
-        p.lab_additions = Some(LabAdditions {
-            speed_ramp: Some(true),
-            speed_trim: Some(true),
-            tail_feedback: Some(false),
-            ..LabAdditions::default()
-        });
-    };
+    let edit = ramp_and_trim(false);
     let (s, _) = run(
         &paper_only_kangaroo(),
         None,
@@ -158,17 +163,10 @@ fn with_the_labs_ramp_and_trim_it_holds_its_speed() {
 /// run-up to speed.
 #[test]
 fn with_every_addition_on_it_holds_5_mps_with_the_presets_tail_feedback_gains() {
-    let all_on = |p: &mut gaitlab_core::preset::physics::PhysicsParams| {
-        p.lab_additions = Some(LabAdditions {
-            speed_ramp: Some(true),
-            speed_trim: Some(true),
-            tail_feedback: Some(true),
-            ..LabAdditions::default()
-        });
-    };
+    let all_on = ramp_and_trim(true);
     let additions = ["speed_trim", "speed_ramp", "tail_feedback"];
     let roo = bundled("raibert-kangaroo");
-    let (s, _) = run(&roo, None, 5.0, 15.0, all_on, &additions);
+    let (s, _) = run(&roo, None, 5.0, 15.0, &all_on, &additions);
     assert!(speed_error(&s, "hop, all on", 5.0).abs() < 0.02);
 
     let Some(mut params) = roo.scenario.physics.clone() else {

@@ -63,13 +63,13 @@ pub fn on_cycle(
                 "the hop fell on its way up to speed, {t:.1} s into it"
             )));
         }
-        let c = &settling;
-        if at_speed_since.is_none() && (c.speed_command_mps - target).abs() < 1e-9 {
+        if at_speed_since.is_none() && (settling.speed_command_mps - target).abs() < 1e-9 {
             at_speed_since = Some(run.time);
         }
         let settled = at_speed_since.is_some_and(|t0| run.time - t0 >= SETTLE_S * root_l);
+        // The planar base: slides forward (q[0], +z) and up (q[1]), pitch q[2].
         let vy = run.data.qd[1];
-        let flight = c.phase == Phase::Flight;
+        let flight = settling.phase == Phase::Flight;
         rose = flight && (rose || vy > 0.0);
         if settled && rose && vy <= 0.0 {
             break;
