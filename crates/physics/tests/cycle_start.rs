@@ -182,3 +182,25 @@ fn with_every_addition_on_it_holds_5_mps_with_the_presets_tail_feedback_gains() 
     let note = d.start_note().unwrap_or_default();
     assert!(note.contains("fell on its way up to speed"), "{note}");
 }
+
+/// A preset with a very fine step (a hostile link's `dt_s` 1e-5) does not
+/// hold the page for minutes: the run-up gives up after its step budget,
+/// says so, and the run starts from the gait's own start.
+#[test]
+fn a_run_up_past_its_step_budget_gives_up_and_says_why() {
+    let roo = bundled("raibert-kangaroo");
+    let Some(mut params) = roo.scenario.physics.clone() else {
+        panic!("a physics preset")
+    };
+    params.dt_s = 1e-5;
+    let d = match PhysicsDriver::with_params(&roo, params) {
+        Ok(driver) => driver,
+        Err(error) => panic!("{error}"),
+    };
+    assert!(!d.started_on_cycle());
+    let note = d.start_note().unwrap_or_default();
+    assert!(
+        note.contains("more than 150000 steps of 0.00001 s"),
+        "{note}"
+    );
+}

@@ -24,13 +24,19 @@ pub const SETTLE_S: f64 = 6.0;
 /// The longest the lab runs out of sight before giving up (s at scale 1).
 pub const MAX_SETTLE_S: f64 = 60.0;
 
+/// The most integration steps the run-up may take: 60 s at the paper's
+/// 0.4 ms. A preset with a much finer step (`dt_s` down to 1e-5) would
+/// otherwise hold the page for minutes before its first frame.
+pub const MAX_SETTLE_STEPS: u64 = 150_000;
+
 /// `sim` and `controller` moved onto the gait's cycle at `speed_mps` (m/s at
 /// scale 1), as the module describes; for a controller without a cycle
 /// start (every gait but the kangaroo's hop), `None`.
 ///
 /// # Errors
 /// Why no start on the cycle was found: the hop fell or blew up on its
-/// way, or did not reach the speed within [`MAX_SETTLE_S`].
+/// way, or did not reach the speed within [`MAX_SETTLE_S`] or
+/// [`MAX_SETTLE_STEPS`].
 pub fn on_cycle(
     sim: &Sim,
     controller: &GaitController,
@@ -77,6 +83,13 @@ pub fn on_cycle(
         if run.time > MAX_SETTLE_S * root_l {
             return Some(Err(format!(
                 "the hop did not settle at {speed_mps} m/s within {MAX_SETTLE_S} s"
+            )));
+        }
+        if run.steps >= MAX_SETTLE_STEPS {
+            return Some(Err(format!(
+                "the run-up to {speed_mps} m/s needs more than {MAX_SETTLE_STEPS} steps \
+                 of {} s",
+                run.options.dt
             )));
         }
     }
