@@ -10,8 +10,7 @@
 
 use glam::DVec3;
 
-use crate::control::gait_controller::{GaitController, KANGAROO_START_MPS};
-use crate::control::kangaroo_hop::kangaroo_start;
+use crate::control::gait_controller::{GaitController, start_state};
 use crate::control::phase::Phase;
 use crate::engine::metrics::GaitRecorder;
 use crate::world::sim::Sim;
@@ -50,9 +49,11 @@ pub fn on_cycle(
     run.terrain.obstacles.clear();
     run.time = 0.0;
     run.steps = 0;
-    kangaroo_start(&mut run, speed_mps.clamp(0.0, KANGAROO_START_MPS));
-    crate::dynamics::kinematics::kinematics(&run.creature.model, &mut run.data);
     let mut settling = hop.for_settling();
+    // The gait's own start for a hop with the ramp on (at most 2 m/s).
+    let ramped = GaitController::Kangaroo(Box::new(settling.clone()));
+    start_state(&mut run, &ramped, speed_mps);
+    crate::dynamics::kinematics::kinematics(&run.creature.model, &mut run.data);
     let legs = run.creature.legs.len();
     let mut recorder = GaitRecorder::new(legs, speed_mps * root_l, 0.0, 0.0);
     let target = speed_mps * root_l;
