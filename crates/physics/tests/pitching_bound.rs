@@ -4,8 +4,9 @@
 //! garbled trunk inertia ([0.054 0.235 0.239] kg·m², Murphy & Raibert's j
 //! below 1) and with no lab addition, the quadruped bounds as the paper's
 //! does — the trunk pitching about 26°, rear and front pairs alternating
-//! with a long gathered and a short extended flight — and holds its speed.
-//! The figures the docs give are checked here.
+//! with a long gathered and a short extended flight — and holds its speed;
+//! and it trots with gains of its own. The figures the docs give are
+//! checked here.
 
 mod common;
 
@@ -48,6 +49,26 @@ fn the_experiment_holds_its_speed_a_minute_at_the_lower_speeds() {
         let off = speed_error(&s, "bound", speed);
         assert!(off.abs() < 0.10, "{:+.1} %", 100.0 * off);
     }
+}
+
+/// The experiment's body trots too, with gains tuned for it
+/// (`controller_by_gait.trot`): a minute at 1.9 m/s within 10 %, and the
+/// trot's Table-2 rows within ±35 % at 2.3 m/s.
+#[test]
+fn the_experiments_body_trots_with_its_own_gains() {
+    let preset = match Creature::from_json(PRESET) {
+        Ok(preset) => preset,
+        Err(error) => panic!("{error}"),
+    };
+    let (s, _) = paper_only_run(&preset, Some("trot"), 1.9, 60.0);
+    let off = speed_error(&s, "trot", 1.9);
+    assert!(off.abs() < 0.10, "{:+.1} %", 100.0 * off);
+    let (s, legs) = paper_only_run(&preset, Some("trot"), 2.3, 20.0);
+    let rows = table2_diffs(&s, "trot", &legs);
+    for (label, diff) in &rows {
+        assert!(diff.abs() <= 35.0, "{label}: {diff:+.1} %");
+    }
+    assert_eq!(rows.len(), 6);
 }
 
 /// The literal reading of the trunk's inertia (the bundled quadruped's
