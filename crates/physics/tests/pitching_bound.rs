@@ -10,7 +10,7 @@
 
 mod common;
 
-use common::{paper_only_run, run, speed_error, table2_diffs};
+use common::{assert_table2_within, paper_only_run, run, speed_error};
 use gaitlab_core::Creature;
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::physics::PhysicsParams;
@@ -20,12 +20,17 @@ use gaitlab_physics::engine::metrics::GaitSummary;
 const PRESET: &str =
     include_str!("../../../presets/experiments/raibert-quadruped-pitching-bound.json");
 
-/// The experiment's bound at `speed` (m/s) for `seconds` of simulated time.
-fn bound(speed: f64, seconds: f64) -> (GaitSummary, Vec<String>) {
+/// The experiment preset.
+fn experiment() -> Creature {
     match Creature::from_json(PRESET) {
-        Ok(preset) => paper_only_run(&preset, None, speed, seconds),
+        Ok(preset) => preset,
         Err(error) => panic!("{error}"),
     }
+}
+
+/// The experiment's bound at `speed` (m/s) for `seconds` of simulated time.
+fn bound(speed: f64, seconds: f64) -> (GaitSummary, Vec<String>) {
+    paper_only_run(&experiment(), None, speed, seconds)
 }
 
 #[test]
@@ -33,13 +38,9 @@ fn every_table_2_row_of_the_experiments_bound_is_within_35_percent() {
     let (s, legs) = bound(2.8, 60.0);
     let off = speed_error(&s, "bound", 2.8);
     assert!(off.abs() < 0.10, "{:+.1} %", 100.0 * off);
-    let rows = table2_diffs(&s, "bound", &legs);
-    for (label, diff) in &rows {
-        assert!(diff.abs() <= 35.0, "{label}: {diff:+.1} %");
-    }
     // Pitch, stride length and duration, both flights, both stances, the
     // leg's change of length and the running speed.
-    assert_eq!(rows.len(), 9);
+    assert_eq!(assert_table2_within(&s, "bound", &legs, 35.0), 9);
 }
 
 #[test]
@@ -56,19 +57,12 @@ fn the_experiment_holds_its_speed_a_minute_at_the_lower_speeds() {
 /// trot's Table-2 rows within ±35 % at 2.3 m/s.
 #[test]
 fn the_experiments_body_trots_with_its_own_gains() {
-    let preset = match Creature::from_json(PRESET) {
-        Ok(preset) => preset,
-        Err(error) => panic!("{error}"),
-    };
+    let preset = experiment();
     let (s, _) = paper_only_run(&preset, Some("trot"), 1.9, 60.0);
     let off = speed_error(&s, "trot", 1.9);
     assert!(off.abs() < 0.10, "{:+.1} %", 100.0 * off);
     let (s, legs) = paper_only_run(&preset, Some("trot"), 2.3, 20.0);
-    let rows = table2_diffs(&s, "trot", &legs);
-    for (label, diff) in &rows {
-        assert!(diff.abs() <= 35.0, "{label}: {diff:+.1} %");
-    }
-    assert_eq!(rows.len(), 6);
+    assert_eq!(assert_table2_within(&s, "trot", &legs, 35.0), 6);
 }
 
 /// The literal reading of the trunk's inertia (the bundled quadruped's
@@ -76,10 +70,7 @@ fn the_experiments_body_trots_with_its_own_gains() {
 /// over within seconds.
 #[test]
 fn on_the_literal_reading_of_the_trunks_inertia_the_same_gains_fall() {
-    let preset = match Creature::from_json(PRESET) {
-        Ok(preset) => preset,
-        Err(error) => panic!("{error}"),
-    };
+    let preset = experiment();
     let Some(mut params) = preset.scenario.physics.clone() else {
         panic!("a physics preset")
     };
@@ -101,10 +92,7 @@ fn on_the_literal_reading_of_the_trunks_inertia_the_same_gains_fall() {
 /// 2.0 m/s) the experiment holds its speed within 2 %.
 #[test]
 fn with_the_labs_trim_at_its_gain_the_experiment_holds_its_speed() {
-    let preset = match Creature::from_json(PRESET) {
-        Ok(preset) => preset,
-        Err(error) => panic!("{error}"),
-    };
+    let preset = experiment();
     for speed in [1.5, 2.3] {
         let trim_on = |p: &mut PhysicsParams| {
             p.lab_additions.get_or_insert_default().speed_trim = Some(true);

@@ -89,6 +89,16 @@ pub fn table2_diffs(s: &GaitSummary, gait: &str, legs: &[String]) -> Vec<(&'stat
     rows
 }
 
+/// Asserts every measured Table-2 row of `gait` ([`table2_diffs`]) lies
+/// within ±`pct` % of the paper's animation column; the number of rows.
+pub fn assert_table2_within(s: &GaitSummary, gait: &str, legs: &[String], pct: f64) -> usize {
+    let rows = table2_diffs(s, gait, legs);
+    for (label, diff) in &rows {
+        assert!(diff.abs() <= pct, "{label}: {diff:+.1} %");
+    }
+    rows.len()
+}
+
 /// The mean speed's error from `speed` (a fraction), printed.
 pub fn speed_error(s: &GaitSummary, what: &str, speed: f64) -> f64 {
     let off = (s.speed_mean_mps - speed) / speed;
