@@ -26,7 +26,7 @@ pub struct TuneArgs {
     /// Desired speed of the tuned runs, m/s at scale 1 (default: the preset's).
     #[arg(long)]
     pub speed: Option<f64>,
-    /// Weighted terms to minimise: fall, speed, table2, energy, jump (`fall=10,speed=1,table2=1,energy=0.5`).
+    /// Weighted terms to minimise: fall, speed, table2, energy, jump, steps (`fall=10,speed=1,table2=1,energy=0.5`).
     #[arg(long, default_value = "fall=10,speed=1")]
     pub objective: String,
     /// Further desired speeds every candidate also runs at, m/s at scale 1
@@ -40,7 +40,7 @@ pub struct TuneArgs {
     #[arg(long, value_delimiter = ',')]
     pub vary: Vec<String>,
     /// Candidates evaluated in all (the start's included): one simulated run
-    /// each, more with `--also-at` and the `jump` term.
+    /// each, more with `--also-at` and the `jump` and `steps` terms.
     #[arg(long, default_value_t = 200)]
     pub budget: usize,
     /// Random seed: the same seed gives the same tuned preset.

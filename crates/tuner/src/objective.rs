@@ -13,12 +13,17 @@
 //!   fell: the kangaroo's jump ("Results": "to make the kangaroo jump over
 //!   an obstacle, a number of additional states were added"). Costed by
 //!   [`crate::Problem`], which runs them; [`Objective::cost`] leaves it out.
+//! - `steps`: the share of runs with a step of the desired speed halfway
+//!   ([`SPEED_STEPS`]) that fell: a slider moved while the creature runs.
+//!   A gait whose strides are a narrow limit cycle (the pitching bound)
+//!   can hold every steady speed and still fall at the first change. Costed
+//!   by [`crate::Problem`], like `jump`.
 
 use gaitlab_physics::engine::metrics::GaitSummary;
 use gaitlab_physics::engine::table2::compare;
 
 /// The names [`Objective::parse`] knows.
-pub const TERMS: [&str; 5] = ["fall", "speed", "table2", "energy", "jump"];
+pub const TERMS: [&str; 6] = ["fall", "speed", "table2", "energy", "jump", "steps"];
 
 /// The boxes of the `jump` term, one run each: the near face's distance
 /// from the start, height and depth (m at scale 1). Met at different speeds
@@ -26,6 +31,11 @@ pub const TERMS: [&str; 5] = ["fall", "speed", "table2", "energy", "jump"];
 /// `tools/kangaroo_box_sweep.py` and the docs' traces (the app's "Place a
 /// box" is the kangaroo's own `obstacle_height_m`, 0.25 m).
 pub const JUMP_BOXES: [(f64, f64, f64); 3] = [(4.0, 0.2, 0.3), (10.0, 0.2, 0.3), (16.0, 0.2, 0.3)];
+
+/// The runs of the `steps` term, one each: the desired speed is multiplied
+/// by this halfway through a run at the tuned speed (a step outside the
+/// speed's range counts as a fall).
+pub const SPEED_STEPS: [f64; 2] = [1.1, 0.9];
 
 /// Weighted terms; a weight of 0 leaves a term out.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -40,6 +50,8 @@ pub struct Objective {
     pub energy: f64,
     /// Weight of `jump`.
     pub jump: f64,
+    /// Weight of `steps`.
+    pub steps: f64,
 }
 
 impl Default for Objective {
@@ -51,6 +63,7 @@ impl Default for Objective {
             table2: 0.0,
             energy: 0.0,
             jump: 0.0,
+            steps: 0.0,
         }
     }
 }
@@ -67,6 +80,7 @@ impl Objective {
             table2: 0.0,
             energy: 0.0,
             jump: 0.0,
+            steps: 0.0,
         };
         for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
             let (name, weight) = part
@@ -86,6 +100,7 @@ impl Objective {
                 "table2" => o.table2 = w,
                 "energy" => o.energy = w,
                 "jump" => o.jump = w,
+                "steps" => o.steps = w,
                 other => {
                     return Err(format!(
                         "objective: unknown term \"{other}\" (terms: {})",
@@ -94,14 +109,14 @@ impl Objective {
                 }
             }
         }
-        if o.fall + o.speed + o.table2 + o.energy + o.jump <= 0.0 {
+        if o.fall + o.speed + o.table2 + o.energy + o.jump + o.steps <= 0.0 {
             return Err("objective: every weight is 0".to_owned());
         }
         Ok(o)
     }
 
     /// The cost of a run of `gait` with figures `s` (legs named `legs`);
-    /// `fell` also counts a blow-up. Every term but `jump`.
+    /// `fell` also counts a blow-up. Every term but `jump` and `steps`.
     #[must_use]
     pub fn cost(&self, s: &GaitSummary, fell: bool, gait: &str, legs: &[&str]) -> f64 {
         let mut cost = 0.0;
@@ -144,6 +159,7 @@ mod tests {
         assert!(Objective::parse("speed").is_err());
         assert!(Objective::parse("speed=0").is_err());
         assert_eq!(Objective::parse("jump=3").map(|o| o.jump), Ok(3.0));
+        assert_eq!(Objective::parse("steps=2").map(|o| o.steps), Ok(2.0));
     }
 
     #[test]

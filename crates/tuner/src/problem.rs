@@ -15,7 +15,7 @@ use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::creatures::Species;
 use gaitlab_physics::engine::metrics::GaitSummary;
 
-use crate::objective::{JUMP_BOXES, Objective};
+use crate::objective::{JUMP_BOXES, Objective, SPEED_STEPS};
 
 /// Most parameters [`Problem::vary`] adds.
 pub const MAX_VARY: usize = 16;
@@ -184,7 +184,8 @@ impl Problem {
     }
 
     /// Simulated runs per candidate: the tuned speed's, one per
-    /// [`Problem::also_at_mps`] and, with the `jump` term, one per box.
+    /// [`Problem::also_at_mps`], with the `jump` term one per box and with
+    /// the `steps` term one per speed step.
     #[must_use]
     pub fn runs_per_candidate(&self) -> usize {
         let boxes = if self.objective.jump > 0.0 {
@@ -192,7 +193,12 @@ impl Problem {
         } else {
             0
         };
-        1 + self.also_at_mps.len() + boxes
+        let steps = if self.objective.steps > 0.0 {
+            SPEED_STEPS.len()
+        } else {
+            0
+        };
+        1 + self.also_at_mps.len() + boxes + steps
     }
 
     /// The gait tuned.
@@ -273,6 +279,18 @@ impl Problem {
             }
             cost += o.jump * f64::from(falls) / JUMP_BOXES.len() as f64;
         }
+        if o.steps > 0.0 {
+            let mut falls = 0;
+            for factor in SPEED_STEPS {
+                if self
+                    .run_with(params.clone(), Some(factor))
+                    .is_none_or(|(_, fell)| fell)
+                {
+                    falls += 1;
+                }
+            }
+            cost += o.steps * f64::from(falls) / SPEED_STEPS.len() as f64;
+        }
         Evaluation {
             cost,
             fell,
@@ -281,11 +299,12 @@ impl Problem {
     }
 
     /// What a candidate the controller refuses costs: a fall, a missed
-    /// speed, every Table-2 row missed and every box a fall.
+    /// speed, every Table-2 row missed, every box and every speed step a
+    /// fall.
     fn refused(&self) -> Evaluation {
         let o = &self.objective;
         Evaluation {
-            cost: o.fall + o.speed + o.table2 + o.jump,
+            cost: o.fall + o.speed + o.table2 + o.jump + o.steps,
             fell: true,
             speed_mean_mps: 0.0,
         }
@@ -294,11 +313,23 @@ impl Problem {
     /// One run of `seconds` with `params`: its figures and whether it fell
     /// (or blew up); `None` when the controller refuses it.
     fn run(&self, params: PhysicsParams) -> Option<(GaitSummary, bool)> {
+        self.run_with(params, None)
+    }
+
+    /// [`Problem::run`], with the desired speed multiplied by `step`
+    /// halfway through when it is given.
+    fn run_with(&self, params: PhysicsParams, step: Option<f64>) -> Option<(GaitSummary, bool)> {
+        let stepped = step.map(|factor| factor * params.speed_mps);
         let mut driver = PhysicsDriver::with_params(&self.preset, params).ok()?;
         driver.reset_after_fall = false;
         let frames = (self.seconds / FRAME_S).round() as usize;
         let mut fell = false;
         for frame in 0..frames {
+            if frame == frames / 2
+                && let Some(speed) = stepped
+            {
+                driver.set_speed(speed).ok()?;
+            }
             driver.step(FRAME_S);
             if driver.resets() > 0 || (frame % 60 == 59 && driver.fell()) {
                 fell = true;

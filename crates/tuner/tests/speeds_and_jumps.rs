@@ -2,11 +2,12 @@
 //! with `also_at_mps`, the `fall`/`speed`/`energy` terms are the mean over
 //! the speeds and `table2` the tuned speed's, which two independent sets of
 //! single-speed problems must reproduce; the `jump` term counts the box runs
-//! that fell, in steps of one box, and only the kangaroo may ask for it.
+//! that fell, in steps of one box, and only the kangaroo may ask for it;
+//! the `steps` term counts the runs with a speed step that fell.
 
 use gaitlab_core::Creature;
 use gaitlab_core::preset::load_bundled;
-use gaitlab_tuner::objective::JUMP_BOXES;
+use gaitlab_tuner::objective::{JUMP_BOXES, SPEED_STEPS};
 use gaitlab_tuner::{Objective, Problem};
 
 fn bundled(name: &str, speed_mps: f64) -> Creature {
@@ -88,4 +89,45 @@ fn the_jump_term_counts_the_boxes_that_felled_the_kangaroo() {
     let objective = Objective::parse("fall=10,jump=1").unwrap_or_default();
     let refused = Problem::new(&bundled("raibert-biped", 1.6), "run", 4.0, objective);
     assert!(refused.is_err_and(|e| e.to_string().starts_with("objective.jump")));
+}
+
+/// The experiment's pitching bound at 2.3 m/s (docs/physics.md, "The
+/// trunk's pitch inertia decides the bound"): it holds a steady speed, and
+/// the `steps` term sees what a steady run cannot, that a step of +10 %
+/// halfway tips it over; the bundled biped's run holds both steps.
+#[test]
+fn the_steps_term_counts_the_speed_steps_that_felled_the_creature() {
+    const PITCHING_BOUND: &str =
+        include_str!("../../../presets/experiments/raibert-quadruped-pitching-bound.json");
+    let mut bound = match Creature::from_json(PITCHING_BOUND) {
+        Ok(creature) => creature,
+        Err(error) => panic!("{error}"),
+    };
+    if let Some(physics) = bound.scenario.physics.as_mut() {
+        physics.speed_mps = 2.3;
+    }
+    let costed = |creature: &Creature, gait: &str, seconds: f64, objective: &str| {
+        let objective = match Objective::parse(objective) {
+            Ok(o) => o,
+            Err(error) => panic!("{error}"),
+        };
+        let p = match Problem::new(creature, gait, seconds, objective) {
+            Ok(p) => p,
+            Err(error) => panic!("{error}"),
+        };
+        (
+            p.runs_per_candidate(),
+            p.evaluate(&vec![0.0; p.names().len()]).cost,
+        )
+    };
+    // 20 s: the step comes at 10 s and the fall about 7 s later.
+    let steady = costed(&bound, "bound", 20.0, "fall=1");
+    let stepped = costed(&bound, "bound", 20.0, "steps=1");
+    println!("bound: steady {steady:?}, stepped {stepped:?}");
+    assert_eq!(steady, (1, 0.0), "the bound holds 2.3 m/s");
+    assert_eq!(stepped.0, 1 + SPEED_STEPS.len());
+    assert!(stepped.1 >= 0.5, "the +10 % step felled it: {stepped:?}");
+
+    let biped = bundled("raibert-biped", 1.6);
+    assert_eq!(costed(&biped, "run", 10.0, "steps=1"), (3, 0.0));
 }
