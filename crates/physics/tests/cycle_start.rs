@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{bundled, paper_only_run, run, speed_error, table2_diffs};
+use common::{assert_table2_within, bundled, driver_with, paper_only_run, run, speed_error};
 use gaitlab_core::Creature;
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::physics::{LabAdditions, PhysicsParams, PhysicsStart};
@@ -29,15 +29,10 @@ fn paper_only_kangaroo() -> Creature {
 }
 
 fn driver(preset: &Creature, speed: f64, start: PhysicsStart) -> PhysicsDriver {
-    let Some(mut params) = preset.scenario.physics.clone() else {
-        panic!("a physics preset")
-    };
-    params.speed_mps = speed;
-    params.start = start;
-    match PhysicsDriver::with_params(preset, params) {
-        Ok(driver) => driver,
-        Err(error) => panic!("{error}"),
-    }
+    driver_with(preset, |params| {
+        params.speed_mps = speed;
+        params.start = start;
+    })
 }
 
 /// The acceptance at 5 m/s, with none of the lab's additions: no
@@ -48,9 +43,7 @@ fn driver(preset: &Creature, speed: f64, start: PhysicsStart) -> PhysicsDriver {
 fn the_paper_only_kangaroo_meets_table_2_at_5_mps_from_a_start_on_its_cycle() {
     let (s, legs) = paper_only_run(&paper_only_kangaroo(), None, 5.0, 15.0);
     assert!(speed_error(&s, "hop", 5.0).abs() < 0.10);
-    for (row, diff) in table2_diffs(&s, "hop", &legs) {
-        assert!(diff.abs() <= 35.0, "{row}: {diff:+.0} %");
-    }
+    assert_table2_within(&s, "hop", &legs, 35.0);
 }
 
 /// The hand-over lands on a flight apex at the origin and t = 0, moving at
@@ -169,16 +162,11 @@ fn with_every_addition_on_it_holds_5_mps_with_the_presets_tail_feedback_gains() 
     let (s, _) = run(&roo, None, 5.0, 15.0, &all_on, &additions);
     assert!(speed_error(&s, "hop, all on", 5.0).abs() < 0.02);
 
-    let Some(mut params) = roo.scenario.physics.clone() else {
-        panic!("a physics preset")
-    };
-    all_on(&mut params);
-    params.controller.remove("tail_pitch_gain");
-    params.controller.remove("tail_rate_gain_s");
-    let d = match PhysicsDriver::with_params(&roo, params) {
-        Ok(driver) => driver,
-        Err(error) => panic!("{error}"),
-    };
+    let d = driver_with(&roo, |params| {
+        all_on(params);
+        params.controller.remove("tail_pitch_gain");
+        params.controller.remove("tail_rate_gain_s");
+    });
     let note = d.start_note().unwrap_or_default();
     assert!(note.contains("fell on its way up to speed"), "{note}");
 }
@@ -189,14 +177,7 @@ fn with_every_addition_on_it_holds_5_mps_with_the_presets_tail_feedback_gains() 
 #[test]
 fn a_run_up_past_its_step_budget_gives_up_and_says_why() {
     let roo = bundled("raibert-kangaroo");
-    let Some(mut params) = roo.scenario.physics.clone() else {
-        panic!("a physics preset")
-    };
-    params.dt_s = 1e-5;
-    let d = match PhysicsDriver::with_params(&roo, params) {
-        Ok(driver) => driver,
-        Err(error) => panic!("{error}"),
-    };
+    let d = driver_with(&roo, |params| params.dt_s = 1e-5);
     assert!(!d.started_on_cycle());
     let note = d.start_note().unwrap_or_default();
     assert!(

@@ -10,11 +10,10 @@
 
 mod common;
 
-use common::{assert_table2_within, paper_only_run, run, speed_error};
+use common::{assert_table2_within, driver_with, paper_only_run, run, speed_error};
 use gaitlab_core::Creature;
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::physics::PhysicsParams;
-use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::engine::metrics::GaitSummary;
 
 const PRESET: &str =
@@ -70,17 +69,11 @@ fn the_experiments_body_trots_with_its_own_gains() {
 /// over within seconds.
 #[test]
 fn on_the_literal_reading_of_the_trunks_inertia_the_same_gains_fall() {
-    let preset = experiment();
-    let Some(mut params) = preset.scenario.physics.clone() else {
-        panic!("a physics preset")
-    };
-    if let Some(trunk) = params.trunk.as_mut() {
-        trunk.inertia_kgm2 = [2.35, 2.39, 0.54];
-    }
-    let mut driver = match PhysicsDriver::with_params(&preset, params) {
-        Ok(driver) => driver,
-        Err(error) => panic!("{error}"),
-    };
+    let mut driver = driver_with(&experiment(), |params| {
+        if let Some(trunk) = params.trunk.as_mut() {
+            trunk.inertia_kgm2 = [2.35, 2.39, 0.54];
+        }
+    });
     while driver.time() < 20.0 && driver.resets() == 0 {
         driver.step(1.0 / 60.0);
     }

@@ -265,31 +265,20 @@ impl Problem {
             sum / (1 + self.also_at_mps.len()) as f64 + table2.cost(&main, fell, gait, &legs)
         };
         if o.jump > 0.0 {
-            let mut falls = 0;
-            for (at_m, height_m, depth_m) in JUMP_BOXES {
+            let boxes = JUMP_BOXES.map(|(at_m, height_m, depth_m)| {
                 let mut with_box = params.clone();
                 with_box.obstacles.push(ObstacleSpec {
                     at_m,
                     depth_m,
                     height_m,
                 });
-                if self.run(with_box).is_none_or(|(_, fell)| fell) {
-                    falls += 1;
-                }
-            }
-            cost += o.jump * f64::from(falls) / JUMP_BOXES.len() as f64;
+                (with_box, None)
+            });
+            cost += o.jump * f64::from(self.fallen(boxes)) / JUMP_BOXES.len() as f64;
         }
         if o.steps > 0.0 {
-            let mut falls = 0;
-            for factor in SPEED_STEPS {
-                if self
-                    .run_with(params.clone(), Some(factor))
-                    .is_none_or(|(_, fell)| fell)
-                {
-                    falls += 1;
-                }
-            }
-            cost += o.steps * f64::from(falls) / SPEED_STEPS.len() as f64;
+            let steps = SPEED_STEPS.map(|f| (params.clone(), Some(f)));
+            cost += o.steps * f64::from(self.fallen(steps)) / SPEED_STEPS.len() as f64;
         }
         Evaluation {
             cost,
@@ -308,6 +297,16 @@ impl Problem {
             fell: true,
             speed_mean_mps: 0.0,
         }
+    }
+
+    /// How many of the runs `runs` (each [`Problem::run_with`]'s
+    /// arguments) fell or were refused.
+    fn fallen(&self, runs: impl IntoIterator<Item = (PhysicsParams, Option<f64>)>) -> u32 {
+        runs.into_iter()
+            .map(|(params, step)| {
+                u32::from(self.run_with(params, step).is_none_or(|(_, fell)| fell))
+            })
+            .sum()
     }
 
     /// One run of `seconds` with `params`: its figures and whether it fell

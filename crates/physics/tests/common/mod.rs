@@ -34,18 +34,13 @@ pub fn run(
     edit: impl FnOnce(&mut PhysicsParams),
     additions: &[&str],
 ) -> (GaitSummary, Vec<String>) {
-    let Some(mut params) = preset.scenario.physics.clone() else {
-        panic!("a physics preset")
-    };
-    if let Some(gait) = gait {
-        params.gait = Some(gait.to_owned());
-    }
-    params.speed_mps = speed;
-    edit(&mut params);
-    let mut driver = match PhysicsDriver::with_params(preset, params) {
-        Ok(driver) => driver,
-        Err(error) => panic!("{error}"),
-    };
+    let mut driver = driver_with(preset, |params| {
+        if let Some(gait) = gait {
+            params.gait = Some(gait.to_owned());
+        }
+        params.speed_mps = speed;
+        edit(params);
+    });
     assert_eq!(
         driver.lab_additions().collect::<Vec<_>>(),
         additions,
@@ -57,6 +52,18 @@ pub fn run(
     assert_eq!(driver.resets(), 0, "{gait:?} at {speed} m/s fell");
     let legs = driver.leg_names().map(str::to_owned).collect();
     (driver.summary(), legs)
+}
+
+/// A driver for `preset` with its physics parameters changed by `edit`.
+pub fn driver_with(preset: &Creature, edit: impl FnOnce(&mut PhysicsParams)) -> PhysicsDriver {
+    let Some(mut params) = preset.scenario.physics.clone() else {
+        panic!("a physics preset")
+    };
+    edit(&mut params);
+    match PhysicsDriver::with_params(preset, params) {
+        Ok(driver) => driver,
+        Err(error) => panic!("{error}"),
+    }
 }
 
 /// The bundled preset `name`.
