@@ -26,7 +26,7 @@ pub struct TuneArgs {
     /// Desired speed of the tuned runs, m/s at scale 1 (default: the preset's).
     #[arg(long)]
     pub speed: Option<f64>,
-    /// Weighted terms to minimise: fall, speed, table2, energy, jump, steps (`fall=10,speed=1,table2=1,energy=0.5`).
+    /// Weighted terms to minimise: fall, speed, table2, energy, jump, steps, switch (`fall=10,speed=1,table2=1,energy=0.5`).
     #[arg(long, default_value = "fall=10,speed=1")]
     pub objective: String,
     /// Further desired speeds every candidate also runs at, m/s at scale 1
@@ -39,8 +39,12 @@ pub struct TuneArgs {
     /// each scaled from the preset's value (so none may start at 0).
     #[arg(long, value_delimiter = ',')]
     pub vary: Vec<String>,
+    /// The gait the `switch` term's runs begin in, switched to the tuned
+    /// gait halfway (`--switch-from trot`); needed by that term.
+    #[arg(long)]
+    pub switch_from: Option<String>,
     /// Candidates evaluated in all (the start's included): one simulated run
-    /// each, more with `--also-at` and the `jump` and `steps` terms.
+    /// each, more with `--also-at` and the `jump`, `steps` and `switch` terms.
     #[arg(long, default_value_t = 200)]
     pub budget: usize,
     /// Random seed: the same seed gives the same tuned preset.
@@ -93,6 +97,15 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
     }
     problem.also_at_mps.clone_from(&args.also_at);
     problem.vary(&args.vary).map_err(Failure::input)?;
+    match (&args.switch_from, objective.switch > 0.0) {
+        (Some(from), _) => problem.set_switch_from(from).map_err(Failure::input)?,
+        (None, true) => {
+            return Err(Failure::input(
+                "objective.switch: name the gait its runs begin in with --switch-from",
+            ));
+        }
+        (None, false) => {}
+    }
     let threads = args
         .threads
         .unwrap_or_else(rayon::current_num_threads)
@@ -106,6 +119,10 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
     } else {
         let speeds: Vec<String> = args.also_at.iter().map(f64::to_string).collect();
         format!(" · also at {} m/s", speeds.join(", "))
+    };
+    let also = match problem.switch_from() {
+        Some(from) if objective.switch > 0.0 => format!("{also} · switch runs from {from}"),
+        _ => also,
     };
     let per = problem.runs_per_candidate();
     let budget_of = if per > 1 {

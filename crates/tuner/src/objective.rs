@@ -18,12 +18,19 @@
 //!   A gait whose strides are a narrow limit cycle (the pitching bound)
 //!   can hold every steady speed and still fall at the first change. Costed
 //!   by [`crate::Problem`], like `jump`.
+//! - `switch`: the share of runs begun in another gait
+//!   ([`crate::Problem::set_switch_from`], `--switch-from`) and switched to
+//!   the tuned one halfway that fell, one per speed the candidate runs at:
+//!   the app's gait menu used while the creature runs. Costed by
+//!   [`crate::Problem`], like `jump`.
 
 use gaitlab_physics::engine::metrics::GaitSummary;
 use gaitlab_physics::engine::table2::compare;
 
 /// The names [`Objective::parse`] knows.
-pub const TERMS: [&str; 6] = ["fall", "speed", "table2", "energy", "jump", "steps"];
+pub const TERMS: [&str; 7] = [
+    "fall", "speed", "table2", "energy", "jump", "steps", "switch",
+];
 
 /// The boxes of the `jump` term, one run each: the near face's distance
 /// from the start, height and depth (m at scale 1). Met at different speeds
@@ -52,6 +59,8 @@ pub struct Objective {
     pub jump: f64,
     /// Weight of `steps`.
     pub steps: f64,
+    /// Weight of `switch`.
+    pub switch: f64,
 }
 
 impl Default for Objective {
@@ -64,6 +73,7 @@ impl Default for Objective {
             energy: 0.0,
             jump: 0.0,
             steps: 0.0,
+            switch: 0.0,
         }
     }
 }
@@ -81,6 +91,7 @@ impl Objective {
             energy: 0.0,
             jump: 0.0,
             steps: 0.0,
+            switch: 0.0,
         };
         for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
             let (name, weight) = part
@@ -101,6 +112,7 @@ impl Objective {
                 "energy" => o.energy = w,
                 "jump" => o.jump = w,
                 "steps" => o.steps = w,
+                "switch" => o.switch = w,
                 other => {
                     return Err(format!(
                         "objective: unknown term \"{other}\" (terms: {})",
@@ -109,14 +121,15 @@ impl Objective {
                 }
             }
         }
-        if o.fall + o.speed + o.table2 + o.energy + o.jump + o.steps <= 0.0 {
+        if o.fall + o.speed + o.table2 + o.energy + o.jump + o.steps + o.switch <= 0.0 {
             return Err("objective: every weight is 0".to_owned());
         }
         Ok(o)
     }
 
     /// The cost of a run of `gait` with figures `s` (legs named `legs`);
-    /// `fell` also counts a blow-up. Every term but `jump` and `steps`.
+    /// `fell` also counts a blow-up. Every term but `jump`, `steps` and
+    /// `switch`.
     #[must_use]
     pub fn cost(&self, s: &GaitSummary, fell: bool, gait: &str, legs: &[&str]) -> f64 {
         let mut cost = 0.0;
@@ -160,6 +173,7 @@ mod tests {
         assert!(Objective::parse("speed=0").is_err());
         assert_eq!(Objective::parse("jump=3").map(|o| o.jump), Ok(3.0));
         assert_eq!(Objective::parse("steps=2").map(|o| o.steps), Ok(2.0));
+        assert_eq!(Objective::parse("switch=3").map(|o| o.switch), Ok(3.0));
     }
 
     #[test]

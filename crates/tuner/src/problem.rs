@@ -42,6 +42,20 @@ pub struct Problem {
     /// preset's speed and these; `table2` stays the preset speed's (Table 2
     /// gives one speed per gait). Empty: one run, as before.
     pub also_at_mps: Vec<f64>,
+    /// The gait the `switch` term's runs begin in
+    /// ([`Problem::set_switch_from`]).
+    switch_from: Option<String>,
+}
+
+/// What changes halfway through a run.
+#[derive(Clone, Debug)]
+enum Change {
+    /// Nothing.
+    None,
+    /// The desired speed is multiplied by this (the `steps` term).
+    Speed(f64),
+    /// The run begun in another gait switches to this one (the `switch` term).
+    Gait(String),
 }
 
 /// One candidate's run.
@@ -96,7 +110,45 @@ impl Problem {
             seconds,
             objective,
             also_at_mps: Vec::new(),
+            switch_from: None,
         })
+    }
+
+    /// The `switch` term's runs begin in `gait` and switch to the tuned
+    /// gait halfway, as the app's gait menu does.
+    ///
+    /// # Errors
+    /// `switch_from: …` when `gait` is the tuned gait or one the creature
+    /// does not run; nothing changes then.
+    pub fn set_switch_from(&mut self, gait: &str) -> Result<(), PresetError> {
+        if gait == self.gait {
+            return Err(PresetError::new(
+                "switch_from",
+                format!("the runs switch to {gait}, so they must begin in another gait"),
+            ));
+        }
+        let mut params = self.params.clone();
+        params.gait = Some(gait.to_owned());
+        PhysicsDriver::with_params(&self.preset, params)
+            .map_err(|e| PresetError::new("switch_from", e.to_string()))?;
+        self.switch_from = Some(gait.to_owned());
+        Ok(())
+    }
+
+    /// The gait the `switch` term's runs begin in, when one is set.
+    #[must_use]
+    pub fn switch_from(&self) -> Option<&str> {
+        self.switch_from.as_deref()
+    }
+
+    /// The `switch` term's runs: one per speed a candidate runs at, when
+    /// the term is weighted and a gait to begin in is set.
+    fn switch_runs(&self) -> usize {
+        if self.objective.switch > 0.0 && self.switch_from.is_some() {
+            1 + self.also_at_mps.len()
+        } else {
+            0
+        }
     }
 
     /// The gains tuned, by name.
@@ -184,8 +236,9 @@ impl Problem {
     }
 
     /// Simulated runs per candidate: the tuned speed's, one per
-    /// [`Problem::also_at_mps`], with the `jump` term one per box and with
-    /// the `steps` term one per speed step.
+    /// [`Problem::also_at_mps`], with the `jump` term one per box, with
+    /// the `steps` term one per speed step and with the `switch` term one
+    /// per speed.
     #[must_use]
     pub fn runs_per_candidate(&self) -> usize {
         let boxes = if self.objective.jump > 0.0 {
@@ -198,7 +251,7 @@ impl Problem {
         } else {
             0
         };
-        1 + self.also_at_mps.len() + boxes + steps
+        1 + self.also_at_mps.len() + boxes + steps + self.switch_runs()
     }
 
     /// The gait tuned.
@@ -272,13 +325,24 @@ impl Problem {
                     depth_m,
                     height_m,
                 });
-                (with_box, None)
+                (with_box, Change::None)
             });
             cost += o.jump * f64::from(self.fallen(boxes)) / JUMP_BOXES.len() as f64;
         }
         if o.steps > 0.0 {
-            let steps = SPEED_STEPS.map(|f| (params.clone(), Some(f)));
+            let steps = SPEED_STEPS.map(|f| (params.clone(), Change::Speed(f)));
             cost += o.steps * f64::from(self.fallen(steps)) / SPEED_STEPS.len() as f64;
+        }
+        let switches = self.switch_runs();
+        if let Some(from) = self.switch_from.as_ref().filter(|_| switches > 0) {
+            let speeds = std::iter::once(params.speed_mps).chain(self.also_at_mps.iter().copied());
+            let runs = speeds.map(|speed| {
+                let mut begun = params.clone();
+                begun.speed_mps = speed;
+                begun.gait = Some(from.clone());
+                (begun, Change::Gait(self.gait.clone()))
+            });
+            cost += o.switch * f64::from(self.fallen(runs)) / switches as f64;
         }
         Evaluation {
             cost,
@@ -289,11 +353,11 @@ impl Problem {
 
     /// What a candidate the controller refuses costs: a fall, a missed
     /// speed, every Table-2 row missed, every box and every speed step a
-    /// fall.
+    /// fall, every switch a fall.
     fn refused(&self) -> Evaluation {
         let o = &self.objective;
         Evaluation {
-            cost: o.fall + o.speed + o.table2 + o.jump + o.steps,
+            cost: o.fall + o.speed + o.table2 + o.jump + o.steps + o.switch,
             fell: true,
             speed_mean_mps: 0.0,
         }
@@ -301,10 +365,10 @@ impl Problem {
 
     /// How many of the runs `runs` (each [`Problem::run_with`]'s
     /// arguments) fell or were refused.
-    fn fallen(&self, runs: impl IntoIterator<Item = (PhysicsParams, Option<f64>)>) -> u32 {
+    fn fallen(&self, runs: impl IntoIterator<Item = (PhysicsParams, Change)>) -> u32 {
         runs.into_iter()
-            .map(|(params, step)| {
-                u32::from(self.run_with(params, step).is_none_or(|(_, fell)| fell))
+            .map(|(params, change)| {
+                u32::from(self.run_with(params, &change).is_none_or(|(_, fell)| fell))
             })
             .sum()
     }
@@ -312,22 +376,23 @@ impl Problem {
     /// One run of `seconds` with `params`: its figures and whether it fell
     /// (or blew up); `None` when the controller refuses it.
     fn run(&self, params: PhysicsParams) -> Option<(GaitSummary, bool)> {
-        self.run_with(params, None)
+        self.run_with(params, &Change::None)
     }
 
-    /// [`Problem::run`], with the desired speed multiplied by `step`
-    /// halfway through when it is given.
-    fn run_with(&self, params: PhysicsParams, step: Option<f64>) -> Option<(GaitSummary, bool)> {
-        let stepped = step.map(|factor| factor * params.speed_mps);
+    /// [`Problem::run`], with `change` made halfway through.
+    fn run_with(&self, params: PhysicsParams, change: &Change) -> Option<(GaitSummary, bool)> {
+        let speed_mps = params.speed_mps;
         let mut driver = PhysicsDriver::with_params(&self.preset, params).ok()?;
         driver.reset_after_fall = false;
         let frames = (self.seconds / FRAME_S).round() as usize;
         let mut fell = false;
         for frame in 0..frames {
-            if frame == frames / 2
-                && let Some(speed) = stepped
-            {
-                driver.set_speed(speed).ok()?;
+            if frame == frames / 2 {
+                match change {
+                    Change::None => {}
+                    Change::Speed(factor) => driver.set_speed(factor * speed_mps).ok()?,
+                    Change::Gait(gait) => driver.set_gait(gait).ok()?,
+                }
             }
             driver.step(FRAME_S);
             if driver.resets() > 0 || (frame % 60 == 59 && driver.fell()) {

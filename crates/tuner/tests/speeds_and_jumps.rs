@@ -3,7 +3,8 @@
 //! the speeds and `table2` the tuned speed's, which two independent sets of
 //! single-speed problems must reproduce; the `jump` term counts the box runs
 //! that fell, in steps of one box, and only the kangaroo may ask for it;
-//! the `steps` term counts the runs with a speed step that fell.
+//! the `steps` term counts the runs with a speed step that fell, and the
+//! `switch` term the runs switched into from another gait that fell.
 
 use gaitlab_core::Creature;
 use gaitlab_core::preset::load_bundled;
@@ -20,15 +21,43 @@ fn bundled(name: &str, speed_mps: f64) -> Creature {
     creature
 }
 
-fn problem(name: &str, gait: &str, speed_mps: f64, seconds: f64, objective: &str) -> Problem {
+/// The experiment's pitching bound (docs/physics.md, "The trunk's pitch
+/// inertia decides the bound") at `speed_mps`.
+fn pitching_bound(speed_mps: f64) -> Creature {
+    const PRESET: &str =
+        include_str!("../../../presets/experiments/raibert-quadruped-pitching-bound.json");
+    let mut bound = match Creature::from_json(PRESET) {
+        Ok(creature) => creature,
+        Err(error) => panic!("{error}"),
+    };
+    if let Some(physics) = bound.scenario.physics.as_mut() {
+        physics.speed_mps = speed_mps;
+    }
+    bound
+}
+
+/// `gait` of `creature`, run `seconds` and costed by `objective`.
+fn problem_of(creature: &Creature, gait: &str, seconds: f64, objective: &str) -> Problem {
     let objective = match Objective::parse(objective) {
         Ok(o) => o,
         Err(error) => panic!("{error}"),
     };
-    match Problem::new(&bundled(name, speed_mps), gait, seconds, objective) {
+    match Problem::new(creature, gait, seconds, objective) {
         Ok(p) => p,
         Err(error) => panic!("{error}"),
     }
+}
+
+fn problem(name: &str, gait: &str, speed_mps: f64, seconds: f64, objective: &str) -> Problem {
+    problem_of(&bundled(name, speed_mps), gait, seconds, objective)
+}
+
+/// The cost of the start point of `p`, with its runs per candidate.
+fn start_cost(p: &Problem) -> (usize, f64) {
+    (
+        p.runs_per_candidate(),
+        p.evaluate(&vec![0.0; p.names().len()]).cost,
+    )
 }
 
 #[test]
@@ -97,28 +126,9 @@ fn the_jump_term_counts_the_boxes_that_felled_the_kangaroo() {
 /// halfway tips it over; the bundled biped's run holds both steps.
 #[test]
 fn the_steps_term_counts_the_speed_steps_that_felled_the_creature() {
-    const PITCHING_BOUND: &str =
-        include_str!("../../../presets/experiments/raibert-quadruped-pitching-bound.json");
-    let mut bound = match Creature::from_json(PITCHING_BOUND) {
-        Ok(creature) => creature,
-        Err(error) => panic!("{error}"),
-    };
-    if let Some(physics) = bound.scenario.physics.as_mut() {
-        physics.speed_mps = 2.3;
-    }
+    let bound = pitching_bound(2.3);
     let costed = |creature: &Creature, gait: &str, seconds: f64, objective: &str| {
-        let objective = match Objective::parse(objective) {
-            Ok(o) => o,
-            Err(error) => panic!("{error}"),
-        };
-        let p = match Problem::new(creature, gait, seconds, objective) {
-            Ok(p) => p,
-            Err(error) => panic!("{error}"),
-        };
-        (
-            p.runs_per_candidate(),
-            p.evaluate(&vec![0.0; p.names().len()]).cost,
-        )
+        start_cost(&problem_of(creature, gait, seconds, objective))
     };
     // 20 s: the step comes at 10 s and the fall about 7 s later.
     let steady = costed(&bound, "bound", 20.0, "fall=1");
@@ -130,4 +140,44 @@ fn the_steps_term_counts_the_speed_steps_that_felled_the_creature() {
 
     let biped = bundled("raibert-biped", 1.6);
     assert_eq!(costed(&biped, "run", 10.0, "steps=1"), (3, 0.0));
+}
+
+/// The `switch` term: the experiment's bound at 2.3 m/s holds from its own
+/// start, but begun as a trot and switched to the bound at 10 s (the app's
+/// gait menu) it tumbles about 5 s later (docs/physics.md, "The trunk's
+/// pitch inertia decides the bound"); the bundled biped's run, switched
+/// into from its gallop, holds. The gait to begin in is checked.
+#[test]
+fn the_switch_term_counts_the_switches_that_felled_the_creature() {
+    let cost = start_cost;
+    let mut switched = problem_of(&pitching_bound(2.3), "bound", 20.0, "fall=1,switch=2");
+    // Without a gait to begin in the term has no runs.
+    assert_eq!(cost(&switched), (1, 0.0), "the bound holds 2.3 m/s");
+    assert!(
+        switched
+            .set_switch_from("bound")
+            .is_err_and(|e| e.to_string().starts_with("switch_from"))
+    );
+    assert!(
+        switched
+            .set_switch_from("walk")
+            .is_err_and(|e| e.to_string().starts_with("switch_from"))
+    );
+    assert_eq!(switched.switch_from(), None);
+    if let Err(error) = switched.set_switch_from("trot") {
+        panic!("{error}");
+    }
+    assert_eq!(switched.switch_from(), Some("trot"));
+    let (runs, felled) = cost(&switched);
+    println!("bound switched into from the trot: {runs} runs, cost {felled}");
+    assert_eq!((runs, felled), (2, 2.0), "the switch felled it");
+    // With a further speed, one switch run per speed.
+    switched.also_at_mps = vec![2.0];
+    assert_eq!(switched.runs_per_candidate(), 4);
+
+    let mut biped = problem("raibert-biped", "run", 1.6, 20.0, "switch=1");
+    if let Err(error) = biped.set_switch_from("gallop") {
+        panic!("{error}");
+    }
+    assert_eq!(cost(&biped), (2, 0.0), "the biped runs on after its gallop");
 }

@@ -82,7 +82,8 @@ named_parameters!(QuadrupedBoundParams; [
     gathered_flight_s, extended_flight_s, pair_flight_gain, thrust_end, min_short_s, stance_s,
     placement_gain_s, speed_integral_gain, speed_bias_cap, min_stride_s, front_offset_m,
     pitch_bias, pitch_kp, pitch_kv, roll_kp, roll_kv, yaw_kp, yaw_kv, posture_force_ratio,
-    sweep_s, swing_kp, swing_kv, max_hip_torque, gallop_shorter_m, gallop_spread_m]);
+    sweep_s, swing_kp, swing_kv, swing_roll_follow, max_hip_torque, gallop_shorter_m,
+    gallop_spread_m]);
 
 impl NamedParameters for QuadrupedRunParams {
     const NAMES: &'static [&'static str] = &[
@@ -111,6 +112,7 @@ impl NamedParameters for QuadrupedRunParams {
         "yaw_kv",
         "swing_kp",
         "swing_kv",
+        "swing_roll_follow",
         "max_hip_torque",
     ];
 
@@ -142,6 +144,7 @@ impl NamedParameters for QuadrupedRunParams {
             "yaw_kv" => &mut self.yaw_kv,
             "swing_kp" => &mut self.swing_kp,
             "swing_kv" => &mut self.swing_kv,
+            "swing_roll_follow" => &mut self.swing_roll_follow,
             "max_hip_torque" => &mut self.max_hip_torque,
             _ => return None,
         })

@@ -39,6 +39,38 @@ pub fn leg_direction(trunk_rot: DMat3, offset: DVec3, reach: f64) -> DVec3 {
     trunk_rot.transpose() * world
 }
 
+/// The frame a positioning leg is aimed in: the trunk's rotation `trunk_rot`
+/// (columns: side, up, forward) with the share `roll_follow` (0–1) of its
+/// roll about its forward axis kept. At 1 (or above) it is `trunk_rot`
+/// itself, to the bit: the leg is aimed at its ground point through the
+/// trunk's measured attitude. At 0 the trunk's roll is left out, and the
+/// leg is aimed in the trunk's sagittal plane. With every foot off the
+/// ground a leg held at a world angle sends the body's roll momentum into
+/// the trunk alone; one held in the trunk's frame rolls with the trunk.
+#[must_use]
+pub fn aim_frame(trunk_rot: DMat3, roll_follow: f64) -> DMat3 {
+    if roll_follow >= 1.0 {
+        return trunk_rot;
+    }
+    let forward = trunk_rot.z_axis;
+    let side = DVec3::Y.cross(forward).normalize_or(trunk_rot.x_axis);
+    let up = forward.cross(side);
+    let level = DMat3::from_cols(side, up, forward);
+    // Not above 1 here; NaN or below 0 reads as 0.
+    let share = if roll_follow > 0.0 { roll_follow } else { 0.0 };
+    if share == 0.0 {
+        return level;
+    }
+    let roll = trunk_rot.x_axis.dot(up).patan2(trunk_rot.x_axis.dot(side));
+    let (sin, cos) = (share * roll).psin_cos();
+    level
+        * DMat3::from_cols(
+            DVec3::new(cos, sin, 0.0),
+            DVec3::new(-sin, cos, 0.0),
+            DVec3::Z,
+        )
+}
+
 /// The hip's gimbal angles `[roll, pitch]` (rad) that aim a leg of length
 /// `reach` (m) from the hip at `hip_world` toward the ground point `foot`
 /// (world): eq. 3's foot place as hip targets.
@@ -108,6 +140,60 @@ mod tests {
         // The look-ahead caps it; a hip already low looks nowhere ahead.
         assert!((hip_at_touchdown(hip, v, 0.8, DVec3::ZERO, 0.05).z - 0.1).abs() < 1e-12);
         assert_eq!(hip_at_touchdown(hip, v, 1.2, DVec3::ZERO, 1.0), DVec3::ZERO);
+    }
+
+    /// A trunk yawed, pitched nose down and rolled by the given angles (rad).
+    fn trunk(yaw: f64, pitch: f64, roll: f64) -> DMat3 {
+        DMat3::from_quat(
+            DQuat::from_rotation_y(yaw)
+                * DQuat::from_rotation_x(pitch)
+                * DQuat::from_rotation_z(roll),
+        )
+    }
+
+    #[test]
+    fn the_aim_frame_keeps_the_share_of_roll_asked_for() {
+        let rolled = trunk(0.3, 0.4, 0.25);
+        // 1: the trunk's own rotation, to the bit.
+        assert_eq!(aim_frame(rolled, 1.0), rolled);
+        // 0: the same trunk without its roll; the share: that much roll.
+        let level = trunk(0.3, 0.4, 0.0);
+        for (share, want) in [(0.0, level), (0.5, trunk(0.3, 0.4, 0.125))] {
+            let got = aim_frame(rolled, share);
+            assert!(
+                (got - want).to_cols_array().iter().all(|e| e.abs() < 1e-12),
+                "{share}: {got} against {want}"
+            );
+        }
+        // A level trunk is left as it is; NaN and negative shares read as 0.
+        assert!(
+            (aim_frame(level, 0.0) - level)
+                .to_cols_array()
+                .iter()
+                .all(|e| e.abs() < 1e-12)
+        );
+        assert_eq!(aim_frame(rolled, f64::NAN), aim_frame(rolled, 0.0));
+        assert_eq!(aim_frame(rolled, -2.0), aim_frame(rolled, 0.0));
+    }
+
+    #[test]
+    fn a_leg_aimed_without_the_roll_hangs_in_the_trunks_plane() {
+        // A trunk rolled 0.3 rad, the foot place straight below the hip: aimed
+        // through the roll the leg turns 0.3 rad back at its roll joint to hang
+        // plumb; aimed in the trunk's plane it hangs along the trunk's −y.
+        let rolled = trunk(0.0, 0.0, 0.3);
+        let hip = DVec3::new(0.0, 1.0, 0.0);
+        let foot = DVec3::ZERO;
+        let through = hip_angles(aim_frame(rolled, 1.0), hip, foot, 0.8);
+        assert!(
+            (through[0] + 0.3).abs() < 1e-12 && through[1].abs() < 1e-12,
+            "{through:?}"
+        );
+        let plane = hip_angles(aim_frame(rolled, 0.0), hip, foot, 0.8);
+        assert!(
+            plane[0].abs() < 1e-12 && plane[1].abs() < 1e-12,
+            "{plane:?}"
+        );
     }
 
     #[test]

@@ -40,7 +40,7 @@ use super::hop_height::{flight_for_height, height_for_flight};
 use super::leg_spring::LegSpring;
 use super::pair_posture::PairPosture;
 use super::phase::Phase;
-use super::placement::{foot_displacement, hip_angles, hip_at_touchdown};
+use super::placement::{aim_frame, foot_displacement, hip_angles, hip_at_touchdown};
 use super::speed_trim::SpeedTrim;
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
@@ -171,6 +171,8 @@ impl Controller for QuadrupedBound {
         let trunk = creature.trunk;
         let trunk_rot = data.world[trunk].rot;
         let trunk_pos = data.world[trunk].pos;
+        // The frame the positioning legs are aimed in (eq. 3's kinematic transformation).
+        let aim = aim_frame(trunk_rot, p.swing_roll_follow);
         let spring = LegSpring::new(p.leg_stiffness, p.leg_damping, p.leg_travel_m);
         let landing = p.landing_rest_m * l;
         let short = p.short_rest_m * l;
@@ -276,7 +278,7 @@ impl Controller for QuadrupedBound {
                     let foot = hip_at_touchdown(hip_world, hip_v, reach, displacement, lookahead)
                         + displacement
                         + spread;
-                    let angles = hip_angles(trunk_rot, hip_world, foot, reach);
+                    let angles = hip_angles(aim, hip_world, foot, reach);
                     servo.set(drives, &leg.hip, angles, &mut self.hip_target[i]);
                 } else if touching && servoing(pair.phase) && sharing {
                     posture.applying_rest_m[i] = Some(rest);

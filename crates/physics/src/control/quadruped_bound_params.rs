@@ -120,6 +120,14 @@ pub struct QuadrupedBoundParams {
     pub swing_kp: f64,
     /// Hip servo damping for positioning legs (N·m·s/rad).
     pub swing_kv: f64,
+    /// How much of the trunk's roll the kinematic transformation that aims
+    /// a positioning leg at eq. 3's foot place takes in (0–1): 1 aims it
+    /// at the ground point through the trunk's measured roll (the world
+    /// frame, as before); 0 aims it in the trunk's sagittal plane, as if the
+    /// trunk were level in roll, leaving roll to eq. 4 in stance. The paper
+    /// says only that "a kinematic transformation determines the joint
+    /// angles" (docs/physics.md, "Aiming the legs through the trunk's roll").
+    pub swing_roll_follow: f64,
     /// Largest hip torque (N·m).
     pub max_hip_torque: f64,
     /// Gallop: how much shorter the second leg of a pair lands (m), which
@@ -170,6 +178,7 @@ impl Default for QuadrupedBoundParams {
             sweep_s: 0.05,
             swing_kp: 300.0,
             swing_kv: 15.0,
+            swing_roll_follow: 1.0,
             max_hip_torque: 400.0,
             gallop_shorter_m: 0.025,
             gallop_spread_m: 0.03,

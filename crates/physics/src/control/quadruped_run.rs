@@ -22,7 +22,7 @@ use super::hip_servo::{HipServo, release};
 use super::hop_height::{flight_for_height, height_for_flight};
 use super::pair_posture::PairPosture;
 use super::phase::Phase;
-use super::placement::{foot_displacement, hip_angles, hip_at_touchdown};
+use super::placement::{aim_frame, foot_displacement, hip_angles, hip_at_touchdown};
 use super::speed_trim::SpeedTrim;
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
@@ -157,6 +157,8 @@ impl Controller for QuadrupedRun {
         let trunk = creature.trunk;
         let trunk_rot = data.world[trunk].rot;
         let trunk_pos = data.world[trunk].pos;
+        // The frame the positioning legs are aimed in (eq. 3's kinematic transformation).
+        let aim = aim_frame(trunk_rot, self.params.swing_roll_follow);
         let pair = TROT_PAIRS[self.active];
         let descending = pair
             .iter()
@@ -239,7 +241,7 @@ impl Controller for QuadrupedRun {
                     let foot =
                         hip_at_touchdown(hip_world, hip_v, reach, displacement, 0.5 * s.time())
                             + displacement;
-                    let angles = hip_angles(trunk_rot, hip_world, foot, reach);
+                    let angles = hip_angles(aim, hip_world, foot, reach);
                     servo.set(drives, &leg.hip, angles, &mut self.hip_target[i]);
                 }
                 Phase::Loading | Phase::Unloading => {

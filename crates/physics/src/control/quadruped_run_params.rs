@@ -77,6 +77,14 @@ pub struct QuadrupedRunParams {
     pub swing_kp: f64,
     /// Hip servo damping for positioning legs (N·m·s/rad).
     pub swing_kv: f64,
+    /// How much of the trunk's roll the kinematic transformation that aims
+    /// a positioning leg at eq. 3's foot place takes in (0–1): 1 aims it
+    /// at the ground point through the trunk's measured roll (the world
+    /// frame, as before); 0 aims it in the trunk's sagittal plane, as if the
+    /// trunk were level in roll, leaving roll to eq. 4 in stance. The paper
+    /// says only that "a kinematic transformation determines the joint
+    /// angles" (docs/physics.md, "Aiming the legs through the trunk's roll").
+    pub swing_roll_follow: f64,
     /// Largest hip torque (N·m).
     pub max_hip_torque: f64,
 }
@@ -114,6 +122,7 @@ impl Default for QuadrupedRunParams {
             yaw_kv: 30.0,
             swing_kp: 300.0,
             swing_kv: 15.0,
+            swing_roll_follow: 1.0,
             max_hip_torque: 400.0,
         }
     }
