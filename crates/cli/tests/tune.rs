@@ -106,6 +106,18 @@ fn bad_tune_arguments_are_named() {
             vec!["--objective", "jump=1"],
             "objective.jump: only the kangaroo",
         ),
+        (
+            vec!["--objective", "fall=10,switch=1"],
+            "objective.switch: name the gait its runs begin in with --switch-from",
+        ),
+        (
+            vec!["--objective", "switch=1", "--switch-from", "run"],
+            "switch_from: the runs switch to run",
+        ),
+        (
+            vec!["--objective", "switch=1", "--switch-from", "trot"],
+            "switch_from: scenario.physics.gait",
+        ),
     ] {
         let mut all = vec!["tune", "raibert-biped", "--out", out];
         all.extend(args);

@@ -353,11 +353,16 @@ impl Problem {
 
     /// What a candidate the controller refuses costs: a fall, a missed
     /// speed, every Table-2 row missed, every box and every speed step a
-    /// fall, every switch a fall.
+    /// fall, every switch a fall (when the `switch` term has runs).
     fn refused(&self) -> Evaluation {
         let o = &self.objective;
+        let switch = if self.switch_runs() > 0 {
+            o.switch
+        } else {
+            0.0
+        };
         Evaluation {
-            cost: o.fall + o.speed + o.table2 + o.jump + o.steps + o.switch,
+            cost: o.fall + o.speed + o.table2 + o.jump + o.steps + switch,
             fell: true,
             speed_mean_mps: 0.0,
         }
