@@ -47,6 +47,9 @@ pub fn leg_direction(trunk_rot: DMat3, offset: DVec3, reach: f64) -> DVec3 {
 /// leg is aimed in the trunk's sagittal plane. With every foot off the
 /// ground a leg held at a world angle sends the body's roll momentum into
 /// the trunk alone; one held in the trunk's frame rolls with the trunk.
+/// The paper says only that "a kinematic transformation determines the
+/// joint angles" (docs/physics.md, "Aiming the legs through the trunk's
+/// roll"); the bound's and the trot's `swing_roll_follow` choose the share.
 #[must_use]
 pub fn aim_frame(trunk_rot: DMat3, roll_follow: f64) -> DMat3 {
     if roll_follow >= 1.0 {

@@ -120,13 +120,9 @@ pub struct QuadrupedBoundParams {
     pub swing_kp: f64,
     /// Hip servo damping for positioning legs (N·m·s/rad).
     pub swing_kv: f64,
-    /// How much of the trunk's roll the kinematic transformation that aims
-    /// a positioning leg at eq. 3's foot place takes in (0–1): 1 aims it
-    /// at the ground point through the trunk's measured roll (the world
-    /// frame, as before); 0 aims it in the trunk's sagittal plane, as if the
-    /// trunk were level in roll, leaving roll to eq. 4 in stance. The paper
-    /// says only that "a kinematic transformation determines the joint
-    /// angles" (docs/physics.md, "Aiming the legs through the trunk's roll").
+    /// Share of the trunk's roll (0–1) eq. 3's leg aim takes in:
+    /// 1 through the measured roll, as before; 0 in the trunk's sagittal
+    /// plane ([`aim_frame`](super::placement::aim_frame)).
     pub swing_roll_follow: f64,
     /// Largest hip torque (N·m).
     pub max_hip_torque: f64,
