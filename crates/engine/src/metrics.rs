@@ -398,6 +398,31 @@ pub struct Table2Entry {
     pub input: bool,
 }
 
+/// How nearly one virtual leg's legs act in unison, in `run --json`
+/// (`gaitlab_physics::engine::pair_timing`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PairTimingEntry {
+    /// The pair's legs, the one meant to land first first.
+    pub legs: [String; 2],
+    /// Mean gap between the two touchdowns of a shared stance (s).
+    pub touchdown_gap_s: f64,
+    /// Mean gap between the two lift-offs (s).
+    pub liftoff_gap_s: f64,
+    /// Stances of the first leg the second shared.
+    pub shared: usize,
+    /// Stances of the first leg the second did not touch down in.
+    pub alone: usize,
+}
+
+/// One time the creature was put back at the start, in `run --json`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PutBackEntry {
+    /// Seconds into the whole run (the attempt clocks added up).
+    pub run_time_s: f64,
+    /// The guard's message.
+    pub why: String,
+}
+
 /// DESIGN.md's `always` and `physics` keys plus Table 2's extras.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PhysicsRunMetrics {
@@ -419,8 +444,14 @@ pub struct PhysicsRunMetrics {
     pub scale: f64,
     /// Whether the creature fell (or was reset after a fall).
     pub fell: bool,
-    /// The blow-up guard's message, if the simulation blew up.
+    /// The guard's message at the last put-back (a blow-up or a fall),
+    /// its time on the clock of the attempt it ended.
     pub blow_up: Option<String>,
+    /// Every put-back of the run, in order, each with the run's own time.
+    pub put_backs: Vec<PutBackEntry>,
+    /// Each virtual leg's touchdown and lift-off gaps (the trot, bound and
+    /// gallops; empty for one-legged gaits).
+    pub pairs: Vec<PairTimingEntry>,
     /// Desired speed, m/s.
     pub speed_desired_mps: f64,
     /// Mean speed, m/s.
@@ -504,6 +535,32 @@ impl PhysicsRunMetrics {
                 .message()
                 .filter(|m| Some(*m) != driver.start_note())
                 .map(str::to_owned),
+            pairs: gaitlab_physics::engine::pair_timing::pair_timing(
+                &s.stances,
+                driver.virtual_legs(),
+            )
+            .into_iter()
+            .map(|t| PairTimingEntry {
+                legs: t.legs.map(|i| {
+                    sim.creature
+                        .legs
+                        .get(i)
+                        .map_or_else(String::new, |leg| leg.name.clone())
+                }),
+                touchdown_gap_s: t.touchdown_gap_s,
+                liftoff_gap_s: t.liftoff_gap_s,
+                shared: t.shared,
+                alone: t.alone,
+            })
+            .collect(),
+            put_backs: driver
+                .put_backs()
+                .iter()
+                .map(|p| PutBackEntry {
+                    run_time_s: p.run_time_s,
+                    why: p.why.clone(),
+                })
+                .collect(),
             speed_desired_mps: s.speed_desired_mps,
             speed_mean_mps: s.speed_mean_mps,
             stride_length_m: s.stride_length_m,

@@ -7,6 +7,7 @@ use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::{Creature as PresetCreature, load_bundled};
 use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::control::gait_controller::gait_names;
+use gaitlab_physics::engine::driver::MAX_PUT_BACKS;
 
 fn bundled(name: &str) -> PresetCreature {
     load_bundled(name).expect("bundled").expect("valid")
@@ -100,6 +101,67 @@ fn an_absurd_gain_blows_up_and_the_creature_is_put_back_with_a_reason() {
         "runs again after the reset: {:?}",
         driver.message()
     );
+}
+
+#[test]
+fn every_put_back_is_listed_with_the_runs_own_time() {
+    let preset = bundled("raibert-biped");
+    let mut driver = PhysicsDriver::new(&preset).expect("driver");
+    let frame = 1.0 / 60.0;
+    // Two blow-ups, each after about a second of running: the simulation
+    // clock restarts with the creature, the run's clock goes on.
+    let mut frames = 0_u32;
+    for _ in 0..2 {
+        for _ in 0..60 {
+            driver.step(frame);
+            frames += 1;
+        }
+        let resets = driver.resets();
+        driver
+            .set_gain("leg_stiffness", 1e9)
+            .expect("absurd but allowed");
+        while driver.resets() == resets && frames < 600 {
+            driver.step(frame);
+            frames += 1;
+        }
+    }
+    let put_backs = driver.put_backs().to_vec();
+    assert_eq!(put_backs.len(), 2, "{put_backs:?}");
+    let first = put_backs[0].run_time_s;
+    let second = put_backs[1].run_time_s;
+    assert!(first > 1.0 && first < 1.5, "first at {first} s");
+    assert!(
+        second > first + 1.0 && second < first + 1.5,
+        "second at {second} s"
+    );
+    assert!(put_backs.iter().all(|p| p.why.contains("blew up")));
+    // The run's clock is the attempts' clocks added up: the frames', less
+    // what is left of a frame in which the creature was put back.
+    assert!(
+        driver.time() < 0.1,
+        "the attempt clock restarted: {}",
+        driver.time()
+    );
+    let run = driver.run_time_s();
+    assert!((run - second - driver.time()).abs() < 1e-9, "{run}");
+    let framed = f64::from(frames) * frame;
+    assert!(
+        run <= framed && run > framed - 2.0 * frame,
+        "{run} after {frames} frames"
+    );
+    // The list keeps the first MAX_PUT_BACKS; the count goes on.
+    while driver.resets() < 110 {
+        driver
+            .set_gain("leg_stiffness", 1e9)
+            .expect("absurd but allowed");
+        driver.step(frame);
+    }
+    assert_eq!(driver.put_backs().len(), MAX_PUT_BACKS);
+    assert_eq!(driver.put_backs()[..2], put_backs[..]);
+    // A reset begins a new run: no put-backs, the clock at zero.
+    driver.reset();
+    assert!(driver.put_backs().is_empty());
+    assert!(driver.run_time_s() < 1e-12);
 }
 
 #[test]

@@ -72,6 +72,21 @@ impl GaitController {
         }
     }
 
+    /// The virtual legs whose legs this gait means to act together, as
+    /// indices into the creature's legs, the leg meant to land first
+    /// first: the trot's diagonal pairs, the bound's and gallop's front and
+    /// rear pairs, the biped gallop's two legs; none for one-legged
+    /// running and hopping.
+    #[must_use]
+    pub fn virtual_legs(&self) -> &'static [[usize; 2]] {
+        match self {
+            GaitController::Quadruped(_) => &crate::control::quadruped_run::TROT_PAIRS,
+            GaitController::QuadrupedBound(_) => &crate::control::quadruped_bound::PAIRS,
+            GaitController::BipedGallop(_) => &[[0, 1]],
+            GaitController::BipedRun(_) | GaitController::Kangaroo(_) => &[],
+        }
+    }
+
     fn inner(&self) -> &dyn Controller {
         match self {
             GaitController::BipedRun(c) => c.as_ref(),

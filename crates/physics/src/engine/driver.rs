@@ -27,6 +27,22 @@ use crate::world::sim::{Controller, Sim, SimOptions};
 /// Seconds after a fall before the creature is put back at the start.
 pub const FALL_RESET_S: f64 = 1.5;
 
+/// How many put-backs a run lists (a creature the app leaves failing for
+/// hours must not grow the list without end); [`PhysicsDriver::resets`]
+/// counts them all.
+pub const MAX_PUT_BACKS: usize = 100;
+
+/// One time the guard put the creature back at the start.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PutBack {
+    /// When, in seconds of the whole run (the simulation clock restarts
+    /// with the creature; this one does not).
+    pub run_time_s: f64,
+    /// Why: the blow-up or the fall, with the time on the clock of the
+    /// attempt it ended.
+    pub why: String,
+}
+
 /// A physics creature running under control, seen as a [`Driver`].
 #[derive(Clone, Debug)]
 pub struct PhysicsDriver {
@@ -57,6 +73,11 @@ pub struct PhysicsDriver {
     pub reset_after_fall: bool,
     message: Option<String>,
     resets: u32,
+    /// The first [`MAX_PUT_BACKS`] put-backs since the run began or was
+    /// reset, in order.
+    put_backs: Vec<PutBack>,
+    /// Seconds of the run before the current attempt began.
+    attempt_start_s: f64,
 }
 
 fn scaled_skeleton(skeleton: &Skeleton, l: f64) -> Result<Skeleton, PresetError> {
@@ -204,6 +225,8 @@ impl PhysicsDriver {
             reset_after_fall: true,
             message,
             resets: 0,
+            put_backs: Vec::new(),
+            attempt_start_s: 0.0,
         };
         driver.update_pose();
         Ok(driver)
@@ -351,10 +374,43 @@ impl PhysicsDriver {
         self.start_note.as_deref()
     }
 
+    /// The running gait's virtual legs ([`GaitController::virtual_legs`]).
+    #[must_use]
+    pub fn virtual_legs(&self) -> &'static [[usize; 2]] {
+        self.controller.virtual_legs()
+    }
+
     /// How many times the creature was put back after a blow-up or a fall.
     #[must_use]
     pub fn resets(&self) -> u32 {
         self.resets
+    }
+
+    /// The put-backs since the run began (or was last reset), each with
+    /// the run's own time: the first [`MAX_PUT_BACKS`] of them.
+    #[must_use]
+    pub fn put_backs(&self) -> &[PutBack] {
+        &self.put_backs
+    }
+
+    /// Seconds since the run began or was last reset, across put-backs.
+    #[must_use]
+    pub fn run_time_s(&self) -> f64 {
+        self.attempt_start_s + self.sim.time
+    }
+
+    /// Put the creature back at the start after a blow-up or a fall,
+    /// recording when and why.
+    fn put_back(&mut self, why: String) {
+        let run_time_s = self.run_time_s();
+        self.attempt_start_s = run_time_s;
+        if self.put_backs.len() < MAX_PUT_BACKS {
+            self.put_backs.push(PutBack {
+                run_time_s,
+                why: why.clone(),
+            });
+        }
+        self.restart(why);
     }
 
     /// Change the desired speed (m/s at scale 1) while running.
@@ -666,7 +722,7 @@ impl PhysicsDriver {
         }
         self.sim.settle_accumulator();
         if let Err(blow_up) = result {
-            self.restart(format!("{blow_up}; the creature was put back at the start"));
+            self.put_back(format!("{blow_up}; the creature was put back at the start"));
             return;
         }
         let summary_fell = self.recorder.fell();
@@ -676,7 +732,7 @@ impl PhysicsDriver {
                 if self.reset_after_fall
                     && self.sim.time - t > FALL_RESET_S * self.params.scale.sqrt() =>
             {
-                self.restart(format!(
+                self.put_back(format!(
                     "the creature fell at t = {t:.2} s and was put back at the start"
                 ));
                 return;
@@ -700,6 +756,8 @@ impl Driver for PhysicsDriver {
         self.restart(String::new());
         self.message = None;
         self.resets = 0;
+        self.put_backs.clear();
+        self.attempt_start_s = 0.0;
     }
 
     fn skeleton(&self) -> &Skeleton {

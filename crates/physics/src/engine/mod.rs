@@ -3,7 +3,8 @@
 //!
 //! The [`driver`] runs a [`preset`]'s creature under its gait controller for
 //! the app and the CLI, steering it ([`steering`]) and showing it ([`probe`]);
-//! [`metrics`] measures the Table-2 figures and
+//! [`metrics`] measures the Table-2 figures, [`pair_timing`] how nearly
+//! each virtual leg's legs act in unison, and
 //! [`table2`] holds the paper's; [`mjcf`] exports the creature to MuJoCo;
 //! [`trace`] writes its state after every step; [`cycle_start`] starts a
 //! run on the gait's cycle.
@@ -12,6 +13,7 @@ pub mod cycle_start;
 pub mod driver;
 pub mod metrics;
 pub mod mjcf;
+pub mod pair_timing;
 pub mod preset;
 pub mod probe;
 pub mod steering;
