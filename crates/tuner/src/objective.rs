@@ -23,13 +23,18 @@
 //!   the tuned one halfway that fell, one per speed the candidate runs at:
 //!   the app's gait menu used while the creature runs. Costed by
 //!   [`crate::Problem`], like `jump`.
+//! - `pairs`: how far each virtual leg's two touchdowns are from the gait's
+//!   timing ([`timing_cost`]): in unison for the trot and the bound, half a
+//!   stance apart for the gallops ([`GALLOP_GAP_SHARE`]); 1 for a run with
+//!   no pair to judge. 0 for a one-legged gait.
 
 use gaitlab_physics::engine::metrics::GaitSummary;
+use gaitlab_physics::engine::pair_timing::{GALLOP_GAP_SHARE, pair_timing, timing_cost};
 use gaitlab_physics::engine::table2::compare;
 
 /// The names [`Objective::parse`] knows.
-pub const TERMS: [&str; 7] = [
-    "fall", "speed", "table2", "energy", "jump", "steps", "switch",
+pub const TERMS: [&str; 8] = [
+    "fall", "speed", "table2", "energy", "jump", "steps", "switch", "pairs",
 ];
 
 /// The boxes of the `jump` term, one run each: the near face's distance
@@ -61,6 +66,8 @@ pub struct Objective {
     pub steps: f64,
     /// Weight of `switch`.
     pub switch: f64,
+    /// Weight of `pairs`.
+    pub pairs: f64,
 }
 
 impl Default for Objective {
@@ -74,6 +81,7 @@ impl Default for Objective {
             jump: 0.0,
             steps: 0.0,
             switch: 0.0,
+            pairs: 0.0,
         }
     }
 }
@@ -92,6 +100,7 @@ impl Objective {
             jump: 0.0,
             steps: 0.0,
             switch: 0.0,
+            pairs: 0.0,
         };
         for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
             let (name, weight) = part
@@ -113,6 +122,7 @@ impl Objective {
                 "jump" => o.jump = w,
                 "steps" => o.steps = w,
                 "switch" => o.switch = w,
+                "pairs" => o.pairs = w,
                 other => {
                     return Err(format!(
                         "objective: unknown term \"{other}\" (terms: {})",
@@ -121,17 +131,24 @@ impl Objective {
                 }
             }
         }
-        if o.fall + o.speed + o.table2 + o.energy + o.jump + o.steps + o.switch <= 0.0 {
+        if o.fall + o.speed + o.table2 + o.energy + o.jump + o.steps + o.switch + o.pairs <= 0.0 {
             return Err("objective: every weight is 0".to_owned());
         }
         Ok(o)
     }
 
-    /// The cost of a run of `gait` with figures `s` (legs named `legs`);
-    /// `fell` also counts a blow-up. Every term but `jump`, `steps` and
-    /// `switch`.
+    /// The cost of a run of `gait` with figures `s` (legs named `legs`,
+    /// its virtual legs `pairs`); `fell` also counts a blow-up. Every term
+    /// but `jump`, `steps` and `switch`.
     #[must_use]
-    pub fn cost(&self, s: &GaitSummary, fell: bool, gait: &str, legs: &[&str]) -> f64 {
+    pub fn cost(
+        &self,
+        s: &GaitSummary,
+        fell: bool,
+        gait: &str,
+        legs: &[&str],
+        pairs: &[[usize; 2]],
+    ) -> f64 {
         let mut cost = 0.0;
         if fell {
             cost += self.fall;
@@ -154,6 +171,15 @@ impl Objective {
         if self.energy > 0.0 {
             cost += self.energy * s.cost_of_transport.min(10.0);
         }
+        if self.pairs > 0.0 && !pairs.is_empty() {
+            let target = if gait.contains("gallop") {
+                GALLOP_GAP_SHARE
+            } else {
+                0.0
+            };
+            let timings = pair_timing(&s.stances, pairs);
+            cost += self.pairs * timing_cost(&timings, &s.leg_stance_s, target).unwrap_or(1.0);
+        }
         cost
     }
 }
@@ -174,6 +200,7 @@ mod tests {
         assert_eq!(Objective::parse("jump=3").map(|o| o.jump), Ok(3.0));
         assert_eq!(Objective::parse("steps=2").map(|o| o.steps), Ok(2.0));
         assert_eq!(Objective::parse("switch=3").map(|o| o.switch), Ok(3.0));
+        assert_eq!(Objective::parse("pairs=2").map(|o| o.pairs), Ok(2.0));
     }
 
     #[test]
@@ -184,16 +211,20 @@ mod tests {
             ..GaitSummary::default()
         };
         let o = Objective::default();
-        assert!((o.cost(&s, false, "run", &[]) - 0.1).abs() < 1e-12);
-        assert!((o.cost(&s, true, "run", &[]) - 10.1).abs() < 1e-12);
+        assert!((o.cost(&s, false, "run", &[], &[]) - 0.1).abs() < 1e-12);
+        assert!((o.cost(&s, true, "run", &[], &[]) - 10.1).abs() < 1e-12);
         // No figures at all: every Table-2 row counts 1.
         let t = Objective::parse("table2=1").expect("parses");
-        assert!((t.cost(&s, false, "run", &[]) - 1.0).abs() < 1e-12);
+        assert!((t.cost(&s, false, "run", &[], &[]) - 1.0).abs() < 1e-12);
         let e = Objective::parse("energy=2").expect("parses");
         let moving = GaitSummary {
             cost_of_transport: 0.4,
-            ..s
+            ..s.clone()
         };
-        assert!((e.cost(&moving, false, "run", &[]) - 0.8).abs() < 1e-12);
+        assert!((e.cost(&moving, false, "run", &[], &[]) - 0.8).abs() < 1e-12);
+        // `pairs`: no stance to judge costs 1; a one-legged gait 0.
+        let p = Objective::parse("pairs=3").expect("parses");
+        assert!((p.cost(&s, false, "bound", &[], &[[0, 1]]) - 3.0).abs() < 1e-12);
+        assert_eq!(p.cost(&s, false, "run", &[], &[]), 0.0);
     }
 }

@@ -33,6 +33,8 @@ pub struct Problem {
     start: Vec<f64>,
     /// The creature's legs by name (Table 2's per-pair rows need them).
     legs: Vec<String>,
+    /// The gait's virtual legs (the `pairs` term).
+    pairs: &'static [[usize; 2]],
     /// Simulated seconds of each candidate's run.
     pub seconds: f64,
     /// What the run's figures cost.
@@ -107,6 +109,7 @@ impl Problem {
             names: gains.iter().map(|g| g.name.to_owned()).collect(),
             start: gains.iter().map(|g| g.value).collect(),
             legs: driver.leg_names().map(str::to_owned).collect(),
+            pairs: driver.virtual_legs(),
             seconds,
             objective,
             also_at_mps: Vec::new(),
@@ -296,26 +299,28 @@ impl Problem {
         let legs: Vec<&str> = self.legs.iter().map(String::as_str).collect();
         let o = &self.objective;
         let mut cost = if self.also_at_mps.is_empty() {
-            o.cost(&main, fell, gait, &legs)
+            o.cost(&main, fell, gait, &legs, self.pairs)
         } else {
             // Table 2 from the preset's speed; the other terms averaged over every speed.
             let table2 = Objective {
                 fall: 0.0,
                 speed: 0.0,
                 energy: 0.0,
+                pairs: 0.0,
                 ..*o
             };
             let rest = Objective { table2: 0.0, ..*o };
-            let mut sum = rest.cost(&main, fell, gait, &legs);
+            let mut sum = rest.cost(&main, fell, gait, &legs, self.pairs);
             for &speed in &self.also_at_mps {
                 let mut at = params.clone();
                 at.speed_mps = speed;
                 let Some((s, fell)) = self.run(at) else {
                     return self.refused();
                 };
-                sum += rest.cost(&s, fell, gait, &legs);
+                sum += rest.cost(&s, fell, gait, &legs, self.pairs);
             }
-            sum / (1 + self.also_at_mps.len()) as f64 + table2.cost(&main, fell, gait, &legs)
+            sum / (1 + self.also_at_mps.len()) as f64
+                + table2.cost(&main, fell, gait, &legs, self.pairs)
         };
         if o.jump > 0.0 {
             let boxes = JUMP_BOXES.map(|(at_m, height_m, depth_m)| {

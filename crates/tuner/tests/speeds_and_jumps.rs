@@ -4,7 +4,8 @@
 //! single-speed problems must reproduce; the `jump` term counts the box runs
 //! that fell, in steps of one box, and only the kangaroo may ask for it;
 //! the `steps` term counts the runs with a speed step that fell, and the
-//! `switch` term the runs switched into from another gait that fell.
+//! `switch` term the runs switched into from another gait that fell; the
+//! `pairs` term asks unison of the bound and half a stance of a gallop.
 
 use gaitlab_core::Creature;
 use gaitlab_core::preset::load_bundled;
@@ -180,4 +181,21 @@ fn the_switch_term_counts_the_switches_that_felled_the_creature() {
         panic!("{error}");
     }
     assert_eq!(cost(&biped), (2, 0.0), "the biped runs on after its gallop");
+}
+
+#[test]
+fn the_pairs_term_asks_unison_of_the_bound_and_half_a_stance_of_the_gallop() {
+    // The bound's pairs strike together: nothing to pay.
+    let bound = problem("raibert-quadruped", "bound", 2.3, 8.0, "pairs=1");
+    let (runs, cost) = start_cost(&bound);
+    assert_eq!(runs, 1);
+    assert!(cost < 0.01, "bound: {cost}");
+    // The biped gallop's legs land about 0.4 of a stance apart, near the
+    // 0.5 asked: a small cost, well under the 1 of a gallop in unison.
+    let gallop = problem("raibert-biped", "gallop", 1.5, 8.0, "pairs=1");
+    let (_, cost) = start_cost(&gallop);
+    assert!(cost > 0.05 && cost < 0.4, "biped gallop: {cost}");
+    // One-legged running has no pair to judge.
+    let run = problem("raibert-biped", "run", 1.6, 4.0, "pairs=1");
+    assert_eq!(start_cost(&run).1, 0.0);
 }

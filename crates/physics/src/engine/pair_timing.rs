@@ -26,6 +26,41 @@ pub struct PairTiming {
     pub alone: usize,
 }
 
+/// The touchdown gap the paper's gallop asks of a pair, as a share of one
+/// leg's stance: "a single support phase, a double support phase, and then
+/// a second single support phase", read as three equal parts, so the second
+/// leg lands half a leg's stance after the first. (The paper gives no
+/// figure; the bundled biped's gallops land 0.36–0.41 of a stance apart.)
+pub const GALLOP_GAP_SHARE: f64 = 0.5;
+
+/// How far a run's pairs are from the gait's timing, 0 (as asked) to 1: for
+/// each pair, |touchdown gap / mean stance − `target_share`| / 0.5, capped
+/// at 1, each stance of the first leg the second did not share counting 1;
+/// the mean over the pairs. `leg_stance_s` is each leg's mean stance (s).
+/// `None` when there is no pair or no stance to judge.
+#[must_use]
+pub fn timing_cost(timings: &[PairTiming], leg_stance_s: &[f64], target_share: f64) -> Option<f64> {
+    let costs: Vec<f64> = timings
+        .iter()
+        .filter(|t| t.shared + t.alone > 0)
+        .map(|t| {
+            let stance = t
+                .legs
+                .iter()
+                .map(|&i| leg_stance_s.get(i).copied().unwrap_or(0.0))
+                .sum::<f64>()
+                / 2.0;
+            let off = if stance > 0.0 {
+                ((t.touchdown_gap_s / stance - target_share).abs() / 0.5).min(1.0)
+            } else {
+                1.0
+            };
+            (t.shared as f64 * off + t.alone as f64) / (t.shared + t.alone) as f64
+        })
+        .collect();
+    (!costs.is_empty()).then(|| costs.iter().sum::<f64>() / costs.len() as f64)
+}
+
 /// The timing of each pair in `pairs` from every leg's stances.
 #[must_use]
 pub fn pair_timing(stances: &[Vec<Stance>], pairs: &[[usize; 2]]) -> Vec<PairTiming> {
@@ -93,6 +128,37 @@ mod tests {
         assert!((got[0].liftoff_gap_s - 0.02).abs() < 1e-12);
         assert_eq!((got[1].shared, got[1].alone), (0, 3));
         assert_eq!(got[1].touchdown_gap_s, 0.0);
+    }
+
+    #[test]
+    fn the_cost_is_the_distance_from_the_gaits_share_of_a_stance() {
+        let pair = |gap: f64, shared, alone| PairTiming {
+            legs: [0, 1],
+            touchdown_gap_s: gap,
+            liftoff_gap_s: 0.0,
+            shared,
+            alone,
+        };
+        let stance = [0.1, 0.1];
+        // In unison: no gap costs 0, a gap of half a stance the whole 1.
+        assert_eq!(timing_cost(&[pair(0.0, 10, 0)], &stance, 0.0), Some(0.0));
+        let half = timing_cost(&[pair(0.025, 10, 0)], &stance, 0.0).expect("judged");
+        assert!((half - 0.5).abs() < 1e-12);
+        // The gallop: half a stance apart costs 0; in unison 1; an unshared
+        // stance of the first leg counts 1.
+        let gallop = GALLOP_GAP_SHARE;
+        assert_eq!(
+            timing_cost(&[pair(0.05, 10, 0)], &stance, gallop),
+            Some(0.0)
+        );
+        assert_eq!(timing_cost(&[pair(0.0, 10, 0)], &stance, gallop), Some(1.0));
+        let some_alone = timing_cost(&[pair(0.05, 3, 1)], &stance, gallop).expect("judged");
+        assert!((some_alone - 0.25).abs() < 1e-12);
+        // Two pairs: their mean; nothing to judge: None.
+        let two = timing_cost(&[pair(0.05, 10, 0), pair(0.0, 10, 0)], &stance, gallop);
+        assert_eq!(two, Some(0.5));
+        assert_eq!(timing_cost(&[], &stance, gallop), None);
+        assert_eq!(timing_cost(&[pair(0.0, 0, 0)], &stance, gallop), None);
     }
 
     #[test]
