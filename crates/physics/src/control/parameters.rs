@@ -83,7 +83,7 @@ named_parameters!(QuadrupedBoundParams; [
     placement_gain_s, speed_integral_gain, speed_bias_cap, min_stride_s, front_offset_m,
     pitch_bias, pitch_kp, pitch_kv, roll_kp, roll_kv, yaw_kp, yaw_kv, posture_force_ratio,
     sweep_s, swing_kp, swing_kv, swing_roll_follow, max_hip_torque, gallop_shorter_m,
-    gallop_spread_m]);
+    gallop_spread_m, gallop_lag_s]);
 
 impl NamedParameters for QuadrupedRunParams {
     const NAMES: &'static [&'static str] = &[

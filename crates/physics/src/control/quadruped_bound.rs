@@ -24,9 +24,7 @@
 //! foot forces.
 //!
 //! The gallop ([`BoundStyle::Gallop`]) is the bound with the two legs of each
-//! pair separated: the second leg lands a little shorter (so some tens of
-//! milliseconds later) and a few centimetres further forward, giving single,
-//! double, single support within each pair's stance.
+//! pair separated in time and space (`quadruped_bound/gallop_legs.rs`).
 //!
 //! All parameters are given at scale 1 and scaled by the creature's dynamic
 //! scale L (Table 1).
@@ -48,23 +46,11 @@ use crate::world::sim::{ControlInput, Controller, Drive};
 pub use super::quadruped_bound_params::{BoundStyle, FRONT, PAIRS, QuadrupedBoundParams, REAR};
 pub use super::start::bound_start;
 
+mod gallop_legs;
 mod pairs;
 
-/// One pair's state machine (Figure 4).
-#[derive(Clone, Copy, Debug)]
-struct PairState {
-    phase: Phase,
-    /// Whether the other pair touched down since this pair's lift-off.
-    armed: bool,
-    touchdown_s: f64,
-    liftoff_s: f64,
-    /// Measured stance duration (s), T_s of eq. 3.
-    stance_s: f64,
-    /// Each leg's stance rest (m).
-    rest: [f64; 2],
-    /// Whether each leg has touched in this stance.
-    touched: [bool; 2],
-}
+use gallop_legs::stance_rest;
+use pairs::PairState;
 
 /// The bounding / galloping controller.
 #[derive(Clone, Debug)]
@@ -101,17 +87,8 @@ impl QuadrupedBound {
     #[must_use]
     pub fn new(params: QuadrupedBoundParams, creature: &PhysicalCreature) -> Self {
         let scale = creature.scale;
-        let pair = PairState {
-            phase: Phase::Flight,
-            armed: false,
-            touchdown_s: 0.0,
-            liftoff_s: f64::NEG_INFINITY,
-            stance_s: params.stance_s * scale.sqrt(),
-            rest: [params.landing_rest_m * scale; 2],
-            touched: [false; 2],
-        };
         // The rear pair lands first; the front waits for it.
-        let mut pairs = [pair; 2];
+        let mut pairs = [PairState::in_flight(&params, scale); 2];
         pairs[REAR].armed = true;
         Self {
             params,
@@ -177,6 +154,7 @@ impl Controller for QuadrupedBound {
         let landing = p.landing_rest_m * l;
         let short = p.short_rest_m * l;
         let gallop = p.style == BoundStyle::Gallop;
+        let own_legs = gallop && p.gallop_lag_s > 0.0;
 
         // Posture (eq. 4, weak on pitch) in stance: the servo's set-up here,
         // its torques every step ([`Controller::servo`]).
@@ -225,11 +203,12 @@ impl Controller for QuadrupedBound {
                 DVec3::ZERO
             };
             // Stance legs of the pair sharing the posture torque.
+            let phase = |side: usize| pair.leg_phase(side, own_legs);
             for (side, &i) in legs.iter().enumerate() {
                 posture.sharing[i] = !in_flight
                     && pair.touched[side]
                     && input.contacts[i].touching
-                    && servoing(pair.phase);
+                    && servoing(phase(side));
             }
             let sharing = legs.iter().any(|&i| posture.sharing[i]);
             for (side, &i) in legs.iter().enumerate() {
@@ -242,18 +221,17 @@ impl Controller for QuadrupedBound {
                 let rest = if airborne_leg {
                     if in_flight && !extend {
                         short
-                    } else if second {
+                    } else if second
+                        && (!own_legs
+                            || in_flight
+                            || input.time - pair.touchdown_s < p.gallop_lag_s * s.time())
+                    {
                         landing - p.gallop_shorter_m * l
                     } else {
                         landing
                     }
                 } else {
-                    match pair.phase {
-                        Phase::Thrust => pair.rest[side] + thrust,
-                        Phase::Unloading => short,
-                        _ if !touching && pair.phase != Phase::Loading => short,
-                        _ => pair.rest[side],
-                    }
+                    stance_rest(phase(side), touching, pair.rest[side], thrust, short)
                 };
                 let damping = if touching {
                     p.leg_damping
@@ -280,7 +258,7 @@ impl Controller for QuadrupedBound {
                         + spread;
                     let angles = hip_angles(aim, hip_world, foot, reach);
                     servo.set(drives, &leg.hip, angles, &mut self.hip_target[i]);
-                } else if touching && servoing(pair.phase) && sharing {
+                } else if touching && servoing(phase(side)) && sharing {
                     posture.applying_rest_m[i] = Some(rest);
                     self.hip_target[i] = [data.q[leg.hip[0]], data.q[leg.hip[1]]];
                 } else {

@@ -131,6 +131,11 @@ pub struct QuadrupedBoundParams {
     pub gallop_shorter_m: f64,
     /// Gallop: how much further forward the second foot lands (m).
     pub gallop_spread_m: f64,
+    /// Gallop: how long after the pair's first touchdown the second leg
+    /// lengthens for landing (s); above 0 each leg also runs its own stance
+    /// (`quadruped_bound/gallop_legs.rs`). 0: both legs follow the pair's
+    /// stance, as files made before it ran.
+    pub gallop_lag_s: f64,
 }
 
 impl Default for QuadrupedBoundParams {
@@ -178,6 +183,7 @@ impl Default for QuadrupedBoundParams {
             max_hip_torque: 400.0,
             gallop_shorter_m: 0.025,
             gallop_spread_m: 0.03,
+            gallop_lag_s: 0.0,
         }
     }
 }

@@ -6,11 +6,58 @@
 
 use glam::DVec3;
 
+use super::gallop_legs::{LegCycle, LegSense};
 use super::{FRONT, PAIRS, QuadrupedBound, REAR};
 use crate::control::phase::{Phase, StanceEvents};
 use crate::control::quadruped_bound_params::BoundStyle;
+use crate::control::quadruped_bound_params::QuadrupedBoundParams;
 use crate::control::speed_trim::along_z;
 use crate::world::sim::ControlInput;
+
+/// One pair's state machine (Figure 4).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct PairState {
+    pub phase: Phase,
+    /// Whether the other pair touched down since this pair's lift-off.
+    pub armed: bool,
+    pub touchdown_s: f64,
+    pub liftoff_s: f64,
+    /// Measured stance duration (s), T_s of eq. 3.
+    pub stance_s: f64,
+    /// Each leg's stance rest (m).
+    pub rest: [f64; 2],
+    /// Whether each leg has touched in this stance.
+    pub touched: [bool; 2],
+    /// Each leg's own stance (the gallop with a lag).
+    pub legs: [LegCycle; 2],
+}
+
+impl PairState {
+    /// A pair in flight, not armed, its stance guessed from `params` at
+    /// dynamic scale `scale`.
+    pub fn in_flight(params: &QuadrupedBoundParams, scale: f64) -> Self {
+        Self {
+            phase: Phase::Flight,
+            armed: false,
+            touchdown_s: 0.0,
+            liftoff_s: f64::NEG_INFINITY,
+            stance_s: params.stance_s * scale.sqrt(),
+            rest: [params.landing_rest_m * scale; 2],
+            touched: [false; 2],
+            legs: [LegCycle::default(); 2],
+        }
+    }
+
+    /// The state leg `side`'s stance follows: its own with `own_legs` (the
+    /// gallop with a lag), else the pair's.
+    pub fn leg_phase(&self, side: usize, own_legs: bool) -> Phase {
+        if own_legs {
+            self.legs[side].phase
+        } else {
+            self.phase
+        }
+    }
+}
 
 impl QuadrupedBound {
     /// Bound or gallop.
@@ -201,6 +248,29 @@ impl QuadrupedBound {
         }
         for (k, flight) in events.into_iter().flatten() {
             self.regulate_pair(k, flight);
+        }
+        if p.style == BoundStyle::Gallop && p.gallop_lag_s > 0.0 {
+            self.advance_legs(input, thrusts);
+        }
+    }
+
+    /// Each leg's own stance within its pair (the gallop with a lag).
+    fn advance_legs(&mut self, input: &ControlInput<'_>, thrusts: [f64; 2]) {
+        let l = self.plan.scale.l;
+        for (k, &legs) in PAIRS.iter().enumerate() {
+            let pair = &mut self.pairs[k];
+            for (s, &i) in legs.iter().enumerate() {
+                let spring = input.creature.legs[i].spring;
+                let sense = LegSense {
+                    touching: input.contacts[i].touching,
+                    q_m: input.data.q[spring] - pair.rest[s],
+                    qd_mps: input.data.qd[spring],
+                    extended_m: self.params.thrust_end * thrusts[k] - 0.005 * l,
+                    time_s: input.time,
+                    l,
+                };
+                pair.legs[s].advance(pair.phase, &sense);
+            }
         }
     }
 }
