@@ -37,6 +37,30 @@ pub(super) struct LegSense {
     pub l: f64,
 }
 
+/// Seconds (× √L) after touchdown within which a foot that leaves the
+/// ground is still landing: it bounced off at impact.
+pub(super) const BOUNCE_S: f64 = 0.01;
+
+/// Figure 4's stance events as the bound senses them on a spring `q_m` past
+/// its stance rest moving at `qd_mps`, `since_s` after touchdown: shortened
+/// once it compresses past 2 mm (× L) or 15 ms (× √L) have passed,
+/// lengthening once it stops shortening, extended at `extended_m`. The
+/// pair's machine reads it on the pair's mean spring, a galloping leg on
+/// its own.
+pub(super) fn spring_events(
+    q_m: f64,
+    qd_mps: f64,
+    since_s: f64,
+    extended_m: f64,
+    l: f64,
+) -> StanceEvents {
+    StanceEvents {
+        shortened: (qd_mps < 0.0 && q_m < -0.002 * l) || since_s > 0.015 * l.sqrt(),
+        lengthening: qd_mps >= 0.0,
+        extended: q_m >= extended_m,
+    }
+}
+
 impl LegCycle {
     /// Advance on the leg's own events; the pair in flight puts every leg
     /// in flight.
@@ -51,15 +75,16 @@ impl LegCycle {
             }
             (_, Phase::Flight) => Phase::Flight,
             // A foot bouncing off at impact is still landing.
-            (_, Phase::Loading) if !sense.touching && since > 0.01 * l.sqrt() => Phase::Flight,
+            (_, Phase::Loading) if !sense.touching && since > BOUNCE_S * l.sqrt() => Phase::Flight,
             (_, Phase::Loading) if !sense.touching => Phase::Loading,
             (_, _) if !sense.touching => Phase::Flight,
-            (_, stance) => stance.after(StanceEvents {
-                shortened: (sense.qd_mps < 0.0 && sense.q_m < -0.002 * l)
-                    || since > 0.015 * l.sqrt(),
-                lengthening: sense.qd_mps >= 0.0,
-                extended: sense.q_m >= sense.extended_m,
-            }),
+            (_, stance) => stance.after(spring_events(
+                sense.q_m,
+                sense.qd_mps,
+                since,
+                sense.extended_m,
+                l,
+            )),
         };
     }
 }

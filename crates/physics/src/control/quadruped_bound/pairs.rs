@@ -6,9 +6,9 @@
 
 use glam::DVec3;
 
-use super::gallop_legs::{LegCycle, LegSense};
+use super::gallop_legs::{BOUNCE_S, LegCycle, LegSense, spring_events};
 use super::{FRONT, PAIRS, QuadrupedBound, REAR};
-use crate::control::phase::{Phase, StanceEvents};
+use crate::control::phase::Phase;
 use crate::control::quadruped_bound_params::BoundStyle;
 use crate::control::quadruped_bound_params::QuadrupedBoundParams;
 use crate::control::speed_trim::along_z;
@@ -218,18 +218,15 @@ impl QuadrupedBound {
                     continue;
                 }
                 // A foot bouncing off at impact is still landing.
-                Phase::Loading if !any && time - pair.touchdown_s > 0.01 * l.sqrt() => {
+                Phase::Loading if !any && time - pair.touchdown_s > BOUNCE_S * l.sqrt() => {
                     pair.phase = Phase::Flight;
                     pair.liftoff_s = time;
                 }
                 Phase::Loading if !any => {}
                 stance => {
-                    pair.phase = stance.after(StanceEvents {
-                        shortened: (qd < 0.0 && q < -0.002 * l)
-                            || time - pair.touchdown_s > 0.015 * l.sqrt(),
-                        lengthening: qd >= 0.0,
-                        extended: q >= p.thrust_end * thrusts[k] - 0.005 * l,
-                    });
+                    let extended = p.thrust_end * thrusts[k] - 0.005 * l;
+                    let since = time - pair.touchdown_s;
+                    pair.phase = stance.after(spring_events(q, qd, since, extended, l));
                 }
             }
             if matches!(
