@@ -130,7 +130,8 @@ fn aba_equals_crba_rnea_on_random_states_of_every_model() {
             50,
         );
     }
-    for n in [2, 7, 20, 40] {
+    // 1: the free base alone, a leaf whose articulated inertia is its own.
+    for n in [1, 2, 7, 20, 40] {
         let model = random_tree(&mut rng, n);
         assert_aba_matches_dense(&format!("random tree of {n}"), &model, &mut rng, 20);
     }
@@ -226,4 +227,55 @@ fn a_free_body_in_flight_keeps_its_momentum_and_energy() {
         "angular momentum about the centre of mass drifted by {dl:e}"
     );
     assert!(de < 1e-2, "energy drifted by {de:e}");
+}
+
+#[test]
+fn the_depth_order_keeps_every_parent_first_and_siblings_in_index_order() {
+    // `Model::by_depth` is the order of the recursive passes: a parent before
+    // its children (the passes' dependencies), and a parent's children in
+    // increasing index, so that the leaves-to-root pass, which runs it
+    // backwards, adds each child's inertia into its parent in the same
+    // order as the reversed body order (the same bits).
+    let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+    let mut models: Vec<Model> = [2, 7, 20, 40]
+        .iter()
+        .map(|&n| random_tree(&mut rng, n))
+        .collect();
+    models.push(biped(1.0).expect("biped").model);
+    models.push(quadruped(1.0).expect("quadruped").model);
+    models.push(kangaroo(1.0).expect("kangaroo").model);
+    for model in &models {
+        let order = model.by_depth();
+        let n = model.bodies().len();
+        let mut at = vec![usize::MAX; n];
+        for (k, &i) in order.iter().enumerate() {
+            assert_eq!(at[i], usize::MAX, "body {i} appears twice");
+            at[i] = k;
+        }
+        assert!(at.iter().all(|&k| k < n), "every body appears");
+        for (i, body) in model.bodies().iter().enumerate() {
+            if let Some(p) = body.parent {
+                assert!(at[p] < at[i], "parent {p} after its child {i}");
+            }
+            for (j, other) in model.bodies().iter().enumerate().skip(i + 1) {
+                if other.parent == body.parent {
+                    assert!(at[i] < at[j], "siblings {i} and {j} out of index order");
+                }
+            }
+        }
+    }
+    // The biped's legs interleave: trunk, both hips' outer axes, both inner
+    // axes, both upper legs, both lower legs.
+    let biped = biped(1.0).expect("biped").model;
+    let names: Vec<&str> = biped
+        .by_depth()
+        .iter()
+        .map(|&i| biped.bodies()[i].name.as_str())
+        .collect();
+    assert_eq!(names[0], "trunk");
+    assert_eq!(
+        names[7..],
+        ["left-lower-leg", "right-lower-leg"],
+        "order: {names:?}"
+    );
 }

@@ -13,9 +13,14 @@ use crate::dynamics::model::Model;
 
 /// Advance the state by `dt` seconds.
 pub fn integrate(model: &Model, data: &mut Data, dt: f64) {
-    for k in 0..model.joint_count() {
-        data.qd[k] += data.qdd[k] * dt;
-        data.q[k] += data.qd[k] * dt;
+    let n = model.joint_count();
+    for ((q, qd), qdd) in data.q[..n]
+        .iter_mut()
+        .zip(&mut data.qd[..n])
+        .zip(&data.qdd[..n])
+    {
+        *qd += qdd * dt;
+        *q += *qd * dt;
     }
     if model.free_base() {
         let a = data.base_acceleration;

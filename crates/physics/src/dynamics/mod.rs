@@ -4,7 +4,8 @@
 //!
 //! [`spatial`] algebra and its [`sparse`] forms for coordinate-axis joints;
 //! the immutable [`model`] and its mutable [`data`]; [`kinematics`] →
-//! [`aba`] (forward dynamics, O(n)) → [`integrate`]; [`crba`] and [`rnea`],
+//! [`aba`] (forward dynamics, O(n); the base's 6×6 solve in
+//! [`inertia_solve`]) → [`integrate`]; [`crba`] and [`rnea`],
 //! the independent O(n³) path; [`energy`] and momentum, what the
 //! tests hold the others to. Knows nothing of legs, ground or control.
 
@@ -12,6 +13,7 @@ pub mod aba;
 pub mod crba;
 pub mod data;
 pub mod energy;
+pub mod inertia_solve;
 pub mod integrate;
 pub mod kinematics;
 pub mod model;

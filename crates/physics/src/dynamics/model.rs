@@ -125,6 +125,11 @@ pub struct Model {
     /// Each body's spatial inertia about its origin (cached from the body).
     inertias: Vec<Inertia>,
     shapes: Vec<RotShape>,
+    /// Each body's child of highest index (`None` for a leaf): the first
+    /// child the articulated-body algorithm's leaves-to-root pass reaches.
+    last_child: Vec<Option<usize>>,
+    /// The bodies by depth in the tree, then by index ([`Model::by_depth`]).
+    by_depth: Vec<usize>,
     /// Each body's joint coordinate index (`None` for the free root).
     dof: Vec<Option<usize>>,
     dof_count: usize,
@@ -203,9 +208,25 @@ impl Model {
         let free_base = bodies[0].joint == Joint::Free;
         let inertias = bodies.iter().map(Body::spatial_inertia).collect();
         let shapes = bodies.iter().map(Body::link_shape).collect();
+        let mut last_child = vec![None; bodies.len()];
+        for (i, b) in bodies.iter().enumerate() {
+            if let Some(p) = b.parent {
+                last_child[p] = Some(i);
+            }
+        }
+        let mut depth = vec![0_usize; bodies.len()];
+        for (i, b) in bodies.iter().enumerate() {
+            if let Some(p) = b.parent {
+                depth[i] = depth[p] + 1;
+            }
+        }
+        let mut by_depth: Vec<usize> = (0..bodies.len()).collect();
+        by_depth.sort_by_key(|&i| (depth[i], i));
         Ok(Self {
             inertias,
             shapes,
+            last_child,
+            by_depth,
             bodies,
             dof,
             dof_count: count,
@@ -233,6 +254,48 @@ impl Model {
         self.shapes[body]
     }
 
+    /// Body `body`'s child of highest index, `None` for a leaf.
+    #[must_use]
+    pub fn last_child(&self, body: usize) -> Option<usize> {
+        self.last_child[body]
+    }
+
+    /// The bodies ordered by their depth in the tree, then by index: every
+    /// parent before its children, as in body order, but the legs' chains
+    /// interleaved (hip, hip, knee, knee, …), so the recursive passes give
+    /// the processor independent work side by side. Reversed, it reaches a
+    /// body's children in decreasing index order, as the reversed body
+    /// order does, so every sum into a parent keeps its order and its bits.
+    #[must_use]
+    pub fn by_depth(&self) -> &[usize] {
+        &self.by_depth
+    }
+
+    /// Every body's spatial inertia, [`Model::inertia`] in body order.
+    #[must_use]
+    pub fn inertias(&self) -> &[Inertia] {
+        &self.inertias
+    }
+
+    /// Every body's [`Model::link_shape`], in body order.
+    #[must_use]
+    pub fn link_shapes(&self) -> &[RotShape] {
+        &self.shapes
+    }
+
+    /// Every body's [`Model::last_child`], in body order.
+    #[must_use]
+    pub fn last_children(&self) -> &[Option<usize>] {
+        &self.last_child
+    }
+
+    /// Every body's [`Model::dof_of`], in body order.
+    #[must_use]
+    pub fn dofs(&self) -> &[Option<usize>] {
+        &self.dof
+    }
+
+    /// Body `body`'s joint coordinate index, `None` for the free root.
     #[must_use]
     pub fn dof_of(&self, body: usize) -> Option<usize> {
         self.dof[body]

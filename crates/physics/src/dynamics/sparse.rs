@@ -153,6 +153,7 @@ fn sandwich<const K: usize>(r: &DMat3, m: &DMat3) -> DMat3 {
 
 /// `r · v` for a link's rotation of the given shape (`r * v`).
 #[must_use]
+#[inline(always)]
 pub fn rot_mul_vec(shape: RotShape, r: &DMat3, v: DVec3) -> DVec3 {
     match shape {
         RotShape::Identity => v,
@@ -184,6 +185,7 @@ pub fn mul_rot(p: &DMat3, shape: RotShape, r: &DMat3) -> DMat3 {
 
 /// [`ParentLink::motion_to_child`] for a link of the given shape.
 #[must_use]
+#[inline(always)]
 pub fn motion_to_child(link: &ParentLink, shape: RotShape, m: Motion) -> Motion {
     Motion {
         angular: rot_t_mul_vec(shape, &link.rot, m.angular),
@@ -203,6 +205,7 @@ pub fn force_to_parent(link: &ParentLink, shape: RotShape, f: Force) -> Force {
 
 /// [`ParentLink::then`] for a child link of the given shape.
 #[must_use]
+#[inline(always)]
 pub fn then(parent: &ParentLink, child: &ParentLink, shape: RotShape) -> ParentLink {
     ParentLink {
         rot: mul_rot(&parent.rot, shape, &child.rot),

@@ -283,6 +283,7 @@ impl Inertia {
 
     /// `I · m`: the momentum of a velocity, or the force of an acceleration.
     #[must_use]
+    #[inline(always)]
     pub fn mul(&self, m: Motion) -> Force {
         Force {
             moment: self.a * m.angular + self.b * m.linear,
@@ -320,15 +321,37 @@ impl Inertia {
         }
     }
 
+    /// Make this `x + y`, block by block (the same bits as `*self = x` then
+    /// `*self += y`, without the copy).
+    #[inline(always)]
+    pub fn set_sum(&mut self, x: &Inertia, y: &Inertia) {
+        for (out, (x, y)) in [&mut self.a, &mut self.b, &mut self.c].into_iter().zip([
+            (&x.a, &y.a),
+            (&x.b, &y.b),
+            (&x.c, &y.c),
+        ]) {
+            out.x_axis = x.x_axis + y.x_axis;
+            out.y_axis = x.y_axis + y.y_axis;
+            out.z_axis = x.z_axis + y.z_axis;
+        }
+    }
+
     /// `self − u uᵀ / d` for a force-like `u` (the articulated-body update).
+    /// Entry `(i, j)` of each block is `self_ij − x_i · (y_j / d)`, written
+    /// column by column into the result.
     #[must_use]
     pub fn minus_outer(&self, u: Force, d: f64) -> Inertia {
-        let outer =
-            |x: DVec3, y: DVec3| DMat3::from_cols(x * (y.x / d), x * (y.y / d), x * (y.z / d));
+        let (m, f) = (u.moment, u.force);
+        let (m_d, f_d) = (m / d, f / d);
+        let block = |s: &DMat3, x: DVec3, y_d: DVec3| DMat3 {
+            x_axis: s.x_axis - x * y_d.x,
+            y_axis: s.y_axis - x * y_d.y,
+            z_axis: s.z_axis - x * y_d.z,
+        };
         Inertia {
-            a: self.a - outer(u.moment, u.moment),
-            b: self.b - outer(u.moment, u.force),
-            c: self.c - outer(u.force, u.force),
+            a: block(&self.a, m, m_d),
+            b: block(&self.b, m, f_d),
+            c: block(&self.c, f, f_d),
         }
     }
 
@@ -346,59 +369,6 @@ impl Inertia {
             }
         }
         m
-    }
-
-    /// Solve `self · a = f` for a motion `a` (Cholesky; `None` when the
-    /// inertia is not positive definite).
-    #[must_use]
-    #[expect(
-        clippy::needless_range_loop,
-        reason = "the Cholesky factorisation reads best in matrix indices"
-    )]
-    pub fn solve(&self, f: Force) -> Option<Motion> {
-        let mut m = self.to_array();
-        // In-place Cholesky: lower triangle holds L.
-        for j in 0..6 {
-            let mut d = m[j][j];
-            for k in 0..j {
-                d -= m[j][k] * m[j][k];
-            }
-            if d <= 0.0 || !d.is_finite() {
-                return None;
-            }
-            let d = d.sqrt();
-            m[j][j] = d;
-            for i in j + 1..6 {
-                let mut s = m[i][j];
-                for k in 0..j {
-                    s -= m[i][k] * m[j][k];
-                }
-                m[i][j] = s / d;
-            }
-        }
-        let rhs = [
-            f.moment.x, f.moment.y, f.moment.z, f.force.x, f.force.y, f.force.z,
-        ];
-        let mut y = [0.0; 6];
-        for i in 0..6 {
-            let mut s = rhs[i];
-            for k in 0..i {
-                s -= m[i][k] * y[k];
-            }
-            y[i] = s / m[i][i];
-        }
-        let mut x = [0.0; 6];
-        for i in (0..6).rev() {
-            let mut s = y[i];
-            for k in i + 1..6 {
-                s -= m[k][i] * x[k];
-            }
-            x[i] = s / m[i][i];
-        }
-        Some(Motion::new(
-            DVec3::new(x[0], x[1], x[2]),
-            DVec3::new(x[3], x[4], x[5]),
-        ))
     }
 }
 
@@ -508,18 +478,5 @@ mod tests {
         let p = (v.linear + v.angular.cross(com)) * 3.0;
         assert!((h.force - p).length() < 1e-12);
         assert!((h.moment - com.cross(p)).length() < 1e-12);
-    }
-
-    #[test]
-    fn cholesky_solve_inverts_mul() {
-        let i = Inertia::rigid(
-            1.7,
-            DVec3::new(0.1, 0.3, -0.2),
-            DMat3::from_diagonal(DVec3::new(0.04, 0.02, 0.03)),
-        );
-        let a = Motion::new(DVec3::new(0.3, -0.2, 0.9), DVec3::new(1.0, 2.0, -0.5));
-        let back = i.solve(i.mul(a)).expect("positive definite");
-        assert!((back - a).angular.length() < 1e-9 && (back - a).linear.length() < 1e-9);
-        assert!(Inertia::ZERO.solve(Force::ZERO).is_none());
     }
 }
