@@ -309,3 +309,52 @@ fn every_tunable_gain_is_named_in_words() {
         }
     });
 }
+
+/// The trunk's position after `steps` steps, and whether it fell or was put
+/// back, with `between(driver)` called after the first `at` steps.
+fn run_with(
+    preset: &str,
+    gait: &str,
+    at: u32,
+    steps: u32,
+    between: impl FnOnce(&mut PhysicsDriver),
+) -> ([f64; 3], bool) {
+    let preset = bundled(preset);
+    let mut params = preset.scenario.physics.clone().expect("physics");
+    params.gait = Some(gait.to_owned());
+    let mut driver = PhysicsDriver::with_params(&preset, params).expect("driver");
+    driver.run_steps(at).expect("runs to the call");
+    between(&mut driver);
+    let blew_up = driver.run_steps(steps - at).is_err();
+    let p = driver.sim().data.base_position;
+    (
+        p.to_array(),
+        blew_up || driver.fell() || driver.resets() > 0,
+    )
+}
+
+#[test]
+fn the_running_gait_asked_for_again_runs_on_with_its_state() {
+    // The kangaroo holds 5 m/s on its cycle with what its controller has
+    // learned. Asked for "hop" again (the app's {"preset", "gait"} command
+    // does this), a fresh controller used to take over at the next flight
+    // and tumble within 3–6 s; now the running one runs on, to the bit.
+    let steps = 20 * 2500; // 20 s at 0.4 ms
+    let alone = run_with("raibert-kangaroo", "hop", 2500, steps, |_| {});
+    let again = run_with("raibert-kangaroo", "hop", 2500, steps, |d| {
+        d.set_gait("hop").expect("its gait");
+    });
+    assert!(!alone.1, "the kangaroo hops 20 s");
+    assert_eq!(again, alone, "asked again, the hop runs on unchanged");
+    // A switch still waiting for its flight is dropped when the running gait
+    // is asked for again: the trot runs on as if the bound had not been asked.
+    let steps = 5 * 2500;
+    let trot = run_with("raibert-quadruped", "trot", 1000, steps, |_| {});
+    let back = run_with("raibert-quadruped", "trot", 1000, steps, |d| {
+        d.set_gait("bound").expect("a quadruped gait");
+        assert_eq!(d.gait(), "bound");
+        d.set_gait("trot").expect("a quadruped gait");
+        assert_eq!(d.gait(), "trot");
+    });
+    assert_eq!(back, trot, "the waiting bound never took over");
+}
