@@ -125,8 +125,7 @@ pub struct Model {
     /// Each body's spatial inertia about its origin (cached from the body).
     inertias: Vec<Inertia>,
     shapes: Vec<RotShape>,
-    /// Each body's child of highest index (`None` for a leaf): the first
-    /// child the articulated-body algorithm's leaves-to-root pass reaches.
+    /// [`Model::last_children`].
     last_child: Vec<Option<usize>>,
     /// The bodies by depth in the tree, then by index ([`Model::by_depth`]).
     by_depth: Vec<usize>,
@@ -209,14 +208,10 @@ impl Model {
         let inertias = bodies.iter().map(Body::spatial_inertia).collect();
         let shapes = bodies.iter().map(Body::link_shape).collect();
         let mut last_child = vec![None; bodies.len()];
-        for (i, b) in bodies.iter().enumerate() {
-            if let Some(p) = b.parent {
-                last_child[p] = Some(i);
-            }
-        }
         let mut depth = vec![0_usize; bodies.len()];
         for (i, b) in bodies.iter().enumerate() {
             if let Some(p) = b.parent {
+                last_child[p] = Some(i);
                 depth[i] = depth[p] + 1;
             }
         }
@@ -254,12 +249,6 @@ impl Model {
         self.shapes[body]
     }
 
-    /// Body `body`'s child of highest index, `None` for a leaf.
-    #[must_use]
-    pub fn last_child(&self, body: usize) -> Option<usize> {
-        self.last_child[body]
-    }
-
     /// The bodies ordered by their depth in the tree, then by index: every
     /// parent before its children, as in body order, but the legs' chains
     /// interleaved (hip, hip, knee, knee, …), so the recursive passes give
@@ -283,7 +272,9 @@ impl Model {
         &self.shapes
     }
 
-    /// Every body's [`Model::last_child`], in body order.
+    /// Every body's child of highest index (`None` for a leaf), in body
+    /// order: the first child the articulated-body algorithm's
+    /// leaves-to-root pass reaches.
     #[must_use]
     pub fn last_children(&self) -> &[Option<usize>] {
         &self.last_child
