@@ -163,6 +163,29 @@ fn the_quadruped_preset_from_before_its_trot_gains_runs_as_it_was_made() {
     assert_ne!(now["pitch_magnitude_deg"], want["pitch_magnitude_deg"]);
 }
 
+/// DESIGN.md "Versions": the bundled quadruped as it was on 2026-12-04,
+/// before it took the pitching bound's body and gains (Table 3's trunk
+/// inertia read as [0.054 0.235 0.239] kg·m²), saved bounding at 2.8 m/s:
+/// the file runs exactly as recorded then (the low skip with the speed
+/// trim), and the bundled quadruped now bounds pitching by the paper's laws.
+#[test]
+fn the_quadruped_preset_from_before_the_pitching_bound_runs_as_it_was_made() {
+    let (all, got, want) = replay("raibert-quadruped_2026_12_04");
+    assert_eq!(all["lab_additions"], serde_json::json!(["speed_trim"]));
+    assert_eq!(got, want);
+    let now = run_json(
+        "raibert-quadruped",
+        "10",
+        &["--gait", "bound", "--speed", "2.8"],
+    );
+    assert_eq!(now["lab_additions"], serde_json::json!([]));
+    let (was, is) = (&want["pitch_magnitude_deg"], &now["pitch_magnitude_deg"]);
+    assert!(
+        was.as_f64() < Some(5.0) && is.as_f64() > Some(20.0),
+        "{was} → {is}"
+    );
+}
+
 /// DESIGN.md "Versions": the bundled kangaroo as it was on 2026-12-03,
 /// before it started on its hopping cycle with the tuner's gains and the
 /// tail only stepped: the file runs exactly as recorded then (from the

@@ -4,6 +4,7 @@
 //! with positions ×L and time ×√L; bad physics presets name the field.
 
 use gaitlab_core::driver::Driver;
+use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::{Creature as PresetCreature, load_bundled};
 use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::control::gait_controller::gait_names;
@@ -251,6 +252,54 @@ fn bad_physics_presets_name_the_field() {
         error.reason.contains("run, gallop, gallop_alternate"),
         "{error}"
     );
+    let mut v: serde_json::Value = serde_json::from_str(json).expect("json");
+    v["scenario"]["physics"]["switch_to_start"] = serde_json::json!(["gallop", "bound"]);
+    let preset = PresetCreature::from_json(&v.to_string()).expect("names are the driver's");
+    let error = PhysicsDriver::new(&preset).expect_err("the biped has no bound");
+    assert_eq!(error.path, "scenario.physics.switch_to_start[1]", "{error}");
+}
+
+/// The lab's entry at a gait's own start (`switch_to_start`, the bundled
+/// quadruped's for every gait): asked for the bound mid-trot, the bound
+/// runs at once from its own start, over the ground point the trunk was
+/// over and turned to the heading, and holds; the trot, asked for again,
+/// comes back the same way.
+#[test]
+fn a_gait_in_switch_to_start_is_entered_at_its_own_start_where_the_creature_is() {
+    let preset = bundled("raibert-quadruped");
+    let mut params = preset.scenario.physics.clone().expect("physics");
+    params.speed_mps = 2.3;
+    // A path that turns the heading away from +z before the switch.
+    params.waypoints = vec![[20.0, 20.0]];
+    let mut driver = PhysicsDriver::with_params(&preset, params).expect("driver");
+    let run = |driver: &mut PhysicsDriver, seconds: u32| {
+        for _ in 0..seconds * 60 {
+            driver.step(1.0 / 60.0);
+        }
+    };
+    run(&mut driver, 10);
+    assert_eq!(driver.running_gait(), "trot");
+    let before = driver.sim().data.base_position;
+    let heading = driver.heading();
+    assert!(heading > 0.3, "turned toward the waypoint: {heading} rad");
+    driver.set_gait("bound").expect("a quadruped gait");
+    assert_eq!(driver.running_gait(), "bound", "entered at once");
+    let data = &driver.sim().data;
+    let after = data.base_position;
+    assert_eq!([after.x, after.z], [before.x, before.z]);
+    // The bound's start: level, its rear legs out, moving along the heading
+    // at the desired speed.
+    let forward = data.base_orientation * glam::DVec3::Z;
+    let (sin, cos) = (heading.psin(), heading.pcos());
+    assert!((forward.x - sin).abs() < 1e-12 && (forward.z - cos).abs() < 1e-12);
+    assert_eq!(data.base_velocity.linear, glam::DVec3::new(0.0, 0.0, 2.3));
+    assert!(driver.sim().contacts.iter().all(|c| !c.touching));
+    run(&mut driver, 20);
+    assert!(!driver.fell() && driver.resets() == 0, "the bound held");
+    driver.set_gait("trot").expect("a quadruped gait");
+    assert_eq!(driver.running_gait(), "trot");
+    run(&mut driver, 10);
+    assert!(!driver.fell() && driver.resets() == 0, "the trot held");
 }
 
 /// The live setters check the preset's own ranges (one source of range truth:
@@ -311,7 +360,8 @@ fn every_tunable_gain_is_named_in_words() {
 }
 
 /// The trunk's position after `steps` steps, and whether it fell or was put
-/// back, with `between(driver)` called after the first `at` steps.
+/// back, with `between(driver)` called after the first `at` steps; gait
+/// switches by the paper's take-over.
 fn run_with(
     preset: &str,
     gait: &str,
@@ -322,6 +372,8 @@ fn run_with(
     let preset = bundled(preset);
     let mut params = preset.scenario.physics.clone().expect("physics");
     params.gait = Some(gait.to_owned());
+    // The paper's switch: a take-over at the next flight.
+    params.switch_to_start.clear();
     let mut driver = PhysicsDriver::with_params(&preset, params).expect("driver");
     driver.run_steps(at).expect("runs to the call");
     between(&mut driver);

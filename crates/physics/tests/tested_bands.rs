@@ -30,8 +30,8 @@ fn every_gait_holds_at_the_top_of_its_tested_scale_band() {
         };
         assert!(tested_speeds_mps(species, gait).is_some_and(|(a, b)| a <= speed && speed <= b));
         assert!(
-            low < 1.0 && 1.0 < high,
-            "{name} {gait}: L = 1 inside ({low}, {high})"
+            low <= 1.0 && 1.0 < high,
+            "{name} {gait}: L = 1 inside [{low}, {high})"
         );
         let Some(mut params) = preset.scenario.physics.clone() else {
             panic!("{name}: physics")

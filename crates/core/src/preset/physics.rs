@@ -331,6 +331,16 @@ pub struct PhysicsParams {
     /// before 2026-12-04 started).
     #[serde(default, skip_serializing_if = "is_gait_start")]
     pub start: PhysicsStart,
+    /// Gaits a switch enters at their own start where the creature is —
+    /// the state a run of that gait starts from, moved to the trunk's place
+    /// and turned to its heading — instead of the paper's take-over at the
+    /// next flight. The lab's: Raibert & Hodgins' quadruped changes gait
+    /// while running, but this lab's pitching bound and gallop, entered from
+    /// a running gait, tumble in most runs (docs/physics.md, "Switching
+    /// into the bound"). Default: none (every switch a take-over, as every
+    /// file made before 2026-12-04 switched).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub switch_to_start: Vec<String>,
 }
 
 fn is_gait_start(start: &PhysicsStart) -> bool {

@@ -57,19 +57,30 @@ fn with_parameters<P: NamedParameters>(
     Ok(p)
 }
 
-/// Whether every gait `controller_by_gait` names is one of the model's.
+/// Whether every gait `controller_by_gait` and `switch_to_start` name is
+/// one of the model's.
 ///
 /// # Errors
-/// `scenario.physics.controller_by_gait.NAME` for a gait the model lacks.
+/// `scenario.physics.controller_by_gait.NAME` or
+/// `scenario.physics.switch_to_start[I]` for a gait the model lacks.
 fn known_gaits(creature: &PhysicalCreature, params: &PhysicsParams) -> Result<(), PresetError> {
     let names = gait_names(creature.species);
-    match params
+    let unknown = |g: &String| !names.contains(&g.as_str());
+    let by_gait = params
         .controller_by_gait
         .keys()
-        .find(|g| !names.contains(&g.as_str()))
-    {
-        Some(g) => Err(PresetError::new(
-            format!("scenario.physics.controller_by_gait.{g}"),
+        .find(|g| unknown(g))
+        .map(|g| format!("scenario.physics.controller_by_gait.{g}"));
+    let to_start = || {
+        params
+            .switch_to_start
+            .iter()
+            .position(unknown)
+            .map(|i| format!("scenario.physics.switch_to_start[{i}]"))
+    };
+    match by_gait.or_else(to_start) {
+        Some(path) => Err(PresetError::new(
+            path,
             format!("this model has no such gait (it has: {})", names.join(", ")),
         )),
         None => Ok(()),

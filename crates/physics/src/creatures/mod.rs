@@ -11,7 +11,10 @@ mod quadruped;
 pub use biped::{LEG_LENGTH_M as BIPED_LEG_M, biped};
 pub use kangaroo::kangaroo;
 pub use physical_creature::{Leg, PhysicalCreature, Species};
-pub use quadruped::{LEG_LENGTH_M as QUADRUPED_LEG_M, quadruped};
+pub use quadruped::{
+    LEG_LENGTH_M as QUADRUPED_LEG_M, TRUNK_INERTIA_LITERAL_KGM2, TRUNK_INERTIA_TENTH_KGM2,
+    quadruped, quadruped_with_trunk,
+};
 
 #[cfg(test)]
 mod tests {

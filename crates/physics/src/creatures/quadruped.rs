@@ -4,7 +4,12 @@
 //! leg slides in the upper leg.
 //!
 //! The trunk's inertia row of Table 3 is garbled in the source text
-//! ("[54 2 35 2 39]"); it is read as `[0.54 2.35 2.39]` kg·m².
+//! ("[54 2 35 2 39]"). Two readings are kept: the digits with the decimal
+//! points the other rows have, `[0.54 2.35 2.39]` kg·m² ([`quadruped`]'s),
+//! and every figure a tenth of that, `[0.054 0.235 0.239]` kg·m², where
+//! Murphy & Raibert's pitch inertia j is below 1 and the passive pitching
+//! bound exists (the bundled preset's since 2026-12-04; docs/physics.md,
+//! "The trunk's pitch inertia decides the bound").
 
 use glam::DVec3;
 
@@ -13,7 +18,11 @@ use super::physical_creature::{Leg, PhysicalCreature, Species};
 use crate::dynamics::model::{Joint, Model, ModelError};
 
 const TRUNK_MASS_KG: f64 = 10.0;
-const TRUNK_INERTIA: [f64; 3] = [0.54, 2.35, 2.39];
+/// Table 3's trunk inertia as printed, with the other rows' decimal points
+/// (kg·m², the paper's roll, pitch, yaw).
+pub const TRUNK_INERTIA_LITERAL_KGM2: [f64; 3] = [0.54, 2.35, 2.39];
+/// The other reading: every figure a tenth (kg·m²).
+pub const TRUNK_INERTIA_TENTH_KGM2: [f64; 3] = [0.054, 0.235, 0.239];
 /// Hip position from the trunk's centre of mass: ±forward, ±lateral (m).
 const HIP_FORWARD_M: f64 = 0.39;
 const HIP_LATERAL_M: f64 = 0.12;
@@ -38,8 +47,21 @@ pub const LEG_NAMES: [&str; 4] = ["front-left", "front-right", "rear-left", "rea
 /// # Errors
 /// The model check's error for a non-positive or non-finite `l`.
 pub fn quadruped(l: f64) -> Result<PhysicalCreature, ModelError> {
+    quadruped_with_trunk(l, TRUNK_INERTIA_LITERAL_KGM2)
+}
+
+/// The quadruped at dynamic scale `l` with the trunk's inertia
+/// `trunk_inertia_kgm2` (the paper's roll, pitch, yaw at scale 1): one of
+/// the two readings above.
+///
+/// # Errors
+/// As [`quadruped`].
+pub fn quadruped_with_trunk(
+    l: f64,
+    trunk_inertia_kgm2: [f64; 3],
+) -> Result<PhysicalCreature, ModelError> {
     let mut b = Builder::new(l);
-    let [ix, iy, iz] = TRUNK_INERTIA;
+    let [ix, iy, iz] = trunk_inertia_kgm2;
     let trunk = b.body(
         "trunk",
         None,

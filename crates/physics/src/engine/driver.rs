@@ -17,6 +17,7 @@ use crate::control::make_controller::make_controller;
 use crate::creatures::Species;
 use crate::dynamics::model::Joint as BodyJoint;
 use crate::engine::cycle_start::on_cycle;
+use crate::engine::gait_entry::enter_at_start;
 use crate::engine::metrics::{GaitRecorder, GaitSummary};
 use crate::engine::preset::creature_from_preset;
 use crate::engine::probe::{self, PhysicsProbe};
@@ -278,10 +279,24 @@ impl PhysicsDriver {
         self.sim.creature.legs.iter().map(|l| l.name.as_str())
     }
 
-    /// The gait running.
+    /// The gait asked for last (a take-over may still be waiting for it).
     #[must_use]
     pub fn gait(&self) -> &str {
         &self.gait
+    }
+
+    /// The gaits a switch enters at their own start where the creature is
+    /// (`scenario.physics.switch_to_start`, the lab's); the others are taken
+    /// over at the next flight, as the paper's.
+    #[must_use]
+    pub fn switch_to_start(&self) -> &[String] {
+        &self.params.switch_to_start
+    }
+
+    /// The gait whose controller runs now.
+    #[must_use]
+    pub fn running_gait(&self) -> &str {
+        &self.running_gait
     }
 
     /// The physics parameters in use.
@@ -585,8 +600,9 @@ impl PhysicsDriver {
         &self.params.waypoints
     }
 
-    /// Change gait while running (the controller takes over from the current
-    /// state). The gait already running, asked for again, runs on with its
+    /// Change gait while running: the new controller takes over at the next
+    /// falling flight, or, for a gait `switch_to_start` names, at once from
+    /// that gait's own start where the creature is. The gait already running, asked for again, runs on with its
     /// state: a fresh controller would forget what the running one has
     /// learned (the kangaroo's apex correction and measured stance, with
     /// which it holds 5 m/s; taken over by a fresh one it tumbles within
@@ -599,12 +615,24 @@ impl PhysicsDriver {
         params.gait = Some(gait.to_owned());
         let next = make_controller(&self.sim.creature, gait, &params)?;
         self.additions = next.additions();
+        let to_start =
+            gait != self.running_gait && params.switch_to_start.iter().any(|g| g == gait);
         match (&mut self.controller, next) {
             // The running gait runs on, and a switch still waiting is dropped.
             _ if gait == self.running_gait => self.pending = None,
-            // Bound and gallop are one controller in two styles.
+            // The lab's entry at the gait's own start, now.
+            (_, mut next) if to_start => {
+                let heading = self.steering.heading;
+                next.set_heading(heading);
+                enter_at_start(&mut self.sim, &next, params.speed_mps, heading);
+                self.controller = next;
+                self.running_gait = gait.to_owned();
+                self.pending = None;
+            }
+            // Bound and gallop are one controller in two styles, each with
+            // its own parameters.
             (GaitController::QuadrupedBound(running), GaitController::QuadrupedBound(fresh)) => {
-                running.set_style(fresh.style());
+                running.set_params(fresh.params);
                 self.running_gait = gait.to_owned();
                 self.pending = None;
             }

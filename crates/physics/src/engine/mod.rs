@@ -7,10 +7,12 @@
 //! each virtual leg's legs act in unison, and
 //! [`table2`] holds the paper's; [`mjcf`] exports the creature to MuJoCo;
 //! [`trace`] writes its state after every step; [`cycle_start`] starts a
-//! run on the gait's cycle.
+//! run on the gait's cycle, and [`gait_entry`] a switched-to gait at its
+//! own start.
 
 pub mod cycle_start;
 pub mod driver;
+pub mod gait_entry;
 pub mod metrics;
 pub mod mjcf;
 pub mod pair_timing;

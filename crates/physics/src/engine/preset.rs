@@ -288,6 +288,7 @@ pub fn to_preset(creature: &PhysicalCreature, meta: &PresetMeta) -> Preset {
         waypoints: Vec::new(),
         lab_additions: Some(gaitlab_core::preset::physics::LabAdditions::default()),
         start: gaitlab_core::preset::physics::PhysicsStart::default(),
+        switch_to_start: Vec::new(),
     };
     Preset {
         schema: None,

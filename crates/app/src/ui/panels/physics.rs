@@ -50,6 +50,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     let gains = driver.gains();
     let additions = driver.lab_additions();
     let on_cycle = driver.started_on_cycle();
+    let to_start = driver.switch_to_start().join(", ");
     // The running creature's L; the slider below clamps its own copy to
     // its range, so a scale set from a command or a file is judged as it is.
     let running_scale = driver.params().scale;
@@ -182,6 +183,12 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 ui.label("Start: on the gait's cycle (the lab's)").on_hover_text(
                     "The paper leaves the start to the animator. Before t = 0, out of sight, the lab ran this hop up to the desired speed with its ramp and started the run at a flight apex; from t = 0 only the control above acts (scenario.physics.start, docs/physics.md \"The start on the cycle\")",
                 );
+            }
+            if !to_start.is_empty() {
+                ui.label(format!("Switch into {to_start}: at the gait's own start (the lab's)"))
+                    .on_hover_text(
+                        "The paper's creatures change gait while running: the new state machine takes over at the next flight. Taken over so, this quadruped's pitching bound tumbles in most runs, so a switch into these gaits puts the creature in the gait's own start where it is, turned to its heading (scenario.physics.switch_to_start, docs/physics.md \"Switching into the bound\")",
+                    );
             }
             ui.label(format!(
                 "speed {:.2} m/s of {:.2} · friction needed {:.2}",

@@ -66,9 +66,10 @@ impl QuadrupedBound {
         self.params.style
     }
 
-    /// Change between bound and gallop while running.
-    pub fn set_style(&mut self, style: BoundStyle) {
-        self.params.style = style;
+    /// Change between bound and gallop while running: the other style's
+    /// parameters (its style and its own gains) with the running state.
+    pub fn set_params(&mut self, params: QuadrupedBoundParams) {
+        self.params = params;
     }
 
     /// The state of the pair `pair` (0 front, 1 rear).
