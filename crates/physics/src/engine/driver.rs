@@ -602,7 +602,8 @@ impl PhysicsDriver {
 
     /// Change gait while running: the new controller takes over at the next
     /// falling flight, or, for a gait `switch_to_start` names, at once from
-    /// that gait's own start where the creature is. The gait already running, asked for again, runs on with its
+    /// that gait's own start where the creature is. The gait already
+    /// running, asked for again, runs on with its
     /// state: a fresh controller would forget what the running one has
     /// learned (the kangaroo's apex correction and measured stance, with
     /// which it holds 5 m/s; taken over by a fresh one it tumbles within
@@ -615,8 +616,7 @@ impl PhysicsDriver {
         params.gait = Some(gait.to_owned());
         let next = make_controller(&self.sim.creature, gait, &params)?;
         self.additions = next.additions();
-        let to_start =
-            gait != self.running_gait && params.switch_to_start.iter().any(|g| g == gait);
+        let to_start = params.switch_to_start.iter().any(|g| g == gait);
         match (&mut self.controller, next) {
             // The running gait runs on, and a switch still waiting is dropped.
             _ if gait == self.running_gait => self.pending = None,
