@@ -3,7 +3,8 @@
 // is within reach (feet yes, hands no, walking) and by how much it is out of reach live, and the
 // oscillation and jitter of each limb. With the thesis' clamp-only joint limits (§6.1.1.1, the
 // preset's `limit_passes: 1`) pinv oscillates on the unreachable hands: its figures are at least
-// 1.5 × DLS's and SDLS's, and its card's oscillation figure is above theirs.
+// 1.5 × DLS's and SDLS's, and its card's oscillation figure is above theirs; with §4.4.1's α and no
+// step clamp (§4.4.2 clamps pinv alone) so does the transpose's.
 // Screenshots: the 4 views with their cards, and the single view whose readout names the
 // out-of-reach targets.
 
@@ -84,6 +85,16 @@ describe('she-2006 side by side (WebGL2)', () => {
         }
         assert.ok(metrics.pinv.oscillation_hz > metrics[other].oscillation_hz,
           `pinv card figure ${metrics.pinv.oscillation_hz} above ${other} ${metrics[other].oscillation_hz}`);
+      }
+      // The transpose with §4.4.1's α "looks jerky and oscillates" (§5.3) on the walking hands:
+      // ≥ 1.5 × DLS's and SDLS's oscillation and jitter, with no step clamp (§4.4.2 clamps pinv alone).
+      assert.equal(s.ik.clamp_every_method, false, 'the step clamp is pinv\'s alone');
+      assert.equal(s.ik.transpose_alpha, 'thesis', '§4.4.1\'s α');
+      for (const other of ['dls', 'sdls']) {
+        for (const key of ['oscillation_hz', 'jitter_rad']) {
+          assert.ok(hands('transpose', key) >= 1.5 * hands(other, key),
+            `transpose hands ${key} ${hands('transpose', key)} vs ${other} ${hands(other, key)}`);
+        }
       }
       assert.equal(await command(page, { paused: true }), 'ok');
       await shootCanvas(page, 'she-2006-walk-4-views.png');

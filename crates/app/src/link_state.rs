@@ -37,6 +37,8 @@ pub const LINK_KEYS: &[(&str, &str)] = &[
     ("lambda", "/ik/lambda"),
     ("gamma_max", "/ik/gamma_max"),
     ("max_step", "/ik/max_step"),
+    ("clamp_every_method", "/ik/clamp_every_method"),
+    ("transpose_alpha", "/ik/transpose_alpha"),
     ("null_space_gain", "/ik/null_space_gain"),
     ("enforce_limits", "/ik/enforce_limits"),
     ("limit_passes", "/ik/limit_passes"),

@@ -19,7 +19,8 @@ pub struct Settings {
     pub mode: ThesisMode,
     /// IK method.
     pub method: Method,
-    /// IK options (λ, γmax, step clamp, null-space gain, limits); `method` here mirrors `method`.
+    /// IK options (λ, γmax, step clamp, null-space gain, limits); `method` here
+    /// mirrors `method`. Default: the default preset's own (`scenario.ik`).
     pub ik: IkOptions,
     /// 3-D view options.
     pub view: ViewOptions,
@@ -96,13 +97,22 @@ impl VideoSize {
     }
 }
 
+/// The default preset's IK options (a `gaitlab-preset/1` file's, so the
+/// solver settings it was made with), or the code's defaults should it not
+/// load (the core's tests check that it does).
+fn default_preset_ik() -> IkOptions {
+    gaitlab_core::preset::load_bundled(gaitlab_core::preset::DEFAULT_PRESET)
+        .and_then(Result::ok)
+        .map_or_else(IkOptions::default, |creature| creature.scenario.ik)
+}
+
 impl Default for Settings {
     fn default() -> Self {
         Self {
             preset: gaitlab_core::preset::DEFAULT_PRESET.to_owned(),
             mode: ThesisMode::Walk,
             method: Method::Sdls,
-            ik: IkOptions::default(),
+            ik: default_preset_ik(),
             view: ViewOptions::default(),
             heading_deg: 0.0,
             plots: true,

@@ -339,21 +339,26 @@ fn she_2006_as_written_opens_the_thesis_preset_with_the_four_methods() {
 #[test]
 fn a_preset_with_its_own_ik_options_runs_with_them_and_the_panel_keeps_its_own_otherwise() {
     let mut lab = lab("human");
-    if let Err(error) = lab.command(r#"{"lambda":0.2}"#) {
+    if let Err(error) = lab.command(r#"{"lambda":0.3}"#) {
         panic!("{error}");
     }
-    // human → ik-quadruped: both leave scenario.ik at the defaults, λ stays.
+    // human → ik-quadruped: both leave scenario.ik at the defaults of
+    // gaitlab-preset/1, λ stays.
     if let Err(error) = lab.set_preset("ik-quadruped") {
         panic!("{error}");
     }
-    assert_eq!(state(&lab)["ik"]["lambda"], 0.2);
+    assert_eq!(state(&lab)["ik"]["lambda"], 0.3);
     assert_eq!(state(&lab)["ik"]["limit_passes"], 4);
-    // she-2006 has its own: clamp-only limits, λ back to its 0.05 m.
+    assert_eq!(state(&lab)["ik"]["clamp_every_method"], true);
+    // she-2006 has its own: clamp-only limits, λ back to the thesis' 0.2 m
+    // (gaitlab-preset/2), the clamp on pinv alone, §4.4.1's α.
     if let Err(error) = lab.set_preset("she-2006") {
         panic!("{error}");
     }
     assert_eq!(state(&lab)["ik"]["limit_passes"], 1);
-    assert_eq!(state(&lab)["ik"]["lambda"], 0.05);
+    assert_eq!(state(&lab)["ik"]["lambda"], 0.2);
+    assert_eq!(state(&lab)["ik"]["clamp_every_method"], false);
+    assert_eq!(state(&lab)["ik"]["transpose_alpha"], "thesis");
     // The command key, checked in core's one range.
     let error = lab
         .command(r#"{"limit_passes":0}"#)

@@ -229,6 +229,30 @@ fn the_biped_preset_from_before_its_gallop_gains_runs_as_it_was_made() {
     assert_ne!(now["pitch_magnitude_deg"], want["pitch_magnitude_deg"]);
 }
 
+/// DESIGN.md "Versions": the she-2006 preset as it was on 2026-12-04 (a
+/// `gaitlab-preset/1` file), saved with DLS, before She 2006's step clamp
+/// became pinv's alone, the transpose took §4.4.1's α and λ its measured
+/// 0.2 m: the file runs exactly as recorded then (the clamp on DLS, λ =
+/// 0.05 m; the walking feet 45.6 mm off), and the bundled she-2006 now
+/// tracks them to 2 mm with nothing of the lab's.
+#[test]
+fn the_she_2006_preset_from_before_the_thesis_solver_runs_as_it_was_made() {
+    let (all, got, want) = replay("she-2006_2026_12_04");
+    assert_eq!(
+        all["lab_additions"],
+        serde_json::json!(["clamp_every_method"])
+    );
+    assert_eq!(got, want);
+    let now = run_json("she-2006", "10", &["--method", "dls"]);
+    assert_eq!(now["lab_additions"], serde_json::json!([]));
+    let feet = |run: &Value| run["effectors"][0]["mean_error_m"].as_f64();
+    let (was, is) = (feet(&want), feet(&now));
+    assert!(
+        was > Some(0.04) && is < Some(0.003),
+        "left foot {was:?} → {is:?} m"
+    );
+}
+
 fn cli_metrics(preset: &str, seconds: &str) -> Value {
     run_json(preset, seconds, &[])
 }

@@ -370,11 +370,11 @@ fn unknown_missing_and_mistyped_fields_are_named() {
             .insert("physics".into(), json!({}));
     });
     assert_rejected(&json, "physics", "unknown field `physics`");
-    let json = human_with(set("/format", json!("gaitlab-preset/2")));
+    let json = human_with(set("/format", json!("gaitlab-preset/3")));
     assert_rejected(
         &json,
         "format",
-        "unknown variant `gaitlab-preset/2`, expected `gaitlab-preset/1`",
+        "unknown variant `gaitlab-preset/3`, expected `gaitlab-preset/1` or `gaitlab-preset/2`",
     );
     let json = human_with(set("/scenario/engine", json!("quantum")));
     assert_rejected(

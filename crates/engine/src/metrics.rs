@@ -182,6 +182,9 @@ pub struct IkRunMetrics {
     pub within_limits: bool,
     /// Frames whose solve went non-finite and was undone.
     pub restored_frames: u64,
+    /// The lab's additions to She 2006 in force (empty: the thesis alone;
+    /// `gaitlab_core::preset::thesis_lab_additions` gives each one's reason).
+    pub lab_additions: Vec<&'static str>,
     /// Thesis motion (engine `ik`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mode: Option<&'static str>,
@@ -218,10 +221,20 @@ impl IkRunMetrics {
         } else {
             0.0
         };
-        let method = match driver {
-            AnyDriver::Thesis(thesis) => thesis.options().method.name(),
-            AnyDriver::Track(track) => track.options().method.name(),
-            _ => "",
+        let (method, lab_additions) = match driver {
+            AnyDriver::Thesis(thesis) => (
+                thesis.options().method.name(),
+                gaitlab_core::preset::thesis_lab_additions(
+                    thesis.params(),
+                    thesis.options(),
+                    thesis.mode(),
+                ),
+            ),
+            AnyDriver::Track(track) => (
+                track.options().method.name(),
+                gaitlab_core::preset::ik_lab_additions(track.options()).collect(),
+            ),
+            _ => ("", Vec::new()),
         };
         Self {
             preset: preset.to_owned(),
@@ -236,6 +249,7 @@ impl IkRunMetrics {
             effectors,
             within_limits: timing.within_limits,
             restored_frames,
+            lab_additions: lab_additions.iter().map(|a| a.name).collect(),
             mode: None,
             speed_mps: None,
             distance_m: None,

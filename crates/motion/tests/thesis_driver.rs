@@ -18,8 +18,10 @@ fn driver(
     mode: ThesisMode,
     method: Method,
 ) -> ThesisDriver {
+    // λ = 0.05 m: what the `human` preset (a `gaitlab-preset/1` file) runs.
     let options = IkOptions {
         method,
+        lambda: 0.05,
         ..IkOptions::default()
     };
     match ThesisDriver::new(skeleton.clone(), params, mode, options) {

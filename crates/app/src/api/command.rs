@@ -12,7 +12,8 @@ use super::camera::CameraCommand;
 use super::compare::CompareValue;
 use super::error::{from_value, object, present};
 use super::names::{
-    EngineName, JacobianAtName, MethodName, ModeName, SaveFormatName, ThemeName, VideoSizeName,
+    EngineName, JacobianAtName, MethodName, ModeName, SaveFormatName, ThemeName,
+    TransposeAlphaName, VideoSizeName,
 };
 use crate::lab::{GaitShapeEdit, Lab};
 
@@ -192,8 +193,14 @@ pub struct Command {
     pub lambda: Option<f64>,
     /// SDLS γmax, radians, [1e-3, π].
     pub gamma_max: Option<f64>,
-    /// Step clamp, radians, [1e-3, π].
+    /// Step clamp, radians, [1e-3, π]: pinv's (She 2006 §4.4.2), and every
+    /// method's with `clamp_every_method`.
     pub max_step: Option<f64>,
+    /// The lab's addition: the step clamp on transpose and DLS too (She 2006
+    /// §4.4.2 clamps pinv only).
+    pub clamp_every_method: Option<bool>,
+    /// The transpose method's α: `thesis` (§4.4.1) or `buss` (twice it).
+    pub transpose_alpha: Option<TransposeAlphaName>,
     /// Null-space gain, [0, 10].
     pub null_space_gain: Option<f64>,
     /// Keep joints inside their limits.
@@ -536,6 +543,14 @@ impl Lab {
         }
         if let Some(way) = c.jacobian_at {
             self.session.settings.ik.jacobian_at = way.0;
+            changed = true;
+        }
+        if let Some(on) = c.clamp_every_method {
+            self.session.settings.ik.clamp_every_method = on;
+            changed = true;
+        }
+        if let Some(alpha) = c.transpose_alpha {
+            self.session.settings.ik.transpose_alpha = alpha.0;
             changed = true;
         }
         if changed {

@@ -2,7 +2,7 @@
 //! strings in JSON, the app's enums once read, and an `enum` list in the
 //! schema. An unknown name reads `unknown mode "fly" (walk, run, …)`.
 
-use gaitlab_core::ik::{JacobianAt, Method};
+use gaitlab_core::ik::{JacobianAt, Method, TransposeAlpha};
 use gaitlab_core::preset::Engine;
 use gaitlab_core::preset::thesis::ThesisMode;
 use serde::de::{Deserialize, Deserializer, Error as _};
@@ -89,6 +89,11 @@ named!(
     JacobianAtName(JacobianAt), "jacobian_at", JacobianAt::parse, ["effectors", "targets"]
 );
 named!(
+    /// `transpose_alpha`: the transpose method's α — She 2006 §4.4.1's
+    /// (`thesis`) or Buss's, twice it (`buss`).
+    TransposeAlphaName(TransposeAlpha), "transpose_alpha", TransposeAlpha::parse, ["thesis", "buss"]
+);
+named!(
     /// `theme`: the colours.
     ThemeName(Theme), "theme", Theme::parse, ["system", "light", "dark"]
 );
@@ -128,6 +133,9 @@ mod tests {
         }
         for way in JacobianAt::ALL {
             assert!(serde_json::from_value::<JacobianAtName>(way.name().into()).is_ok());
+        }
+        for alpha in TransposeAlpha::ALL {
+            assert!(serde_json::from_value::<TransposeAlphaName>(alpha.name().into()).is_ok());
         }
         for name in ["view", "p360", "p720", "p1080"] {
             assert!(VideoSize::parse(name).is_some(), "{name}");

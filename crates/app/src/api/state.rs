@@ -4,7 +4,7 @@
 //! that reads the lab's fields for it ([`State::of`]).
 
 use gaitlab_core::driver::Driver;
-use gaitlab_core::ik::JacobianAt;
+use gaitlab_core::ik::{JacobianAt, TransposeAlpha};
 use serde::Serialize;
 
 use super::camera::CameraState;
@@ -149,8 +149,12 @@ pub struct IkState {
     pub lambda: f64,
     /// SDLS γmax, radians.
     pub gamma_max: f64,
-    /// Step clamp, radians.
+    /// Step clamp, radians: pinv's, and every method's with `clamp_every_method`.
     pub max_step: f64,
+    /// The lab's addition: the step clamp on transpose and DLS too.
+    pub clamp_every_method: bool,
+    /// The transpose method's α: `thesis` (She 2006 §4.4.1) or `buss`.
+    pub transpose_alpha: TransposeAlpha,
     /// Null-space gain.
     pub null_space_gain: f64,
     /// Joints kept inside their limits.
@@ -440,6 +444,8 @@ impl State {
                 lambda: settings.ik.lambda,
                 gamma_max: settings.ik.gamma_max,
                 max_step: settings.ik.max_step,
+                clamp_every_method: settings.ik.clamp_every_method,
+                transpose_alpha: settings.ik.transpose_alpha,
                 null_space_gain: settings.ik.null_space_gain,
                 enforce_limits: settings.ik.enforce_limits,
                 limit_passes: settings.ik.limit_passes,

@@ -17,7 +17,7 @@ mod targets;
 mod transpose;
 
 pub use eigen::{NoConvergence, SymmetricEigen};
-pub use options::{IkOptions, JacobianAt, JointWeight, Method};
+pub use options::{IkOptions, JacobianAt, JointWeight, Method, TransposeAlpha};
 pub use solver::IkSolver;
 pub use status::IkStatus;
 pub use svd::ThinSvd;

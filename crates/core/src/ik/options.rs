@@ -8,7 +8,8 @@ use serde::{Deserialize, Serialize};
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(rename_all = "lowercase")]
 pub enum Method {
-    /// Jacobian transpose, Δθ = α Jᵀe with Buss's α = ⟨e, JJᵀe⟩ / ‖JJᵀe‖² (§4.4.1).
+    /// Jacobian transpose, Δθ = α Jᵀe with §4.4.1's α = Δs·Δt / (2|Δt|²)
+    /// (or Buss's, twice that: [`TransposeAlpha`]).
     Transpose,
     /// Moore–Penrose pseudoinverse through a thin SVD with a rank tolerance (§4.4.2, PODA eq. 4–5).
     Pinv,
@@ -110,6 +111,53 @@ impl JacobianAt {
     }
 }
 
+/// The transpose method's step length α (She 2006 §4.4.1), with Δs = e the
+/// effectors' error and Δt = JJᵀe the change Δθ = Jᵀe would make.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(rename_all = "lowercase")]
+pub enum TransposeAlpha {
+    /// The thesis' α = Δs·Δt / (2|Δt|²) as printed in §4.4.1: half the α that
+    /// brings JΔθ closest to e. The default.
+    #[default]
+    Thesis,
+    /// Buss 2004's α = ⟨e, JJᵀe⟩ / ‖JJᵀe‖², the α that brings JΔθ closest to
+    /// e (twice the thesis' value); what gaitlab used before the thesis' α
+    /// became the default, and what every `gaitlab-preset/1` file runs.
+    Buss,
+}
+
+impl TransposeAlpha {
+    /// Both, the default first.
+    pub const ALL: [TransposeAlpha; 2] = [TransposeAlpha::Thesis, TransposeAlpha::Buss];
+
+    /// The name used in presets, commands and the CLI.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            TransposeAlpha::Thesis => "thesis",
+            TransposeAlpha::Buss => "buss",
+        }
+    }
+
+    /// The factor on Buss's α: ½ for the thesis' formula, 1 for Buss's.
+    #[must_use]
+    pub fn factor(self) -> f64 {
+        match self {
+            TransposeAlpha::Thesis => 0.5,
+            TransposeAlpha::Buss => 1.0,
+        }
+    }
+
+    /// Parses `thesis` or `buss` (any case).
+    #[must_use]
+    pub fn parse(name: &str) -> Option<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|alpha| alpha.name().eq_ignore_ascii_case(name))
+    }
+}
+
 /// How a joint's participation is weighted: She 2006 §5.1.1's "wounded" parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct JointWeight {
@@ -137,14 +185,31 @@ impl Default for JointWeight {
 pub struct IkOptions {
     /// The method. Default SDLS (the thesis' best performer).
     pub method: Method,
-    /// DLS damping λ, metres. Default 0.05.
+    /// DLS damping λ, metres. Default 0.2: the thesis names none (§4.4.3: it
+    /// "must be chosen very carefully"); 0.2 is the smallest λ of a 1-2-5
+    /// sweep at which the 20-joint human's unreachable hands are as calm as
+    /// any λ makes them, walking and running (docs/she-2006.md "Choosing λ").
+    /// `gaitlab-preset/1` files without it run with 0.05, as they were made.
     pub lambda: f64,
     /// SDLS γmax, the largest change of any joint per iteration, radians. Default π/4
     /// (the thesis misprints 4/π).
     pub gamma_max: f64,
-    /// Largest joint change per iteration for transpose, pinv and DLS, and per
-    /// joint turn for CCD, radians (metres for prismatic joints). Default 0.2.
+    /// Largest joint change per iteration for pinv (She 2006 §4.4.2's "maximum
+    /// rotation angle changed value", whose value the thesis does not give), for
+    /// transpose and DLS too when `clamp_every_method` is on, and per joint turn
+    /// for CCD; radians (metres for prismatic joints). Default 0.2.
     pub max_step: f64,
+    /// The lab's addition: `max_step` clamps transpose and DLS as well as pinv
+    /// (§4.4.2 clamps pinv only; Buss's code clamps every method). Default off;
+    /// on in every `gaitlab-preset/1` file, which ran with it. Serialized
+    /// options without the key (settings stored before it existed) read it
+    /// as on, as they ran.
+    #[serde(default = "before_2026_12_05_clamp")]
+    pub clamp_every_method: bool,
+    /// The transpose method's α: §4.4.1's as printed (default) or Buss's.
+    /// Serialized options without the key read Buss's, as they ran.
+    #[serde(default = "before_2026_12_05_alpha")]
+    pub transpose_alpha: TransposeAlpha,
     /// Singular values below `rank_tolerance · σ_max` count as zero. Default 1e-6.
     pub rank_tolerance: f64,
     /// Gain k of PODA's null-space term Δθ += (I − J⁺J)(−k∇H), H = Σ αᵢ(θᵢ − θcᵢ)²,
@@ -161,13 +226,41 @@ pub struct IkOptions {
     pub jacobian_at: JacobianAt,
 }
 
+/// What serialized [`IkOptions`] written before `clamp_every_method` existed
+/// ran with: the clamp on every method.
+fn before_2026_12_05_clamp() -> bool {
+    true
+}
+
+/// What serialized [`IkOptions`] written before `transpose_alpha` existed ran
+/// with: Buss's α.
+fn before_2026_12_05_alpha() -> TransposeAlpha {
+    TransposeAlpha::Buss
+}
+
+impl IkOptions {
+    /// Whether `max_step` clamps this method's step: pinv always (§4.4.2),
+    /// transpose and DLS with `clamp_every_method`; SDLS has its own γmax and
+    /// CCD clamps each joint turn itself.
+    #[must_use]
+    pub fn clamps_step(&self) -> bool {
+        match self.method {
+            Method::Pinv => true,
+            Method::Transpose | Method::Dls => self.clamp_every_method,
+            Method::Sdls | Method::Ccd => false,
+        }
+    }
+}
+
 impl Default for IkOptions {
     fn default() -> Self {
         Self {
             method: Method::Sdls,
-            lambda: 0.05,
+            lambda: 0.2,
             gamma_max: std::f64::consts::FRAC_PI_4,
             max_step: 0.2,
+            clamp_every_method: false,
+            transpose_alpha: TransposeAlpha::Thesis,
             rank_tolerance: 1e-6,
             null_space_gain: 0.0,
             enforce_limits: true,

@@ -341,7 +341,13 @@ impl IkSolver {
         }
         match options.method {
             Method::Transpose => {
-                transpose_step(matrix, &self.residual, &mut self.scratch, &mut self.free)
+                transpose_step(
+                    matrix,
+                    &self.residual,
+                    options.transpose_alpha.factor(),
+                    &mut self.scratch,
+                    &mut self.free,
+                );
             }
             Method::Pinv => pinv_step(&self.svd, &self.residual, &mut self.free),
             Method::Dls if null_space => {
@@ -373,11 +379,11 @@ impl IkSolver {
             // Handled before the Jacobian is built (see `iterate`).
             Method::Ccd => self.free.fill(0.0),
         }
-        let (method, max_step) = (options.method, options.max_step);
+        let (clamps, max_step) = (options.clamps_step(), options.max_step);
         if null_space {
             self.add_center_pull();
         }
-        if method != Method::Sdls {
+        if clamps {
             clamp_max_abs(&mut self.free, max_step);
         }
         if self.free.iter().any(|x| !x.is_finite()) {

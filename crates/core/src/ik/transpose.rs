@@ -1,14 +1,17 @@
-//! Jacobian transpose (She 2006 §4.4.1): Δθ = α Jᵀe, with Buss's step length
-//! α = ⟨e, JJᵀe⟩ / ‖JJᵀe‖², the α that brings the predicted change J Δθ closest
-//! to e (the thesis prints it as Δs·Δt / 2|Δt|²; Buss 2004 eq. 6 is the one used).
+//! Jacobian transpose (She 2006 §4.4.1): Δθ = α Jᵀe. Buss 2004's step length
+//! α = ⟨e, JJᵀe⟩ / ‖JJᵀe‖² brings the predicted change J Δθ closest to e; the
+//! thesis prints α = Δs·Δt / (2|Δt|²) with Δs = e and Δt = JJᵀe, half of it.
+//! The caller picks the factor on Buss's α ([`TransposeAlpha`](super::TransposeAlpha)).
 
 use nalgebra::DMatrix;
 
 /// Writes the transpose step for `jacobian` and task error `error` into `step`,
+/// with α = `alpha_factor` · ⟨e, JJᵀe⟩ / ‖JJᵀe‖² (½ the thesis', 1 Buss's),
 /// using `scratch` (length m) for JJᵀe.
 pub fn transpose_step(
     jacobian: &DMatrix<f64>,
     error: &[f64],
+    alpha_factor: f64,
     scratch: &mut [f64],
     step: &mut [f64],
 ) {
@@ -34,7 +37,7 @@ pub fn transpose_step(
     let numerator: f64 = error.iter().zip(scratch.iter()).map(|(x, y)| x * y).sum();
     let denominator: f64 = scratch.iter().map(|x| x * x).sum();
     let alpha = if denominator > 1e-300 {
-        numerator / denominator
+        alpha_factor * numerator / denominator
     } else {
         0.0
     };

@@ -103,6 +103,7 @@ impl Preset {
             .end()
             .map_err(|e| PresetError::new(ROOT_PATH, e.to_string()))?;
         preset.scenario.ik.method = preset.scenario.method;
+        super::versions::write_in_old_defaults(&mut preset, json);
         preset.validate_for(purpose)?;
         Ok(preset)
     }

@@ -1,5 +1,5 @@
 //! Presets: the JSON description of a creature and its default scenario
-//! (format `gaitlab-preset/1`), parsed with serde, validated against DESIGN.md's
+//! (format `gaitlab-preset/2`; `/1` files read as they ran), parsed with serde, validated against DESIGN.md's
 //! input limits before anything is built, and built into a [`Creature`].
 //!
 //! ```text
@@ -25,7 +25,9 @@ pub mod poda;
 mod scenario;
 mod schema;
 pub mod thesis;
+mod thesis_additions;
 mod validate;
+mod versions;
 
 pub use build::Creature;
 pub use bundled::{
@@ -48,6 +50,7 @@ pub use schema::{
     DhJointSpec, EffectorSpec, FORMAT, Format, JointSpec, JointType, LimbSpec, Preset, RootSpec,
     SkeletonSpec,
 };
+pub use thesis_additions::{LabAddition, ik_lab_additions, thesis_lab_additions};
 pub use validate::{
     MAX_FREQUENCY_HZ, MAX_ITERATIONS_PER_FRAME, MAX_SLOWDOWN, MAX_SPEED_MPS, MAX_START_RAMP_S,
     MAX_WOUNDED_ADD, MAX_WOUNDED_MULTIPLY, MIN_SLOWDOWN, Purpose, THESIS_ROLE_COUNT,

@@ -152,7 +152,7 @@ mod ik_section {
     use serde::de::Error as _;
     use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
-    use crate::ik::{IkOptions, JacobianAt};
+    use crate::ik::{IkOptions, JacobianAt, TransposeAlpha};
 
     /// A `method` key inside `scenario.ik`: always rejected, so that the method
     /// has one source (`scenario.method`).
@@ -180,6 +180,14 @@ mod ik_section {
         lambda: f64,
         gamma_max: f64,
         max_step: f64,
+        /// The lab's addition: `max_step` clamps transpose and DLS too (She
+        /// 2006 §4.4.2 clamps pinv only). Default false; a
+        /// `gaitlab-preset/1` file without it runs with true, as it was made.
+        clamp_every_method: bool,
+        /// The transpose method's α: `thesis` (§4.4.1 as printed, default) or
+        /// `buss` (Buss 2004's, twice the thesis'; what a `gaitlab-preset/1`
+        /// file without this key runs).
+        transpose_alpha: TransposeAlpha,
         rank_tolerance: f64,
         null_space_gain: f64,
         enforce_limits: bool,
@@ -204,6 +212,8 @@ mod ik_section {
                 lambda: ik.lambda,
                 gamma_max: ik.gamma_max,
                 max_step: ik.max_step,
+                clamp_every_method: ik.clamp_every_method,
+                transpose_alpha: ik.transpose_alpha,
                 rank_tolerance: ik.rank_tolerance,
                 null_space_gain: ik.null_space_gain,
                 enforce_limits: ik.enforce_limits,
@@ -219,6 +229,8 @@ mod ik_section {
                 lambda: section.lambda,
                 gamma_max: section.gamma_max,
                 max_step: section.max_step,
+                clamp_every_method: section.clamp_every_method,
+                transpose_alpha: section.transpose_alpha,
                 rank_tolerance: section.rank_tolerance,
                 null_space_gain: section.null_space_gain,
                 enforce_limits: section.enforce_limits,
@@ -254,6 +266,8 @@ mod ik_section {
                 lambda: 0.3,
                 gamma_max: 0.4,
                 max_step: 0.5,
+                clamp_every_method: true,
+                transpose_alpha: TransposeAlpha::Buss,
                 rank_tolerance: 1e-3,
                 null_space_gain: 2.0,
                 enforce_limits: false,

@@ -1,4 +1,4 @@
-//! The preset file format `gaitlab-preset/1` as serde types: one Rust type per
+//! The preset file format (`gaitlab-preset/2`, reading `/1` too) as serde types: one Rust type per
 //! JSON object, every object `deny_unknown_fields`, SI units throughout
 //! (metres, radians; degrees only in fields named `_deg`, of which there are none).
 //!
@@ -18,23 +18,42 @@ use serde::{Deserialize, Serialize};
 use super::Scenario;
 use crate::JointKind;
 
-/// The `format` tag this version of gaitlab reads and writes.
-pub const FORMAT: &str = "gaitlab-preset/1";
+/// The `format` tag this version of gaitlab writes.
+pub const FORMAT: &str = "gaitlab-preset/2";
 
-/// The format tag: only `"gaitlab-preset/1"` exists.
+/// The format tag. Both versions are read; a key a version did not have takes,
+/// when it is left out, the behaviour files of that version ran with
+/// (`preset/versions.rs`, DESIGN.md "Versions").
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 pub enum Format {
-    /// `"gaitlab-preset/1"`.
-    #[default]
+    /// `"gaitlab-preset/1"`: files made before 2026-12-05. Left out, the keys
+    /// new in version 2 keep what such files ran with: She 2006's step clamp
+    /// on transpose and DLS as well as pinv, and Buss's transpose α.
     #[serde(rename = "gaitlab-preset/1")]
     V1,
+    /// `"gaitlab-preset/2"`: a key left out takes the paper's behaviour (She
+    /// 2006 §4.4.1's α, §4.4.2's clamp on pinv only).
+    #[default]
+    #[serde(rename = "gaitlab-preset/2")]
+    V2,
+}
+
+impl Format {
+    /// The tag as written in files.
+    #[must_use]
+    pub fn tag(self) -> &'static str {
+        match self {
+            Format::V1 => "gaitlab-preset/1",
+            Format::V2 => "gaitlab-preset/2",
+        }
+    }
 }
 
 /// A whole preset file: a creature and its default scenario.
 ///
 /// ```json
-/// {"format": "gaitlab-preset/1", "name": "human", "description": "…",
+/// {"format": "gaitlab-preset/2", "name": "human", "description": "…",
 ///  "skeleton": {"root": {"position": [0, 0.98, 0]}, "joints": […], "effectors": […]},
 ///  "scenario": {"engine": "ik", "mode": "walk", "method": "sdls"}}
 /// ```
@@ -47,7 +66,7 @@ pub struct Preset {
     /// ignored. Kept when the preset is written back. Default none.
     #[serde(rename = "$schema", default, skip_serializing_if = "Option::is_none")]
     pub schema: Option<String>,
-    /// Always [`Format::V1`].
+    /// `gaitlab-preset/2` (written now) or `gaitlab-preset/1` (read as it ran).
     pub format: Format,
     /// Short name (no whitespace, at most 64 characters), e.g. `human`; used in URLs and the CLI.
     pub name: String,

@@ -292,7 +292,7 @@ pub fn to_preset(creature: &PhysicalCreature, meta: &PresetMeta) -> Preset {
     };
     Preset {
         schema: None,
-        format: Format::V1,
+        format: Format::V2,
         name: meta.name.clone(),
         description: meta.description.clone(),
         skeleton: SkeletonSpec {

@@ -1,7 +1,7 @@
 //! The IK engine's Method panel, after She 2006 §6.2's workbench: the four
 //! methods (and CCD) with λ, γmax and the step clamp.
 
-use gaitlab_core::ik::{JacobianAt, Method};
+use gaitlab_core::ik::{JacobianAt, Method, TransposeAlpha};
 
 use super::panel::Panel;
 use crate::lab::Lab;
@@ -67,6 +67,24 @@ fn jacobian_at_hint(way: JacobianAt) -> &'static str {
     }
 }
 
+fn transpose_alpha_label(alpha: TransposeAlpha) -> &'static str {
+    match alpha {
+        TransposeAlpha::Thesis => "§4.4.1",
+        TransposeAlpha::Buss => "Buss (lab)",
+    }
+}
+
+fn transpose_alpha_hint(alpha: TransposeAlpha) -> &'static str {
+    match alpha {
+        TransposeAlpha::Thesis => {
+            "α = Δs·Δt / (2|Δt|²) with Δs = e and Δt = JJᵀe, as She 2006 §4.4.1 prints it"
+        }
+        TransposeAlpha::Buss => {
+            "Buss's α = ⟨e, JJᵀe⟩/‖JJᵀe‖², twice the thesis' (the α that brings JΔθ closest to e)"
+        }
+    }
+}
+
 /// Method panel: the four IK methods and their parameters.
 fn method(ui: &mut egui::Ui, lab: &mut Lab) {
     ui.collapsing("Method", |ui| {
@@ -100,12 +118,35 @@ fn method(ui: &mut egui::Ui, lab: &mut Lab) {
         let mut step_deg = ik.max_step.to_degrees();
         if ui
             .add(egui::Slider::new(&mut step_deg, 0.5..=90.0).text("Step clamp (°)"))
-            .on_hover_text("Largest change of any joint per IK iteration, degrees")
+            .on_hover_text(
+                "Largest change of any joint per IK iteration, degrees: pinv's, as She 2006 \
+                 §4.4.2 scales a pseudoinverse step that exceeds it (the thesis gives no value)",
+            )
             .changed()
         {
             ik.max_step = step_deg.to_radians();
             changed = true;
         }
+        changed |= ui
+            .checkbox(
+                &mut ik.clamp_every_method,
+                "Clamp transpose and DLS too (lab)",
+            )
+            .on_hover_text(
+                "The lab's addition: the step clamp on transpose and DLS as well as pinv, as \
+                 Buss's code does; §4.4.2 clamps pinv only. Files made before 2026-12-05 run with it",
+            )
+            .changed();
+        ui.horizontal(|ui| {
+            ui.label("Transpose α:")
+                .on_hover_text("The step length of Δθ = α Jᵀe (She 2006 §4.4.1)");
+            for alpha in TransposeAlpha::ALL {
+                changed |= ui
+                    .radio_value(&mut ik.transpose_alpha, alpha, transpose_alpha_label(alpha))
+                    .on_hover_text(transpose_alpha_hint(alpha))
+                    .changed();
+            }
+        });
         changed |= ui
             .add(egui::Slider::new(&mut ik.null_space_gain, 0.0..=2.0).text("Center pull (PODA)"))
             .on_hover_text(

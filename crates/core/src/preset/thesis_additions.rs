@@ -1,0 +1,153 @@
+//! The lab's additions to She 2006 in force for an IK run: each a name for
+//! `lab_additions` (the CLI's `--json`, the page's `state()`) and a one-line
+//! reason. Everything not listed here runs as the thesis says; λ and the clamp's
+//! 0.2 rad are values the thesis leaves open, not additions.
+
+use super::listing::{TargetScript, WoundForm};
+use super::thesis::{ThesisMode, ThesisParams};
+use crate::ik::{IkOptions, Method, TransposeAlpha};
+
+/// One lab addition: its name and why it is there.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LabAddition {
+    /// The name listed in `lab_additions`.
+    pub name: &'static str,
+    /// What it is and where the thesis differs, in one line.
+    pub reason: &'static str,
+}
+
+const CLAMP_EVERY_METHOD: LabAddition = LabAddition {
+    name: "clamp_every_method",
+    reason: "max_step also clamps transpose and DLS; §4.4.2 clamps pinv only (Buss's code clamps every method)",
+};
+const BUSS_ALPHA: LabAddition = LabAddition {
+    name: "buss_alpha",
+    reason: "transpose's α is Buss's ⟨e, JJᵀe⟩/‖JJᵀe‖², twice §4.4.1's Δs·Δt/(2|Δt|²)",
+};
+const NULL_SPACE_PULL: LabAddition = LabAddition {
+    name: "null_space_pull",
+    reason: "PODA eq. 6's pull toward the centre angles in J's null space; the thesis has none",
+};
+const LIMIT_RE_SOLVE: LabAddition = LabAddition {
+    name: "limit_re_solve",
+    reason: "a joint past its limit is clamped and the rest solved again; §6.1.1.1 only clamps",
+};
+const LAB_SCRIPT: LabAddition = LabAddition {
+    name: "lab_script",
+    reason: "gaitlab's target script (foot strokes with a lift, hands in front, a bouncing root), not §5.2.2's listing",
+};
+const POSTURE_PULL: LabAddition = LabAddition {
+    name: "posture_pull",
+    reason: "each frame every joint relaxes toward its centre angle before the IK iterations",
+};
+const START_RAMP: LabAddition = LabAddition {
+    name: "start_ramp",
+    reason: "the targets blend in from standing after a reset; the thesis' start at once",
+};
+const STEP_WOUNDS: LabAddition = LabAddition {
+    name: "step_wounds",
+    reason: "wounded weights scale the IK step; §5.1.1 applies them to the angle shown",
+};
+
+/// The additions to the solver that act with `ik` (its method included).
+pub fn ik_lab_additions(ik: &IkOptions) -> impl Iterator<Item = LabAddition> + use<> {
+    let method = ik.method;
+    [
+        (ik.clamp_every_method && matches!(method, Method::Transpose | Method::Dls))
+            .then_some(CLAMP_EVERY_METHOD),
+        (ik.transpose_alpha == TransposeAlpha::Buss && method == Method::Transpose)
+            .then_some(BUSS_ALPHA),
+        (ik.null_space_gain > 0.0 && matches!(method, Method::Pinv | Method::Dls))
+            .then_some(NULL_SPACE_PULL),
+        (ik.enforce_limits && ik.limit_passes > 1).then_some(LIMIT_RE_SOLVE),
+    ]
+    .into_iter()
+    .flatten()
+}
+
+/// Every addition in force for the thesis' motion `mode` with `params` and `ik`.
+#[must_use]
+pub fn thesis_lab_additions(
+    params: &ThesisParams,
+    ik: &IkOptions,
+    mode: ThesisMode,
+) -> Vec<LabAddition> {
+    let mut out: Vec<LabAddition> = ik_lab_additions(ik).collect();
+    out.extend(
+        [
+            (params.script == TargetScript::Lab).then_some(LAB_SCRIPT),
+            (params.posture_gain > 0.0).then_some(POSTURE_PULL),
+            (params.start_ramp_s > 0.0).then_some(START_RAMP),
+            (params.wound_form == WoundForm::Step && mode.wounded() && !params.wounded.is_empty())
+                .then_some(STEP_WOUNDS),
+        ]
+        .into_iter()
+        .flatten(),
+    );
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::preset::load_bundled;
+
+    fn names(list: &[LabAddition]) -> Vec<&'static str> {
+        list.iter().map(|a| a.name).collect()
+    }
+
+    #[test]
+    fn the_she_2006_preset_runs_the_thesis_alone_with_every_method() {
+        let Some(Ok(creature)) = load_bundled("she-2006") else {
+            panic!("she-2006")
+        };
+        let scenario = &creature.scenario;
+        for method in Method::ALL.into_iter().filter(|m| *m != Method::Ccd) {
+            for mode in ThesisMode::ALL {
+                let ik = IkOptions {
+                    method,
+                    ..scenario.ik.clone()
+                };
+                let found = thesis_lab_additions(&scenario.thesis, &ik, mode);
+                assert_eq!(names(&found), Vec::<&str>::new(), "{method:?} {mode:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_defaults_of_code_name_each_of_the_labs_choices() {
+        let ik = IkOptions {
+            method: Method::Transpose,
+            clamp_every_method: true,
+            transpose_alpha: TransposeAlpha::Buss,
+            ..IkOptions::default()
+        };
+        let params = ThesisParams {
+            wounded: vec![super::super::thesis::WoundedJoint {
+                joint: "a".to_owned(),
+                multiply: 0.5,
+                add: 0.0,
+            }],
+            ..ThesisParams::default()
+        };
+        let found = thesis_lab_additions(&params, &ik, ThesisMode::WoundedWalk);
+        assert_eq!(
+            names(&found),
+            [
+                "clamp_every_method",
+                "buss_alpha",
+                "limit_re_solve",
+                "lab_script",
+                "posture_pull",
+                "start_ramp",
+                "step_wounds"
+            ]
+        );
+        // SDLS has its own γmax and no α: neither solver addition acts.
+        let sdls = IkOptions {
+            method: Method::Sdls,
+            ..ik
+        };
+        assert!(ik_lab_additions(&sdls).all(|a| a.name == "limit_re_solve"));
+    }
+}

@@ -1,0 +1,110 @@
+//! What a preset of an older format meant by leaving a key out (DESIGN.md
+//! "Versions"): after parsing, a `gaitlab-preset/1` file gets, for each key
+//! that version did not have, the behaviour such files ran with, so that it
+//! replays as it was made. A key the file does give is kept as given.
+//!
+//! | key (new in `/2`) | left out in `/1` | left out in `/2` |
+//! | --- | --- | --- |
+//! | `scenario.ik.clamp_every_method` | true: the step clamp on transpose and DLS too | false: pinv only (She 2006 §4.4.2) |
+//! | `scenario.ik.transpose_alpha` | `buss` | `thesis` (§4.4.1) |
+//! | `scenario.ik.lambda` | 0.05 m | 0.2 m (the measured choice, docs/she-2006.md) |
+
+use serde::Deserialize;
+use serde::de::IgnoredAny;
+
+use super::schema::{Format, Preset};
+use crate::ik::TransposeAlpha;
+
+/// Which of the keys new in `gaitlab-preset/2` a file gives. Unknown keys are
+/// ignored here: the full parse has already checked the file.
+#[derive(Default, Deserialize)]
+struct Given {
+    #[serde(default)]
+    scenario: GivenScenario,
+}
+
+#[derive(Default, Deserialize)]
+struct GivenScenario {
+    #[serde(default)]
+    ik: GivenIk,
+}
+
+#[derive(Default, Deserialize)]
+struct GivenIk {
+    clamp_every_method: Option<IgnoredAny>,
+    transpose_alpha: Option<IgnoredAny>,
+    lambda: Option<IgnoredAny>,
+}
+
+/// The DLS damping every `gaitlab-preset/1` file without `lambda` ran with, metres.
+pub const V1_LAMBDA_M: f64 = 0.05;
+
+/// Writes into `preset`, parsed from `json`, what its format meant by each key
+/// it leaves out. A `gaitlab-preset/2` file is left as parsed.
+pub(super) fn write_in_old_defaults(preset: &mut Preset, json: &str) {
+    if preset.format != Format::V1 {
+        return;
+    }
+    // The full parse of the same text succeeded, so this one does too; a
+    // failure would leave the current defaults, never an error.
+    let given: Given = serde_json::from_str(json).unwrap_or_default();
+    let ik = &mut preset.scenario.ik;
+    if given.scenario.ik.clamp_every_method.is_none() {
+        ik.clamp_every_method = true;
+    }
+    if given.scenario.ik.transpose_alpha.is_none() {
+        ik.transpose_alpha = TransposeAlpha::Buss;
+    }
+    if given.scenario.ik.lambda.is_none() {
+        ik.lambda = V1_LAMBDA_M;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::ik::TransposeAlpha;
+    use crate::preset::Preset;
+
+    fn preset(format: &str, ik: &str) -> Preset {
+        let json = format!(
+            r#"{{"format": "{format}", "name": "t",
+                "skeleton": {{"root": {{"position": [0, 1, 0]}},
+                  "joints": [{{"name": "a", "axis": [1, 0, 0], "offset": [0, 0, 0]}}],
+                  "effectors": [{{"name": "e", "joint": "a", "offset": [0, -1, 0]}}]}},
+                "scenario": {{"engine": "ik", "ik": {ik}}}}}"#
+        );
+        match Preset::from_json_for(&json, crate::preset::Purpose::Tracking) {
+            Ok(preset) => preset,
+            Err(error) => panic!("{error}"),
+        }
+    }
+
+    #[test]
+    fn a_version_1_file_runs_as_it_was_made() {
+        let ik = preset("gaitlab-preset/1", "{}").scenario.ik;
+        assert!(ik.clamp_every_method);
+        assert_eq!(ik.transpose_alpha, TransposeAlpha::Buss);
+        assert_eq!(ik.lambda, super::V1_LAMBDA_M);
+    }
+
+    #[test]
+    fn a_version_2_file_runs_the_thesis() {
+        let ik = preset("gaitlab-preset/2", "{}").scenario.ik;
+        assert!(!ik.clamp_every_method);
+        assert_eq!(ik.transpose_alpha, TransposeAlpha::Thesis);
+        assert_eq!(ik.lambda, crate::ik::IkOptions::default().lambda);
+    }
+
+    #[test]
+    fn a_key_a_version_1_file_gives_is_kept() {
+        let ik = preset(
+            "gaitlab-preset/1",
+            r#"{"clamp_every_method": false, "transpose_alpha": "thesis", "lambda": 0.3}"#,
+        )
+        .scenario
+        .ik;
+        assert!(!ik.clamp_every_method);
+        assert_eq!(ik.transpose_alpha, TransposeAlpha::Thesis);
+        assert_eq!(ik.lambda, 0.3);
+    }
+}
