@@ -12,6 +12,7 @@ pub mod editor;
 pub mod editor_message;
 pub mod history;
 pub mod lab;
+pub mod lambda_tradeoff;
 pub mod lesson;
 pub mod link;
 pub mod link_state;

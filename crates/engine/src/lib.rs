@@ -10,6 +10,7 @@
 
 pub mod any_driver;
 pub mod driver_for;
+pub mod lambda_sweep;
 pub mod live;
 pub mod metrics;
 pub mod switch;
@@ -18,6 +19,7 @@ pub mod trace;
 
 pub use any_driver::AnyDriver;
 pub use driver_for::{Overrides, Tracking, check, driver_for};
+pub use lambda_sweep::{LambdaPoint, lambda_sweep};
 pub use live::{Change, TimedChange, edit_value, poda_gait, switch_gait};
 pub use metrics::{RunMetrics, Timing};
 pub use switch::bundled_for_engine;

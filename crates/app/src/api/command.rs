@@ -201,6 +201,9 @@ pub struct Command {
     pub clamp_every_method: Option<bool>,
     /// The transpose method's α: `thesis` (§4.4.1) or `buss` (twice it).
     pub transpose_alpha: Option<TransposeAlphaName>,
+    /// `true`: measure the running thesis motion's λ trade-off (DLS at
+    /// λ = 0.01 … 1 m, 10 s each; `state().ik.lambda_tradeoff`).
+    pub measure_lambda_tradeoff: Option<bool>,
     /// Null-space gain, [0, 10].
     pub null_space_gain: Option<f64>,
     /// Keep joints inside their limits.
@@ -555,6 +558,9 @@ impl Lab {
         }
         if changed {
             self.apply_ik_options();
+        }
+        if c.measure_lambda_tradeoff == Some(true) {
+            self.measure_lambda_tradeoff()?;
         }
         Ok(())
     }

@@ -165,6 +165,8 @@ pub struct IkState {
     /// She 2006 §3.2's control way: `effectors` or `targets` (where the
     /// Jacobian is taken).
     pub jacobian_at: JacobianAt,
+    /// The last measured λ trade-off (`measure_lambda_tradeoff`), if any.
+    pub lambda_tradeoff: Option<crate::lambda_tradeoff::LambdaTradeoff>,
 }
 
 /// `editor`: the preset editor.
@@ -450,6 +452,7 @@ impl State {
                 enforce_limits: settings.ik.enforce_limits,
                 limit_passes: settings.ik.limit_passes,
                 jacobian_at: settings.ik.jacobian_at,
+                lambda_tradeoff: lab.lambda_tradeoff.clone(),
             },
             plots: settings.plots,
             editor: EditorState {

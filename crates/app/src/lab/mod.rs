@@ -79,6 +79,8 @@ pub struct Lab {
     pub(crate) gait_derived: Vec<&'static str>,
     /// The link "Copy link" made last, shown for copying by hand.
     pub(crate) shown_link: Option<String>,
+    /// The last measured λ trade-off (the Method panel's).
+    pub(crate) lambda_tradeoff: Option<crate::lambda_tradeoff::LambdaTradeoff>,
     /// The graphics path drawing the view ("webgpu (…)" or "webgl2 (…)"), when known.
     pub backend: Option<String>,
     /// The page's address without query or fragment (the web glue sets it;
@@ -108,6 +110,7 @@ impl Lab {
             editor: crate::editor::PresetEditor::default(),
             gait_derived: Vec::new(),
             shown_link: None,
+            lambda_tradeoff: None,
             backend: None,
             page_url: String::new(),
         };

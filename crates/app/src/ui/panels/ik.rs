@@ -179,5 +179,6 @@ fn method(ui: &mut egui::Ui, lab: &mut Lab) {
         if changed {
             lab.apply_ik_options();
         }
+        crate::lambda_tradeoff::plot::section(ui, lab);
     });
 }
