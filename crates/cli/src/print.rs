@@ -119,6 +119,33 @@ fn print_gait(m: &GaitRunMetrics) {
     }
 }
 
+/// Why the creature fell or was put back, in the text output too (the
+/// `--json` output lists the put-backs, the first 100, under `put_backs`).
+fn print_put_backs(m: &PhysicsRunMetrics) {
+    match (m.put_backs.first(), m.put_backs.last()) {
+        (Some(first), Some(last)) => {
+            let count = m.put_backs.len();
+            let times = if count == 1 {
+                "once".to_owned()
+            } else {
+                format!("{count} times")
+            };
+            outln!(
+                "put back {times}; the first at {:.3} s: {}",
+                first.run_time_s,
+                first.why
+            );
+            if count > 1 && last.why != first.why {
+                outln!("the last at {:.3} s: {}", last.run_time_s, last.why);
+            }
+        }
+        _ if m.fell => outln!(
+            "fell: the trunk tipped past 60° or sank below 40 % of its leg's reach (a headless run reports the fall and runs on)"
+        ),
+        _ => {}
+    }
+}
+
 fn print_physics(m: &PhysicsRunMetrics) {
     outln!(
         "{} · engine physics · gait {} · {:.1} s simulated · fell {} · speed {:.2} of {:.2} m/s · stride {:.2} m in {:.2} s · flight {:.3} s · stance {:.3} s · pitch {:.1}° · roll {:.1}° · friction needed {:.2} · cost of transport {:.2} · {:.0} steps/s ({:.0}× real time)",
@@ -139,6 +166,7 @@ fn print_physics(m: &PhysicsRunMetrics) {
         m.steps_per_second,
         m.realtime_factor,
     );
+    print_put_backs(m);
     if m.table2.is_empty() {
         return;
     }

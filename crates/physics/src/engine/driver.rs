@@ -16,6 +16,7 @@ use crate::control::kangaroo_hop::kangaroo_ground;
 use crate::control::make_controller::make_controller;
 use crate::creatures::Species;
 use crate::dynamics::model::Joint as BodyJoint;
+use crate::engine::consistency;
 use crate::engine::cycle_start::on_cycle;
 use crate::engine::gait_entry::enter_at_start;
 use crate::engine::metrics::{GaitRecorder, GaitSummary};
@@ -138,6 +139,7 @@ impl PhysicsDriver {
         let mut with = preset.clone();
         with.scenario.physics = Some(params.clone());
         let creature = creature_from_preset(&with)?;
+        consistency::check_structure(&with, &params)?;
         let l = params.scale;
         let names = gait_names(creature.species);
         let gait = params
@@ -183,6 +185,7 @@ impl PhysicsDriver {
         sim.data.q.copy_from_slice(&start_q);
         start_state(&mut sim, &controller, params.speed_mps);
         crate::dynamics::kinematics::kinematics(&sim.creature.model, &mut sim.data);
+        consistency::check_start(&sim.creature, &sim.data, &sim.terrain)?;
         let mut controller = controller;
         let mut start_controller = None;
         let mut message = None;

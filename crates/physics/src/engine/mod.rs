@@ -10,6 +10,7 @@
 //! run on the gait's cycle, and [`gait_entry`] a switched-to gait at its
 //! own start.
 
+pub mod consistency;
 pub mod cycle_start;
 pub mod driver;
 pub mod gait_entry;
