@@ -3,7 +3,7 @@
 //! non-Jacobian contrast) and the per-view parameters each one takes.
 
 use gaitlab_core::ik::IkOptions;
-use gaitlab_core::ik::Method;
+use gaitlab_core::ik::{Method, TransposeAlpha};
 
 /// A solver configuration a view can run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -90,7 +90,7 @@ impl CompareMethod {
     pub fn formula(self) -> &'static str {
         // Only glyphs egui's bundled monospace font (Hack) has: no ᵀ or ᵢ.
         match self {
-            CompareMethod::Transpose => "Δθ = α J^T e,  α = ⟨e, JJ^T e⟩ / ‖JJ^T e‖²",
+            CompareMethod::Transpose => "Δθ = α J^T e,  α = ⟨e, JJ^T e⟩ / (2‖JJ^T e‖²)",
             CompareMethod::Pinv => "Δθ = J⁺e = Σ σ_i⁻¹ v_i u_i^T e",
             CompareMethod::Dls => "Δθ = J^T (JJ^T + λ²I)⁻¹ e",
             CompareMethod::Sdls => "Δθ = ClampMaxAbs(Σ ClampMaxAbs(σ_i⁻¹ α_i v_i, γ_i), γmax)",
@@ -100,12 +100,24 @@ impl CompareMethod {
         }
     }
 
+    /// The update rule with `options` as they run: the transpose's α as
+    /// She 2006 §4.4.1 prints it or, with `transpose_alpha: buss`, Buss's.
+    #[must_use]
+    pub fn formula_with(self, options: &IkOptions) -> &'static str {
+        match (self, options.transpose_alpha) {
+            (CompareMethod::Transpose, TransposeAlpha::Buss) => {
+                "Δθ = α J^T e,  α = ⟨e, JJ^T e⟩ / ‖JJ^T e‖²  (Buss)"
+            }
+            _ => self.formula(),
+        }
+    }
+
     /// One sentence on how the method behaves.
     #[must_use]
     pub fn behaviour(self) -> &'static str {
         match self {
             CompareMethod::Transpose => {
-                "Cheap and never unstable, but slow to converge: errors stay largest."
+                "Cheap: one product with J^T per iteration and no inverse; slow to converge."
             }
             CompareMethod::Pinv => {
                 "Exact least-norm steps; near a singular (stretched) pose 1/σ explodes and the limb oscillates."

@@ -1,6 +1,6 @@
 //! She 2006 §4.4.3's λ trade-off on the page (issue 41 item 3): on request, the
 //! running thesis motion is measured with DLS at the docs' 1-2-5 sweep of λ
-//! ([`gaitlab_engine::lambda_sweep`]), and the Method panel draws the error on
+//! ([`gaitlab_engine::lambda_sweep()`]), and the Method panel draws the error on
 //! the targets within reach and the jitter of the limbs out of reach against
 //! λ, with the current λ marked. The model, its command key
 //! (`measure_lambda_tradeoff`) and its piece of `state().ik` live here; the

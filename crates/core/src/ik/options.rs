@@ -250,6 +250,13 @@ impl IkOptions {
             Method::Sdls | Method::Ccd => false,
         }
     }
+
+    /// Whether `max_step` changes anything for this method: the clamped ones
+    /// ([`IkOptions::clamps_step`]) and CCD, which bounds each joint turn by it.
+    #[must_use]
+    pub fn uses_max_step(&self) -> bool {
+        self.clamps_step() || self.method == Method::Ccd
+    }
 }
 
 impl Default for IkOptions {

@@ -275,12 +275,18 @@ fn card(
             "Largest effector error per frame, mm; every card's plot has the same \
              scale",
         );
-    ui.monospace(method.formula())
+    ui.monospace(method.formula_with(options))
         .on_hover_text("The update rule of one IK iteration");
     ui.label(method.behaviour());
     let mut edited = options.clone();
     let mut changed = false;
-    for &parameter in method.parameters() {
+    // The step clamp only where it acts: pinv and CCD, and transpose and
+    // DLS with the lab's clamp on every method (She 2006 §4.4.2).
+    let shown = method
+        .parameters()
+        .iter()
+        .filter(|p| **p != Parameter::MaxStep || options.uses_max_step());
+    for &parameter in shown {
         changed |= slider(ui, parameter, &mut edited);
     }
     let m = view.metrics();
@@ -414,8 +420,8 @@ fn slider(
             false,
         ),
         Parameter::MaxStep => (
-            "α clamp (°)",
-            "Largest joint change per iteration (max step)",
+            "step clamp (°)",
+            "Largest joint change per iteration: pinv's (She 2006 §4.4.2), CCD's per joint turn, and transpose's and DLS's with the lab's clamp on every method (Method panel)",
             true,
             false,
         ),
