@@ -329,6 +329,10 @@ pub struct GaitRunMetrics {
     pub flight_duration_max_s: f64,
     /// Whether every joint value stayed finite and within its limits.
     pub within_limits: bool,
+    /// The lab's additions to Girard & Maciejewski in force, and Figure 2's
+    /// body pitch where it is left out (`without_body_pitch`); empty: the
+    /// paper alone (`gaitlab_core::preset::poda_lab_additions` gives reasons).
+    pub lab_additions: Vec<&'static str>,
     /// Frames per second of the run (set by the front end).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fps: Option<f64>,
@@ -382,6 +386,10 @@ impl GaitRunMetrics {
             body_surge_range_m: [metrics.body_surge_range_m.0, metrics.body_surge_range_m.1],
             flight_duration_max_s: metrics.flight_max_s,
             within_limits: timing.within_limits,
+            lab_additions: gaitlab_core::preset::poda_lab_additions(driver.params())
+                .iter()
+                .map(|a| a.name)
+                .collect(),
             fps: None,
         }
     }

@@ -18,6 +18,7 @@ mod edit;
 mod error;
 #[cfg(feature = "schema")]
 mod json_schema;
+mod lab_additions;
 mod limits;
 mod listing;
 pub mod physics;
@@ -25,7 +26,6 @@ pub mod poda;
 mod scenario;
 mod schema;
 pub mod thesis;
-mod thesis_additions;
 mod validate;
 mod versions;
 
@@ -39,6 +39,7 @@ pub use edit::{MAX_EDIT_PATH_CHARS, set_preset_value};
 pub use error::{PresetError, ROOT_PATH, json_path};
 #[cfg(feature = "schema")]
 pub use json_schema::{SCHEMA_ID, SCHEMA_TITLE, preset_schema, preset_schema_text};
+pub use lab_additions::{LabAddition, ik_lab_additions, poda_lab_additions, thesis_lab_additions};
 pub use limits::{MAX_EFFECTORS, MAX_JOINTS, MAX_LIMBS, MAX_NAME_CHARS, MAX_PRESET_BYTES};
 pub use physics::{
     GroundSpec, MassSpec, ObstacleSpec, PhysicsBase, PhysicsBodySpec, PhysicsLegSpec, PhysicsModel,
@@ -50,7 +51,6 @@ pub use schema::{
     DhJointSpec, EffectorSpec, FORMAT, Format, JointSpec, JointType, LimbSpec, Preset, RootSpec,
     SkeletonSpec,
 };
-pub use thesis_additions::{LabAddition, ik_lab_additions, thesis_lab_additions};
 pub use validate::{
     MAX_FREQUENCY_HZ, MAX_ITERATIONS_PER_FRAME, MAX_SLOWDOWN, MAX_SPEED_MPS, MAX_START_RAMP_S,
     MAX_WOUNDED_ADD, MAX_WOUNDED_MULTIPLY, MIN_SLOWDOWN, Purpose, THESIS_ROLE_COUNT,

@@ -1,6 +1,7 @@
-//! The readout under the controls: frame, time, display rate, the simulation's
-//! cost per frame and each effector's current error, and by how much its
-//! target is out of reach when it is (She 2006 §5.3).
+//! The readout under the controls: frame, time, display rate, the lab's
+//! additions in force (or that the paper runs alone), the simulation's cost
+//! per frame and each effector's current error, and by how much its target is
+//! out of reach when it is (She 2006 §5.3).
 
 use gaitlab_core::driver::Driver;
 
@@ -32,6 +33,7 @@ fn readout(ui: &mut egui::Ui, lab: &Lab) {
         time_s,
         lab.playback.fps
     ));
+    additions(ui, lab);
     if lab.comparison().is_some() {
         ui.label(if lab.narrow() {
             "Side by side: each view's errors are in its card (Plots)."
@@ -75,4 +77,48 @@ fn readout(ui: &mut egui::Ui, lab: &Lab) {
             }
         }
     }
+}
+
+/// The lab's additions in force for what runs, each with its reason on
+/// hover, or that the paper runs alone (issue 41: the screen names them).
+fn additions(ui: &mut egui::Ui, lab: &Lab) {
+    const PHYSICS_REASON: &str = "The lab's addition to Raibert & Hodgins' control for this gait (the physics panel and docs/physics.md, \"The lab's additions\")";
+    let driver = &lab.stage.driver;
+    let found: Vec<(&'static str, &'static str)> = if let Some(thesis) = driver.thesis() {
+        gaitlab_core::preset::thesis_lab_additions(thesis.params(), thesis.options(), thesis.mode())
+            .into_iter()
+            .map(|a| (a.name, a.reason))
+            .collect()
+    } else if let Some(poda) = driver.poda() {
+        gaitlab_core::preset::poda_lab_additions(poda.params())
+            .into_iter()
+            .map(|a| (a.name, a.reason))
+            .collect()
+    } else if let Some(physics) = driver.physics() {
+        physics
+            .lab_additions()
+            .map(|name| (name, PHYSICS_REASON))
+            .collect()
+    } else if let Some(options) = driver.ik_options() {
+        gaitlab_core::preset::ik_lab_additions(options)
+            .map(|a| (a.name, a.reason))
+            .collect()
+    } else {
+        Vec::new()
+    };
+    if found.is_empty() {
+        ui.label("The paper alone: none of the lab's additions in force.")
+            .on_hover_text(
+                "Every choice that runs is the paper's, or a value the paper leaves open",
+            );
+        return;
+    }
+    ui.horizontal_wrapped(|ui| {
+        ui.label("Lab's additions in force:")
+            .on_hover_text("What gaitlab adds to the paper for this run; hover each for why");
+        for (name, reason) in found {
+            ui.label(egui::RichText::new(name).monospace())
+                .on_hover_text(reason);
+        }
+    });
 }

@@ -1,9 +1,11 @@
-//! The lab's additions to She 2006 in force for an IK run: each a name for
-//! `lab_additions` (the CLI's `--json`, the page's `state()`) and a one-line
-//! reason. Everything not listed here runs as the thesis says; λ and the clamp's
-//! 0.2 rad are values the thesis leaves open, not additions.
+//! The lab's additions in force for a She 2006 (IK) or a Girard & Maciejewski
+//! 1985 (PODA) run: each a name for `lab_additions` (the CLI's `--json`, the
+//! page's `state()`) and a one-line reason. Everything not listed runs as the
+//! paper says; values a paper leaves open (λ, the clamp's 0.2 rad) are not
+//! additions. The physics engine lists its own (`control/additions.rs`).
 
 use super::listing::{TargetScript, WoundForm};
+use super::poda::PodaParams;
 use super::thesis::{ThesisMode, ThesisParams};
 use crate::ik::{IkOptions, Method, TransposeAlpha};
 
@@ -48,6 +50,43 @@ const STEP_WOUNDS: LabAddition = LabAddition {
     name: "step_wounds",
     reason: "wounded weights scale the IK step; §5.1.1 applies them to the angle shown",
 };
+
+const TURN_WITHIN_REACH: LabAddition = LabAddition {
+    name: "turn_within_reach",
+    reason: "the body follows its path only as tightly as the legs reach (the lab's reading of \"Horizontal Control\")",
+};
+const YAW_TOWARD_ACTUAL: LabAddition = LabAddition {
+    name: "yaw_toward_actual",
+    reason: "each leg turns the body from its actual yaw, so a yaw error is corrected (a reading of \"Rotational Control\")",
+};
+const FORE_AFT_SURGE: LabAddition = LabAddition {
+    name: "fore_aft_surge",
+    reason: "the fore-aft surge of \"Horizontal Control\" with a magnitude the lab derived (each leg pushes along itself)",
+};
+const GAIT_BY_SPEED: LabAddition = LabAddition {
+    name: "gait_by_speed",
+    reason: "the gait and stride picked from the speed by Alexander's Froude rule, not by the user",
+};
+const WITHOUT_BODY_PITCH: LabAddition = LabAddition {
+    name: "without_body_pitch",
+    reason: "Figure 2's body pitch from the front and rear legs' vertical motion is left out",
+};
+
+/// Every PODA addition in force with `params`, and Figure 2's body pitch
+/// where it is left out.
+#[must_use]
+pub fn poda_lab_additions(params: &PodaParams) -> Vec<LabAddition> {
+    [
+        params.turn_within_reach.then_some(TURN_WITHIN_REACH),
+        params.yaw_toward_actual.then_some(YAW_TOWARD_ACTUAL),
+        params.fore_aft_surge.then_some(FORE_AFT_SURGE),
+        params.gait_by_speed.then_some(GAIT_BY_SPEED),
+        (!params.body_pitch).then_some(WITHOUT_BODY_PITCH),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}
 
 /// The additions to the solver that act with `ik` (its method included).
 pub fn ik_lab_additions(ik: &IkOptions) -> impl Iterator<Item = LabAddition> + use<> {
@@ -112,6 +151,31 @@ mod tests {
                 assert_eq!(names(&found), Vec::<&str>::new(), "{method:?} {mode:?}");
             }
         }
+    }
+
+    #[test]
+    fn the_bundled_poda_presets_name_what_they_add() {
+        for name in ["hexapod", "poda-quadruped", "poda-biped", "insect-14"] {
+            let Some(Ok(creature)) = load_bundled(name) else {
+                panic!("{name}")
+            };
+            let found = poda_lab_additions(&creature.scenario.poda_params());
+            assert_eq!(
+                names(&found),
+                [
+                    "turn_within_reach",
+                    "yaw_toward_actual",
+                    "fore_aft_surge",
+                    "without_body_pitch"
+                ],
+                "{name}"
+            );
+        }
+        let paper = PodaParams {
+            body_pitch: true,
+            ..PodaParams::default()
+        };
+        assert!(poda_lab_additions(&paper).is_empty());
     }
 
     #[test]
