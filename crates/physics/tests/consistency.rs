@@ -212,3 +212,41 @@ fn the_bundled_physics_presets_are_consistent() {
         }
     }
 }
+
+/// A `gaitlab-preset/2` file that names no lab addition runs the paper's
+/// laws in every gait of every creature; the same file as `/1` runs with the
+/// additions its gaits offered, as such files did.
+#[test]
+fn a_version_2_physics_file_without_lab_additions_runs_the_paper_alone() {
+    let gaits = [
+        ("raibert-biped", &["run", "gallop", "gallop_alternate"][..]),
+        ("raibert-quadruped", &["trot", "bound", "gallop"][..]),
+        ("raibert-kangaroo", &["hop"][..]),
+    ];
+    for (name, gaits) in gaits {
+        for gait in gaits {
+            for format in ["gaitlab-preset/1", "gaitlab-preset/2"] {
+                let json = edited(name, |v| {
+                    v["format"] = json!(format);
+                    v["scenario"]["physics"]["gait"] = json!(gait);
+                    if let Some(physics) = v["scenario"]["physics"].as_object_mut() {
+                        physics.remove("lab_additions");
+                    }
+                });
+                let driver = Creature::from_json(&json)
+                    .map_err(|e| e.to_string())
+                    .and_then(|c| PhysicsDriver::new(&c).map_err(|e| e.to_string()));
+                let driver = match driver {
+                    Ok(driver) => driver,
+                    Err(error) => panic!("{name} {gait} {format}: {error}"),
+                };
+                let on: Vec<&str> = driver.lab_additions().collect();
+                if format.ends_with('2') {
+                    assert_eq!(on, Vec::<&str>::new(), "{name} {gait} {format}");
+                } else if *gait != "trot" {
+                    assert!(!on.is_empty(), "{name} {gait} {format}: {on:?}");
+                }
+            }
+        }
+    }
+}

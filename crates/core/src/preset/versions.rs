@@ -8,6 +8,14 @@
 //! | `scenario.ik.clamp_every_method` | true: the step clamp on transpose and DLS too | false: pinv only (She 2006 §4.4.2) |
 //! | `scenario.ik.transpose_alpha` | `buss` | `thesis` (§4.4.1) |
 //! | `scenario.ik.lambda` | 0.05 m | 0.2 m (the measured choice, docs/she-2006.md) |
+//!
+//! and, for a key that both versions have, a `/2` file takes the paper's
+//! behaviour where a `/1` file took the lab's:
+//!
+//! | key | left out in `/1` | left out in `/2` |
+//! | --- | --- | --- |
+//! | `scenario.physics.lab_additions` | every addition the gait offers on, with the controllers' earlier defaults | none: the paper's laws |
+//! | `scenario.physics.lab_additions.<name>` | the gait's own default (the speed trim on for the gallops and the bound, the kangaroo's ramp and tail feedback) | off |
 
 use serde::Deserialize;
 use serde::de::IgnoredAny;
@@ -43,6 +51,7 @@ pub const V1_LAMBDA_M: f64 = 0.05;
 /// it leaves out. A `gaitlab-preset/2` file is left as parsed.
 pub(super) fn write_in_old_defaults(preset: &mut Preset, json: &str) {
     if preset.format != Format::V1 {
+        paper_by_default(preset);
         return;
     }
     // The full parse of the same text succeeded, so this one does too; a
@@ -57,6 +66,22 @@ pub(super) fn write_in_old_defaults(preset: &mut Preset, json: &str) {
     }
     if given.scenario.ik.lambda.is_none() {
         ik.lambda = V1_LAMBDA_M;
+    }
+}
+
+/// A `gaitlab-preset/2` file: every lab addition to the physics control
+/// that the file does not name is off.
+fn paper_by_default(preset: &mut Preset) {
+    if let Some(physics) = preset.scenario.physics.as_mut() {
+        let additions = physics.lab_additions.get_or_insert_with(Default::default);
+        for named in [
+            &mut additions.speed_trim,
+            &mut additions.unloading_posture,
+            &mut additions.speed_ramp,
+            &mut additions.tail_feedback,
+        ] {
+            named.get_or_insert(false);
+        }
     }
 }
 
