@@ -23,6 +23,7 @@ mod compare;
 mod editor;
 mod gait;
 mod gait_shape;
+mod lambda_tradeoff;
 mod layout;
 mod lesson;
 mod outbox;

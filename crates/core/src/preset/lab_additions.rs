@@ -129,7 +129,7 @@ pub fn thesis_lab_additions(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::preset::load_bundled;
+    use crate::preset::bundled::load_bundled;
 
     fn names(list: &[LabAddition]) -> Vec<&'static str> {
         list.iter().map(|a| a.name).collect()
@@ -187,7 +187,7 @@ mod tests {
             ..IkOptions::default()
         };
         let params = ThesisParams {
-            wounded: vec![super::super::thesis::WoundedJoint {
+            wounded: vec![crate::preset::thesis::WoundedJoint {
                 joint: "a".to_owned(),
                 multiply: 0.5,
                 add: 0.0,

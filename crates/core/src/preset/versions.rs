@@ -88,7 +88,8 @@ fn paper_by_default(preset: &mut Preset) {
 #[cfg(test)]
 mod tests {
     use crate::ik::TransposeAlpha;
-    use crate::preset::Preset;
+    use crate::preset::schema::Preset;
+    use crate::preset::validate::Purpose;
 
     fn preset(format: &str, ik: &str) -> Preset {
         let json = format!(
@@ -98,7 +99,7 @@ mod tests {
                   "effectors": [{{"name": "e", "joint": "a", "offset": [0, -1, 0]}}]}},
                 "scenario": {{"engine": "ik", "ik": {ik}}}}}"#
         );
-        match Preset::from_json_for(&json, crate::preset::Purpose::Tracking) {
+        match Preset::from_json_for(&json, Purpose::Tracking) {
             Ok(preset) => preset,
             Err(error) => panic!("{error}"),
         }
@@ -109,7 +110,7 @@ mod tests {
         let ik = preset("gaitlab-preset/1", "{}").scenario.ik;
         assert!(ik.clamp_every_method);
         assert_eq!(ik.transpose_alpha, TransposeAlpha::Buss);
-        assert_eq!(ik.lambda, super::V1_LAMBDA_M);
+        assert_eq!(ik.lambda, crate::preset::versions::V1_LAMBDA_M);
     }
 
     #[test]
