@@ -598,7 +598,7 @@ impl PhysicsRunMetrics {
             speed_swing_mps: s.speed_swing_mps,
             friction_needed_max: s.friction_needed_max,
             cost_of_transport: s.cost_of_transport,
-            lab_additions: driver.lab_additions().collect(),
+            lab_additions: driver.lab_additions_in_force().collect(),
             start: if driver.started_on_cycle() {
                 "on_cycle"
             } else {

@@ -315,6 +315,15 @@ impl PhysicsDriver {
         self.additions.names()
     }
 
+    /// Every lab addition in force for the run: the gait controller's
+    /// ([`Self::lab_additions`]) and `switch_to_start` where the preset
+    /// enters some gait at its own start on a switch (not the paper's
+    /// take-over at the next flight). What `--json` and the page list.
+    pub fn lab_additions_in_force(&self) -> impl Iterator<Item = &'static str> + Clone + use<> {
+        let switch = (!self.params.switch_to_start.is_empty()).then_some("switch_to_start");
+        self.additions.names().chain(switch)
+    }
+
     /// The state machine's state.
     #[must_use]
     pub fn phase_name(&self) -> &'static str {

@@ -83,6 +83,7 @@ fn readout(ui: &mut egui::Ui, lab: &Lab) {
 /// hover, or that the paper runs alone (issue 41: the screen names them).
 fn additions(ui: &mut egui::Ui, lab: &Lab) {
     const PHYSICS_REASON: &str = "The lab's addition to Raibert & Hodgins' control for this gait (the physics panel and docs/physics.md, \"The lab's additions\")";
+    const SWITCH_REASON: &str = "A switch enters the new gait at its own start where the creature is, not the paper's take-over at the next falling flight";
     let driver = &lab.stage.driver;
     let found: Vec<(&'static str, &'static str)> = if let Some(thesis) = driver.thesis() {
         gaitlab_core::preset::thesis_lab_additions(thesis.params(), thesis.options(), thesis.mode())
@@ -96,8 +97,15 @@ fn additions(ui: &mut egui::Ui, lab: &Lab) {
             .collect()
     } else if let Some(physics) = driver.physics() {
         physics
-            .lab_additions()
-            .map(|name| (name, PHYSICS_REASON))
+            .lab_additions_in_force()
+            .map(|name| {
+                let reason = if name == "switch_to_start" {
+                    SWITCH_REASON
+                } else {
+                    PHYSICS_REASON
+                };
+                (name, reason)
+            })
             .collect()
     } else if let Some(options) = driver.ik_options() {
         gaitlab_core::preset::ik_lab_additions(options)
