@@ -11,6 +11,9 @@ use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
 use gaitlab_core::export::TargetTrack;
 use gaitlab_core::ik::{IkOptions, Method, Targets};
 use gaitlab_core::pose::Pose;
+use gaitlab_core::preset::{
+    LabAddition, ik_lab_additions, poda_lab_additions, thesis_lab_additions,
+};
 use gaitlab_motion::{PodaDriver, ThesisDriver, TrackDriver};
 use gaitlab_physics::PhysicsDriver;
 use glam::DVec3;
@@ -79,6 +82,34 @@ impl AnyDriver {
     #[must_use]
     pub fn is_ik(&self) -> bool {
         matches!(self, AnyDriver::Thesis(_) | AnyDriver::Track(_))
+    }
+
+    /// The lab's additions in force for what runs, each with its reason
+    /// (empty: the paper alone): what `--json`, `state()` and the page's
+    /// readout list. IK and PODA from `gaitlab_core::preset`'s lists, physics
+    /// from the gait controller and `switch_to_start`.
+    #[must_use]
+    pub fn lab_additions(&self) -> Vec<LabAddition> {
+        const PHYSICS: &str = "The lab's addition to Raibert & Hodgins' control for this gait (the physics panel and docs/physics.md, \"The lab's additions\")";
+        const SWITCH: &str = "A switch enters the new gait at its own start where the creature is, not the paper's take-over at the next falling flight";
+        match self {
+            AnyDriver::Thesis(driver) => {
+                thesis_lab_additions(driver.params(), driver.options(), driver.mode())
+            }
+            AnyDriver::Track(driver) => ik_lab_additions(driver.options()).collect(),
+            AnyDriver::Poda(driver) => poda_lab_additions(driver.params()),
+            AnyDriver::Physics(driver) => driver
+                .lab_additions_in_force()
+                .map(|name| LabAddition {
+                    name,
+                    reason: if name == "switch_to_start" {
+                        SWITCH
+                    } else {
+                        PHYSICS
+                    },
+                })
+                .collect(),
+        }
     }
 
     /// The IK options of an IK driver ([`AnyDriver::is_ik`]).

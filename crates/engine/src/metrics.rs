@@ -72,19 +72,24 @@ impl RunMetrics {
     /// The figures of `driver` after a run of preset `preset` that `timing` measured.
     #[must_use]
     pub fn of(preset: &str, driver: &AnyDriver, timing: &Timing) -> Self {
+        let additions: Vec<&'static str> = driver.lab_additions().iter().map(|a| a.name).collect();
         match driver {
-            AnyDriver::Poda(poda) => Self::Gait(GaitRunMetrics::of(preset, poda, timing)),
+            AnyDriver::Poda(poda) => {
+                Self::Gait(GaitRunMetrics::of(preset, poda, timing, additions))
+            }
             AnyDriver::Physics(physics) => {
-                Self::Physics(PhysicsRunMetrics::of(preset, physics, timing))
+                Self::Physics(PhysicsRunMetrics::of(preset, physics, timing, additions))
             }
             AnyDriver::Thesis(thesis) => {
-                let mut metrics = IkRunMetrics::of(preset, "ik", driver, timing);
+                let mut metrics = IkRunMetrics::of(preset, "ik", driver, timing, additions);
                 metrics.mode = Some(thesis.mode().name());
                 metrics.speed_mps = Some(thesis.script().speed_mps());
                 metrics.distance_m = Some(thesis.distance_m());
                 Self::Ik(metrics)
             }
-            AnyDriver::Track(_) => Self::Ik(IkRunMetrics::of(preset, "track", driver, timing)),
+            AnyDriver::Track(_) => {
+                Self::Ik(IkRunMetrics::of(preset, "track", driver, timing, additions))
+            }
         }
     }
 
@@ -183,7 +188,7 @@ pub struct IkRunMetrics {
     /// Frames whose solve went non-finite and was undone.
     pub restored_frames: u64,
     /// The lab's additions to She 2006 in force (empty: the thesis alone;
-    /// `gaitlab_core::preset::thesis_lab_additions` gives each one's reason).
+    /// [`AnyDriver::lab_additions`] gives each one's reason).
     pub lab_additions: Vec<&'static str>,
     /// Thesis motion (engine `ik`).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -203,7 +208,13 @@ pub struct IkRunMetrics {
 }
 
 impl IkRunMetrics {
-    fn of(preset: &str, engine: &'static str, driver: &AnyDriver, timing: &Timing) -> Self {
+    fn of(
+        preset: &str,
+        engine: &'static str,
+        driver: &AnyDriver,
+        timing: &Timing,
+        lab_additions: Vec<&'static str>,
+    ) -> Self {
         let skeleton = driver.skeleton();
         let (iterations, effectors, sim_seconds, restored_frames) = match driver.ik_metrics() {
             Some(metrics) => (
@@ -221,21 +232,9 @@ impl IkRunMetrics {
         } else {
             0.0
         };
-        let (method, lab_additions) = match driver {
-            AnyDriver::Thesis(thesis) => (
-                thesis.options().method.name(),
-                gaitlab_core::preset::thesis_lab_additions(
-                    thesis.params(),
-                    thesis.options(),
-                    thesis.mode(),
-                ),
-            ),
-            AnyDriver::Track(track) => (
-                track.options().method.name(),
-                gaitlab_core::preset::ik_lab_additions(track.options()).collect(),
-            ),
-            _ => ("", Vec::new()),
-        };
+        let method = driver
+            .ik_options()
+            .map_or("", |options| options.method.name());
         Self {
             preset: preset.to_owned(),
             engine,
@@ -249,7 +248,7 @@ impl IkRunMetrics {
             effectors,
             within_limits: timing.within_limits,
             restored_frames,
-            lab_additions: lab_additions.iter().map(|a| a.name).collect(),
+            lab_additions,
             mode: None,
             speed_mps: None,
             distance_m: None,
@@ -331,7 +330,7 @@ pub struct GaitRunMetrics {
     pub within_limits: bool,
     /// The lab's additions to Girard & Maciejewski in force, and Figure 2's
     /// body pitch where it is left out (`without_body_pitch`); empty: the
-    /// paper alone (`gaitlab_core::preset::poda_lab_additions` gives reasons).
+    /// paper alone ([`AnyDriver::lab_additions`] gives reasons).
     pub lab_additions: Vec<&'static str>,
     /// Frames per second of the run (set by the front end).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -339,7 +338,12 @@ pub struct GaitRunMetrics {
 }
 
 impl GaitRunMetrics {
-    fn of(preset: &str, driver: &PodaDriver, timing: &Timing) -> Self {
+    fn of(
+        preset: &str,
+        driver: &PodaDriver,
+        timing: &Timing,
+        lab_additions: Vec<&'static str>,
+    ) -> Self {
         let metrics = driver.metrics();
         let gait = driver.gait();
         let period = metrics.period_s();
@@ -386,10 +390,7 @@ impl GaitRunMetrics {
             body_surge_range_m: [metrics.body_surge_range_m.0, metrics.body_surge_range_m.1],
             flight_duration_max_s: metrics.flight_max_s,
             within_limits: timing.within_limits,
-            lab_additions: gaitlab_core::preset::poda_lab_additions(driver.params())
-                .iter()
-                .map(|a| a.name)
-                .collect(),
+            lab_additions,
             fps: None,
         }
     }
@@ -526,7 +527,12 @@ pub struct PhysicsRunMetrics {
 }
 
 impl PhysicsRunMetrics {
-    fn of(preset: &str, driver: &PhysicsDriver, timing: &Timing) -> Self {
+    fn of(
+        preset: &str,
+        driver: &PhysicsDriver,
+        timing: &Timing,
+        lab_additions: Vec<&'static str>,
+    ) -> Self {
         let s = driver.summary();
         let sim = driver.sim();
         let step_s = timing.step_ms / 1e3;
@@ -598,7 +604,7 @@ impl PhysicsRunMetrics {
             speed_swing_mps: s.speed_swing_mps,
             friction_needed_max: s.friction_needed_max,
             cost_of_transport: s.cost_of_transport,
-            lab_additions: driver.lab_additions_in_force().collect(),
+            lab_additions,
             start: if driver.started_on_cycle() {
                 "on_cycle"
             } else {

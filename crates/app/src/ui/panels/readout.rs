@@ -82,38 +82,7 @@ fn readout(ui: &mut egui::Ui, lab: &Lab) {
 /// The lab's additions in force for what runs, each with its reason on
 /// hover, or that the paper runs alone (issue 41: the screen names them).
 fn additions(ui: &mut egui::Ui, lab: &Lab) {
-    const PHYSICS_REASON: &str = "The lab's addition to Raibert & Hodgins' control for this gait (the physics panel and docs/physics.md, \"The lab's additions\")";
-    const SWITCH_REASON: &str = "A switch enters the new gait at its own start where the creature is, not the paper's take-over at the next falling flight";
-    let driver = &lab.stage.driver;
-    let found: Vec<(&'static str, &'static str)> = if let Some(thesis) = driver.thesis() {
-        gaitlab_core::preset::thesis_lab_additions(thesis.params(), thesis.options(), thesis.mode())
-            .into_iter()
-            .map(|a| (a.name, a.reason))
-            .collect()
-    } else if let Some(poda) = driver.poda() {
-        gaitlab_core::preset::poda_lab_additions(poda.params())
-            .into_iter()
-            .map(|a| (a.name, a.reason))
-            .collect()
-    } else if let Some(physics) = driver.physics() {
-        physics
-            .lab_additions_in_force()
-            .map(|name| {
-                let reason = if name == "switch_to_start" {
-                    SWITCH_REASON
-                } else {
-                    PHYSICS_REASON
-                };
-                (name, reason)
-            })
-            .collect()
-    } else if let Some(options) = driver.ik_options() {
-        gaitlab_core::preset::ik_lab_additions(options)
-            .map(|a| (a.name, a.reason))
-            .collect()
-    } else {
-        Vec::new()
-    };
+    let found = lab.stage.driver.lab_additions();
     if found.is_empty() {
         ui.label("The paper alone: none of the lab's additions in force.")
             .on_hover_text(
@@ -124,9 +93,9 @@ fn additions(ui: &mut egui::Ui, lab: &Lab) {
     ui.horizontal_wrapped(|ui| {
         ui.label("Lab's additions in force:")
             .on_hover_text("What gaitlab adds to the paper for this run; hover each for why");
-        for (name, reason) in found {
-            ui.label(egui::RichText::new(name).monospace())
-                .on_hover_text(reason);
+        for addition in found {
+            ui.label(egui::RichText::new(addition.name).monospace())
+                .on_hover_text(addition.reason);
         }
     });
 }
