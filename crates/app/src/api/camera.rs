@@ -145,6 +145,8 @@ pub fn apply_camera(
             f64::from(MIN_DISTANCE),
             f64::from(MAX_DISTANCE),
         )?;
+        // A distance asked for (a link's camera) stays: follow mode does not widen it.
+        next.zoomed = true;
     }
     if let Some(target) = command.target_m {
         next.target = point("target_m", target)?;

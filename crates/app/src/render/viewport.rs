@@ -178,6 +178,11 @@ fn steer(
         let centre = centre.as_vec3();
         let dt = ui.input(|i| i.stable_dt).clamp(0.0, 0.1);
         camera.follow(centre, dt);
+        if let Some(bounds) = scene.bounds()
+            && camera.keep_in_view(&bounds, aspect)
+        {
+            ui.ctx().request_repaint();
+        }
         let gap = (centre + camera.follow_offset - camera.target) * Vec3::new(1.0, 0.0, 1.0);
         if gap.length() > FOLLOW_SETTLED || camera.follow_velocity.length() > FOLLOW_SETTLED {
             ui.ctx().request_repaint();

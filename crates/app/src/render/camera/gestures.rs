@@ -55,6 +55,7 @@ impl Camera {
     pub fn zoom(&mut self, factor: f32) {
         if factor.is_finite() && factor > 0.0 {
             self.distance = (self.distance / factor).clamp(MIN_DISTANCE, MAX_DISTANCE);
+            self.zoomed = true;
             self.constrain();
         }
     }

@@ -43,6 +43,9 @@ pub struct Camera {
     /// Whether the camera has been placed around a figure; until then
     /// [`crate::render::viewport::show`] frames the first figure it sees.
     pub framed: bool,
+    /// Whether the person zoomed since the last framing; follow mode's
+    /// [`Camera::keep_in_view`] then leaves the distance alone.
+    pub zoomed: bool,
 }
 
 impl Default for Camera {
@@ -57,6 +60,7 @@ impl Default for Camera {
             follow_offset: Vec3::ZERO,
             follow_velocity: Vec3::ZERO,
             framed: false,
+            zoomed: false,
         }
     }
 }
