@@ -9,6 +9,7 @@ mod export;
 mod fail;
 mod load;
 mod options;
+mod params;
 mod print;
 mod run;
 mod schedule;
@@ -49,6 +50,8 @@ enum Command {
     Export(export::ExportArgs),
     /// Tune a physics gait's gains by CMA-ES against an objective; writes the tuned preset.
     Tune(tune::TuneArgs),
+    /// The parameter table: every settable value, its unit, range, reference and origin.
+    Params(params::ParamsArgs),
 }
 
 fn main() -> ExitCode {
@@ -64,6 +67,7 @@ fn main() -> ExitCode {
         Command::Bench(args) => bench::bench(&args),
         Command::Export(args) => export::export(&args),
         Command::Tune(args) => tune::tune(&args),
+        Command::Params(args) => params::params(&args),
     };
     match outcome {
         Ok(()) => ExitCode::SUCCESS,

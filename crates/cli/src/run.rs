@@ -119,9 +119,9 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
 
 /// `--set KEY=VALUE` arguments: dotted preset paths with JSON values, and
 /// controller gains by name with numbers.
-type Settings = (Vec<(String, Value)>, Vec<(String, f64)>);
+pub(crate) type Settings = (Vec<(String, Value)>, Vec<(String, f64)>);
 
-fn settings(set: &[String]) -> Result<Settings, Failure> {
+pub(crate) fn settings(set: &[String]) -> Result<Settings, Failure> {
     let mut paths = Vec::new();
     let mut gains = Vec::new();
     for item in set {

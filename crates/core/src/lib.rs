@@ -17,6 +17,7 @@ pub mod export;
 pub mod fk;
 pub mod ik;
 pub mod jacobian;
+pub mod params;
 pub mod portable;
 pub mod pose;
 pub mod preset;

@@ -414,7 +414,7 @@ fn ik_options_are_range_checked() {
         ("gamma_max", json!(4.0), "(0, π]"),
         ("max_step", json!(0.0), "(0, π]"),
         ("rank_tolerance", json!(1.0), "(0, 1)"),
-        ("null_space_gain", json!(-0.1), "[0, 10]"),
+        ("null_space_gain", json!(-0.1), "between 0 and 10"),
         ("limit_passes", json!(0), "between 1 and 16"),
         ("limit_passes", json!(17), "between 1 and 16"),
     ] {

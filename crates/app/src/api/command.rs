@@ -189,11 +189,11 @@ pub struct Command {
     pub step_back_s: Option<f64>,
     /// Pause and go to this frame of the stored history (clamped to it).
     pub rewind_to_frame: Option<u64>,
-    /// DLS damping λ, [1e-6, 10].
+    /// DLS damping λ, metres, (0, 10] (`scenario.ik.lambda`'s range).
     pub lambda: Option<f64>,
-    /// SDLS γmax, radians, [1e-3, π].
+    /// SDLS γmax, radians, (0, π].
     pub gamma_max: Option<f64>,
-    /// Step clamp, radians, [1e-3, π]: pinv's (She 2006 §4.4.2), and every
+    /// Step clamp, radians, (0, π]: pinv's (She 2006 §4.4.2), and every
     /// method's with `clamp_every_method`.
     pub max_step: Option<f64>,
     /// The lab's addition: the step clamp on transpose and DLS too (She 2006
@@ -515,14 +515,17 @@ impl Lab {
     /// applied to the solver once when any is set.
     fn apply_ik_command(&mut self, c: &Command) -> Result<(), String> {
         let mut changed = false;
-        for (key, value, lo, hi) in [
-            ("lambda", c.lambda, 1e-6, 10.0),
-            ("gamma_max", c.gamma_max, 1e-3, std::f64::consts::PI),
-            ("max_step", c.max_step, 1e-3, std::f64::consts::PI),
-            ("null_space_gain", c.null_space_gain, 0.0, 10.0),
+        let table = |key: &str| {
+            gaitlab_core::params::row(gaitlab_core::ik::IK_PARAMS, &format!("scenario.ik.{key}"))
+        };
+        for (key, value) in [
+            ("lambda", c.lambda),
+            ("gamma_max", c.gamma_max),
+            ("max_step", c.max_step),
+            ("null_space_gain", c.null_space_gain),
         ] {
             let Some(x) = value else { continue };
-            let x = range(key, x, lo, hi)?;
+            let x = table(key).check_command(key, x)?;
             let ik = &mut self.session.settings.ik;
             match key {
                 "lambda" => ik.lambda = x,
@@ -537,11 +540,10 @@ impl Lab {
             changed = true;
         }
         if let Some(passes) = c.limit_passes {
-            let mut ik = self.session.settings.ik.clone();
-            ik.limit_passes = passes;
-            gaitlab_core::preset::check_ik_options("ik", &ik)
+            table("limit_passes")
+                .check_integer("limit_passes", passes)
                 .map_err(|e| format!("limit_passes: {passes}: {}", e.reason))?;
-            self.session.settings.ik = ik;
+            self.session.settings.ik.limit_passes = passes;
             changed = true;
         }
         if let Some(way) = c.jacobian_at {

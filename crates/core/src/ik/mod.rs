@@ -8,6 +8,7 @@ mod dls;
 mod eigen;
 mod nullspace;
 mod options;
+mod params;
 mod pinv;
 mod sdls;
 mod solver;
@@ -18,6 +19,7 @@ mod transpose;
 
 pub use eigen::{NoConvergence, SymmetricEigen};
 pub use options::{IkOptions, JacobianAt, JointWeight, Method, TransposeAlpha};
+pub use params::{IK_PARAMS, check_ik_options};
 pub use solver::IkSolver;
 pub use status::IkStatus;
 pub use svd::ThinSvd;

@@ -22,10 +22,13 @@ mod lab_additions;
 mod limits;
 mod listing;
 pub mod physics;
+mod physics_params;
 pub mod poda;
+mod poda_params;
 mod scenario;
 mod schema;
 pub mod thesis;
+mod thesis_params;
 mod validate;
 mod versions;
 
@@ -45,14 +48,22 @@ pub use physics::{
     GroundSpec, MassSpec, ObstacleSpec, PhysicsBase, PhysicsBodySpec, PhysicsLegSpec, PhysicsModel,
     PhysicsParams,
 };
+pub use physics_params::PHYSICS_PARAMS;
 pub use poda::{PathKindSpec, PathSpec, PodaLegSpec, PodaParams, check_transfer_keys};
+pub use poda_params::{
+    DUTY_FACTOR_RANGE, MAX_LEG_ITERATIONS, PERIOD_RANGE_S, PODA_PARAMS, SPEED_RANGE_MPS,
+    STROKE_RANGE_M,
+};
 pub use scenario::{DEFAULT_FPS, Engine, MAX_FPS, Scenario};
 pub use schema::{
     DhJointSpec, EffectorSpec, FORMAT, Format, JointSpec, JointType, LimbSpec, Preset, RootSpec,
     SkeletonSpec,
 };
+pub use thesis_params::{
+    MAX_ITERATIONS_PER_FRAME, MAX_SLOWDOWN, MAX_SPEED_MPS, MAX_START_RAMP_S, MIN_SLOWDOWN,
+    THESIS_PARAMS,
+};
 pub use validate::{
-    MAX_FREQUENCY_HZ, MAX_ITERATIONS_PER_FRAME, MAX_SLOWDOWN, MAX_SPEED_MPS, MAX_START_RAMP_S,
-    MAX_WOUNDED_ADD, MAX_WOUNDED_MULTIPLY, MIN_SLOWDOWN, Purpose, THESIS_ROLE_COUNT,
+    MAX_FREQUENCY_HZ, MAX_WOUNDED_ADD, MAX_WOUNDED_MULTIPLY, Purpose, THESIS_ROLE_COUNT,
     check_ik_options, check_thesis_values,
 };

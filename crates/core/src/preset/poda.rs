@@ -12,9 +12,9 @@
 use serde::{Deserialize, Serialize};
 
 use super::PresetError;
+use super::poda_params::PODA_PARAMS;
+use crate::params::row;
 
-/// Most IK iterations per frame for one leg.
-pub const MAX_LEG_ITERATIONS: usize = 64;
 /// Most key leg positions in a transfer trajectory.
 pub const MAX_TRANSFER_KEYS: usize = 16;
 /// Most control points of a body path.
@@ -208,17 +208,6 @@ impl Default for PodaParams {
     }
 }
 
-fn positive(path: String, value: f64, max: f64, unit: &str) -> Result<(), PresetError> {
-    if value.is_finite() && value > 0.0 && value <= max {
-        Ok(())
-    } else {
-        Err(PresetError::new(
-            path,
-            format!("must be a number of {unit} in (0, {max}]"),
-        ))
-    }
-}
-
 /// Transfer-trajectory key positions: at most [`MAX_TRANSFER_KEYS`], each
 /// `[along, height]` with the step fraction strictly increasing in (0, 1) and
 /// the height fraction in [0, 2]. Errors name `path` or `path[i]`.
@@ -259,20 +248,11 @@ impl PodaParams {
     /// A [`PresetError`] naming the first bad value.
     pub fn check_values(&self, prefix: &str) -> Result<(), PresetError> {
         let at = |field: &str| format!("{prefix}.{field}");
-        positive(at("period_s"), self.period_s, 10.0, "seconds")?;
-        if self.period_s < 0.1 {
-            return Err(PresetError::new(
-                at("period_s"),
-                "must be at least 0.1 seconds",
-            ));
-        }
-        if let Some(duty) = self.duty_factor
-            && !(duty.is_finite() && (0.05..=0.95).contains(&duty))
-        {
-            return Err(PresetError::new(
-                at("duty_factor"),
-                "must be between 0.05 and 0.95",
-            ));
+        let spec = |field: &str| row(PODA_PARAMS, &format!("scenario.poda.{field}"));
+        let real = |field: &str, value: f64| spec(field).check_real(&at(field), value);
+        real("period_s", self.period_s)?;
+        if let Some(duty) = self.duty_factor {
+            real("duty_factor", duty)?;
         }
         if let Some(phases) = &self.phases {
             for (i, phase) in phases.iter().enumerate() {
@@ -284,16 +264,10 @@ impl PodaParams {
                 }
             }
         }
-        positive(at("speed_mps"), self.speed_mps, 20.0, "m/s")?;
-        if self.speed_mps < 0.01 {
-            return Err(PresetError::new(
-                at("speed_mps"),
-                "must be at least 0.01 m/s",
-            ));
-        }
-        positive(at("step_height_m"), self.step_height_m, 5.0, "metres")?;
+        real("speed_mps", self.speed_mps)?;
+        real("step_height_m", self.step_height_m)?;
         if let Some(height) = self.stand_height_m {
-            positive(at("stand_height_m"), height, 100.0, "metres")?;
+            real("stand_height_m", height)?;
         }
         check_transfer_keys(&at("transfer_keys"), &self.transfer_keys)?;
         if let Some(path) = &self.path {
@@ -313,29 +287,15 @@ impl PodaParams {
                 }
             }
         }
-        positive(at("body_mass_kg"), self.body_mass_kg, 1e6, "kg")?;
+        real("body_mass_kg", self.body_mass_kg)?;
         if let Some(force) = self.max_leg_force_n {
-            positive(at("max_leg_force_n"), force, 1e9, "newtons")?;
+            real("max_leg_force_n", force)?;
         }
-        if !(self.vertical_gain.is_finite() && (0.0..=4.0).contains(&self.vertical_gain)) {
-            return Err(PresetError::new(
-                at("vertical_gain"),
-                "must be between 0 and 4",
-            ));
-        }
-        if !(1..=MAX_LEG_ITERATIONS).contains(&self.iterations_per_frame) {
-            return Err(PresetError::new(
-                at("iterations_per_frame"),
-                format!("must be between 1 and {MAX_LEG_ITERATIONS}"),
-            ));
-        }
-        positive(at("tolerance_m"), self.tolerance_m, 0.1, "metres")?;
-        if !(self.center_gain.is_finite() && (0.0..=10.0).contains(&self.center_gain)) {
-            return Err(PresetError::new(
-                at("center_gain"),
-                "must be between 0 and 10",
-            ));
-        }
+        real("vertical_gain", self.vertical_gain)?;
+        spec("iterations_per_frame")
+            .check_integer(&at("iterations_per_frame"), self.iterations_per_frame)?;
+        real("tolerance_m", self.tolerance_m)?;
+        real("center_gain", self.center_gain)?;
         Ok(())
     }
 }

@@ -445,12 +445,12 @@ impl PodaDriver {
     /// # Errors
     /// `step_height_m` unless it is a number of metres in (0, 5].
     pub fn set_step_height(&mut self, step_height_m: f64) -> Result<(), DriverError> {
-        if !(step_height_m.is_finite() && step_height_m > 0.0 && step_height_m <= 5.0) {
-            return Err(DriverError::new(
-                "step_height_m",
-                "must be a number of metres in (0, 5]",
-            ));
-        }
+        gaitlab_core::params::row(
+            gaitlab_core::preset::PODA_PARAMS,
+            "scenario.poda.step_height_m",
+        )
+        .check_real("step_height_m", step_height_m)
+        .map_err(|e| DriverError::new("step_height_m", e.reason))?;
         self.params.step_height_m = step_height_m;
         Ok(())
     }

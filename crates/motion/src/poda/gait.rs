@@ -15,14 +15,18 @@
 use serde::{Deserialize, Serialize};
 use std::ops::RangeInclusive;
 
-/// Allowed gait cycle period `P`, seconds.
-pub const PERIOD_RANGE_S: RangeInclusive<f64> = 0.1..=10.0;
+use gaitlab_core::preset as table;
+
+/// Allowed gait cycle period `P`, seconds (PODA's parameter table).
+pub const PERIOD_RANGE_S: RangeInclusive<f64> = table::PERIOD_RANGE_S.0..=table::PERIOD_RANGE_S.1;
 /// Allowed duty factor `β` (fraction of the period a leg is on the ground).
-pub const DUTY_FACTOR_RANGE: RangeInclusive<f64> = 0.05..=0.95;
+pub const DUTY_FACTOR_RANGE: RangeInclusive<f64> =
+    table::DUTY_FACTOR_RANGE.0..=table::DUTY_FACTOR_RANGE.1;
 /// Allowed body speed `v`, metres per second.
-pub const SPEED_RANGE_MPS: RangeInclusive<f64> = 0.01..=20.0;
+pub const SPEED_RANGE_MPS: RangeInclusive<f64> =
+    table::SPEED_RANGE_MPS.0..=table::SPEED_RANGE_MPS.1;
 /// Allowed stroke (body travel during one support duration), metres.
-pub const STROKE_RANGE_M: RangeInclusive<f64> = 0.001..=5.0;
+pub const STROKE_RANGE_M: RangeInclusive<f64> = table::STROKE_RANGE_M.0..=table::STROKE_RANGE_M.1;
 /// Allowed number of legs.
 pub const LEG_COUNT_RANGE: RangeInclusive<usize> = 1..=32;
 

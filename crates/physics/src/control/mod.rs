@@ -31,6 +31,7 @@ pub mod kangaroo_leg;
 pub mod leg_spring;
 pub mod make_controller;
 pub mod pair_posture;
+pub mod parameter_origins;
 pub mod parameters;
 pub mod phase;
 pub mod placement;
@@ -44,4 +45,5 @@ pub mod speed_trim;
 pub mod start;
 pub mod tested_speeds;
 
+pub use parameter_origins::ControllerParam;
 pub use phase::Phase;

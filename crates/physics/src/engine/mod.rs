@@ -17,6 +17,7 @@ pub mod gait_entry;
 pub mod metrics;
 pub mod mjcf;
 pub mod pair_timing;
+pub mod parameters;
 pub mod preset;
 pub mod probe;
 pub mod steering;

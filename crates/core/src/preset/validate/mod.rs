@@ -20,11 +20,10 @@
 //! - `topology`: the build order (parents first), unknown parents and cycles.
 //! - `effectors`: effector joints, offsets and unique names.
 //! - `scenario`: frame rate and the rules of the scenario's engine.
-//! - `ik`, `thesis`, `roles`, `poda`: each engine's parameter rules.
+//! - `thesis`, `roles`, `poda`: each engine's parameter rules.
 //! - `purpose`: [`Purpose`], which rules a loaded preset needs.
 
 mod effectors;
-mod ik;
 mod names;
 mod poda;
 mod purpose;
@@ -35,14 +34,11 @@ mod thesis;
 mod topology;
 mod values;
 
-pub use ik::check_ik_options;
+pub use crate::ik::check_ik_options;
 pub(crate) use names::Unit;
 pub use purpose::Purpose;
 pub use roles::THESIS_ROLE_COUNT;
-pub use thesis::{
-    MAX_FREQUENCY_HZ, MAX_ITERATIONS_PER_FRAME, MAX_SLOWDOWN, MAX_SPEED_MPS, MAX_START_RAMP_S,
-    MAX_WOUNDED_ADD, MAX_WOUNDED_MULTIPLY, MIN_SLOWDOWN, check_thesis_values,
-};
+pub use thesis::{MAX_FREQUENCY_HZ, MAX_WOUNDED_ADD, MAX_WOUNDED_MULTIPLY, check_thesis_values};
 pub(crate) use values::normalized;
 
 use crate::preset::{Preset, PresetError};

@@ -8,12 +8,12 @@ use std::collections::HashMap;
 
 use crate::preset::{Engine, MAX_FPS, Preset, PresetError};
 
-use super::ik::check_ik_options;
 use super::names::NamePlace;
 use super::poda::check_poda;
 use super::purpose::Purpose;
 use super::roles::check_thesis_roles;
 use super::thesis::check_thesis;
+use crate::ik::check_ik_options;
 
 /// `scenario`: every rule for its engine that applies to `purpose`.
 pub(super) fn check_scenario(

@@ -4,23 +4,17 @@
 
 use std::collections::HashMap;
 
+use crate::params::row;
 use crate::preset::PresetError;
 use crate::preset::listing::{ListingCycle, ListingParams};
 use crate::preset::thesis::{CycleShape, ThesisParams};
+use crate::preset::thesis_params::THESIS_PARAMS;
 
 use super::names::NamePlace;
 use super::values::check_vector;
 
-/// Lowest thesis `slowdown` (1 = real time).
-pub const MIN_SLOWDOWN: f64 = 1.0;
-/// Highest thesis `slowdown`.
-pub const MAX_SLOWDOWN: f64 = 100.0;
 /// Highest gait-cycle frequency, Hz.
 pub const MAX_FREQUENCY_HZ: f64 = 10.0;
-/// Highest forward speed, m/s.
-pub const MAX_SPEED_MPS: f64 = 20.0;
-/// Most IK iterations per frame a preset may ask for.
-pub const MAX_ITERATIONS_PER_FRAME: usize = 100;
 /// Largest wounded `multiply` factor.
 pub const MAX_WOUNDED_MULTIPLY: f64 = 10.0;
 /// Largest magnitude of a wounded `add` term, radians per iteration.
@@ -29,8 +23,6 @@ pub const MAX_WOUNDED_ADD: f64 = 0.5;
 pub const MAX_LISTING_M: f64 = 10.0;
 /// Smallest and largest listing axis period ratio.
 pub const LISTING_PERIOD_RATIO: (f64, f64) = (0.1, 10.0);
-/// Longest thesis start ramp, seconds.
-pub const MAX_START_RAMP_S: f64 = 10.0;
 
 fn check_cycle(prefix: &str, shape: &CycleShape) -> Result<(), PresetError> {
     let at = |field: &str| format!("{prefix}.{field}");
@@ -163,38 +155,15 @@ pub fn check_thesis_values(prefix: &str, thesis: &ThesisParams) -> Result<(), Pr
     check_cycle(&at("walk"), &thesis.walk)?;
     check_cycle(&at("run"), &thesis.run)?;
     check_listing(&at("listing"), &thesis.listing)?;
-    if !(MIN_SLOWDOWN..=MAX_SLOWDOWN).contains(&thesis.slowdown) {
-        return Err(PresetError::new(
-            at("slowdown"),
-            format!("must be between {MIN_SLOWDOWN} and {MAX_SLOWDOWN}"),
-        ));
+    let spec = |field: &str| row(THESIS_PARAMS, &format!("scenario.thesis.{field}"));
+    spec("slowdown").check_real(&at("slowdown"), thesis.slowdown)?;
+    if let Some(speed) = thesis.speed_mps {
+        spec("speed_mps").check_real(&at("speed_mps"), speed)?;
     }
-    if let Some(speed) = thesis.speed_mps
-        && !(0.0..=MAX_SPEED_MPS).contains(&speed)
-    {
-        return Err(PresetError::new(
-            at("speed_mps"),
-            format!("must be between 0 and {MAX_SPEED_MPS} m/s"),
-        ));
-    }
-    if !(1..=MAX_ITERATIONS_PER_FRAME).contains(&thesis.iterations_per_frame) {
-        return Err(PresetError::new(
-            at("iterations_per_frame"),
-            format!("must be between 1 and {MAX_ITERATIONS_PER_FRAME}"),
-        ));
-    }
-    if !(0.0..=1.0).contains(&thesis.posture_gain) {
-        return Err(PresetError::new(
-            at("posture_gain"),
-            "must be between 0 and 1",
-        ));
-    }
-    if !(0.0..=MAX_START_RAMP_S).contains(&thesis.start_ramp_s) {
-        return Err(PresetError::new(
-            at("start_ramp_s"),
-            format!("must be between 0 and {MAX_START_RAMP_S} seconds"),
-        ));
-    }
+    spec("iterations_per_frame")
+        .check_integer(&at("iterations_per_frame"), thesis.iterations_per_frame)?;
+    spec("posture_gain").check_real(&at("posture_gain"), thesis.posture_gain)?;
+    spec("start_ramp_s").check_real(&at("start_ramp_s"), thesis.start_ramp_s)?;
     for (i, wounded) in thesis.wounded.iter().enumerate() {
         let at = |field: &str| at(&format!("wounded[{i}].{field}"));
         if !(0.0..=MAX_WOUNDED_MULTIPLY).contains(&wounded.multiply) {
