@@ -54,6 +54,7 @@ const NOT_PARAMETERS: &[&str] = &[
     "editor_apply",
     "download_preset",
     "show_link",
+    "paper_alone",
     "gains",
 ];
 

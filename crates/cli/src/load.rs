@@ -49,15 +49,31 @@ pub fn creature_with(
     purpose: Purpose,
     edits: &[(String, serde_json::Value)],
 ) -> Result<Creature, Failure> {
+    creature_edited(name_or_path, purpose, edits, false)
+}
+
+/// As [`creature_with`]; with `paper` (`--paper-alone`), every lab addition
+/// of the preset's engine is turned off first
+/// ([`gaitlab_core::preset::paper_alone`]), then `edits` apply.
+pub fn creature_edited(
+    name_or_path: &str,
+    purpose: Purpose,
+    edits: &[(String, serde_json::Value)],
+    paper: bool,
+) -> Result<Creature, Failure> {
     let (text, bundled_name) = match bundled_json(name_or_path) {
         Some(json) => (json.to_owned(), true),
         None => (preset_file(name_or_path)?, false),
     };
-    let text = if edits.is_empty() {
+    let text = if edits.is_empty() && !paper {
         text
     } else {
         let mut preset: serde_json::Value = serde_json::from_str(&text)
             .map_err(|e| Failure::input(format!("{name_or_path}: not JSON ({e})")))?;
+        if paper {
+            gaitlab_core::preset::paper_alone(&mut preset)
+                .map_err(|e| Failure::input(format!("--paper-alone: {e}")))?;
+        }
         for (path, value) in edits {
             set_preset_value(&mut preset, path, value.clone())
                 .map_err(|e| Failure::input(format!("--set {e}")))?;
@@ -65,7 +81,7 @@ pub fn creature_with(
         preset.to_string()
     };
     let creature = Creature::from_json_for(&text, purpose).map_err(|e: PresetError| {
-        if bundled_name && edits.is_empty() {
+        if bundled_name && edits.is_empty() && !paper {
             Failure::input(format!("bundled preset {name_or_path}: {e}"))
         } else {
             Failure::input(e)

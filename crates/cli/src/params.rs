@@ -25,6 +25,9 @@ pub struct ParamsArgs {
     /// table follows `scenario.physics.gait=bound`).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
+    /// The table with every lab addition off, as `run --paper-alone`.
+    #[arg(long)]
+    pub paper_alone: bool,
 }
 
 /// `gaitlab params`.
@@ -35,7 +38,8 @@ pub fn params(args: &ParamsArgs) -> Result<(), Failure> {
             "--set {name}: a preset path such as scenario.physics.controller.{name}"
         )));
     }
-    let creature = load::creature_with(&args.preset, Purpose::Scenario, &paths)?;
+    let creature =
+        load::creature_edited(&args.preset, Purpose::Scenario, &paths, args.paper_alone)?;
     let driver = driver_for(&creature, &Overrides::default()).map_err(Failure::input)?;
     let table = parameters(&creature, &driver);
     if args.json {

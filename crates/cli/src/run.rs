@@ -53,6 +53,11 @@ pub struct RunArgs {
     /// parameter, `scenario.physics.controller={"thrust_m": 0.05}` (docs/physics.md).
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
+    /// Run the preset as its paper alone: every lab addition of its engine
+    /// off (the page's "Run the paper alone"; `--json`'s `lab_additions`
+    /// is then `[]`), before `--set`.
+    #[arg(long)]
+    pub paper_alone: bool,
     /// Switch gait at T simulated seconds, repeatable: `--switch 3:trot`
     /// (engines poda and physics). Applied before the first frame at or
     /// after T; `--json` lists each under `changes`.
@@ -80,7 +85,8 @@ pub struct RunArgs {
 /// `gaitlab run`.
 pub fn run(args: &RunArgs) -> Result<(), Failure> {
     let (paths, gains) = settings(&args.set)?;
-    let creature = load::creature_with(&args.preset, Purpose::Scenario, &paths)?;
+    let creature =
+        load::creature_edited(&args.preset, Purpose::Scenario, &paths, args.paper_alone)?;
     let overrides = overrides(&creature, args)?;
     let mut driver = driver_for(&creature, &overrides).map_err(|e| flag_error(e, args))?;
     if let Some(physics) = driver.physics_mut() {

@@ -1,4 +1,5 @@
-//! The thesis target script (She 2006 §5.2.2) checked as a pure function:
+//! The lab's target script (`ThesisParams::lab()`: cycle shapes after She
+//! 2006 §5.2.2's walk and run) checked as a pure function:
 //! period, left/right phase, hands against feet, foot lift, bounce, slowdown
 //! and the stride-matched speed.
 
@@ -14,7 +15,7 @@ fn close(a: DVec3, b: DVec3, tolerance: f64) -> bool {
 
 #[test]
 fn targets_repeat_after_one_period() {
-    let params = ThesisParams::default();
+    let params = ThesisParams::lab();
     for mode in ThesisMode::ALL {
         let script = ThesisScript::new(&params, mode);
         let period = 1.0 / script.shape().frequency_hz;
@@ -44,7 +45,7 @@ fn targets_repeat_after_one_period() {
 
 #[test]
 fn right_limbs_run_half_a_cycle_after_the_left_mirrored() {
-    let params = ThesisParams::default();
+    let params = ThesisParams::lab();
     for mode in ThesisMode::ALL {
         let script = ThesisScript::new(&params, mode);
         let half = 0.5 * script.period_s();
@@ -71,7 +72,7 @@ fn right_limbs_run_half_a_cycle_after_the_left_mirrored() {
 
 #[test]
 fn each_hand_swings_against_its_own_foot() {
-    let params = ThesisParams::default();
+    let params = ThesisParams::lab();
     for mode in ThesisMode::ALL {
         let script = ThesisScript::new(&params, mode);
         let shape = script.shape();
@@ -112,7 +113,7 @@ fn each_hand_swings_against_its_own_foot() {
 
 #[test]
 fn feet_lift_only_while_swinging_forward() {
-    let params = ThesisParams::default();
+    let params = ThesisParams::lab();
     for mode in [ThesisMode::Walk, ThesisMode::Run] {
         let script = ThesisScript::new(&params, mode);
         let shape = script.shape();
@@ -149,7 +150,7 @@ fn feet_lift_only_while_swinging_forward() {
 
 #[test]
 fn walk_root_peaks_at_mid_stance_run_root_peaks_between_stances() {
-    let params = ThesisParams::default();
+    let params = ThesisParams::lab();
     for mode in [ThesisMode::Walk, ThesisMode::Run] {
         let script = ThesisScript::new(&params, mode);
         let shape = script.shape();
@@ -179,10 +180,10 @@ fn walk_root_peaks_at_mid_stance_run_root_peaks_between_stances() {
 
 #[test]
 fn slowdown_two_halves_the_frequency_and_speed() {
-    let params = ThesisParams::default();
+    let params = ThesisParams::lab();
     let slow = ThesisParams {
         slowdown: 2.0,
-        ..ThesisParams::default()
+        ..ThesisParams::lab()
     };
     for mode in ThesisMode::ALL {
         let (a, b) = (
@@ -207,7 +208,7 @@ fn slowdown_two_halves_the_frequency_and_speed() {
 
 #[test]
 fn stride_matched_speed_holds_the_planted_foot_still_at_mid_stance() {
-    let params = ThesisParams::default();
+    let params = ThesisParams::lab();
     for mode in [ThesisMode::Walk, ThesisMode::Run] {
         let script = ThesisScript::new(&params, mode);
         let shape = script.shape();
@@ -235,12 +236,12 @@ fn stride_matched_speed_holds_the_planted_foot_still_at_mid_stance() {
         }
         let stopped = ThesisParams {
             moving_forward: false,
-            ..ThesisParams::default()
+            ..ThesisParams::lab()
         };
         assert_eq!(ThesisScript::new(&stopped, mode).speed_mps(), 0.0);
         let fixed = ThesisParams {
             speed_mps: Some(0.7),
-            ..ThesisParams::default()
+            ..ThesisParams::lab()
         };
         assert_eq!(ThesisScript::new(&fixed, mode).speed_mps(), 0.7);
     }

@@ -263,6 +263,9 @@ pub struct Command {
     pub editor_apply: Option<bool>,
     /// true: download the creature's preset file.
     pub download_preset: Option<bool>,
+    /// `true`: run the preset as its paper alone — every lab addition of its
+    /// engine off (`state().lab_additions` then `[]`), as a custom preset.
+    pub paper_alone: Option<bool>,
     /// Show the Share row's link field (as "Copy link", without the clipboard).
     pub show_link: Option<bool>,
 }
@@ -504,6 +507,9 @@ impl Lab {
         }
         if c.download_preset == Some(true) {
             self.download_preset();
+        }
+        if c.paper_alone == Some(true) {
+            self.run_paper_alone()?;
         }
         if let Some(show) = c.show_link {
             self.show_link(show)?;

@@ -11,6 +11,16 @@ use super::camera::CameraState;
 use crate::lab::Lab;
 use crate::view::ViewOptions;
 
+/// One of the lab's additions in force (`lab_additions`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct LabAdditionState {
+    /// The addition's name (`clamp_every_method`, `speed_trim`, …).
+    pub name: &'static str,
+    /// What it is and where the paper differs, one line.
+    pub reason: &'static str,
+}
+
 /// One effector's IK error in `views[0].effectors`.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -276,6 +286,10 @@ pub struct State {
     pub custom_preset: bool,
     /// `ik`, `poda` or `physics`.
     pub engine: &'static str,
+    /// The lab's additions to the paper in force for the running preset,
+    /// each with why (`[]`: the paper alone; the `paper_alone` command
+    /// turns them off).
+    pub lab_additions: Vec<LabAdditionState>,
     /// The thesis script.
     pub mode: &'static str,
     /// The PODA or physics gait.
@@ -378,6 +392,15 @@ impl State {
         Self {
             preset: lab.session.creature.name.clone(),
             custom_preset: lab.session.custom_preset.is_some(),
+            lab_additions: lab
+                .driver()
+                .lab_additions()
+                .iter()
+                .map(|a| LabAdditionState {
+                    name: a.name,
+                    reason: a.reason,
+                })
+                .collect(),
             engine: lab.session.creature.scenario.engine.name(),
             mode: settings.mode.name(),
             gait: lab

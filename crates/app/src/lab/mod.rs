@@ -28,6 +28,7 @@ mod layout;
 mod lesson;
 mod outbox;
 mod overlays;
+mod paper_alone;
 mod playback;
 mod plots;
 pub mod rewind;

@@ -218,7 +218,10 @@ pub struct IkOptions {
     /// Keep joints inside their limits by clamping and re-solving without the clamped
     /// joints. Default true.
     pub enforce_limits: bool,
-    /// Most clamp-and-re-solve passes per iteration. Default 4.
+    /// Solves per iteration while joints hit their limits: 1 clamps each
+    /// joint to its limits, the thesis' way (§6.1.1.1; default); more re-solve
+    /// without the clamped joints, the lab's addition (4 in a
+    /// `gaitlab-preset/1` file without the key).
     pub limit_passes: usize,
     /// She 2006 §3.2's control way: the Jacobian at the end effectors (default;
     /// effectors move towards the targets) or at the targets (Buss's `Jtarget`;
@@ -271,7 +274,7 @@ impl Default for IkOptions {
             rank_tolerance: 1e-6,
             null_space_gain: 0.0,
             enforce_limits: true,
-            limit_passes: 4,
+            limit_passes: 1,
             jacobian_at: JacobianAt::Effectors,
         }
     }

@@ -30,6 +30,10 @@ const NULL_SPACE_PULL: LabAddition = LabAddition {
     name: "null_space_pull",
     reason: "PODA eq. 6's pull toward the centre angles in J's null space; the thesis has none",
 };
+const CCD: LabAddition = LabAddition {
+    name: "ccd",
+    reason: "cyclic coordinate descent (Wang & Chen 1991), the lab's non-Jacobian contrast; not one of the thesis' four methods",
+};
 const LIMIT_RE_SOLVE: LabAddition = LabAddition {
     name: "limit_re_solve",
     reason: "a joint past its limit is clamped and the rest solved again; §6.1.1.1 only clamps",
@@ -99,6 +103,7 @@ pub fn ik_lab_additions(ik: &IkOptions) -> impl Iterator<Item = LabAddition> + u
         (ik.null_space_gain > 0.0 && matches!(method, Method::Pinv | Method::Dls))
             .then_some(NULL_SPACE_PULL),
         (ik.enforce_limits && ik.limit_passes > 1).then_some(LIMIT_RE_SOLVE),
+        (method == Method::Ccd).then_some(CCD),
     ]
     .into_iter()
     .flatten()
@@ -179,20 +184,37 @@ mod tests {
     }
 
     #[test]
-    fn the_defaults_of_code_name_each_of_the_labs_choices() {
+    fn the_code_defaults_are_the_thesis_and_each_lab_choice_is_named() {
+        let wounded = vec![crate::preset::thesis::WoundedJoint {
+            joint: "a".to_owned(),
+            multiply: 0.5,
+            add: 0.0,
+        }];
+        // The code's defaults: the thesis as printed, nothing of the lab's.
+        for method in Method::ALL {
+            let ik = IkOptions {
+                method,
+                ..IkOptions::default()
+            };
+            let params = ThesisParams {
+                wounded: wounded.clone(),
+                ..ThesisParams::default()
+            };
+            let found = thesis_lab_additions(&params, &ik, ThesisMode::WoundedWalk);
+            let expected: &[&str] = if method == Method::Ccd { &["ccd"] } else { &[] };
+            assert_eq!(names(&found), expected, "{method:?}");
+        }
+        // What a gaitlab-preset/1 file without the keys runs: every choice named.
         let ik = IkOptions {
             method: Method::Transpose,
             clamp_every_method: true,
             transpose_alpha: TransposeAlpha::Buss,
+            limit_passes: crate::preset::versions::V1_LIMIT_PASSES,
             ..IkOptions::default()
         };
         let params = ThesisParams {
-            wounded: vec![crate::preset::thesis::WoundedJoint {
-                joint: "a".to_owned(),
-                multiply: 0.5,
-                add: 0.0,
-            }],
-            ..ThesisParams::default()
+            wounded,
+            ..ThesisParams::lab()
         };
         let found = thesis_lab_additions(&params, &ik, ThesisMode::WoundedWalk);
         assert_eq!(

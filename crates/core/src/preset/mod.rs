@@ -21,6 +21,7 @@ mod json_schema;
 mod lab_additions;
 mod limits;
 mod listing;
+mod paper_alone;
 pub mod physics;
 mod physics_params;
 pub mod poda;
@@ -44,6 +45,7 @@ pub use error::{PresetError, ROOT_PATH, json_path};
 pub use json_schema::{SCHEMA_ID, SCHEMA_TITLE, preset_schema, preset_schema_text};
 pub use lab_additions::{LabAddition, ik_lab_additions, poda_lab_additions, thesis_lab_additions};
 pub use limits::{MAX_EFFECTORS, MAX_JOINTS, MAX_LIMBS, MAX_NAME_CHARS, MAX_PRESET_BYTES};
+pub use paper_alone::paper_alone;
 pub use physics::{
     GroundSpec, MassSpec, ObstacleSpec, PhysicsBase, PhysicsBodySpec, PhysicsLegSpec, PhysicsModel,
     PhysicsParams,

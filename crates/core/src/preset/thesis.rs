@@ -200,13 +200,15 @@ impl Default for EffectorRoles {
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
 #[serde(default, deny_unknown_fields)]
 pub struct ThesisParams {
-    /// Which script moves the targets: gaitlab's own (`lab`, default: the
-    /// `walk`/`run` cycle shapes) or She 2006 §5.2.2's listing (`listing`).
+    /// Which script moves the targets: She 2006 §5.2.2's listing
+    /// (`listing`, default) or gaitlab's own (`lab`: the `walk`/`run` cycle
+    /// shapes; what a `gaitlab-preset/1` file without the key runs).
     pub script: TargetScript,
     /// The listing's targets (used when `script` is `listing`).
     pub listing: ListingParams,
-    /// How the wounded weights act: on the IK step (`step`, default, the lab's
-    /// reading) or on the angle shown on the body (`angle`, She 2006 §5.1.1).
+    /// How the wounded weights act: on the angle shown on the body (`angle`,
+    /// She 2006 §5.1.1, default) or on the IK step (`step`, the lab's
+    /// reading; what a `gaitlab-preset/1` file without the key runs).
     pub wound_form: WoundForm,
     /// Walking cycle (script `lab`).
     pub walk: CycleShape,
@@ -229,7 +231,9 @@ pub struct ThesisParams {
     /// `gain`), and the iterations then restore the targets. This keeps
     /// redundant joints (torso, ankles, elbows) from drifting for every method,
     /// like PODA eq. 6's null-space term, which the solver applies only for
-    /// pinv and DLS. 0 turns it off. Default 0.1.
+    /// pinv and DLS. 0 turns it off. The lab's addition: default 0 (the
+    /// thesis has no posture term); 0.1 in a `gaitlab-preset/1` file without
+    /// the key.
     pub posture_gain: f64,
     /// Seconds over which, after a reset, the targets blend (smoothstep) from
     /// the rest pose's effector positions into the cycle and the speed rises
@@ -238,7 +242,8 @@ pub struct ThesisParams {
     /// run over the next `start_ramp_s` (running straight from standing asks
     /// the legs to shorten by up to 30 cm at once, which can drive a knee that
     /// starts nearly straight into its limit). Live mode changes blend over the
-    /// same time. 0 starts the cycle at once. Default 1.0.
+    /// same time. 0 starts the cycle at once, as the thesis does. The lab's
+    /// addition: default 0; 1 s in a `gaitlab-preset/1` file without the key.
     pub start_ramp_s: f64,
     /// Joints weighted in the wounded modes.
     pub wounded: Vec<WoundedJoint>,
@@ -246,20 +251,46 @@ pub struct ThesisParams {
     pub roles: EffectorRoles,
 }
 
+/// What a `gaitlab-preset/1` file meant by leaving out `script`,
+/// `wound_form`, `posture_gain` and `start_ramp_s`: the lab's script, step
+/// wounds, a 0.1 posture pull and a 1 s start ramp (the code's defaults
+/// until 2026-12-06).
+pub const V1_THESIS: (TargetScript, WoundForm, f64, f64) =
+    (TargetScript::Lab, WoundForm::Step, 0.1, 1.0);
+
+impl ThesisParams {
+    /// The thesis' control module with the lab's script, posture pull,
+    /// start ramp and step wounds ([`V1_THESIS`]): what a
+    /// `gaitlab-preset/1` file without those keys runs.
+    #[must_use]
+    pub fn lab() -> Self {
+        let (script, wound_form, posture_gain, start_ramp_s) = V1_THESIS;
+        Self {
+            script,
+            wound_form,
+            posture_gain,
+            start_ramp_s,
+            ..Self::default()
+        }
+    }
+}
+
+/// The thesis as printed: §5.2.2's listing, §5.1.1's weights on the angle
+/// shown, no posture pull and no start ramp.
 impl Default for ThesisParams {
     fn default() -> Self {
         Self {
-            script: TargetScript::Lab,
+            script: TargetScript::Listing,
             listing: ListingParams::default(),
-            wound_form: WoundForm::Step,
+            wound_form: WoundForm::Angle,
             walk: CycleShape::walk(),
             run: CycleShape::run(),
             slowdown: 1.0,
             moving_forward: true,
             speed_mps: None,
             iterations_per_frame: 4,
-            posture_gain: 0.1,
-            start_ramp_s: 1.0,
+            posture_gain: 0.0,
+            start_ramp_s: 0.0,
             wounded: Vec::new(),
             roles: EffectorRoles::default(),
         }

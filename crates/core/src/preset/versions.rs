@@ -14,6 +14,11 @@
 //!
 //! | key | left out in `/1` | left out in `/2` |
 //! | --- | --- | --- |
+//! | `scenario.ik.limit_passes` | 4: re-solve without clamped joints | 1: clamp (She 2006 §6.1.1.1) |
+//! | `scenario.thesis.script` | `lab` | `listing` (§5.2.2) |
+//! | `scenario.thesis.wound_form` | `step` | `angle` (§5.1.1) |
+//! | `scenario.thesis.posture_gain` | 0.1 | 0: no posture pull |
+//! | `scenario.thesis.start_ramp_s` | 1 s | 0: the cycle at once |
 //! | `scenario.physics.lab_additions` | every addition the gait offers on, with the controllers' earlier defaults | none: the paper's laws |
 //! | `scenario.physics.lab_additions.<name>` | the gait's own default (the speed trim on for the gallops and the bound, the kangaroo's ramp and tail feedback) | off |
 
@@ -21,6 +26,7 @@ use serde::Deserialize;
 use serde::de::IgnoredAny;
 
 use super::schema::{Format, Preset};
+use super::thesis::V1_THESIS;
 use crate::ik::TransposeAlpha;
 
 /// Which of the keys new in `gaitlab-preset/2` a file gives. Unknown keys are
@@ -35,6 +41,16 @@ struct Given {
 struct GivenScenario {
     #[serde(default)]
     ik: GivenIk,
+    #[serde(default)]
+    thesis: GivenThesis,
+}
+
+#[derive(Default, Deserialize)]
+struct GivenThesis {
+    script: Option<IgnoredAny>,
+    wound_form: Option<IgnoredAny>,
+    posture_gain: Option<IgnoredAny>,
+    start_ramp_s: Option<IgnoredAny>,
 }
 
 #[derive(Default, Deserialize)]
@@ -42,10 +58,13 @@ struct GivenIk {
     clamp_every_method: Option<IgnoredAny>,
     transpose_alpha: Option<IgnoredAny>,
     lambda: Option<IgnoredAny>,
+    limit_passes: Option<IgnoredAny>,
 }
 
 /// The DLS damping every `gaitlab-preset/1` file without `lambda` ran with, metres.
 pub const V1_LAMBDA_M: f64 = 0.05;
+/// The limit passes every `gaitlab-preset/1` file without `limit_passes` ran with.
+pub const V1_LIMIT_PASSES: usize = 4;
 
 /// Writes into `preset`, parsed from `json`, what its format meant by each key
 /// it leaves out. A `gaitlab-preset/2` file is left as parsed.
@@ -66,6 +85,23 @@ pub(super) fn write_in_old_defaults(preset: &mut Preset, json: &str) {
     }
     if given.scenario.ik.lambda.is_none() {
         ik.lambda = V1_LAMBDA_M;
+    }
+    if given.scenario.ik.limit_passes.is_none() {
+        ik.limit_passes = V1_LIMIT_PASSES;
+    }
+    let (script, wound_form, posture_gain, start_ramp_s) = V1_THESIS;
+    let (thesis, keys) = (&mut preset.scenario.thesis, &given.scenario.thesis);
+    if keys.script.is_none() {
+        thesis.script = script;
+    }
+    if keys.wound_form.is_none() {
+        thesis.wound_form = wound_form;
+    }
+    if keys.posture_gain.is_none() {
+        thesis.posture_gain = posture_gain;
+    }
+    if keys.start_ramp_s.is_none() {
+        thesis.start_ramp_s = start_ramp_s;
     }
 }
 
@@ -111,6 +147,9 @@ mod tests {
         assert!(ik.clamp_every_method);
         assert_eq!(ik.transpose_alpha, TransposeAlpha::Buss);
         assert_eq!(ik.lambda, crate::preset::versions::V1_LAMBDA_M);
+        assert_eq!(ik.limit_passes, crate::preset::versions::V1_LIMIT_PASSES);
+        let thesis = preset("gaitlab-preset/1", "{}").scenario.thesis;
+        assert_eq!(thesis, crate::preset::thesis::ThesisParams::lab());
     }
 
     #[test]
@@ -119,6 +158,10 @@ mod tests {
         assert!(!ik.clamp_every_method);
         assert_eq!(ik.transpose_alpha, TransposeAlpha::Thesis);
         assert_eq!(ik.lambda, crate::ik::IkOptions::default().lambda);
+        assert_eq!(ik.limit_passes, 1);
+        let thesis = preset("gaitlab-preset/2", "{}").scenario.thesis;
+        assert_eq!(thesis, crate::preset::thesis::ThesisParams::default());
+        assert_eq!(thesis.script, crate::preset::thesis::TargetScript::Listing);
     }
 
     #[test]

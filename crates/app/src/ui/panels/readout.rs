@@ -21,7 +21,7 @@ impl Panel for ReadoutPanel {
     }
 }
 
-fn readout(ui: &mut egui::Ui, lab: &Lab) {
+fn readout(ui: &mut egui::Ui, lab: &mut Lab) {
     // Side by side, the views' drivers run and the single one waits.
     let time_s = lab
         .comparison()
@@ -81,7 +81,7 @@ fn readout(ui: &mut egui::Ui, lab: &Lab) {
 
 /// The lab's additions in force for what runs, each with its reason on
 /// hover, or that the paper runs alone (issue 41: the screen names them).
-fn additions(ui: &mut egui::Ui, lab: &Lab) {
+fn additions(ui: &mut egui::Ui, lab: &mut Lab) {
     let found = lab.stage.driver.lab_additions();
     if found.is_empty() {
         ui.label("The paper alone: none of the lab's additions in force.")
@@ -96,6 +96,14 @@ fn additions(ui: &mut egui::Ui, lab: &Lab) {
         for addition in found {
             ui.label(egui::RichText::new(addition.name).monospace())
                 .on_hover_text(addition.reason);
+        }
+        let alone = ui
+            .button("Run the paper alone")
+            .on_hover_text("Start again with every one of these off, as the paper has it");
+        if alone.clicked()
+            && let Err(error) = lab.run_paper_alone()
+        {
+            lab.report_error(error);
         }
     });
 }
