@@ -28,7 +28,8 @@ pub struct RunArgs {
     /// Gait (PODA and physics engines; the IK engine has none).
     #[arg(long)]
     pub gait: Option<String>,
-    /// Body path file for PODA: `{"kind": "catmull_rom", "points": [[x, z], …], "closed": false}`.
+    /// Body path file for PODA: `{"kind": "catmull_rom", "points": [[x, z], …], "closed": false}`,
+    /// optionally `"speeds_mps": [v, …]`, one desired body speed per point.
     #[arg(long)]
     pub path: Option<String>,
     /// Desired speed, m/s (physics engine; default: the preset's).

@@ -36,6 +36,7 @@ fn circle(r: f64) -> PathSpec {
         kind: Default::default(),
         points,
         closed: true,
+        speeds_mps: None,
     }
 }
 

@@ -32,6 +32,7 @@ fn tight(scale: f64) -> PathSpec {
         kind: Default::default(),
         points: points.iter().map(|[x, z]| [x * scale, z * scale]).collect(),
         closed: true,
+        speeds_mps: None,
     }
 }
 
@@ -90,6 +91,7 @@ fn a_path_the_legs_can_take_is_followed_as_before() {
         kind: Default::default(),
         points,
         closed: true,
+        speeds_mps: None,
     };
     for gait in ["walk", "trot"] {
         let (slip, departed) = run(gait, &circle, true, 12.0);

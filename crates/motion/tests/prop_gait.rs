@@ -83,6 +83,7 @@ fn path() -> impl Strategy<Value = PathSpec> {
                 kind,
                 points,
                 closed,
+                speeds_mps: None,
             }
         })
 }

@@ -53,10 +53,15 @@ pub enum PathKindSpec {
     BSpline,
 }
 
-/// `scenario.poda.path`: the desired body path on the ground plane.
+/// `scenario.poda.path`: the desired body path on the ground plane, and
+/// optionally the desired body speed at each control point ("Horizontal
+/// Control": "given the desired body speed along different parts of the
+/// curve, PODA may calculate the desired positions and velocities along it
+/// using a numerical arclength calculation").
 ///
 /// ```json
-/// {"kind": "catmull_rom", "points": [[0, 0], [0, 3], [2, 5]], "closed": false}
+/// {"kind": "catmull_rom", "points": [[0, 0], [0, 3], [2, 5]], "closed": false,
+///  "speeds_mps": [0.3, 0.6, 0.4]}
 /// ```
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -70,6 +75,56 @@ pub struct PathSpec {
     /// Whether the path is a loop. Default false.
     #[serde(default)]
     pub closed: bool,
+    /// Desired body speed at each control point, m/s, one per point, each in
+    /// `scenario.poda.speed_mps`'s range. Between control points the desired
+    /// speed is linear in arc length from one point's place on the curve to
+    /// the next's (the point itself for Catmull-Rom; for a B-spline the
+    /// segment boundary the point weighs most, `(p₋ + 4p + p₊)/6`); on a
+    /// loop the last point's speed runs back to the first's. The legs' force
+    /// bound (eq. 14) still limits how fast the body takes a change on, and
+    /// the gait keeps its stroke with the period derived, as a speed edit
+    /// does. Default: absent, every point at `scenario.poda.speed_mps`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub speeds_mps: Option<Vec<f64>>,
+}
+
+/// A body path's speeds: one per control point (`points` of them), each in
+/// `scenario.poda.speed_mps`'s range. `at` is the field's path
+/// (`scenario.poda.path.speeds_mps`); errors name it or `{at}[i]`.
+///
+/// # Errors
+/// A [`PresetError`] at `at` when the count differs from `points`
+/// (`needs one speed per point (3 points, 2 speeds)`), or at `{at}[i]` for
+/// the first speed out of range.
+pub fn check_path_speeds(at: &str, points: usize, speeds_mps: &[f64]) -> Result<(), PresetError> {
+    if speeds_mps.len() != points {
+        return Err(PresetError::new(
+            at,
+            format!(
+                "needs one speed per point ({points} points, {} speeds)",
+                speeds_mps.len()
+            ),
+        ));
+    }
+    let speed = row(PODA_PARAMS, "scenario.poda.speed_mps");
+    for (i, &v) in speeds_mps.iter().enumerate() {
+        speed.check_real(&format!("{at}[{i}]"), v)?;
+    }
+    Ok(())
+}
+
+impl PathSpec {
+    /// Checks [`PathSpec::speeds_mps`] when present ([`check_path_speeds`]);
+    /// `at` is the field's path.
+    ///
+    /// # Errors
+    /// As [`check_path_speeds`].
+    pub fn check_speeds(&self, at: &str) -> Result<(), PresetError> {
+        match &self.speeds_mps {
+            Some(speeds) => check_path_speeds(at, self.points.len(), speeds),
+            None => Ok(()),
+        }
+    }
 }
 
 /// `scenario.poda`: every field optional.
@@ -286,6 +341,7 @@ impl PodaParams {
                     ));
                 }
             }
+            path.check_speeds(&at("path.speeds_mps"))?;
         }
         real("body_mass_kg", self.body_mass_kg)?;
         if let Some(force) = self.max_leg_force_n {

@@ -161,7 +161,7 @@ pub const PODA_PARAMS: &[ParamSpec] = &[
         label: "Body path: a spline through control points",
         unit: "m",
         domain: Domain::Structured {
-            shape: "{kind: catmull_rom or b_spline, points: 2 to 64 [x, z]}",
+            shape: "{kind: catmull_rom or b_spline, points: 2 to 64 [x, z], speeds_mps: one m/s per point (optional)}",
         },
         live: true,
         reference: "Girard & Maciejewski 1985, Horizontal Control",

@@ -2,7 +2,9 @@
 //! that footholds can be planned (Girard & Maciejewski 1985, "Directional
 //! Control of the Body", Figure 13's order of calculation):
 //! 1. **translation** (eq. 14–15): a desired point moves along the body path
-//!    at the desired speed; the desired velocity is the path's tangent times
+//!    at the desired speed (the path's speed where the point is, when the
+//!    path carries speeds, [`BodyPath::desired_speed_mps`]; else the gait's);
+//!    the desired velocity is the path's tangent times
 //!    that speed plus a pull toward the desired point; each frame the body's
 //!    velocity moves toward it by at most `Σ‖F_max‖ / mass` over the legs in
 //!    support at that moment (eq. 14), in the direction of the velocity error
@@ -126,6 +128,15 @@ pub struct BodyTrack {
     dynamics: BodyDynamics,
 }
 
+/// The desired body speed at arc length `distance_m` of `path`, m/s: the
+/// path's own where it carries speeds ([`BodyPath::desired_speed_mps`]),
+/// else the gait's.
+#[must_use]
+pub fn desired_speed_mps(path: &BodyPath, gait: &GaitParams, distance_m: f64) -> f64 {
+    path.desired_speed_mps(distance_m)
+        .unwrap_or_else(|| gait.speed_mps())
+}
+
 /// Wraps an angle into (−π, π].
 fn wrap(angle: f64) -> f64 {
     let a = angle.rem_euclid(std::f64::consts::TAU);
@@ -159,15 +170,16 @@ impl BodyTrack {
         &self.dynamics
     }
 
-    /// Starts at time 0 at the path's start, moving along it at the gait's
-    /// speed and facing that way, then plans ahead.
+    /// Starts at time 0 at the path's start, moving along it at the desired
+    /// speed there ([`desired_speed_mps`]) and facing that way, then plans
+    /// ahead.
     pub fn reset(&mut self, path: &BodyPath, gait: &GaitParams) {
         let start = path.sample(0.0);
         self.states.clear();
         self.states.push_back(BodyState {
             t_s: 0.0,
             position: start.position,
-            velocity: start.tangent * gait.speed_mps(),
+            velocity: start.tangent * desired_speed_mps(path, gait, 0.0),
             yaw_rad: start.heading_rad,
             yaw_rate: 0.0,
             desired_m: 0.0,
@@ -274,7 +286,10 @@ impl BodyTrack {
         } else {
             1.0
         };
-        let mut desired_m = last.desired_m + gait.speed_mps() * h * wait;
+        // The desired speed where the desired point is: the gait's, or the
+        // path's own speeds (the gait follows them, `PodaDriver`).
+        let speed = desired_speed_mps(path, gait, last.desired_m);
+        let mut desired_m = last.desired_m + speed * h * wait;
         if lead > 0.0 {
             // The desired point never stays behind the body's own place on
             // the path: a body that cut a corner goes on from where it is.
@@ -289,10 +304,10 @@ impl BodyTrack {
                 desired_m += ahead;
             }
         }
-        let mut wanted = now.tangent * gait.speed_mps()
-            + (now.position - last.position) * self.dynamics.path_gain_per_s;
-        if lead > 0.0 && wanted.length() > gait.speed_mps() {
-            wanted *= gait.speed_mps() / wanted.length();
+        let mut wanted =
+            now.tangent * speed + (now.position - last.position) * self.dynamics.path_gain_per_s;
+        if lead > 0.0 && wanted.length() > speed {
+            wanted *= speed / wanted.length();
         }
         if self.dynamics.min_turn_radius_m > 0.0 {
             // Slow down for a turn ahead (the cosine of the heading error):
@@ -316,8 +331,7 @@ impl BodyTrack {
         } else {
             error / h
         };
-        let velocity =
-            self.turn_limited(last.velocity, last.velocity + accel * h, gait.speed_mps());
+        let velocity = self.turn_limited(last.velocity, last.velocity + accel * h, speed);
         self.states.push_back(BodyState {
             t_s: t,
             position: last.position + velocity * h,
@@ -539,6 +553,44 @@ mod tests {
         // 1 m/s of speed at 1 m/s² (a trot always has two legs down), from t = 1 s.
         let reached = reached.expect("reaches the new speed");
         assert!((reached - 2.0).abs() < 0.05, "reached at {reached} s");
+    }
+
+    #[test]
+    fn a_speed_step_along_the_path_is_a_ramp_within_the_legs_force() {
+        // 0.5 m/s to 1.5 m/s within 0.1 m of a straight path (control points
+        // 0.1 m apart), on the weak legs above (at most 1 m/s² with a trot's
+        // two legs down): followed exactly, it would ask for up to 15 m/s².
+        let points: Vec<DVec2> = (0..64)
+            .map(|k| DVec2::new(0.0, 0.1 * f64::from(k)))
+            .collect();
+        let speeds: Vec<f64> = (0..64).map(|k| if k <= 10 { 0.5 } else { 1.5 }).collect();
+        let path = BodyPath::new(&points, super::super::path::PathKind::CatmullRom, false)
+            .and_then(|p| p.with_speeds(&speeds))
+            .expect("path");
+        let gait = trot(0.5);
+        let dynamics = BodyDynamics {
+            mass_kg: 40.0,
+            max_leg_force_n: 20.0,
+            path_gain_per_s: 0.0,
+            ..BodyDynamics::default()
+        };
+        let mut track = BodyTrack::new(H, dynamics);
+        track.reset(&path, &gait);
+        let states = run(&mut track, &path, &gait, 6.0);
+        let (mut previous, mut reached) = (states[0], None);
+        for state in &states[1..] {
+            let accel = (state.velocity - previous.velocity).length() / H;
+            assert!(accel <= 1.0 + 1e-9, "{accel} m/s² at {}", state.t_s);
+            if reached.is_none() && (state.velocity.length() - 1.5).abs() < 1e-6 {
+                reached = Some(state.t_s);
+            }
+            previous = *state;
+        }
+        // The desired point reaches the step at 1 m / 0.5 m/s = 2 s and
+        // passes it within 0.1 s; the body takes the 1 m/s on in 1 s.
+        let reached = reached.expect("reaches the path's speed");
+        assert!((3.0..3.1).contains(&reached), "reached at {reached} s");
+        assert!((states[0].velocity.length() - 0.5).abs() < 1e-12);
     }
 
     /// 6 s of a trot at 0.8 m/s straight ahead (+z), the body set facing 0.3 rad off.

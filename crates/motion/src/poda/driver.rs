@@ -4,7 +4,11 @@
 //! - **body**: the ground-plane pose planned ahead by [`BodyTrack`] — path
 //!   following with the legs' horizontal force limits (eq. 14–15) and yaw
 //!   from the legs' push / restore toward the direction of travel — raised by
-//!   the superposition of each leg's vertical push / fall / restore (eq. 12–13);
+//!   the superposition of each leg's vertical push / fall / restore (eq. 12–13).
+//!   On a path with speeds (`scenario.poda.path.speeds_mps`) the gait takes
+//!   on the desired speed where the desired point is whenever a leg reaches
+//!   mid-stance, as a speed edit does (stroke kept, period derived; with gait
+//!   by speed the gait and stride follow), and the legs take it on one by one;
 //! - **leg_states**: eq. 9 for every leg until the gait changes; from then
 //!   each leg's own cycles ([`LegCycles`]), which take a change on at each
 //!   leg's mid-stance, with the body kept within [`super::transition`]'s
@@ -149,6 +153,9 @@ pub struct PodaDriver {
     centre_steady: bool,
     /// The lab's bounds on the body while legs take a change on.
     bounds: TransitionBounds,
+    /// The latest mid-stance of any leg at which the gait read the path's
+    /// speed, seconds (a path with speeds; [`PodaDriver::follow_path_speed`]).
+    path_speed_read_s: f64,
 }
 
 /// The body's pitch from its legs' vertical motion (Figure 2; "Rotational
@@ -339,6 +346,7 @@ impl PodaDriver {
             steady_gait,
             centre_steady: false,
             bounds: TransitionBounds::new(n),
+            path_speed_read_s: f64::NEG_INFINITY,
         };
         driver.max_stroke_m = driver
             .legs
@@ -354,6 +362,7 @@ impl PodaDriver {
         if !driver.params.body_pitch {
             driver.pitch_weights.fill(0.0);
         }
+        driver.check_path_speeds(&driver.path, "scenario.poda.path.speeds_mps")?;
         driver.reset();
         Ok(driver)
     }
@@ -408,15 +417,47 @@ impl PodaDriver {
     /// otherwise as [`GaitParams::set_speed`] (stroke kept, period derived).
     ///
     /// # Errors
-    /// The speed, or a value derived from it, out of range; nothing changes.
+    /// The speed, or a value derived from it, out of range; `speed_mps` while
+    /// the body path carries its own speeds (`path.speeds_mps`: they set the
+    /// speed); nothing changes.
     pub fn set_speed(&mut self, speed_mps: f64) -> Result<Derived, GaitError> {
+        if self.path.speeds_mps().is_some() {
+            return Err(GaitError::new(
+                "speed_mps",
+                "the body path sets the speed (path.speeds_mps): edit the path's speeds, \
+                 or set a path without them",
+            ));
+        }
+        self.apply_speed(speed_mps)
+    }
+
+    /// Sets the body speed as [`PodaDriver::set_speed`] does, whatever the path.
+    fn apply_speed(&mut self, speed_mps: f64) -> Result<Derived, GaitError> {
+        let (name, next, edit) = self.gait_at_speed(speed_mps)?;
+        match name {
+            Some(name) => self.adopt(name, next),
+            None => self.gait = next,
+        }
+        Ok(edit)
+    }
+
+    /// The gait a speed edit to `speed_mps` leads to, and what it derived:
+    /// with gait by speed the named gait the Froude number picks (its name)
+    /// and its stride; otherwise this gait with its stroke kept and its
+    /// period derived (no name: the gait stays).
+    fn gait_at_speed(
+        &self,
+        speed_mps: f64,
+    ) -> Result<(Option<&'static str>, GaitParams, Derived), GaitError> {
         let gaits = speed_gaits(self.legs.len());
         let (Some(gaits), true, true) = (
             gaits,
             self.params.gait_by_speed,
             speed_mps.is_finite() && speed_mps > 0.0,
         ) else {
-            return self.gait.set_speed(speed_mps);
+            let mut next = self.gait.clone();
+            let edit = next.set_speed(speed_mps)?;
+            return Ok((None, next, edit));
         };
         let fr = froude(speed_mps, self.stand_height_m, GRAVITY_MPS2);
         let name = gaits[gait_index(fr)];
@@ -436,8 +477,53 @@ impl PodaDriver {
         } else {
             EDIT_SPEED_GAIT
         };
-        self.adopt(name, next);
-        Ok(edit)
+        Ok((Some(name), next, edit))
+    }
+
+    /// Every speed of `path` (when it carries speeds) is one the gait can
+    /// take on from its present values ([`PodaDriver::set_speed`]'s rule; a
+    /// speed between two control points' lies between their periods).
+    ///
+    /// # Errors
+    /// `{field}[i]` for the first speed the gait cannot take, with why.
+    fn check_path_speeds(&self, path: &BodyPath, field: &str) -> Result<(), DriverError> {
+        for (i, &v) in path.speeds_mps().unwrap_or_default().iter().enumerate() {
+            self.gait_at_speed(v).map_err(|e| {
+                DriverError::new(
+                    format!("{field}[{i}]"),
+                    format!("at {v} m/s the gait cannot keep eq. 7–8: {e}"),
+                )
+            })?;
+        }
+        Ok(())
+    }
+
+    /// On a path with speeds, whenever a leg has reached mid-stance since
+    /// the last time, the gait takes on the desired speed where the desired
+    /// point is now ([`BodyPath::desired_speed_mps`]), as a speed edit would.
+    /// Legs take a change on only at their mid-stances ([`LegCycles`]; the
+    /// paper's "at the beginning of its upward pushing phase"), so reading
+    /// the speed there, not every frame, changes nothing the legs do and
+    /// spares a replan of the body's track every frame. A speed the gait
+    /// cannot take leaves it as it is (the path's speeds were checked against
+    /// the gait when the path was set).
+    fn follow_path_speed(&mut self) {
+        if self.path.speeds_mps().is_none() {
+            return;
+        }
+        let latest = (0..self.legs.len())
+            .filter_map(|i| self.mid_stance_s(i))
+            .fold(f64::NEG_INFINITY, f64::max);
+        if latest <= self.path_speed_read_s {
+            return;
+        }
+        self.path_speed_read_s = latest;
+        let distance = self.track.interpolate(self.time).desired_m;
+        if let Some(v) = self.path.desired_speed_mps(distance)
+            && v != self.gait.speed_mps()
+        {
+            let _ = self.apply_speed(v);
+        }
     }
 
     /// Sets the highest point of the transfer trajectory above the ground.
@@ -507,16 +593,22 @@ impl PodaDriver {
 
     /// Replaces the body path; the body joins it at the point closest to
     /// where it is and plans ahead along it (footholds already planned stay).
+    /// With `speeds_mps` the body takes on the path's speed from there
+    /// (eq. 14's ramp) and the gait at the next frame, then at the legs'
+    /// mid-stances; without, the body keeps the speed it has.
     ///
     /// # Errors
-    /// `path.…` naming the bad control point or rule; nothing changes.
+    /// `path.…` naming the bad control point, speed or rule (a speed the gait
+    /// cannot take on: `path.speeds_mps[i]`); nothing changes.
     pub fn set_path(&mut self, spec: &PathSpec) -> Result<(), DriverError> {
         let path = BodyPath::try_from(spec)
             .map_err(|e| DriverError::new(format!("path.{}", e.path), e.reason))?;
+        self.check_path_speeds(&path, "path.speeds_mps")?;
         let here = self.track.interpolate(self.time).position;
         let distance = path.closest_distance(here);
         self.path = path;
         self.params.path = Some(spec.clone());
+        self.path_speed_read_s = f64::NEG_INFINITY;
         self.track
             .follow_new_path(self.time, distance, &self.path, &self.gait);
         Ok(())
@@ -957,6 +1049,7 @@ impl Driver for PodaDriver {
         if !(dt.is_finite() && dt > 0.0) {
             return;
         }
+        self.follow_path_speed();
         let t_prev = self.time;
         let t = t_prev + dt;
         let steady = &self.steady_gait;
@@ -1001,6 +1094,17 @@ impl Driver for PodaDriver {
     }
 
     fn reset(&mut self) {
+        // A path with speeds: the run starts in the gait at its start's speed.
+        if let Some(v) = self.path.desired_speed_mps(0.0)
+            && v != self.gait.speed_mps()
+            && let Ok((name, next, _)) = self.gait_at_speed(v)
+        {
+            if let Some(name) = name {
+                name.clone_into(&mut self.gait_name);
+            }
+            self.gait = next;
+        }
+        self.path_speed_read_s = f64::NEG_INFINITY;
         self.time = 0.0;
         self.by_cycles = false;
         self.centre_steady = false;

@@ -14,6 +14,19 @@
 //! 6 m path). [`BodyPath::sample`] inverts arc length by binary search in that
 //! table plus safeguarded Newton steps, landing within about 1e-12 m of the
 //! asked distance along the curve.
+//!
+//! Speeds along the path ("Horizontal Control": "given the desired body
+//! speed along different parts of the curve, PODA may calculate the desired
+//! positions and velocities along it"): a path may carry one desired speed
+//! per control point. The lab's reading: each control point has a place on
+//! the curve, the segment boundary it starts (`u = i / segments`) — the point
+//! itself on a Catmull-Rom path, which passes through its points; on a
+//! B-spline the boundary where the point weighs most (2/3, the curve point
+//! `(pᵢ₋₁ + 4pᵢ + pᵢ₊₁)/6`), the curve point nearest the control point that
+//! the spline's parameter singles out. Between two control points the desired
+//! speed is linear in arc length from one place to the next, so that it is
+//! a property of the ground the body covers, whatever the curve's
+//! parameterisation ([`BodyPath::desired_speed_mps`]).
 
 use gaitlab_core::portable::Portable;
 use glam::{DVec2, DVec3};
@@ -100,15 +113,27 @@ pub struct BodyPath {
     closed: bool,
     /// Arc length, metres, at curve parameter `u = i / (table.len() − 1)`.
     table: Vec<f64>,
+    /// Arc length, metres, of each control point's place on the curve (its
+    /// segment boundary); a closed path ends with the length, where the
+    /// first point comes round again.
+    knots_m: Vec<f64>,
+    /// Desired body speed at each control point, m/s (module docs); `None`:
+    /// the gait's speed everywhere.
+    speeds_mps: Option<Vec<f64>>,
 }
 
 impl TryFrom<&PathSpec> for BodyPath {
     type Error = PathError;
 
-    /// Builds the path of a preset's `path` section, checked as in [`BodyPath::new`].
+    /// Builds the path of a preset's `path` section, checked as in
+    /// [`BodyPath::new`] and, with `speeds_mps`, [`BodyPath::with_speeds`].
     fn try_from(spec: &PathSpec) -> Result<Self, PathError> {
         let points: Vec<DVec2> = spec.points.iter().map(|&p| DVec2::from(p)).collect();
-        BodyPath::new(&points, spec.kind, spec.closed)
+        let path = BodyPath::new(&points, spec.kind, spec.closed)?;
+        match &spec.speeds_mps {
+            Some(speeds) => path.with_speeds(speeds),
+            None => Ok(path),
+        }
     }
 }
 
@@ -148,6 +173,8 @@ impl BodyPath {
             kind,
             closed,
             table: Vec::with_capacity(steps + 1),
+            knots_m: Vec::with_capacity(steps / STEPS_PER_SEGMENT + 1),
+            speeds_mps: None,
         };
         let mut length = 0.0;
         path.table.push(length);
@@ -160,7 +187,75 @@ impl BodyPath {
             let reason = format!("path length {length} m is under {MIN_LENGTH_M} m");
             return Err(error("points", reason));
         }
+        path.knots_m
+            .extend(path.table.iter().step_by(STEPS_PER_SEGMENT).copied());
         Ok(path)
+    }
+
+    /// This path with a desired body speed at each control point, m/s
+    /// (module docs; [`BodyPath::desired_speed_mps`]).
+    ///
+    /// # Errors
+    /// `speeds_mps` unless there is one speed per control point;
+    /// `speeds_mps[i]` for the first speed outside `scenario.poda.speed_mps`'s
+    /// range.
+    pub fn with_speeds(mut self, speeds_mps: &[f64]) -> Result<Self, PathError> {
+        gaitlab_core::preset::poda::check_path_speeds("speeds_mps", self.points.len(), speeds_mps)
+            .map_err(|e| error(e.path, e.reason))?;
+        self.speeds_mps = Some(speeds_mps.to_vec());
+        Ok(self)
+    }
+
+    /// The desired speed at each control point, m/s, when the path has them.
+    #[must_use]
+    pub fn speeds_mps(&self) -> Option<&[f64]> {
+        self.speeds_mps.as_deref()
+    }
+
+    /// Arc length, metres, of each control point's place on the curve: the
+    /// point itself (Catmull-Rom) or the segment boundary it weighs most
+    /// (B-spline); a closed path adds its length, where the first point comes
+    /// round again.
+    #[must_use]
+    pub fn knots_m(&self) -> &[f64] {
+        &self.knots_m
+    }
+
+    /// The desired body speed at `distance_m` metres along the path, m/s:
+    /// linear in arc length between the control points' places
+    /// ([`BodyPath::knots_m`]); a closed path wraps (the last point's speed
+    /// runs back to the first's), an open path holds its end speeds before
+    /// 0 and past its length; a non-finite distance is treated as 0. `None`
+    /// when the path has no speeds (the gait's speed applies).
+    #[must_use]
+    pub fn desired_speed_mps(&self, distance_m: f64) -> Option<f64> {
+        let speeds = self.speeds_mps.as_deref()?;
+        let d = if distance_m.is_finite() {
+            distance_m
+        } else {
+            0.0
+        };
+        let d = if self.closed {
+            d.rem_euclid(self.length_m())
+        } else {
+            d
+        };
+        let n = speeds.len();
+        // The knot at or before `d`, so that segment `k` runs from knot `k`
+        // to knot `k + 1` (speed `k` to speed `k + 1`, wrapping on a loop).
+        let k = self
+            .knots_m
+            .partition_point(|&s| s <= d)
+            .clamp(1, self.knots_m.len() - 1)
+            - 1;
+        let (v0, v1) = (speeds[k % n], speeds[(k + 1) % n]);
+        let (s0, s1) = (self.knots_m[k], self.knots_m[k + 1]);
+        let f = if s1 > s0 {
+            ((d - s0) / (s1 - s0)).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        Some(v0 + (v1 - v0) * f)
     }
 
     /// A straight open path from `start` (metres) along `heading_rad`
@@ -230,6 +325,7 @@ impl BodyPath {
             kind: self.kind,
             points,
             closed: self.closed,
+            speeds_mps: self.speeds_mps.clone(),
         }
     }
 
@@ -615,6 +711,102 @@ mod tests {
     }
 
     #[test]
+    fn speeds_are_linear_in_arc_length_between_the_control_points() {
+        let pts = [
+            [0.0, 0.0],
+            [0.5, 1.0],
+            [-0.3, 2.0],
+            [0.4, 3.2],
+            [1.5, 3.6],
+            [2.2, 2.9],
+        ];
+        let speeds = [0.3, 0.6, 0.4, 0.8, 0.5, 0.2];
+        for kind in [PathKind::CatmullRom, PathKind::BSpline] {
+            let spec = PathSpec {
+                kind,
+                points: pts.to_vec(),
+                closed: false,
+                speeds_mps: Some(speeds.to_vec()),
+            };
+            let path = BodyPath::try_from(&spec).expect("path with speeds");
+            assert_eq!(path.to_spec(), spec);
+            let knots = path.knots_m();
+            assert_eq!(knots.len(), pts.len());
+            assert!(knots[0] == 0.0 && (knots[5] - path.length_m()).abs() < 1e-12);
+            for i in 0..pts.len() {
+                // Each point's place: the point itself (Catmull-Rom), or the
+                // B-spline's curve point (p₋ + 4p + p₊)/6 (p at the ends).
+                let p = DVec2::from(pts[i]);
+                let place = match kind {
+                    PathKind::CatmullRom => p,
+                    PathKind::BSpline if i == 0 || i == pts.len() - 1 => p,
+                    PathKind::BSpline => {
+                        (DVec2::from(pts[i - 1]) + 4.0 * p + DVec2::from(pts[i + 1])) / 6.0
+                    }
+                };
+                let at = path.sample(knots[i]).position;
+                assert!(at.distance(place) < 1e-9, "{kind:?} point {i}: {at}");
+                let v = path.desired_speed_mps(knots[i]).expect("speeds");
+                assert!((v - speeds[i]).abs() < 1e-12, "{kind:?} speed {i}: {v}");
+            }
+            for i in 0..pts.len() - 1 {
+                let (s0, s1) = (knots[i], knots[i + 1]);
+                let quarter = path.desired_speed_mps(s0 + 0.25 * (s1 - s0)).expect("v");
+                let wanted = 0.75 * speeds[i] + 0.25 * speeds[i + 1];
+                assert!((quarter - wanted).abs() < 1e-12, "{kind:?} segment {i}");
+            }
+            assert_eq!(path.desired_speed_mps(-1.0), Some(0.3));
+            assert_eq!(path.desired_speed_mps(path.length_m() + 1.0), Some(0.2));
+            assert_eq!(path.desired_speed_mps(f64::NAN), Some(0.3));
+        }
+        // A loop: the last point's speed runs back to the first's.
+        let speeds: Vec<f64> = (0..16).map(|k| 0.2 + 0.05 * f64::from(k)).collect();
+        let loop_ = BodyPath::circle(DVec2::ZERO, 2.0, 0.0, true)
+            .expect("circle")
+            .with_speeds(&speeds)
+            .expect("speeds");
+        let (l, last) = (loop_.length_m(), loop_.knots_m()[15]);
+        assert_eq!(loop_.knots_m().len(), 17);
+        let halfway = loop_.desired_speed_mps(0.5 * (last + l)).expect("v");
+        assert!((halfway - 0.5 * (0.95 + 0.2)).abs() < 1e-12, "{halfway}");
+        let lap = loop_.desired_speed_mps(l + 0.1).expect("v");
+        assert!((lap - loop_.desired_speed_mps(0.1).expect("v")).abs() < 1e-12);
+        // Without speeds the gait's speed applies.
+        assert_eq!(wavy(PathKind::CatmullRom).desired_speed_mps(1.0), None);
+        assert_eq!(wavy(PathKind::CatmullRom).to_spec().speeds_mps, None);
+    }
+
+    #[test]
+    fn bad_speeds_name_the_field() {
+        let err = |speeds: &[f64]| {
+            wavy(PathKind::CatmullRom)
+                .with_speeds(speeds)
+                .map(|_| ())
+                .expect_err("should fail")
+        };
+        let short = err(&[0.5; 5]);
+        assert_eq!(short.path, "speeds_mps");
+        assert_eq!(
+            short.reason,
+            "needs one speed per point (6 points, 5 speeds)"
+        );
+        for bad in [0.0, -0.4, 25.0, f64::NAN, f64::INFINITY] {
+            let mut speeds = [0.5; 6];
+            speeds[3] = bad;
+            assert_eq!(err(&speeds).path, "speeds_mps[3]", "{bad}");
+        }
+        let spec: PathSpec = serde_json::from_str(
+            r#"{"points": [[0, 0], [1, 0], [2, 0]], "speeds_mps": [0.3, 0.6]}"#,
+        )
+        .expect("json");
+        let e = BodyPath::try_from(&spec).map(|_| ()).expect_err("2 speeds");
+        assert_eq!(
+            e.to_string(),
+            "speeds_mps: needs one speed per point (3 points, 2 speeds)"
+        );
+    }
+
+    #[test]
     fn spec_round_trips_through_json() {
         let spec: PathSpec =
             serde_json::from_str(r#"{"kind": "b_spline", "points": [[0, 0], [1, 0.5], [2, 0]]}"#)
@@ -636,6 +828,7 @@ mod tests {
             kind: PathKind::CatmullRom,
             points: vec![[0.0, 0.0], [f64::NAN, 1.0]],
             closed: false,
+            speeds_mps: None,
         };
         assert_eq!(
             BodyPath::try_from(&spec).map(|_| ()).expect_err("nan").path,

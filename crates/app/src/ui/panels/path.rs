@@ -54,6 +54,7 @@ fn preset_path(name: &str, start: DVec2) -> PathSpec {
     PathSpec {
         kind: PathKindSpec::CatmullRom,
         closed: name == "circle",
+        speeds_mps: None,
         points,
     }
 }
