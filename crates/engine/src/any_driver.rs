@@ -50,6 +50,22 @@ impl AnyDriver {
         }
     }
 
+    /// Whether the driver follows a recording of targets (`gaitlab track`,
+    /// the page's recorded targets) rather than a script or a gait.
+    #[must_use]
+    pub fn is_recording(&self) -> bool {
+        matches!(self, AnyDriver::Track(_))
+    }
+
+    /// The thesis motion running, when the driver runs the thesis' script.
+    #[must_use]
+    pub fn thesis_mode(&self) -> Option<gaitlab_core::preset::thesis::ThesisMode> {
+        match self {
+            AnyDriver::Thesis(driver) => Some(driver.mode()),
+            _ => None,
+        }
+    }
+
     /// The thesis driver, when the engine is `ik`.
     #[must_use]
     pub fn thesis(&self) -> Option<&ThesisDriver> {

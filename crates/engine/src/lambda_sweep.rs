@@ -70,6 +70,27 @@ pub fn lambda_sweep(
         .collect()
 }
 
+/// As [`lambda_sweep`] for whatever driver runs: the thesis' motions only.
+///
+/// # Errors
+/// `measure_lambda_tradeoff: …` when `driver` is not a thesis motion (engine
+/// `ik` with its script: PODA, physics and a recording have no λ trade-off
+/// to measure).
+pub fn lambda_sweep_of(
+    driver: &crate::AnyDriver,
+    lambdas: &[f64],
+    seconds: f64,
+    fps: f64,
+) -> Result<Vec<LambdaPoint>, String> {
+    match driver {
+        crate::AnyDriver::Thesis(thesis) => Ok(lambda_sweep(thesis, lambdas, seconds, fps)),
+        _ => Err(
+            "measure_lambda_tradeoff: the λ trade-off is measured on a thesis motion (engine ik)"
+                .to_owned(),
+        ),
+    }
+}
+
 fn mean(values: impl Iterator<Item = Option<f64>>) -> Option<f64> {
     let (sum, count) = values
         .flatten()

@@ -9,6 +9,7 @@
 //! Pure like the crates below it: no I/O and no clocks (callers measure time).
 
 pub mod any_driver;
+pub mod apply;
 pub mod driver_for;
 pub mod lambda_sweep;
 pub mod live;
@@ -19,8 +20,10 @@ pub mod take;
 pub mod trace;
 
 pub use any_driver::AnyDriver;
+pub use apply::{Applied, EngineCommand};
+pub use gaitlab_motion::stretch::StretchOptions;
 pub use driver_for::{Overrides, Tracking, check, driver_for};
-pub use lambda_sweep::{LambdaPoint, lambda_sweep};
+pub use lambda_sweep::{LambdaPoint, lambda_sweep, lambda_sweep_of};
 pub use live::{Change, TimedChange, edit_value, poda_gait, switch_gait};
 pub use metrics::{RunMetrics, Timing};
 pub use parameters::{Parameter, parameters};

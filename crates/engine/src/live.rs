@@ -4,9 +4,8 @@
 //! the page's commands and the CLI's `--switch T:GAIT` / `--edit T:KEY=VALUE`.
 //! The drivers validate; this module routes and words the errors.
 
-use gaitlab_motion::poda::GaitError;
-
 use crate::AnyDriver;
+use crate::apply::{Applied, EngineCommand};
 
 /// The gait-value keys [`edit_value`] takes, with their units.
 pub const EDIT_KEYS: &[&str] = &[
@@ -18,38 +17,21 @@ pub const EDIT_KEYS: &[&str] = &[
     "hop_height_m",
 ];
 
-/// The engine's name as presets write it (`ik`, `poda`, `physics`).
-fn engine_name(driver: &AnyDriver) -> &'static str {
-    match driver {
-        AnyDriver::Thesis(_) | AnyDriver::Track(_) => "ik",
-        AnyDriver::Poda(_) => "poda",
-        AnyDriver::Physics(_) => "physics",
-    }
-}
-
-/// Switches the gait of a PODA or physics driver.
+/// Switches the gait of a PODA or physics driver ([`AnyDriver::apply`]'s
+/// [`EngineCommand::Gait`]).
 ///
 /// # Errors
 /// `gait: reason` when the engine has no gaits or the name is unknown for
 /// the creature; nothing changes.
 pub fn switch_gait(driver: &mut AnyDriver, name: &str) -> Result<(), String> {
-    let engine = engine_name(driver);
-    match driver {
-        AnyDriver::Physics(physics) => physics
-            .set_gait(name)
-            .map_err(|e| format!("gait: {}", e.reason)),
-        AnyDriver::Poda(poda) => poda.set_gait(name).map_err(|e| e.to_string()),
-        AnyDriver::Thesis(_) | AnyDriver::Track(_) => {
-            Err(format!("gait: engine {engine} has no gaits (use mode)"))
-        }
-    }
+    driver.apply(EngineCommand::Gait(name)).map(drop)
 }
 
-/// Sets one gait value: PODA's `period_s`, `duty_factor`, `speed_mps`,
-/// `stroke_m` (the gait model derives the others so that eq. 7–8 stay true)
-/// or `leg_force_n` (each leg's upward force during support, eq. 12–13); the
-/// physics controllers' `speed_mps` and `hop_height_m`. Returns the names of
-/// the values the gait model derived.
+/// Sets one gait value ([`EngineCommand::Value`]): PODA's `period_s`,
+/// `duty_factor`, `speed_mps`, `stroke_m` (the gait model derives the others
+/// so that eq. 7–8 stay true) or `leg_force_n` (each leg's upward force during
+/// support, eq. 12–13); the physics controllers' `speed_mps` and
+/// `hop_height_m`. Returns the names of the values the gait model derived.
 ///
 /// # Errors
 /// `key: reason` when the engine has no gait, the key is unknown, or the
@@ -59,46 +41,9 @@ pub fn edit_value(
     key: &str,
     value: f64,
 ) -> Result<Vec<&'static str>, String> {
-    let engine = engine_name(driver);
-    match driver {
-        AnyDriver::Physics(physics) => match key {
-            "speed_mps" => physics.set_speed(value).map_err(|e| e.to_string()),
-            "hop_height_m" => physics.set_hop_height(value).map_err(|e| e.to_string()),
-            _ => Err(format!(
-                "{key}: engine physics has no such gait value (speed_mps, hop_height_m)"
-            )),
-        }
-        .map(|()| Vec::new()),
-        AnyDriver::Poda(poda) => {
-            if key == "speed_mps" {
-                return poda
-                    .set_speed(value)
-                    .map(|derived| derived.derived.to_vec())
-                    .map_err(|e| e.to_string());
-            }
-            if key == "leg_force_n" {
-                return poda
-                    .set_leg_force_n(value)
-                    .map(|derived| derived.derived.to_vec())
-                    .map_err(|e| GaitError::new(key, e.reason).to_string());
-            }
-            let gait = poda.gait_mut();
-            match key {
-                "period_s" => gait.set_period(value),
-                "duty_factor" => gait.set_duty_factor(value),
-                "stroke_m" => gait.set_stroke(value),
-                _ => {
-                    return Err(format!(
-                        "{key}: not a gait value (period_s, duty_factor, speed_mps, stroke_m, leg_force_n)"
-                    ));
-                }
-            }
-            .map(|derived| derived.derived.to_vec())
-            .map_err(|e| e.to_string())
-        }
-        AnyDriver::Thesis(_) | AnyDriver::Track(_) => {
-            Err(format!("{key}: engine {engine} has no gait"))
-        }
+    match driver.apply(EngineCommand::Value { key, value })? {
+        Applied::Derived(derived) => Ok(derived),
+        _ => Ok(Vec::new()),
     }
 }
 

@@ -23,9 +23,8 @@
 
 use gaitlab_core::driver::{Driver, IkMetrics};
 use gaitlab_core::ik::IkOptions;
-use gaitlab_engine::AnyDriver;
+use gaitlab_engine::{AnyDriver, EngineCommand, StretchOptions};
 use gaitlab_engine::metrics::EffectorMetrics;
-use gaitlab_motion::stretch::StretchOptions;
 use serde::Serialize;
 use serde_json::{Value, json};
 
@@ -191,12 +190,11 @@ impl Comparison {
             .map(|(&method, options)| {
                 let mut driver = template.clone();
                 driver.set_ik_options(options.clone());
-                if let Some(thesis) = driver.thesis_mut() {
-                    thesis.set_stretch(
-                        (config.scenario == CompareScenario::Singularity)
-                            .then(StretchOptions::default),
-                    );
-                }
+                // Only the thesis' script has targets to stretch.
+                drop(driver.apply(EngineCommand::Stretch(
+                    (config.scenario == CompareScenario::Singularity)
+                        .then(StretchOptions::default),
+                )));
                 driver.reset();
                 let mut view_state = CompareView {
                     method,
@@ -224,7 +222,7 @@ impl Comparison {
     pub fn recorded(&self) -> bool {
         self.views
             .first()
-            .is_some_and(|v| v.driver().track().is_some())
+            .is_some_and(|v| v.driver().is_recording())
     }
 
     /// The overlay's scene: every view's figure in its colour (empty while
@@ -300,9 +298,8 @@ impl Comparison {
     /// Sets the thesis motion of every view.
     pub fn set_mode(&mut self, mode: gaitlab_core::preset::thesis::ThesisMode) {
         for view in &mut self.views {
-            if let Some(thesis) = view.stage.driver.thesis_mut() {
-                thesis.set_mode(mode);
-            }
+            // A recording's views have no thesis motion to change.
+            drop(view.stage.driver.apply(EngineCommand::Mode(mode)));
         }
     }
 

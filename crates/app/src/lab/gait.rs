@@ -4,6 +4,9 @@
 //! height and gains (Raibert & Hodgins 1991). Each edit goes to the engine
 //! layer's driver, which validates it; the lab only routes and words errors.
 
+use gaitlab_core::preset::Engine;
+use gaitlab_engine::{Applied, EngineCommand};
+
 use super::Lab;
 use super::gait_shape::GaitShapeEdit;
 use super::outbox::Effect;
@@ -32,7 +35,7 @@ impl Lab {
     /// value (or a value derived from it) is out of range; nothing changes.
     pub fn edit_gait(&mut self, key: &str, value: f64) -> Result<(), String> {
         let derived = gaitlab_engine::edit_value(&mut self.stage.driver, key, value)?;
-        if self.stage.driver.poda().is_some() {
+        if self.engine() == Engine::Poda {
             self.gait_derived = derived;
         }
         Ok(())
@@ -46,11 +49,22 @@ impl Lab {
     /// `scale: …` when the engine is not physics or L is outside
     /// the preset's range; nothing changes.
     pub fn set_physics_scale(&mut self, scale: f64) -> Result<(), String> {
-        let Some(driver) = self.stage.driver.physics() else {
+        if self.engine() != Engine::Physics {
             let engine = self.session.engine_name();
             return Err(format!("scale: engine {engine} has no dynamic scale"));
+        }
+        // The gait and desired speed in force, from the engine's parameter table.
+        let table = gaitlab_engine::parameters(&self.session.creature, &self.stage.driver);
+        let value = |key: &str| {
+            table
+                .iter()
+                .find(|p| p.key == key)
+                .map_or(serde_json::Value::Null, |p| p.value.clone())
         };
-        let (gait, speed) = (driver.gait().to_owned(), driver.params().speed_mps);
+        let (gait, speed) = (
+            value("scenario.physics.gait"),
+            value("scenario.physics.speed_mps"),
+        );
         let mut preset: serde_json::Value = serde_json::from_str(&self.session.preset_text())
             .map_err(|e| format!("scale: the running preset is not JSON ({e})"))?;
         let Some(physics) = preset
@@ -70,31 +84,33 @@ impl Lab {
     }
 
     /// Places a box `distance_m` ahead of the kangaroo, which jumps it
-    /// ([`gaitlab_physics::PhysicsDriver::place_obstacle_ahead`]).
+    /// (the engine layer's [`EngineCommand::ObstacleAhead`]).
     ///
     /// # Errors
     /// `obstacle: …` when the engine or gait has no jump, or the distance is
     /// out of range; nothing changes.
     pub fn place_obstacle(&mut self, distance_m: f64) -> Result<f64, String> {
-        let Some(driver) = self.stage.driver.physics_mut() else {
-            let engine = self.session.engine_name();
-            return Err(format!("obstacle: engine {engine} has no obstacles"));
-        };
-        driver.place_obstacle_ahead(distance_m)
+        match self
+            .stage
+            .driver
+            .apply(EngineCommand::ObstacleAhead(distance_m))?
+        {
+            Applied::Obstacle(at_m) => Ok(at_m),
+            _ => Ok(distance_m),
+        }
     }
 
     /// Has the physics creature follow `waypoints` (`[x, z]`, m at scale 1)
-    /// from the first ([`gaitlab_physics::PhysicsDriver::set_waypoints`]).
+    /// from the first ([`EngineCommand::Waypoints`]).
     ///
     /// # Errors
     /// `waypoints: …` when the engine is not physics or a point is out of
     /// range; nothing changes.
     pub fn set_waypoints(&mut self, waypoints: &[[f64; 2]]) -> Result<(), String> {
-        let Some(driver) = self.stage.driver.physics_mut() else {
-            let engine = self.session.engine_name();
-            return Err(format!("waypoints: engine {engine} has no waypoints"));
-        };
-        driver.set_waypoints(waypoints).map_err(|e| e.to_string())
+        self.stage
+            .driver
+            .apply(EngineCommand::Waypoints(waypoints))
+            .map(drop)
     }
 
     /// Sets a physics controller gain by name (the Gains sliders and the
@@ -104,11 +120,10 @@ impl Lab {
     /// `gain: …` when the engine is not physics, `gain.NAME: reason` for an
     /// unknown gain or a negative or non-finite value; nothing changes.
     pub fn set_gain(&mut self, name: &str, value: f64) -> Result<(), String> {
-        let engine = self.session.engine_name();
-        let Some(driver) = self.stage.driver.physics_mut() else {
-            return Err(format!("gain: engine {engine} has no controller gains"));
-        };
-        driver.set_gain(name, value)
+        self.stage
+            .driver
+            .apply(EngineCommand::Gain { name, value })
+            .map(drop)
     }
 
     /// Sets leg `leg`'s relative phase (eq. 9), the step height or the
@@ -118,23 +133,12 @@ impl Lab {
     /// `key: reason` when the engine has no gait or the value is out of
     /// range; nothing changes.
     pub fn edit_gait_shape(&mut self, edit: GaitShapeEdit<'_>) -> Result<(), String> {
-        let engine = self.session.engine_name();
-        let Some(driver) = self.stage.driver.poda_mut() else {
-            return Err(format!("gait: engine {engine} has no gait"));
+        let command = match edit {
+            GaitShapeEdit::Phase { leg, phase } => EngineCommand::Phase { leg, phase },
+            GaitShapeEdit::StepHeight(height) => EngineCommand::StepHeight(height),
+            GaitShapeEdit::TransferKeys(keys) => EngineCommand::TransferKeys(keys),
         };
-        match edit {
-            GaitShapeEdit::Phase { leg, phase } => driver
-                .gait_mut()
-                .set_phase(leg, phase)
-                .map(drop)
-                .map_err(|e| format!("phases[{leg}]: {}", e.reason)),
-            GaitShapeEdit::StepHeight(height) => {
-                driver.set_step_height(height).map_err(|e| e.to_string())
-            }
-            GaitShapeEdit::TransferKeys(keys) => {
-                driver.set_transfer_keys(keys).map_err(|e| e.to_string())
-            }
-        }
+        self.stage.driver.apply(command).map(drop)
     }
 
     /// Sets a PODA leg joint's center angle (radians, or metres for prismatic
@@ -143,15 +147,14 @@ impl Lab {
     /// # Errors
     /// `center.…: reason`; nothing changes.
     pub fn set_center(&mut self, joint: &str, center: f64, gain: f64) -> Result<(), String> {
-        let engine = self.session.engine_name();
-        let Some(driver) = self.stage.driver.poda_mut() else {
-            return Err(format!(
-                "center: engine {engine} sets centers in its IK panel"
-            ));
-        };
-        driver
-            .set_center(joint, center, gain)
-            .map_err(|e| e.to_string())
+        self.stage
+            .driver
+            .apply(EngineCommand::Center {
+                joint,
+                center,
+                gain,
+            })
+            .map(drop)
     }
 
     /// Replaces the PODA body path (the body joins it where it is closest).
@@ -159,11 +162,7 @@ impl Lab {
     /// # Errors
     /// `path.…: reason`; nothing changes.
     pub fn set_path(&mut self, spec: &gaitlab_core::preset::PathSpec) -> Result<(), String> {
-        let engine = self.session.engine_name();
-        let Some(driver) = self.stage.driver.poda_mut() else {
-            return Err(format!("path: engine {engine} has no body path"));
-        };
-        driver.set_path(spec).map_err(|e| e.to_string())?;
+        self.stage.driver.apply(EngineCommand::Path(spec))?;
         self.refresh_scene();
         Ok(())
     }

@@ -2,7 +2,7 @@
 //! it on the running thesis motion (She 2006 §4.4.3; docs/she-2006.md
 //! "Choosing λ").
 
-use gaitlab_engine::lambda_sweep;
+use gaitlab_engine::lambda_sweep_of;
 use gaitlab_engine::lambda_sweep::{SWEEP_LAMBDAS_M, SWEEP_SECONDS};
 
 use super::Lab;
@@ -18,17 +18,11 @@ impl Lab {
     /// When the running engine is not the thesis' (PODA, physics, a target
     /// recording).
     pub fn measure_lambda_tradeoff(&mut self) -> Result<(), String> {
-        let Some(driver) = self.stage.driver.thesis() else {
-            return Err(
-                "measure_lambda_tradeoff: the λ trade-off is measured on a thesis motion (engine ik)"
-                    .to_owned(),
-            );
-        };
         let fps = 1.0 / self.frame_seconds();
-        let points = lambda_sweep(driver, &SWEEP_LAMBDAS_M, SWEEP_SECONDS, fps);
+        let points = lambda_sweep_of(&self.stage.driver, &SWEEP_LAMBDAS_M, SWEEP_SECONDS, fps)?;
         self.lambda_tradeoff = Some(LambdaTradeoff {
             preset: self.session.creature.name.clone(),
-            mode: driver.mode().name().to_owned(),
+            mode: self.session.settings.mode.name().to_owned(),
             seconds: SWEEP_SECONDS,
             points,
         });

@@ -6,14 +6,12 @@
 //! an [`Outbox`] of effects the web glue drains. Front ends (eframe on the
 //! web, egui_kittest natively) call [`Lab::ui`] once per frame.
 
-use gaitlab_core::RootTransform;
 use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::{IkOptions, Method};
 use gaitlab_core::preset::Creature;
 use gaitlab_core::preset::Engine;
 use gaitlab_core::preset::thesis::ThesisMode;
-use gaitlab_engine::{AnyDriver, Take};
-use glam::DMat3;
+use gaitlab_engine::{AnyDriver, Applied, EngineCommand, Take};
 
 use crate::history::History;
 use crate::render::Camera;
@@ -265,9 +263,8 @@ impl Lab {
     /// Sets the thesis motion.
     pub fn set_mode(&mut self, mode: ThesisMode) {
         self.session.settings.mode = mode;
-        if let Some(driver) = self.stage.driver.thesis_mut() {
-            driver.set_mode(mode);
-        }
+        // Other engines keep the mode for when a thesis preset runs.
+        drop(self.stage.driver.apply(EngineCommand::Mode(mode)));
         if let Some(compare) = self.compare.as_mut() {
             compare.set_mode(mode);
         }
@@ -290,12 +287,10 @@ impl Lab {
         &mut self,
         params: gaitlab_core::preset::thesis::ThesisParams,
     ) -> Result<(), String> {
-        let Some(driver) = self.stage.driver.thesis_mut() else {
-            return Err("scenario.thesis: engine poda has no thesis parameters".to_owned());
-        };
-        driver
-            .set_params(params)
-            .map_err(|e| format!("scenario.thesis.{e}"))
+        self.stage
+            .driver
+            .apply(EngineCommand::Thesis(Box::new(params)))
+            .map(drop)
     }
 
     /// Applies the IK options in the settings (after a panel edit).
@@ -309,18 +304,15 @@ impl Lab {
     pub fn set_heading_deg(&mut self, degrees: f64) {
         let heading_deg = degrees.clamp(-180.0, 180.0);
         self.session.settings.heading_deg = heading_deg;
-        if let Some(driver) = self.stage.driver.physics_mut() {
-            // A running creature turns toward the new heading (no reset).
-            driver.set_heading(heading_deg.to_radians());
-            return;
+        // A running physics creature turns toward the new heading; the
+        // others start again facing it.
+        if let Ok(Applied::Restart) = self
+            .stage
+            .driver
+            .apply(EngineCommand::Heading(heading_deg.to_radians()))
+        {
+            self.reset();
         }
-        if let Some(driver) = self.stage.driver.thesis_mut() {
-            driver.set_origin(RootTransform {
-                rotation: DMat3::from_rotation_y(heading_deg.to_radians()),
-                ..RootTransform::default()
-            });
-        }
-        self.reset();
     }
 
     /// The engine of the creature being animated.
@@ -370,7 +362,7 @@ impl Lab {
         let creature = &self.session.creature;
         self.plots
             .resolve(creature, &self.session.settings.plot_joints);
-        self.stage.history = if self.stage.driver.physics().is_some() {
+        self.stage.history = if self.engine() == Engine::Physics {
             self.plots.show_physics_attitude();
             History::new(PHYSICS_BODY_SERIES.map(str::to_owned).to_vec())
         } else {

@@ -26,7 +26,7 @@ const JITTER_FLOOR: f64 = 1e-6;
 /// The section, for the running thesis motion: its button and, once
 /// measured, the plots and whether they belong to what runs now.
 pub fn section(ui: &mut egui::Ui, lab: &mut Lab) {
-    let Some(mode) = lab.stage.driver.thesis().map(|d| d.mode()) else {
+    let Some(mode) = lab.stage.driver.thesis_mode() else {
         return;
     };
     ui.collapsing("λ trade-off (§4.4.3)", |ui| {
