@@ -10,23 +10,28 @@
 
 pub mod any_driver;
 pub mod apply;
+pub mod catalog;
 pub mod driver_for;
 pub mod lambda_sweep;
 pub mod live;
 pub mod metrics;
 pub mod parameters;
+pub mod readout;
 pub mod switch;
 pub mod take;
 pub mod trace;
 
 pub use any_driver::AnyDriver;
 pub use apply::{Applied, EngineCommand};
-pub use gaitlab_motion::stretch::StretchOptions;
 pub use driver_for::{Overrides, Tracking, check, driver_for};
+pub use gaitlab_motion::stretch::StretchOptions;
 pub use lambda_sweep::{LambdaPoint, lambda_sweep, lambda_sweep_of};
 pub use live::{Change, TimedChange, edit_value, poda_gait, switch_gait};
 pub use metrics::{RunMetrics, Timing};
 pub use parameters::{Parameter, parameters};
+pub use readout::{
+    DriverKind, PhysicsReadout, PodaPathReadout, PodaReadout, RouteReadout, ThesisReadout,
+};
 pub use switch::bundled_for_engine;
 pub use take::{FrameWriter, MAX_TAKE_S, Take};
 pub use trace::StepTrace;

@@ -408,7 +408,10 @@ impl Lab {
         }
         self.apply_ik_command(c)?;
         if let Some(x) = c.heading_deg {
-            self.set_heading_deg(range("heading_deg", x, -180.0, 180.0)?);
+            let heading =
+                gaitlab_core::params::row(gaitlab_core::params::SCENARIO_PARAMS, "heading_deg")
+                    .check_command("heading_deg", x)?;
+            self.set_heading_deg(heading);
         }
         if let Some(plots) = c.plots {
             self.session.settings.plots = plots;

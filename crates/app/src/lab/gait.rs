@@ -74,8 +74,8 @@ impl Lab {
             return Err("scale: the running preset has no scenario.physics".to_owned());
         };
         physics.insert("scale".into(), scale.into());
-        physics.insert("gait".into(), gait.into());
-        physics.insert("speed_mps".into(), speed.into());
+        physics.insert("gait".into(), gait);
+        physics.insert("speed_mps".into(), speed);
         let name = self.session.settings.preset.clone();
         self.set_custom_preset(&preset.to_string())
             .map_err(|e| e.replacen("preset: ", "", 1))?;

@@ -10,6 +10,7 @@ use std::ops::Range;
 
 use egui::Color32;
 use egui_plot::{GridMark, HoverPosition, Line, Plot, PlotPoints};
+use gaitlab_engine::DriverKind;
 
 use crate::plot_scale::{few_round_marks, tick_label};
 
@@ -69,7 +70,7 @@ impl Lab {
     /// The running engine's plots by name ([`crate::lesson::PLOT_NAMES`]),
     /// in [`Lab::plot_cell`]'s order: four for physics, two for IK and PODA.
     fn plot_names(&self) -> &'static [&'static str] {
-        if self.stage.driver.physics().is_some() {
+        if self.stage.driver.kind() == DriverKind::Physics {
             &["lengths", "force", "attitude", "state"]
         } else {
             &["errors", "joints"]
@@ -117,7 +118,7 @@ impl Lab {
 
     /// Plot `k` of [`Lab::plot_names`], filling `ui`.
     fn plot_cell(&mut self, ui: &mut egui::Ui, k: usize) {
-        if self.stage.driver.physics().is_some() {
+        if self.stage.driver.kind() == DriverKind::Physics {
             let body = &self.stage.history;
             let attitude = &self.plots.joint_history;
             let (title, history, spec) = match k {

@@ -340,8 +340,8 @@ fn notice_ui(ui: &mut egui::Ui, scenario: CompareScenario, recorded: bool) {
 fn posture_pull(view: &crate::compare::CompareView) -> String {
     let gain = view
         .driver()
-        .thesis()
-        .map_or(0.0, |t| t.params().posture_gain);
+        .thesis_readout()
+        .map_or(0.0, |t| t.params.posture_gain);
     if gain > 0.0 {
         format!("{gain:.2} (lab)")
     } else {

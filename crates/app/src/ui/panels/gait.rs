@@ -4,8 +4,8 @@
 //! support and transfer durations, and a footfall diagram — each leg's
 //! support bar over one cycle (eq. 9) with a live cursor.
 
-use gaitlab_core::driver::Driver as _;
-use gaitlab_motion::poda::gait_names;
+use gaitlab_engine::DriverKind;
+use gaitlab_engine::readout::{Footfall, JointCenterReadout};
 
 use super::panel::Panel;
 use crate::lab::{GaitShapeEdit, Lab};
@@ -19,7 +19,7 @@ impl Panel for GaitPanel {
     }
 
     fn shown_for(&self, lab: &Lab) -> bool {
-        lab.driver().poda().is_some()
+        lab.driver().kind() == DriverKind::Poda
     }
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
@@ -35,16 +35,15 @@ const LABEL_FONT_PT: f32 = 13.0;
 
 /// The gait panel (shown for PODA creatures).
 fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
-    let Some(driver) = lab.driver().poda() else {
+    let Some(gait) = lab.driver().poda_readout() else {
         return;
     };
-    let current = driver.gait_name().to_owned();
-    let legs = driver.gait().leg_count();
-    let gait = driver.gait().clone();
-    let force_n = driver.leg_force_n();
-    let weight_share = driver.weight_share_n();
-    let shifting = driver.is_shifting();
-    let stability = driver.stability();
+    let current = gait.gait.clone();
+    let force_n = gait.leg_force_n;
+    let weight_share = gait.weight_share_n;
+    let shifting = gait.shifting;
+    let stability = gait.stability;
+    let leg_names: Vec<&str> = gait.legs.iter().map(|leg| leg.name.as_str()).collect();
     let mut chosen = None;
     let mut edits: Vec<(&str, f64)> = Vec::new();
     egui::CollapsingHeader::new("Gait (PODA)")
@@ -53,7 +52,7 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
             egui::ComboBox::from_label("Gait")
                 .selected_text(current.as_str())
                 .show_ui(ui, |ui| {
-                    for name in gait_names(legs) {
+                    for &name in &gait.gaits {
                         if ui
                             .selectable_label(name == current, name)
                             .on_hover_text("Switch to this gait: each leg takes it on at its own mid-stance, over a few strides")
@@ -68,28 +67,28 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
             for (key, mut value, range, label, hint) in [
                 (
                     "period_s",
-                    gait.period_s(),
+                    gait.period_s,
                     0.2..=3.0,
                     "Period P (s)",
                     "Time of one gait cycle, seconds (eq. 7–8 derive the rest)",
                 ),
                 (
                     "duty_factor",
-                    gait.duty_factor(),
+                    gait.duty_factor,
                     0.05..=0.95,
                     "Duty factor",
                     "Fraction of the period each leg supports (unitless, 0–1)",
                 ),
                 (
                     "speed_mps",
-                    gait.speed_mps(),
+                    gait.speed_mps,
                     0.02..=4.0,
                     "Body speed (m/s)",
                     "Forward body speed along the path, metres per second",
                 ),
                 (
                     "stroke_m",
-                    gait.stroke_m(),
+                    gait.stroke_m,
                     0.01..=1.5,
                     "Stroke (m)",
                     "Distance a supporting foot travels relative to the body, metres",
@@ -118,8 +117,7 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
             }
             ui.label(format!(
                 "support {:.3} s · transfer {:.3} s (eq. 7: support = stroke / speed)",
-                gait.support_s(),
-                gait.transfer_s()
+                gait.support_s, gait.transfer_s
             ));
             if !lab.gait_derived().is_empty() {
                 ui.weak(format!("derived: {}", lab.gait_derived().join(", ")));
@@ -132,7 +130,7 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
                          the diagram shows the gait they are moving to (docs/poda.md, Leg by leg)",
                     );
             }
-            footfall_diagram(ui, lab);
+            footfall_diagram(ui, &leg_names, &gait.footfall);
         });
     if let Some(name) = chosen
         && name != current
@@ -149,50 +147,22 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
     centers(ui, lab);
 }
 
-/// One joint's row in the centers panel: name, center, gain, revolute.
-struct CenterRow {
-    joint: String,
-    center: f64,
-    gain: f64,
-    revolute: bool,
-}
-
 /// Center angle and gain of every leg joint (PODA eq. 6: the null-space term
 /// pulls each joint toward its center with its gain, without moving the foot).
 fn centers(ui: &mut egui::Ui, lab: &mut Lab) {
-    let Some(driver) = lab.driver().poda() else {
+    let Some(readout) = lab.driver().poda_readout() else {
         return;
     };
     let mut edit: Option<(String, f64, f64)> = None;
     ui.collapsing("Center angles and gains", |ui| {
-        let skeleton = driver.skeleton();
-        let legs: Vec<(String, Vec<CenterRow>)> = driver
-            .leg_joints()
-            .map(|(name, joints)| {
-                let rows = joints
-                    .iter()
-                    .filter_map(|&j| skeleton.joints().get(j))
-                    .map(|joint| {
-                        let revolute = joint.kind == gaitlab_core::JointKind::Revolute;
-                        CenterRow {
-                            joint: joint.name.clone(),
-                            center: joint.center,
-                            gain: joint.gain,
-                            revolute,
-                        }
-                    })
-                    .collect();
-                (name.to_owned(), rows)
-            })
-            .collect();
-        for (leg, rows) in legs {
-            ui.collapsing(leg, |ui| {
-                for CenterRow {
+        for leg in readout.legs {
+            ui.collapsing(leg.name, |ui| {
+                for JointCenterReadout {
                     joint,
                     center,
                     gain,
                     revolute,
-                } in rows
+                } in leg.joints
                 {
                     ui.horizontal(|ui| {
                         ui.label(joint.as_str());
@@ -235,13 +205,13 @@ fn centers(ui: &mut egui::Ui, lab: &mut Lab) {
 /// the key leg positions of the transfer trajectory (PODA "Leg Support and
 /// Transfer Trajectories").
 fn shape(ui: &mut egui::Ui, lab: &mut Lab) {
-    let Some(driver) = lab.driver().poda() else {
+    let Some(readout) = lab.driver().poda_readout() else {
         return;
     };
-    let names: Vec<String> = driver.leg_names().map(str::to_owned).collect();
-    let mut phases = driver.gait().phases().to_vec();
-    let mut step_height = driver.params().step_height_m;
-    let mut keys = driver.params().transfer_keys.clone();
+    let names: Vec<String> = readout.legs.into_iter().map(|leg| leg.name).collect();
+    let mut phases = readout.phases;
+    let mut step_height = readout.step_height_m;
+    let mut keys = readout.transfer_keys;
     let mut edits: Vec<GaitShapeEdit<'_>> = Vec::new();
     let mut keys_changed = false;
     ui.collapsing("Phases and steps", |ui| {
@@ -287,12 +257,7 @@ fn shape(ui: &mut egui::Ui, lab: &mut Lab) {
 
 /// Each leg's support bar over one cycle (filled while the foot is planted),
 /// and a cursor at the current time within the cycle.
-fn footfall_diagram(ui: &mut egui::Ui, lab: &Lab) {
-    let Some(driver) = lab.driver().poda() else {
-        return;
-    };
-    let gait = driver.gait();
-    let names: Vec<&str> = driver.leg_names().collect();
+fn footfall_diagram(ui: &mut egui::Ui, names: &[&str], footfall: &Footfall) {
     let font = egui::FontId::proportional(LABEL_FONT_PT);
     // As wide as the longest name, so none is clipped.
     let label_width = names
@@ -313,12 +278,10 @@ fn footfall_diagram(ui: &mut egui::Ui, lab: &Lab) {
     let bar = visuals.selection.bg_fill;
     let track = visuals.extreme_bg_color;
     let text = visuals.text_color();
-    let period = gait.period_s();
-    let t0 = driver.time() - driver.time().rem_euclid(period);
     let x0 = rect.left() + label_width;
     let span = rect.right() - x0;
-    let columns: u32 = 120;
-    for (i, name) in names.iter().enumerate() {
+    let x = |fraction: f64| x0 + span * fraction as f32;
+    for (i, (name, support)) in names.iter().zip(&footfall.support).enumerate() {
         let top = rect.top() + ROW_HEIGHT * i as f32;
         painter.text(
             egui::pos2(rect.left(), top + ROW_HEIGHT * 0.5),
@@ -332,35 +295,21 @@ fn footfall_diagram(ui: &mut egui::Ui, lab: &Lab) {
             egui::pos2(rect.right(), top + ROW_HEIGHT - 2.0),
         );
         painter.rect_filled(row, 0.0, track);
-        // Merge the supporting columns into runs: one bar per support phase.
-        let mut run_start: Option<u32> = None;
-        for c in 0..=columns {
-            let supporting = c < columns
-                && gait
-                    .leg_phase(i, t0 + (f64::from(c) + 0.5) / f64::from(columns) * period)
-                    .is_some_and(|p| p.support);
-            match (supporting, run_start) {
-                (true, None) => run_start = Some(c),
-                (false, Some(start)) => {
-                    let x = |c: u32| x0 + span * c as f32 / columns as f32;
-                    painter.rect_filled(
-                        egui::Rect::from_min_max(
-                            egui::pos2(x(start), row.top()),
-                            egui::pos2(x(c), row.bottom()),
-                        ),
-                        1.0,
-                        bar,
-                    );
-                    run_start = None;
-                }
-                _ => {}
-            }
+        // One bar per support phase.
+        for &[from, to] in support {
+            painter.rect_filled(
+                egui::Rect::from_min_max(
+                    egui::pos2(x(from), row.top()),
+                    egui::pos2(x(to), row.bottom()),
+                ),
+                1.0,
+                bar,
+            );
         }
     }
-    let now = ((driver.time() - t0) / period) as f32;
-    let x = x0 + span * now.clamp(0.0, 1.0);
+    let now = x(footfall.now.clamp(0.0, 1.0));
     painter.line_segment(
-        [egui::pos2(x, rect.top()), egui::pos2(x, rect.bottom())],
+        [egui::pos2(now, rect.top()), egui::pos2(now, rect.bottom())],
         egui::Stroke::new(1.5, visuals.warn_fg_color),
     );
 }

@@ -7,7 +7,8 @@
 use gaitlab_core::preset::thesis::{
     ListingTarget, TargetScript, ThesisMode, ThesisParams, WoundForm,
 };
-use gaitlab_motion::validate_params;
+use gaitlab_engine::DriverKind;
+use gaitlab_engine::catalog::check_thesis_params;
 
 use super::panel::Panel;
 use crate::lab::Lab;
@@ -21,7 +22,7 @@ impl Panel for MotionPanel {
     }
 
     fn shown_for(&self, lab: &Lab) -> bool {
-        lab.driver().thesis().is_some()
+        lab.driver().kind() == DriverKind::Thesis
     }
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
@@ -38,7 +39,7 @@ impl Panel for SpeedAndTargetsPanel {
     }
 
     fn shown_for(&self, lab: &Lab) -> bool {
-        lab.driver().thesis().is_some()
+        lab.driver().kind() == DriverKind::Thesis
     }
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
@@ -99,10 +100,10 @@ fn motion(ui: &mut egui::Ui, lab: &mut Lab) {
         if mode != lab.session.settings.mode {
             lab.set_mode(mode);
         }
-        let Some(thesis) = lab.driver().thesis() else {
+        let Some(thesis) = lab.driver().thesis_readout() else {
             return;
         };
-        let mut params = thesis.params().clone();
+        let mut params = thesis.params;
         let mut changed = false;
         ui.label("Targets:");
         for script in TargetScript::ALL {
@@ -154,9 +155,7 @@ fn motion(ui: &mut egui::Ui, lab: &mut Lab) {
 }
 
 fn apply_params(lab: &mut Lab, params: ThesisParams) {
-    let result = validate_params(&params)
-        .map_err(|e| e.to_string())
-        .and_then(|()| lab.set_params(params));
+    let result = check_thesis_params(&params).and_then(|()| lab.set_params(params));
     if let Err(error) = result {
         lab.report_error(error);
     }
@@ -165,11 +164,11 @@ fn apply_params(lab: &mut Lab, params: ThesisParams) {
 /// Speed and target-position panels: the thesis' step frequency, slowdown and
 /// speed, and the targets of the script in use.
 fn speed_and_targets(ui: &mut egui::Ui, lab: &mut Lab) {
-    let Some(thesis) = lab.driver().thesis() else {
+    let Some(thesis) = lab.driver().thesis_readout() else {
         return;
     };
-    let mut params = thesis.params().clone();
-    let script_speed = thesis.script().speed_mps();
+    let mut params = thesis.params;
+    let script_speed = thesis.script_speed_mps;
     let running = lab.session.settings.mode.running();
     let mut changed = false;
     ui.collapsing("Speed", |ui| {

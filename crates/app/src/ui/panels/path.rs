@@ -4,6 +4,7 @@
 //! body's place on it, and ready-made paths.
 
 use gaitlab_core::preset::{PathKindSpec, PathSpec};
+use gaitlab_engine::DriverKind;
 use glam::DVec2;
 
 use super::ground_view::GroundView;
@@ -19,7 +20,7 @@ impl Panel for PathPanel {
     }
 
     fn shown_for(&self, lab: &Lab) -> bool {
-        lab.driver().poda().is_some()
+        lab.driver().kind() == DriverKind::Poda
     }
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
@@ -61,25 +62,19 @@ fn preset_path(name: &str, start: DVec2) -> PathSpec {
 
 /// The path panel (shown for PODA creatures).
 fn path(ui: &mut egui::Ui, lab: &mut Lab) {
-    let Some(driver) = lab.driver().poda() else {
+    if lab.driver().kind() != DriverKind::Poda {
         return;
-    };
+    }
     // Filled only while the panel is open: the edited path.
     let mut edited: Option<PathSpec> = None;
     ui.collapsing("Body path", |ui| {
-        let mut spec = driver.path().to_spec();
+        // Read only while the panel is open: the path sampled along its length.
+        let Some(path) = lab.driver().poda_path() else {
+            return;
+        };
+        let mut spec = path.spec;
         let mut changed = false;
-        let body = driver
-            .ground_pose(gaitlab_core::driver::Driver::time(driver))
-            .position;
-        let path = driver.path();
-        let n = 120;
-        let samples: Vec<DVec2> = (0..=n)
-            .map(|k| {
-                path.sample(path.length_m() * f64::from(k) / f64::from(n))
-                    .position
-            })
-            .collect();
+        let body = path.body;
         ui.horizontal(|ui| {
             for (label, name) in [
                 ("Straight", "straight"),
@@ -106,15 +101,14 @@ fn path(ui: &mut egui::Ui, lab: &mut Lab) {
                 .on_hover_text("Smoother spline near (not through) the control points")
                 .changed();
         });
-        let closest = path.sample(path.closest_distance(body)).position;
-        changed |= top_down(ui, &mut spec, &samples, (body, closest));
-        let (now, most) = (driver.path_error_m(), driver.path_error_max_m());
+        changed |= top_down(ui, &mut spec, &path.samples, (body, path.closest));
+        let (now, most) = (path.error_m, path.error_max_m);
         ui.label(format!(
             "Body off its path: {:.0} mm now, {:.0} mm at most",
             now * 1e3,
             most * 1e3
         ))
-        .on_hover_text(if driver.params().turn_within_reach {
+        .on_hover_text(if path.turn_within_reach {
             "The body turns no tighter than its legs reach and waits for nothing: on a \
              bend its legs cannot take it cuts the corner (the lab's reading of the \
              paper's horizontal control, scenario.poda.turn_within_reach), and the feet stay planted."

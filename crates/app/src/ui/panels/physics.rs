@@ -3,10 +3,7 @@
 //! state machine's state (Figure 4), and the live Table-2 figures beside the
 //! paper's animation column.
 
-use gaitlab_core::driver::Driver as _;
-use gaitlab_physics::control::gait_controller::gait_names;
-use gaitlab_physics::control::tested_speeds::{tested_scales, tested_speeds_mps};
-use gaitlab_physics::engine::table2::compare;
+use gaitlab_engine::DriverKind;
 
 use super::panel::Panel;
 use crate::lab::Lab;
@@ -20,7 +17,7 @@ impl Panel for PhysicsPanel {
     }
 
     fn shown_for(&self, lab: &Lab) -> bool {
-        lab.driver().physics().is_some()
+        lab.driver().kind() == DriverKind::Physics
     }
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
@@ -30,30 +27,26 @@ impl Panel for PhysicsPanel {
 
 /// The physics panel (shown for physics creatures).
 fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
-    let Some(driver) = lab.driver().physics() else {
+    let Some(readout) = lab.driver().physics_readout() else {
         return;
     };
-    let current = driver.gait().to_owned();
-    let names = gait_names(driver.sim().creature.species);
-    let tested = tested_speeds_mps(driver.sim().creature.species, &current);
-    let tested_scale = tested_scales(driver.sim().creature.species, &current);
-    let mut speed = driver.params().speed_mps;
-    let mut hop = driver
-        .hop_height_m()
-        .or(driver.params().hop_height_m)
-        .unwrap_or(0.1);
-    let summary = driver.summary();
-    let leg_names: Vec<&str> = driver.leg_names().collect();
-    let phase = driver.phase_name();
-    let time = driver.time();
-    let resets = driver.resets();
-    let gains = driver.gains();
-    let additions = driver.lab_additions();
-    let on_cycle = driver.started_on_cycle();
-    let to_start = driver.switch_to_start().join(", ");
+    let current = readout.gait;
+    let names = readout.gaits;
+    let tested = readout.tested_speeds_mps;
+    let tested_scale = readout.tested_scales;
+    let mut speed = readout.speed_mps;
+    let mut hop = readout.hop_height_m.unwrap_or(0.1);
+    let summary = readout.figures;
+    let phase = readout.phase;
+    let time = readout.time_s;
+    let resets = readout.resets;
+    let gains = readout.gains;
+    let additions = readout.lab_additions;
+    let on_cycle = readout.started_on_cycle;
+    let to_start = readout.switch_to_start.join(", ");
     // The running creature's L; the slider below clamps its own copy to
     // its range, so a scale set from a command or a file is judged as it is.
-    let running_scale = driver.params().scale;
+    let running_scale = readout.scale;
     let mut scale = running_scale;
     let mut new_scale = None;
     let mut place_box = false;
@@ -164,7 +157,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 }
             });
             ui.label(format!("state: {phase} · t = {time:.2} s · resets: {resets}"));
-            let (text, hover) = if additions.clone().next().is_none() {
+            let (text, hover) = if additions.is_empty() {
                 (
                     "Lab's additions: none".to_owned(),
                     "This gait runs without any of the lab's named additions (docs/physics.md, \"The lab's additions\", lists them and what else differs from the paper)",
@@ -173,7 +166,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 (
                     format!(
                         "Lab's additions (not in the paper): {}",
-                        additions.collect::<Vec<_>>().join(", ").replace('_', " ")
+                        additions.join(", ").replace('_', " ")
                     ),
                     "What gaitlab adds to the paper's control for this gait; set them in the preset's scenario.physics.lab_additions (docs/physics.md, \"The lab's additions\")",
                 )
@@ -203,7 +196,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                  within a few ms on the stiff ground springs, which hold them whatever the \
                  ratio; the paper saw almost 2.0 for up to 10 ms (docs/physics.md).",
             );
-            let rows = compare(&summary, &current, &leg_names);
+            let rows = &readout.table2;
             if rows.is_empty() {
                 ui.label("Table 2 has no column for this gait.");
             } else {
@@ -220,14 +213,14 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                         ui.strong("live");
                         ui.strong("diff");
                         ui.end_row();
-                        for c in &rows {
-                            ui.label(c.row.label);
-                            ui.label(format!("{:.3}", c.row.animation));
+                        for c in rows {
+                            ui.label(c.quantity);
+                            ui.label(format!("{:.3}", c.paper));
                             match c.measured {
                                 Some(v) => ui.label(format!("{v:.3}")),
                                 None => ui.label("—"),
                             };
-                            match (c.row.quantity.is_input(), c.diff_pct()) {
+                            match (c.input, c.diff_pct) {
                                 (true, _) => ui.label("input"),
                                 (false, Some(d)) => ui.label(format!("{d:+.0} %")),
                                 (false, None) => ui.label(""),

@@ -1,6 +1,7 @@
 //! The PODA gait panel's static-stability lines (issue 21 item 3): feet
 //! down, the margin of the body's centre over their support polygon
-//! ([`gaitlab_motion::poda::stability`]), and a warning when a walk leaves it.
+//! (the engine layer's [`gaitlab_engine::readout::StabilityReadout`]), and a
+//! warning when a walk leaves it.
 
 /// Share of a period above which a walk is called statically unstable.
 pub const UNSTABLE_WARNING_SHARE: f64 = 0.05;
@@ -9,7 +10,7 @@ pub const UNSTABLE_WARNING_SHARE: f64 = 0.05;
 /// body's centre left the support polygon for part of the last period.
 pub(super) fn stability_lines(
     ui: &mut egui::Ui,
-    report: gaitlab_motion::poda::stability::StabilityReport,
+    report: gaitlab_engine::readout::StabilityReadout,
 ) {
     let margin = match report.margin_m {
         Some(m) => format!("stability margin {:+.0} mm", m * 1e3),

@@ -20,8 +20,8 @@ impl Panel for WaypointsPanel {
 
     fn shown_for(&self, lab: &Lab) -> bool {
         lab.driver()
-            .physics()
-            .is_some_and(|d| d.sim().creature.model.free_base())
+            .physics_route()
+            .is_some_and(|route| route.steerable)
     }
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
@@ -43,16 +43,13 @@ pub fn square(at: DVec2, side_m: f64) -> Vec<[f64; 2]> {
 }
 
 fn waypoints(ui: &mut egui::Ui, lab: &mut Lab) {
-    let Some(driver) = lab.driver().physics() else {
+    let Some(route) = lab.driver().physics_route() else {
         return;
     };
-    let l = driver.params().scale;
-    let sim = driver.sim();
-    let com = gaitlab_physics::dynamics::energy::center_of_mass(&sim.creature.model, &sim.data);
-    // Waypoints are metres at scale 1; the creature's place too, here.
-    let body = DVec2::new(com.x, com.z) / l;
-    let mut points = driver.waypoints().to_vec();
-    let next = driver.waypoint();
+    // Waypoints are metres at scale 1; the creature's place too.
+    let body = route.body_m;
+    let mut points = route.waypoints;
+    let next = route.next_waypoint;
     let mut changed = false;
     ui.collapsing("Path (waypoints)", |ui| {
         ui.horizontal(|ui| {
