@@ -7,7 +7,7 @@
 //! velocity jitter and limit hits; per effector, how far its target is out of
 //! its limb's reach, the errors over reachable and unreachable frames and the
 //! limb's oscillation (docs/ik-metrics.md). The "singularity" scenario pulls every limb
-//! target to about its full reach ([`gaitlab_motion::stretch`]). Each view is a
+//! target to about its full reach ([`gaitlab_engine::StretchOptions`]). Each view is a
 //! [`Stage`] over its own driver, as the lab's single view is.
 //!
 //! # The `compare` command and state (DESIGN.md "Browser")
@@ -23,8 +23,8 @@
 
 use gaitlab_core::driver::{Driver, IkMetrics};
 use gaitlab_core::ik::IkOptions;
-use gaitlab_engine::{AnyDriver, EngineCommand, StretchOptions};
 use gaitlab_engine::metrics::EffectorMetrics;
+use gaitlab_engine::{AnyDriver, EngineCommand, StretchOptions};
 use serde::Serialize;
 use serde_json::{Value, json};
 
@@ -192,8 +192,7 @@ impl Comparison {
                 driver.set_ik_options(options.clone());
                 // Only the thesis' script has targets to stretch.
                 drop(driver.apply(EngineCommand::Stretch(
-                    (config.scenario == CompareScenario::Singularity)
-                        .then(StretchOptions::default),
+                    (config.scenario == CompareScenario::Singularity).then(StretchOptions::default),
                 )));
                 driver.reset();
                 let mut view_state = CompareView {

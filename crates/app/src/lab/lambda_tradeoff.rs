@@ -2,8 +2,8 @@
 //! it on the running thesis motion (She 2006 §4.4.3; docs/she-2006.md
 //! "Choosing λ").
 
-use gaitlab_engine::lambda_sweep_of;
 use gaitlab_engine::lambda_sweep::{SWEEP_LAMBDAS_M, SWEEP_SECONDS};
+use gaitlab_engine::lambda_sweep_of;
 
 use super::Lab;
 use crate::lambda_tradeoff::LambdaTradeoff;

@@ -419,10 +419,9 @@ impl Lab {
     /// After a step of the single view: the plots, the take and the footprints.
     fn record_frame(&mut self) {
         let stage = &mut self.stage;
-        if let Some(physics) = stage.driver.physics_mut() {
-            let message = physics.take_message();
-            let probe = physics.probe();
-            let t = physics.time();
+        if let Some(probe) = stage.driver.physics_probe() {
+            let message = stage.driver.take_message();
+            let t = probe.time_s;
             stage.history.push(
                 t,
                 [

@@ -4,7 +4,7 @@
 
 use std::collections::VecDeque;
 
-use gaitlab_engine::AnyDriver;
+use gaitlab_engine::{AnyDriver, DriverKind};
 use glam::DVec3;
 
 use crate::render::Scene;
@@ -44,9 +44,6 @@ impl Overlays {
 
     /// Records a footprint for every PODA foot that landed since the last frame.
     pub fn note_footprints(&mut self, driver: &AnyDriver) {
-        let Some(driver) = driver.poda() else {
-            return;
-        };
         for (leg, (target, support)) in driver.foot_targets().enumerate() {
             if leg >= self.last_planted.len() {
                 self.last_planted.resize(leg + 1, DVec3::NAN);
@@ -65,34 +62,18 @@ impl Overlays {
     /// physics trunk and obstacles, or PODA's footprints, footholds and path
     /// ahead when targets are drawn.
     pub fn add_to(&self, scene: &mut Scene, driver: &AnyDriver, view: &ViewOptions) {
-        if let Some(driver) = driver.physics() {
-            let boxes = driver.sim().terrain.obstacles.iter().map(|o| {
-                (
-                    DVec3::new(o.min_xz[0], 0.0, o.min_xz[1]),
-                    DVec3::new(o.max_xz[0], o.height_m, o.max_xz[1]),
-                )
-            });
-            scene.add_physics_overlay(driver.trunk_capsule(), boxes);
+        if driver.kind() == DriverKind::Physics {
+            scene.add_physics_overlay(driver.trunk_capsule(), driver.obstacle_boxes());
         }
-        if let Some(driver) = driver.poda()
-            && view.targets
-        {
-            let path = driver.path();
-            let start = driver.path_distance_m();
+        if driver.kind() == DriverKind::Poda && view.targets {
             scene.add_gait_overlay(
                 self.footprints.iter().copied(),
                 driver.footholds(),
-                (0..=PATH_SAMPLES).map(|k| {
-                    path.sample(start + PATH_AHEAD_M * f64::from(k) / f64::from(PATH_SAMPLES))
-                        .position
-                }),
+                driver.path_ahead(PATH_AHEAD_M, PATH_SAMPLES),
             );
-            let root = gaitlab_core::driver::Driver::pose(driver).root.position;
-            scene.add_support_overlay(
-                driver.support_polygon(),
-                glam::DVec2::new(root.x, root.z),
-                driver.stability().margin_m.is_some_and(|m| m >= 0.0),
-            );
+            if let Some((polygon, root, inside)) = driver.support() {
+                scene.add_support_overlay(polygon, root, inside);
+            }
         }
     }
 }

@@ -1,7 +1,7 @@
 //! The static stability of a PODA walk, drawn on the ground (issue 21 item
 //! 3): the support polygon of the feet down and the body's centre projected
 //! on the ground, green while the centre is inside, orange when it is not
-//! ([`gaitlab_motion::poda::stability`]).
+//! (the PODA driver's stability report, through the engine layer).
 
 use glam::{DVec2, Vec3};
 

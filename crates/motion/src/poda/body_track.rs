@@ -564,7 +564,7 @@ mod tests {
             .map(|k| DVec2::new(0.0, 0.1 * f64::from(k)))
             .collect();
         let speeds: Vec<f64> = (0..64).map(|k| if k <= 10 { 0.5 } else { 1.5 }).collect();
-        let path = BodyPath::new(&points, super::super::path::PathKind::CatmullRom, false)
+        let path = BodyPath::new(&points, crate::poda::path::PathKind::CatmullRom, false)
             .and_then(|p| p.with_speeds(&speeds))
             .expect("path");
         let gait = trot(0.5);
