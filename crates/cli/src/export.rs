@@ -32,14 +32,13 @@ pub fn export(args: &ExportArgs) -> Result<(), Failure> {
     }
     let creature = load::creature(&args.preset)?;
     let driver = driver_for(&creature, &Overrides::default()).map_err(Failure::input)?;
-    let Some(physics) = driver.physics() else {
+    let Some(xml) = driver.mjcf(&creature.name) else {
         return Err(Failure::input(format!(
             "{}: MJCF export is for physics creatures; this preset's engine is {}",
             creature.name,
             creature.scenario.engine.name()
         )));
     };
-    let xml = physics.mjcf(&creature.name);
     match &args.out {
         Some(path) => {
             std::fs::write(path, xml).map_err(|e| Failure::input(format!("--out {path}: {e}")))?

@@ -7,7 +7,7 @@
 use clap::Args;
 use gaitlab_core::preset::thesis::ThesisMode;
 use gaitlab_core::preset::{Creature, Engine, MAX_PRESET_BYTES, PathSpec, PresetError, Purpose};
-use gaitlab_engine::{Overrides, RunMetrics, driver_for};
+use gaitlab_engine::{EngineCommand, Overrides, RunMetrics, driver_for};
 use serde_json::Value;
 
 use crate::drive::{Outputs, drive};
@@ -90,12 +90,12 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
         load::creature_edited(&args.preset, Purpose::Scenario, &paths, args.paper_alone)?;
     let overrides = overrides(&creature, args)?;
     let mut driver = driver_for(&creature, &overrides).map_err(|e| flag_error(e, args))?;
-    if let Some(physics) = driver.physics_mut() {
-        // A headless run reports a fall; it does not start over.
-        physics.reset_after_fall = false;
+    // A headless run reports a fall; it does not start over.
+    driver.set_reset_after_fall(false);
+    if creature.scenario.engine == Engine::Physics {
         for (name, value) in &gains {
-            physics
-                .set_gain(name, *value)
+            driver
+                .apply(EngineCommand::Gain { name, value: *value })
                 .map_err(|e| Failure::input(format!("--set {e}")))?;
         }
     } else if let Some((name, _)) = gains.first() {

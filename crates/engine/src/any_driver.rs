@@ -50,6 +50,25 @@ impl AnyDriver {
         }
     }
 
+    /// Whether a physics creature that falls or blows up is put back at the
+    /// start (the page) or left lying (a headless run reports the fall);
+    /// other engines do not fall.
+    pub fn set_reset_after_fall(&mut self, on: bool) {
+        if let AnyDriver::Physics(physics) = self {
+            physics.reset_after_fall = on;
+        }
+    }
+
+    /// The physics creature as a MuJoCo MJCF model named `name`; `None` for
+    /// other engines.
+    #[must_use]
+    pub fn mjcf(&self, name: &str) -> Option<String> {
+        match self {
+            AnyDriver::Physics(physics) => Some(physics.mjcf(name)),
+            _ => None,
+        }
+    }
+
     /// Whether the driver follows a recording of targets (`gaitlab track`,
     /// the page's recorded targets) rather than a script or a gait.
     #[must_use]
