@@ -67,6 +67,7 @@ const sent = [
   { last_s: 5 },
   { editor_open: true, editor_text: '{}', editor_apply: true },
   { editor_revert: true, download_preset: true },
+  { paper_alone: true },
   { views: { follow: false, grid: false, world_axes: true } },
   { camera: { yaw_deg: -35, pitch_deg: 20, distance_m: 4.25, target_m: [0.3, 0.5, 1.25] } },
   { camera: { yaw_rad: 0.5, pitch_rad: 0.2, follow_offset_m: [0, 0, 0], perspective: false } },

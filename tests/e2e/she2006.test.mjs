@@ -103,4 +103,33 @@ describe('she-2006 side by side (WebGL2)', () => {
       await p.page.close().catch(() => {});
     }
   });
+
+  it('names the lab\'s additions in force and runs the paper alone', T, async () => {
+    const p = await loadApp(browser, server.url);
+    try {
+      const { page } = p;
+      // The page opens human, a gaitlab-preset/1 file made with the lab's script.
+      const names = (s) => s.lab_additions.map((a) => a.name);
+      const opened = await state(page);
+      assert.equal(opened.preset, 'human');
+      for (const name of ['lab_script', 'posture_pull', 'start_ramp', 'limit_re_solve']) {
+        assert.ok(names(opened).includes(name), `${name} in ${JSON.stringify(names(opened))}`);
+      }
+      assert.ok(opened.lab_additions.every((a) => a.reason.length > 20), 'each with its reason');
+      await shootCanvas(page, 'lab-additions-human.png');
+      assert.equal(await command(page, { paper_alone: true }), 'ok');
+      const alone = await state(page);
+      assert.deepEqual(alone.lab_additions, [], 'the paper alone');
+      assert.equal(alone.preset, 'human');
+      assert.equal(alone.custom_preset, true, 'run as a custom preset');
+      // The physics creature's take-over gait change is the paper's too.
+      assert.equal(await command(page, { preset: 'raibert-quadruped' }), 'ok');
+      assert.deepEqual(names(await state(page)), ['switch_to_start']);
+      assert.equal(await command(page, { paper_alone: true }), 'ok');
+      assert.deepEqual(names(await state(page)), []);
+      p.assertClean();
+    } finally {
+      await p.page.close().catch(() => {});
+    }
+  });
 });
