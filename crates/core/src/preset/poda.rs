@@ -1,13 +1,16 @@
 //! `scenario.poda`: the parameters of Girard & Maciejewski 1985's kinematic
 //! locomotion model (PODA) as they appear in a preset — which effectors are
 //! legs, the gait (period P, duty factor, relative phases Rᵢ; eq. 7–9), body
-//! speed, step height, the key leg positions of the transfer trajectory,
-//! the body path, and the simple dynamics' body mass and leg forces
+//! speed, step height, the key leg positions of the transfer trajectory
+//! (the foot's place, and optionally centre angles and gains for the leg's
+//! joints), the body path, and the simple dynamics' body mass and leg forces
 //! (eq. 12–15).
 //!
 //! Only values that need no gait model are checked here (ranges, names,
 //! finiteness); the gait engine in `gaitlab-motion` checks the relations
 //! between them (eq. 7–8) and the gait name when it is built.
+
+use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
@@ -19,6 +22,36 @@ use crate::params::row;
 pub const MAX_TRANSFER_KEYS: usize = 16;
 /// Most control points of a body path.
 pub const MAX_PATH_POINTS: usize = 64;
+/// Most joints one key leg position gives a centre angle and gain.
+pub const MAX_KEY_CENTER_JOINTS: usize = 64;
+/// Largest magnitude of a key position's centre angle, radians (metres for a
+/// prismatic joint); the driver also keeps it within the joint's limits.
+pub const MAX_KEY_CENTER: f64 = 100.0;
+
+/// The centre angles and gains (eq. 6's `θcᵢ`, `αᵢ`) one key leg position
+/// gives joints of the legs (Girard & Maciejewski 1985, "Leg Support and
+/// Transfer Trajectories": "a key position records the position of the foot
+/// … and the center angles and gains that are associated with that
+/// position"), each `[center, gain]`: the centre in radians (metres for a
+/// prismatic joint), within the joint's limits, the gain in [0, 1].
+///
+/// A key is either
+/// - a joint's place in its leg, counted from the leg's first joint (the
+///   hip) `"0"`: that joint of **every** leg (`"3"` is the fourth joint of
+///   each leg; every leg must have a joint there, and the value must lie
+///   within the limits of each joint it applies to); or
+/// - a joint's name: that joint alone, over its place's entry (a leg whose
+///   joint is named takes the name's value, and the place's value need not
+///   fit that joint).
+///
+/// A key of digits only is read as a place. Joints a key position does not
+/// name keep their own (skeleton) centre and gain at that key; an empty
+/// object is a key position that gives none.
+///
+/// ```json
+/// {"3": [-1.2, 1.0], "left_hind_knee_x": [1.2, 1.0], "right_hind_knee_x": [1.2, 1.0]}
+/// ```
+pub type KeyCenters = BTreeMap<String, [f64; 2]>;
 
 /// One leg: the effector that is its foot and the first joint that belongs
 /// to the leg (the hip). The leg's joints are the foot's chain from the hip
@@ -166,6 +199,25 @@ pub struct PodaParams {
     /// (0 lift-off … 1 foothold) and the height as a fraction of
     /// `step_height_m`. Default `[[0.1, 0.7], [0.5, 1.0], [0.9, 0.5]]`.
     pub transfer_keys: Vec<[f64; 2]>,
+    /// Centre angles and gains the key leg positions carry (eq. 6; "Leg
+    /// Support and Transfer Trajectories"): one [`KeyCenters`] object per
+    /// `transfer_keys` entry, in the same order. While a leg transfers, the
+    /// centre and gain of each joint some key names follow the keys on a
+    /// Catmull-Rom spline with the foot's own parameter — lift-off, each key,
+    /// touchdown, evenly spaced in the transfer's time, the ends at the
+    /// joint's own (skeleton) centre and gain — so the joint's centre reaches
+    /// a key's value just as the foot passes that key's point; the gain is
+    /// kept in [0, 1] where the spline overshoots. At lift-off, touchdown and
+    /// through the support every joint pulls toward its own centre.
+    /// Default empty: every joint keeps its own centre all cycle long, as
+    /// before key positions carried centres.
+    ///
+    /// ```json
+    /// "transfer_keys": [[0.1, 0.7], [0.5, 1.0], [0.9, 0.5]],
+    /// "transfer_key_centers": [{}, {"2": [0.1, 1.0]}, {}]
+    /// ```
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub transfer_key_centers: Vec<KeyCenters>,
     /// The body path; default a straight line ahead from the root.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub path: Option<PathSpec>,
@@ -247,6 +299,7 @@ impl Default for PodaParams {
             step_height_m: 0.06,
             stand_height_m: None,
             transfer_keys: vec![[0.1, 0.7], [0.5, 1.0], [0.9, 0.5]],
+            transfer_key_centers: Vec::new(),
             path: None,
             body_mass_kg: 30.0,
             max_leg_force_n: None,
@@ -296,6 +349,79 @@ pub fn check_transfer_keys(path: &str, keys: &[[f64; 2]]) -> Result<(), PresetEr
     Ok(())
 }
 
+/// Where the digits-only key `key` of a [`KeyCenters`] object is a joint's
+/// place in its leg, that place (`"3"` → 3); `None` for a joint's name.
+#[must_use]
+pub fn key_center_place(key: &str) -> Option<usize> {
+    if key.is_empty() || !key.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    // Digits beyond `usize` name no joint of any leg.
+    Some(key.parse().unwrap_or(usize::MAX))
+}
+
+/// The centre angles and gains of the key leg positions, as far as they can
+/// be checked without the skeleton: none, or one object per key position
+/// (`keys` of them); in each at most [`MAX_KEY_CENTER_JOINTS`] entries, keys
+/// a joint's place or a name (not empty, no spaces), each `[center, gain]`
+/// with a finite centre of at most [`MAX_KEY_CENTER`] and a gain in [0, 1].
+/// `at` is the field's path (`scenario.poda.transfer_key_centers`); errors
+/// name it, `{at}[i]` or `{at}[i].{key}`. The driver checks the names and
+/// places against the legs and the centres against the joints' limits.
+///
+/// # Errors
+/// A [`PresetError`] naming the first bad entry.
+pub fn check_transfer_key_centers(
+    at: &str,
+    keys: usize,
+    centers: &[KeyCenters],
+) -> Result<(), PresetError> {
+    if centers.is_empty() {
+        return Ok(());
+    }
+    if centers.len() != keys {
+        return Err(PresetError::new(
+            at,
+            format!(
+                "needs one object per key position ({keys} transfer_keys, {} objects)",
+                centers.len()
+            ),
+        ));
+    }
+    for (i, key_centers) in centers.iter().enumerate() {
+        if key_centers.len() > MAX_KEY_CENTER_JOINTS {
+            return Err(PresetError::new(
+                format!("{at}[{i}]"),
+                format!("at most {MAX_KEY_CENTER_JOINTS} joints"),
+            ));
+        }
+        for (key, &[center, gain]) in key_centers {
+            let path = format!("{at}[{i}].{key}");
+            if key.is_empty() || key.chars().any(|c| c.is_whitespace() || c.is_control()) {
+                return Err(PresetError::new(
+                    path,
+                    "must be a joint's place in its leg (\"0\" the hip) or a joint's name",
+                ));
+            }
+            if !(center.is_finite() && center.abs() <= MAX_KEY_CENTER) {
+                return Err(PresetError::new(
+                    path,
+                    format!(
+                        "the centre {center} must be a finite angle (radians) within the joint's limits"
+                    ),
+                ));
+            }
+            if !(gain.is_finite() && (0.0..=1.0).contains(&gain)) {
+                return Err(PresetError::new(
+                    path,
+                    format!("the gain {gain} must be between 0 and 1"),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
 impl PodaParams {
     /// Checks every value that needs no skeleton or gait model. Paths start with `prefix`.
     ///
@@ -325,6 +451,11 @@ impl PodaParams {
             real("stand_height_m", height)?;
         }
         check_transfer_keys(&at("transfer_keys"), &self.transfer_keys)?;
+        check_transfer_key_centers(
+            &at("transfer_key_centers"),
+            self.transfer_keys.len(),
+            &self.transfer_key_centers,
+        )?;
         if let Some(path) = &self.path {
             let n = path.points.len();
             if !(2..=MAX_PATH_POINTS).contains(&n) {
@@ -353,5 +484,76 @@ impl PodaParams {
         real("tolerance_m", self.tolerance_m)?;
         real("center_gain", self.center_gain)?;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn object(entries: &[(&str, [f64; 2])]) -> KeyCenters {
+        entries.iter().map(|(k, v)| ((*k).to_owned(), *v)).collect()
+    }
+
+    #[test]
+    fn a_key_of_digits_is_a_place_and_anything_else_a_name() {
+        assert_eq!(key_center_place("3"), Some(3));
+        assert_eq!(key_center_place("012"), Some(12));
+        assert_eq!(
+            key_center_place("99999999999999999999999"),
+            Some(usize::MAX)
+        );
+        assert_eq!(key_center_place("left_knee"), None);
+        assert_eq!(key_center_place("-1"), None);
+        assert_eq!(key_center_place(""), None);
+    }
+
+    #[test]
+    fn key_centres_need_one_object_per_key_and_gains_in_range() {
+        let at = "scenario.poda.transfer_key_centers";
+        assert!(check_transfer_key_centers(at, 3, &[]).is_ok());
+        let good = [object(&[]), object(&[("3", [-1.2, 1.0])]), object(&[])];
+        assert!(check_transfer_key_centers(at, 3, &good).is_ok());
+        for (keys, centers, path, words) in [
+            (
+                2,
+                good.to_vec(),
+                at.to_owned(),
+                "(2 transfer_keys, 3 objects)",
+            ),
+            (
+                1,
+                vec![object(&[("knee", [0.0, 1.01])])],
+                format!("{at}[0].knee"),
+                "gain 1.01 must be between 0 and 1",
+            ),
+            (
+                1,
+                vec![object(&[("knee", [f64::INFINITY, 0.5])])],
+                format!("{at}[0].knee"),
+                "finite",
+            ),
+            (
+                1,
+                vec![object(&[("left knee", [0.0, 0.5])])],
+                format!("{at}[0].left knee"),
+                "a joint's place in its leg",
+            ),
+        ] {
+            let error = check_transfer_key_centers(at, keys, &centers).expect_err("refused");
+            assert_eq!(error.path, path);
+            assert!(error.reason.contains(words), "{error}");
+        }
+    }
+
+    #[test]
+    fn the_field_is_left_out_when_empty_and_read_back_when_given() {
+        let text = serde_json::to_string(&PodaParams::default()).expect("json");
+        assert!(!text.contains("transfer_key_centers"));
+        let params: PodaParams =
+            serde_json::from_str(r#"{"transfer_key_centers": [{}, {"2": [0.1, 1]}, {}]}"#)
+                .expect("parses");
+        assert_eq!(params.transfer_key_centers[1]["2"], [0.1, 1.0]);
+        assert!(params.check_values("scenario.poda").is_ok());
     }
 }

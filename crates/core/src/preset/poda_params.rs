@@ -1,7 +1,8 @@
 //! PODA's rows of the parameter table (Girard & Maciejewski 1985): the gait
-//! values of eq. 7–8, the transfer trajectory's key positions, the body
-//! path, eq. 12–14's mass and forces, eq. 6's centre gain, with the lab's
-//! turning, yaw and gait-by-speed options named as the lab's.
+//! values of eq. 7–8, the transfer trajectory's key positions (with their
+//! centre angles and gains), the body path, eq. 12–14's mass and forces,
+//! eq. 6's centre gain, with the lab's turning, yaw and gait-by-speed
+//! options named as the lab's.
 
 use crate::params::{Domain, Origin, ParamSpec};
 
@@ -154,6 +155,20 @@ pub const PODA_PARAMS: &[ParamSpec] = &[
         reference: "Girard & Maciejewski 1985, Leg Coordination (Catmull-Rom)",
         origin: Origin::Paper,
         why: "the paper's key leg positions on a Catmull-Rom spline",
+    },
+    ParamSpec {
+        key: "scenario.poda.transfer_key_centers",
+        command: None,
+        label: "Centre angles and gains each key leg position gives the legs' joints",
+        unit: "rad",
+        domain: Domain::Structured {
+            shape: "one object per transfer key: {joint place in the leg (\"0\" the hip) or joint name: [centre rad within the joint's limits, gain in [0, 1]]}",
+        },
+        live: false,
+        reference: "Girard & Maciejewski 1985, Leg Coordination",
+        origin: Origin::Paper,
+        why: "\"a key position records the position of the foot … and the center angles and gains\"; \
+              followed on the foot's Catmull-Rom parameter, the joints' own at lift-off, touchdown and support (docs/poda.md)",
     },
     ParamSpec {
         key: "scenario.poda.path",

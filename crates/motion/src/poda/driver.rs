@@ -1,6 +1,6 @@
 //! The PODA driver (Girard & Maciejewski 1985, "Modeling the Kinematics of
 //! Legged Locomotion"). Each frame runs the stages
-//! `body → leg_states → footholds → foot_targets → ik`:
+//! `body → leg_states → footholds → foot_targets → key_centers → ik`:
 //! - **body**: the ground-plane pose planned ahead by [`BodyTrack`] — path
 //!   following with the legs' horizontal force limits (eq. 14–15) and yaw
 //!   from the legs' push / restore toward the direction of travel — raised by
@@ -22,6 +22,10 @@
 //!   positions — the spline's "along" fraction moves it from its lift-off
 //!   point to its foothold in the body frame, its "height" sets the world
 //!   height;
+//! - **key_centers**: while a leg transfers, the centre angles and gains its
+//!   key leg positions carry (`scenario.poda.transfer_key_centers`) follow the
+//!   foot's spline parameter ([`super::key_centers`]); in support the joints'
+//!   own;
 //! - **ik**: every leg by pseudoinverse with null-space centering (eq. 5–6).
 
 use std::sync::Arc;
@@ -29,6 +33,7 @@ use std::sync::Arc;
 use gaitlab_core::driver::{Driver, IkFrameReport};
 use gaitlab_core::ik::Targets;
 use gaitlab_core::portable::Portable;
+use gaitlab_core::preset::poda::{KeyCenters, MAX_TRANSFER_KEYS, check_transfer_key_centers};
 use gaitlab_core::preset::{Creature, PathSpec, PodaParams, check_transfer_keys};
 use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec2, DVec3};
@@ -39,6 +44,7 @@ use super::gait_by_speed::{froude, gait_index, speed_gaits};
 use super::gait_metrics::GaitMetrics;
 use super::gaits::{gait_names, named_gait};
 use super::ground_pose::GroundPose;
+use super::key_centers::{self, LegKeyCenters};
 use super::leg_cycles::LegCycles;
 use super::leg_ik::{LegIk, LegIkOptions};
 use super::path::BodyPath;
@@ -78,6 +84,8 @@ struct Leg {
     hip_body: DVec3,
     /// The straight leg's length from the hip joint to the foot, metres.
     length_m: f64,
+    /// The leg's joints that key leg positions give centres and gains.
+    key_centers: LegKeyCenters,
 }
 
 /// A leg's running state.
@@ -94,6 +102,9 @@ struct LegRun {
     foothold_world: DVec3,
     /// The foot's target this frame, world metres.
     target: DVec3,
+    /// The transfer's progress this frame, the foot spline's parameter in
+    /// [0, 1] (meaningless while supporting).
+    progress: f64,
 }
 
 /// Animates a creature with PODA's gait model, footholds and foot splines.
@@ -108,6 +119,9 @@ pub struct PodaDriver {
     runs: Vec<LegRun>,
     /// Key leg positions `(along, height fraction, 0)` from lift-off `(0, 0)` to foothold `(1, 0)`.
     keys: Vec<DVec3>,
+    /// Control points of one joint's centre and gain along the transfer
+    /// (scratch of the key-centres stage).
+    center_points: Vec<DVec3>,
     stand_height_m: f64,
     rest: Pose,
     centering: LegIkOptions,
@@ -249,6 +263,7 @@ impl PodaDriver {
                 name: spec.name.clone().unwrap_or_else(|| spec.effector.clone()),
                 ik: LegIk::new(chain[start..].to_vec(), effector),
                 reference_body: DVec3::new(foot.x, -stand_height_m, foot.z),
+                key_centers: LegKeyCenters::new(),
             });
         }
         if legs.is_empty() {
@@ -281,6 +296,22 @@ impl PodaDriver {
         };
         let mut keys = Vec::with_capacity(params.transfer_keys.len() + 2);
         spline_keys(&params.transfer_keys, &mut keys);
+        let field = "scenario.poda.transfer_key_centers";
+        check_transfer_key_centers(
+            field,
+            params.transfer_keys.len(),
+            &params.transfer_key_centers,
+        )
+        .map_err(|e| DriverError::new(e.path, e.reason))?;
+        let resolved = key_centers::resolve(
+            &skeleton,
+            legs.iter().map(|l| (l.name.as_str(), l.ik.joints())),
+            &params.transfer_key_centers,
+            field,
+        )?;
+        for (leg, key_centers) in legs.iter_mut().zip(resolved) {
+            leg.key_centers = key_centers;
+        }
         let centering = LegIkOptions {
             center_gain: params.center_gain,
             ..LegIkOptions::default()
@@ -323,6 +354,7 @@ impl PodaDriver {
             path,
             legs,
             keys,
+            center_points: Vec::with_capacity(MAX_TRANSFER_KEYS + 2),
             stand_height_m,
             rest,
             centering,
@@ -544,16 +576,64 @@ impl PodaDriver {
     /// Replaces the key leg positions of the transfer trajectory, each
     /// `[along, height]` (step fraction strictly increasing in (0, 1), height
     /// fraction of the step height in [0, 2]). Feet in transfer follow the new
-    /// spline from their current progress.
+    /// spline from their current progress. Centre angles the key positions
+    /// carry ([`PodaDriver::set_transfer_key_centers`]) stay with them, key by
+    /// key.
     ///
     /// # Errors
-    /// `transfer_keys[i]` naming the first bad key; nothing changes.
+    /// `transfer_keys[i]` naming the first bad key; `transfer_keys` for a new
+    /// count of keys while the keys carry centre angles (set
+    /// `transfer_key_centers` to none first); nothing changes.
     pub fn set_transfer_keys(&mut self, keys: &[[f64; 2]]) -> Result<(), DriverError> {
         check_transfer_keys("transfer_keys", keys)
             .map_err(|e| DriverError::new(e.path, e.reason))?;
+        let carried = self.params.transfer_key_centers.len();
+        if carried > 0 && keys.len() != carried {
+            return Err(DriverError::new(
+                "transfer_keys",
+                format!(
+                    "the {carried} key positions carry centre angles (transfer_key_centers): \
+                     give {carried} keys, or set transfer_key_centers to none first"
+                ),
+            ));
+        }
         spline_keys(keys, &mut self.keys);
         self.params.transfer_keys = keys.to_vec();
         Ok(())
+    }
+
+    /// Replaces the centre angles and gains the key leg positions carry: one
+    /// [`KeyCenters`] object per transfer key, or none (every joint its own
+    /// centre all cycle). Legs in transfer follow them from the next frame.
+    ///
+    /// # Errors
+    /// `transfer_key_centers` for a count that is not the keys';
+    /// `transfer_key_centers[i].{key}` for an unknown joint or place, a gain
+    /// outside [0, 1] or a centre outside the joint's limits; nothing changes.
+    pub fn set_transfer_key_centers(&mut self, centers: &[KeyCenters]) -> Result<(), DriverError> {
+        let field = "transfer_key_centers";
+        check_transfer_key_centers(field, self.params.transfer_keys.len(), centers)
+            .map_err(|e| DriverError::new(e.path, e.reason))?;
+        let resolved = key_centers::resolve(
+            &self.skeleton,
+            self.legs.iter().map(|l| (l.name.as_str(), l.ik.joints())),
+            centers,
+            field,
+        )?;
+        for (leg, key_centers) in self.legs.iter_mut().zip(resolved) {
+            leg.key_centers = key_centers;
+            leg.ik.clear_center_overrides();
+        }
+        self.params.transfer_key_centers = centers.to_vec();
+        Ok(())
+    }
+
+    /// The centre angle and gain eq. 6 pulls leg `leg`'s `place`-th joint
+    /// (the hip 0) toward this frame: a key position's while the leg
+    /// transfers ([`super::key_centers`]), the joint's own otherwise.
+    #[must_use]
+    pub fn leg_center(&self, leg: usize, place: usize) -> Option<[f64; 2]> {
+        self.legs.get(leg)?.ik.center_of(&self.skeleton, place)
     }
 
     /// Sets a leg joint's center angle and gain (eq. 6), by joint name.
@@ -900,6 +980,25 @@ impl PodaDriver {
         } else {
             self.transfer_target(i, self.time, phase.fraction)
         };
+        self.runs[i].progress = phase.fraction;
+    }
+
+    /// The key-centres stage: each leg with key centres takes this frame's
+    /// centre angles and gains ([`super::key_centers::apply`]); legs without
+    /// are left as they are (their joints' own).
+    fn key_centers(&mut self) {
+        for (leg, run) in self.legs.iter_mut().zip(&self.runs) {
+            if leg.key_centers.is_empty() {
+                continue;
+            }
+            key_centers::apply(
+                &self.skeleton,
+                &leg.key_centers,
+                &mut leg.ik,
+                (!run.support).then_some(run.progress),
+                &mut self.center_points,
+            );
+        }
     }
 
     /// The IK stage: iterate every leg toward its target (one FK per iteration
@@ -1084,6 +1183,7 @@ impl Driver for PodaDriver {
             }
         }
         self.place_body(t);
+        self.key_centers();
         self.solve(self.params.iterations_per_frame);
         self.record_metrics(t_prev, t, false);
         self.path_error_max_m = self.path_error_max_m.max(self.path_error_m());
@@ -1132,10 +1232,12 @@ impl Driver for PodaDriver {
                 self.plan_foothold(i, phase.last_liftoff_s);
                 self.runs[i].support = false;
                 self.runs[i].target = self.transfer_target(i, 0.0, phase.fraction);
+                self.runs[i].progress = phase.fraction;
             }
         }
         self.path_error_max_m = 0.0;
         self.place_body(0.0);
+        self.key_centers();
         self.solve(RESET_ITERATIONS);
         self.record_metrics(0.0, 0.0, true);
     }

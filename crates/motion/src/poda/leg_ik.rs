@@ -3,7 +3,10 @@
 //! pseudoinverse of eq. 5 for a full-rank 3×n Jacobian, `J⁺ = Jᵀ(JJᵀ)⁻¹`
 //! (a 3×3 solve instead of an explicit inverse), and eq. 6's null-space term
 //! `(I − J⁺J)z` with `z = −k∇H`, `H = Σ αᵢ(θᵢ − θcᵢ)²`, which pulls the joints
-//! toward their center angles without moving the foot.
+//! toward their center angles without moving the foot. The centre angles
+//! and gains are the skeleton's (`Joint::center`, `Joint::gain`) unless the
+//! caller puts others in their place for a joint ([`LegIk::set_center_override`]:
+//! the driver's key leg positions while the leg transfers).
 //!
 //! Near a singularity (smallest singular value of J below
 //! [`LegIkOptions::singular_threshold_m`]) the solve blends smoothly into damped
@@ -52,6 +55,8 @@ pub struct LegIk {
     step: Vec<f64>,
     center_push: Vec<f64>,
     active: Vec<bool>,
+    /// Per leg joint, `[center, gain]` in place of the skeleton's (`None`: the skeleton's).
+    center_overrides: Vec<Option<[f64; 2]>>,
 }
 
 impl LegIk {
@@ -67,7 +72,32 @@ impl LegIk {
             step: vec![0.0; n],
             center_push: vec![0.0; n],
             active: vec![true; n],
+            center_overrides: vec![None; n],
         }
+    }
+
+    /// Puts `center_gain` (`[center, gain]`: radians, or metres for a
+    /// prismatic joint, and a gain in [0, 1]) in place of the skeleton's
+    /// centre angle and gain of the leg's `k`-th joint (hip 0) in eq. 6's
+    /// `H`; `None` gives the joint back its own. An index past the leg's
+    /// joints is ignored. Values are used as given: the caller checks them.
+    pub fn set_center_override(&mut self, k: usize, center_gain: Option<[f64; 2]>) {
+        if let Some(slot) = self.center_overrides.get_mut(k) {
+            *slot = center_gain;
+        }
+    }
+
+    /// Gives every joint of the leg back its own (skeleton) centre and gain.
+    pub fn clear_center_overrides(&mut self) {
+        self.center_overrides.fill(None);
+    }
+
+    /// The centre angle and gain eq. 6 uses for the leg's `k`-th joint now:
+    /// an override's, or the skeleton's.
+    #[must_use]
+    pub fn center_of(&self, skeleton: &Skeleton, k: usize) -> Option<[f64; 2]> {
+        let joint = skeleton.joints().get(*self.joints.get(k)?)?;
+        Some(self.center_overrides[k].unwrap_or([joint.center, joint.gain]))
     }
 
     /// The leg's joints, hip first.
@@ -121,8 +151,11 @@ impl LegIk {
                 JointKind::Prismatic => axis,
             };
             let joint = &joints[j];
-            self.center_push[k] =
-                -options.center_gain * 2.0 * joint.gain * (values[j] - joint.center);
+            let (center, gain) = match self.center_overrides[k] {
+                Some([center, gain]) => (center, gain),
+                None => (joint.center, joint.gain),
+            };
+            self.center_push[k] = -options.center_gain * 2.0 * gain * (values[j] - center);
         }
         self.active.fill(true);
         self.step.fill(0.0);
@@ -310,6 +343,42 @@ mod tests {
             pull(&values) <= pull(&before) + 1e-9,
             "knee no farther from its center"
         );
+    }
+
+    #[test]
+    fn an_override_moves_the_centre_and_none_gives_the_skeletons_back() {
+        let skeleton = leg();
+        let target = DVec3::new(0.0, -0.8, 0.1);
+        let mut ik = LegIk::new(vec![0, 1, 2, 3], 0);
+        assert_eq!(ik.center_of(&skeleton, 2), Some([0.5, 0.3]));
+        ik.set_center_override(2, Some([1.4, 1.0]));
+        ik.set_center_override(9, Some([0.0, 1.0]));
+        assert_eq!(ik.center_of(&skeleton, 2), Some([1.4, 1.0]));
+        assert_eq!(ik.center_of(&skeleton, 9), None);
+        let mut kin = Kinematics::new(&skeleton);
+        let mut values = skeleton.rest_values();
+        solve(&skeleton, &mut values, target, 20);
+        let settled = values[2];
+        // Centring iterations with the override pull the knee toward 1.4 at the target.
+        for _ in 0..200 {
+            kin.update(&skeleton, &RootTransform::default(), &values);
+            ik.iterate(
+                &skeleton,
+                &kin,
+                &mut values,
+                target,
+                &LegIkOptions::default(),
+            );
+        }
+        let error = solve(&skeleton, &mut values, target, 4);
+        assert!(error < 1e-6, "foot on target: {error} m");
+        assert!(
+            values[2] > settled + 0.2,
+            "knee {settled} → {} toward 1.4",
+            values[2]
+        );
+        ik.clear_center_overrides();
+        assert_eq!(ik.center_of(&skeleton, 2), Some([0.5, 0.3]));
     }
 
     #[test]

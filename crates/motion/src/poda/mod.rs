@@ -1,7 +1,8 @@
 //! PODA (Girard & Maciejewski 1985): kinematic locomotion for any number of
 //! legs — the gait model (eq. 7–9), named gaits, Catmull-Rom splines for foot
 //! transfer trajectories and body paths, and per-leg pseudoinverse IK with
-//! null-space center angles (eq. 5–6).
+//! null-space center angles (eq. 5–6), which key leg positions may change
+//! along the transfer.
 
 pub mod body_track;
 pub mod driver;
@@ -10,6 +11,7 @@ pub mod gait_by_speed;
 pub mod gait_metrics;
 pub mod gaits;
 pub mod ground_pose;
+pub mod key_centers;
 pub mod leg_cycles;
 pub mod leg_ik;
 pub mod path;
