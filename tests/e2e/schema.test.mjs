@@ -67,6 +67,22 @@ describe('preset JSON Schema', () => {
     }
   });
 
+  it('refuses a value outside its parameter-table range, as the parser does', () => {
+    const cases = [
+      [(p) => { p.scenario.ik = { lambda: 0 }; }, '/scenario/ik/lambda'],
+      [(p) => { p.scenario.ik = { limit_passes: 17 }; }, '/scenario/ik/limit_passes'],
+      [(p) => { p.scenario.thesis.slowdown = 0.5; }, '/scenario/thesis/slowdown'],
+      [(p) => { p.scenario.fps = 0; }, '/scenario/fps'],
+    ];
+    for (const [change, path] of cases) {
+      const text = errors(humanWith(change));
+      assert.notEqual(text, '', `${path} accepted`);
+      assert.ok(text.includes(path), `${path}: ${text}`);
+    }
+    assert.equal(errors(humanWith((p) => { p.scenario.ik = { lambda: 10, limit_passes: 16 }; })), '',
+      'the ends of a closed range are accepted');
+  });
+
   it('refuses a missing required field', () => {
     for (const [change, what] of [
       [(p) => { delete p.name; }, "must have required property 'name'"],
