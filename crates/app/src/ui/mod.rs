@@ -10,6 +10,7 @@ use crate::lab::Lab;
 use crate::render::viewport;
 
 pub mod panels;
+pub(crate) mod param_widgets;
 pub(crate) mod plots;
 mod touch;
 pub(crate) mod window;

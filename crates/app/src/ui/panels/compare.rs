@@ -13,6 +13,7 @@ use crate::compare::{
     CompareConfig, CompareMethod, CompareScenario, DEFAULT_VIEWS, Parameter, notice, view_colour,
 };
 use crate::lab::Lab;
+use crate::ui::param_widgets::{self as widgets, Param, key};
 
 /// The "Side by side" controls.
 pub struct SideBySidePanel;
@@ -408,19 +409,19 @@ fn slider(
     let slot = parameter.slot(options);
     let (text, tip, degrees, logarithmic) = match parameter {
         Parameter::Lambda => (
-            "λ (m)",
+            "λ",
             "DLS damping λ: larger is smoother but less accurate",
             false,
             true,
         ),
         Parameter::GammaMax => (
-            "γmax (°)",
+            "γmax",
             "SDLS: largest change of any joint per iteration",
             true,
             false,
         ),
         Parameter::MaxStep => (
-            "step clamp (°)",
+            "step clamp",
             "Largest joint change per iteration: pinv's (She 2006 §4.4.2), CCD's per joint turn, and transpose's and DLS's with the lab's clamp on every method (Method panel)",
             true,
             false,
@@ -438,20 +439,28 @@ fn slider(
             false,
         ),
     };
-    let mut value = if degrees { slot.to_degrees() } else { *slot };
-    let range = if degrees {
-        lo.to_degrees()..=hi.to_degrees()
+    let row = Param::new(match parameter {
+        Parameter::Lambda => key::LAMBDA,
+        Parameter::GammaMax => key::GAMMA_MAX,
+        Parameter::MaxStep => key::MAX_STEP,
+        Parameter::RankTolerance => key::RANK_TOLERANCE,
+        Parameter::NullSpaceGain => key::NULL_SPACE_GAIN,
+    });
+    let row = if degrees {
+        row.in_degrees().band(lo.to_degrees()..=hi.to_degrees())
     } else {
-        lo..=hi
+        row.band(lo..=hi)
     };
-    let changed = ui
-        .add(
-            egui::Slider::new(&mut value, range)
-                .logarithmic(logarithmic)
-                .text(text),
-        )
-        .on_hover_text(tip)
-        .changed();
+    let mut value = if degrees { slot.to_degrees() } else { *slot };
+    let changed = widgets::add(
+        ui,
+        row,
+        egui::Slider::new(&mut value, row.range())
+            .logarithmic(logarithmic)
+            .text(row.text(text)),
+        tip,
+    )
+    .changed();
     if changed {
         *slot = if degrees { value.to_radians() } else { value }.clamp(lo, hi);
     }

@@ -9,6 +9,7 @@ use gaitlab_engine::readout::{Footfall, JointCenterReadout};
 
 use super::panel::Panel;
 use crate::lab::{GaitShapeEdit, Lab};
+use crate::ui::param_widgets::{self as widgets, Param, key};
 
 /// The PODA gait panel.
 pub struct GaitPanel;
@@ -64,56 +65,55 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
                 })
                 .response
                 .on_hover_text("A named gait: its duty factor and relative phases");
-            for (key, mut value, range, label, hint) in [
+            for (param, mut value, name, hint) in [
                 (
-                    "period_s",
+                    Param::new(key::PERIOD).band(0.2..=3.0),
                     gait.period_s,
-                    0.2..=3.0,
-                    "Period P (s)",
+                    "Period P",
                     "Time of one gait cycle, seconds (eq. 7–8 derive the rest)",
                 ),
                 (
-                    "duty_factor",
+                    Param::new(key::DUTY_FACTOR),
                     gait.duty_factor,
-                    0.05..=0.95,
                     "Duty factor",
                     "Fraction of the period each leg supports (unitless, 0–1)",
                 ),
                 (
-                    "speed_mps",
+                    Param::new(key::PODA_SPEED).band(0.02..=4.0),
                     gait.speed_mps,
-                    0.02..=4.0,
-                    "Body speed (m/s)",
+                    "Body speed",
                     "Forward body speed along the path, metres per second",
                 ),
                 (
-                    "stroke_m",
+                    Param::new(key::STROKE).band(0.01..=1.5),
                     gait.stroke_m,
-                    0.01..=1.5,
-                    "Stroke (m)",
+                    "Stroke",
                     "Distance a supporting foot travels relative to the body, metres",
                 ),
             ] {
-                if ui
-                    .add(egui::Slider::new(&mut value, range).text(label))
-                    .on_hover_text(hint)
-                    .changed()
+                if widgets::add(
+                    ui,
+                    param,
+                    egui::Slider::new(&mut value, param.range()).text(param.text(name)),
+                    hint,
+                )
+                .changed()
                 {
-                    edits.push((key, value));
+                    edits.push((param.command(), value));
                 }
             }
             let mut force = force_n;
-            if ui
-                .add(
-                    egui::Slider::new(&mut force, weight_share * 1.05..=weight_share * 12.0)
-                        .text("Leg force (N)"),
-                )
-                .on_hover_text(
-                    "Upward force of a supporting leg (eq. 12–13): more force, longer flights",
-                )
-                .changed()
+            let param =
+                Param::new(key::LEG_FORCE).band(weight_share * 1.05..=weight_share * 12.0);
+            if widgets::add(
+                ui,
+                param,
+                egui::Slider::new(&mut force, param.range()).text(param.text("Leg force")),
+                "Upward force of a supporting leg (eq. 12–13): more force, longer flights",
+            )
+            .changed()
             {
-                edits.push(("leg_force_n", force));
+                edits.push((param.command(), force));
             }
             ui.label(format!(
                 "support {:.3} s · transfer {:.3} s (eq. 7: support = stroke / speed)",
@@ -154,6 +154,8 @@ fn centers(ui: &mut egui::Ui, lab: &mut Lab) {
         return;
     };
     let mut edit: Option<(String, f64, f64)> = None;
+    let center_param = Param::new(key::CENTER);
+    let gain_param = center_param.band(0.0..=1.0);
     ui.collapsing("Center angles and gains", |ui| {
         for leg in readout.legs {
             ui.collapsing(leg.name, |ui| {
@@ -173,18 +175,24 @@ fn centers(ui: &mut egui::Ui, lab: &mut Lab) {
                         };
                         let mut new_gain = gain;
                         let unit = if revolute { "°" } else { " m" };
-                        let moved = ui
-                            .add(egui::DragValue::new(&mut shown).speed(0.5).suffix(unit))
-                            .on_hover_text(if revolute {
+                        let moved = widgets::add(
+                            ui,
+                            center_param,
+                            egui::DragValue::new(&mut shown).speed(0.5).suffix(unit),
+                            if revolute {
                                 "Center angle the null-space term pulls this joint to, degrees (eq. 6)"
                             } else {
                                 "Center length the null-space term pulls this joint to, metres (eq. 6)"
-                            })
-                            .changed();
-                        let weighted = ui
-                            .add(egui::Slider::new(&mut new_gain, 0.0..=1.0).text("gain"))
-                            .on_hover_text("How strongly this joint is pulled to its center (eq. 6, unitless 0–1)")
-                            .changed();
+                            },
+                        )
+                        .changed();
+                        let weighted = widgets::add(
+                            ui,
+                            gain_param,
+                            egui::Slider::new(&mut new_gain, gain_param.range()).text("gain"),
+                            "How strongly this joint is pulled to its center (eq. 6, unitless 0–1)",
+                        )
+                        .changed();
                         if moved || weighted {
                             let value = if revolute { shown.to_radians() } else { shown };
                             edit = Some((joint.clone(), value, new_gain));
@@ -215,32 +223,58 @@ fn shape(ui: &mut egui::Ui, lab: &mut Lab) {
     let mut edits: Vec<GaitShapeEdit<'_>> = Vec::new();
     let mut keys_changed = false;
     ui.collapsing("Phases and steps", |ui| {
+        let phase_param = Param::new(key::PHASES).band(0.0..=0.999);
         for (leg, (name, phase)) in names.iter().zip(phases.iter_mut()).enumerate() {
-            if ui
-                .add(egui::Slider::new(phase, 0.0..=0.999).text(name.as_str()))
-                .on_hover_text("Relative phase of this leg: when it lifts, as a fraction of the period (eq. 9)")
-                .changed()
+            if widgets::add(
+                ui,
+                phase_param,
+                egui::Slider::new(phase, phase_param.range()).text(name.as_str()),
+                "Relative phase of this leg: when it lifts, as a fraction of the period (eq. 9)",
+            )
+            .changed()
             {
                 edits.push(GaitShapeEdit::Phase { leg, phase: *phase });
             }
         }
-        if ui
-            .add(egui::Slider::new(&mut step_height, 0.005..=0.3).text("Step height (m)"))
-            .on_hover_text("Highest point of a transferring foot above its support line, metres")
-            .changed()
+        let height_param = Param::new(key::STEP_HEIGHT).band(0.005..=0.3);
+        if widgets::add(
+            ui,
+            height_param,
+            egui::Slider::new(&mut step_height, height_param.range())
+                .text(height_param.text("Step height")),
+            "Highest point of a transferring foot above its support line, metres",
+        )
+        .changed()
         {
             edits.push(GaitShapeEdit::StepHeight(step_height));
         }
-        ui.label("Transfer key positions (step fraction, height fraction):");
+        let transfer = Param::new(key::TRANSFER_KEYS);
+        transfer.hover(
+            ui.label("Transfer key positions (step fraction, height fraction):"),
+            "Key leg positions of a transferring foot, on a Catmull-Rom spline",
+        );
+        let (along_param, height_param) = (transfer.band(0.01..=0.99), transfer.band(0.0..=2.0));
         for [along, height] in &mut keys {
             ui.horizontal(|ui| {
-                keys_changed |= ui
-                    .add(egui::DragValue::new(along).speed(0.005).range(0.01..=0.99))
-                    .on_hover_text("Key position along the step, fraction of the step length (0–1)")
+                keys_changed |= along_param
+                    .hover(
+                        ui.add(
+                            egui::DragValue::new(along)
+                                .speed(0.005)
+                                .range(along_param.range()),
+                        ),
+                        "Key position along the step, fraction of the step length (0–1)",
+                    )
                     .changed();
-                keys_changed |= ui
-                    .add(egui::DragValue::new(height).speed(0.01).range(0.0..=2.0))
-                    .on_hover_text("Key height, fraction of the step height")
+                keys_changed |= height_param
+                    .hover(
+                        ui.add(
+                            egui::DragValue::new(height)
+                                .speed(0.01)
+                                .range(height_param.range()),
+                        ),
+                        "Key height, fraction of the step height",
+                    )
                     .changed();
             });
         }

@@ -5,6 +5,7 @@ use gaitlab_core::ik::{JacobianAt, Method, TransposeAlpha};
 
 use super::panel::Panel;
 use crate::lab::Lab;
+use crate::ui::param_widgets::{self as widgets, Param, key};
 
 /// The Method panel (hidden while a comparison runs: each view has its own).
 pub struct MethodPanel;
@@ -70,7 +71,7 @@ fn jacobian_at_hint(way: JacobianAt) -> &'static str {
 fn transpose_alpha_label(alpha: TransposeAlpha) -> &'static str {
     match alpha {
         TransposeAlpha::Thesis => "§4.4.1",
-        TransposeAlpha::Buss => "Buss (lab)",
+        TransposeAlpha::Buss => "Buss",
     }
 }
 
@@ -80,7 +81,7 @@ fn transpose_alpha_hint(alpha: TransposeAlpha) -> &'static str {
             "α = Δs·Δt / (2|Δt|²) with Δs = e and Δt = JJᵀe, as She 2006 §4.4.1 prints it"
         }
         TransposeAlpha::Buss => {
-            "Buss's α = ⟨e, JJᵀe⟩/‖JJᵀe‖², twice the thesis' (the α that brings JΔθ closest to e)"
+            "The lab's: Buss's α = ⟨e, JJᵀe⟩/‖JJᵀe‖², twice the thesis' (the α that brings JΔθ closest to e)"
         }
     }
 }
@@ -98,78 +99,103 @@ fn method(ui: &mut egui::Ui, lab: &mut Lab) {
         }
         let ik = &mut lab.session.settings.ik;
         let mut changed = false;
-        changed |= ui
-            .add(
-                egui::Slider::new(&mut ik.lambda, 0.001..=1.0)
-                    .logarithmic(true)
-                    .text("DLS λ (m)"),
-            )
-            .on_hover_text("Damping λ of damped least squares, metres: larger is smoother but lags the targets")
-            .changed();
+        let lambda = Param::new(key::LAMBDA).band(0.001..=1.0);
+        changed |= widgets::add(
+            ui,
+            lambda,
+            egui::Slider::new(&mut ik.lambda, lambda.range())
+                .logarithmic(true)
+                .text(lambda.text("DLS λ")),
+            "Damping λ of damped least squares, metres: larger is smoother but lags the targets",
+        )
+        .changed();
+        let gamma = Param::new(key::GAMMA_MAX).in_degrees().band(1.0..=180.0);
         let mut gamma_deg = ik.gamma_max.to_degrees();
-        if ui
-            .add(egui::Slider::new(&mut gamma_deg, 1.0..=180.0).text("SDLS γmax (°)"))
-            .on_hover_text("Largest joint change SDLS allows per singular direction, degrees")
-            .changed()
+        if widgets::add(
+            ui,
+            gamma,
+            egui::Slider::new(&mut gamma_deg, gamma.range()).text(gamma.text("SDLS γmax")),
+            "Largest joint change SDLS allows per singular direction, degrees",
+        )
+        .changed()
         {
             ik.gamma_max = gamma_deg.to_radians();
             changed = true;
         }
+        let step = Param::new(key::MAX_STEP).in_degrees().band(0.5..=90.0);
         let mut step_deg = ik.max_step.to_degrees();
-        if ui
-            .add(egui::Slider::new(&mut step_deg, 0.5..=90.0).text("Step clamp (°)"))
-            .on_hover_text(
-                "Largest change of any joint per IK iteration, degrees: pinv's, as She 2006 \
-                 §4.4.2 scales a pseudoinverse step that exceeds it (the thesis gives no value)",
-            )
-            .changed()
+        if widgets::add(
+            ui,
+            step,
+            egui::Slider::new(&mut step_deg, step.range()).text(step.text("Step clamp")),
+            "Largest change of any joint per IK iteration, degrees: pinv's, as She 2006 \
+             §4.4.2 scales a pseudoinverse step that exceeds it (the thesis gives no value)",
+        )
+        .changed()
         {
             ik.max_step = step_deg.to_radians();
             changed = true;
         }
-        changed |= ui
-            .checkbox(
-                &mut ik.clamp_every_method,
-                "Clamp transpose and DLS too (lab)",
-            )
-            .on_hover_text(
-                "The lab's addition: the step clamp on transpose and DLS as well as pinv, as \
-                 Buss's code does; §4.4.2 clamps pinv only. Files made before 2026-12-05 run with it",
-            )
-            .changed();
+        changed |= widgets::add(
+            ui,
+            Param::new(key::CLAMP_EVERY_METHOD),
+            egui::Checkbox::new(&mut ik.clamp_every_method, "Clamp transpose and DLS too"),
+            "The step clamp on transpose and DLS as well as pinv, as Buss's code does; \
+             §4.4.2 clamps pinv only. Files made before 2026-12-05 run with it",
+        )
+        .changed();
         ui.horizontal(|ui| {
-            ui.label("Transpose α:")
-                .on_hover_text("The step length of Δθ = α Jᵀe (She 2006 §4.4.1)");
+            Param::new(key::TRANSPOSE_ALPHA).hover(
+                ui.label("Transpose α:"),
+                "The step length of Δθ = α Jᵀe (She 2006 §4.4.1)",
+            );
             for alpha in TransposeAlpha::ALL {
                 changed |= ui
                     .radio_value(&mut ik.transpose_alpha, alpha, transpose_alpha_label(alpha))
                     .on_hover_text(transpose_alpha_hint(alpha))
                     .changed();
+                if alpha == TransposeAlpha::Buss {
+                    widgets::lab_mark(ui);
+                }
             }
         });
-        changed |= ui
-            .add(egui::Slider::new(&mut ik.null_space_gain, 0.0..=2.0).text("Center pull (PODA)"))
-            .on_hover_text(
-                "Gain of the null-space term pulling joints to their center angles (pinv, DLS)",
-            )
-            .changed();
-        changed |= ui
-            .checkbox(&mut ik.enforce_limits, "Joint limits")
-            .on_hover_text("Clamp every joint to its limits after each IK iteration")
-            .changed();
-        changed |= ui
-            .add_enabled(
-                ik.enforce_limits,
-                egui::Slider::new(&mut ik.limit_passes, 1..=16).text("Limit passes"),
-            )
-            .on_hover_text(
-                "1: a joint past its limit takes the limit value, as She 2006 §6.1.1.1 does. \
-                 More (the lab's addition): solve again without the clamped joints, up to this \
-                 many solves per iteration, so the free joints make up the difference",
-            )
-            .changed();
-        ui.label("She 2006 §3.2 control way:")
-            .on_hover_text("Where the Jacobian is taken (no effect on CCD)");
+        let pull = Param::new(key::NULL_SPACE_GAIN).band(0.0..=2.0);
+        changed |= widgets::add(
+            ui,
+            pull,
+            egui::Slider::new(&mut ik.null_space_gain, pull.range())
+                .text(pull.text("Center pull (PODA)")),
+            "Gain of the null-space term pulling joints to their center angles (pinv, DLS)",
+        )
+        .changed();
+        changed |= widgets::add(
+            ui,
+            Param::new(key::ENFORCE_LIMITS),
+            egui::Checkbox::new(&mut ik.enforce_limits, "Joint limits"),
+            "Clamp every joint to its limits after each IK iteration",
+        )
+        .changed();
+        let passes = Param::new(key::LIMIT_PASSES);
+        let enabled = ik.enforce_limits;
+        changed |= widgets::control(
+            ui,
+            passes,
+            "1: a joint past its limit takes the limit value, as She 2006 §6.1.1.1 does. \
+             More (the lab's addition): solve again without the clamped joints, up to this \
+             many solves per iteration, so the free joints make up the difference",
+            |ui| {
+                ui.add_enabled(
+                    enabled,
+                    egui::Slider::new(&mut ik.limit_passes, passes.count_range())
+                        .text(passes.text("Limit passes")),
+                )
+            },
+        )
+        .changed();
+        Param::new(key::JACOBIAN_AT).hover(
+            ui.label("She 2006 §3.2 control way:"),
+            "Where the Jacobian is taken (no effect on CCD)",
+        );
         for way in JacobianAt::ALL {
             changed |= ui
                 .radio_value(&mut ik.jacobian_at, way, jacobian_at_label(way))

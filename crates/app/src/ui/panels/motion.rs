@@ -12,6 +12,7 @@ use gaitlab_engine::catalog::check_thesis_params;
 
 use super::panel::Panel;
 use crate::lab::Lab;
+use crate::ui::param_widgets::{self as widgets, Param, key};
 
 /// The Motion panel.
 pub struct MotionPanel;
@@ -61,7 +62,7 @@ fn mode_label(mode: ThesisMode) -> &'static str {
 fn script_label(script: TargetScript) -> (&'static str, &'static str) {
     match script {
         TargetScript::Lab => (
-            "gaitlab script (lab)",
+            "gaitlab script",
             "The lab's own targets: foot strokes within reach with a foot lift, hands \
              swinging in front, a bouncing root. Not in the thesis",
         ),
@@ -77,7 +78,7 @@ fn script_label(script: TargetScript) -> (&'static str, &'static str) {
 fn wound_label(form: WoundForm) -> (&'static str, &'static str) {
     match form {
         WoundForm::Step => (
-            "on the IK step (lab)",
+            "on the IK step",
             "The weight scales the joint's IK step each iteration; the other joints \
              make up for it. The lab's reading",
         ),
@@ -105,47 +106,57 @@ fn motion(ui: &mut egui::Ui, lab: &mut Lab) {
         };
         let mut params = thesis.params;
         let mut changed = false;
-        ui.label("Targets:");
+        Param::new(key::SCRIPT).hover(ui.label("Targets:"), "Where the targets come from");
         for script in TargetScript::ALL {
             let (label, tip) = script_label(script);
-            changed |= ui
-                .radio_value(&mut params.script, script, label)
-                .on_hover_text(tip)
-                .changed();
+            changed |= widgets::marked(ui, script == TargetScript::Lab, |ui| {
+                ui.radio_value(&mut params.script, script, label)
+            })
+            .on_hover_text(tip)
+            .changed();
         }
-        changed |= ui
-            .checkbox(&mut params.moving_forward, "Moving forward")
-            .on_hover_text("Move the body forward at the motion's speed (off: walk on the spot)")
-            .changed();
-        changed |= ui
-            .add(egui::Slider::new(&mut params.posture_gain, 0.0..=1.0).text("Posture pull (lab)"))
-            .on_hover_text(
-                "The lab's addition, not in the thesis: before each frame's IK every joint \
-                 moves this fraction of its joint gain toward its centre angle (0 = off, \
-                 the thesis; unitless, 0 to 1)",
-            )
-            .changed();
+        changed |= widgets::add(
+            ui,
+            Param::new(key::MOVING_FORWARD),
+            egui::Checkbox::new(&mut params.moving_forward, "Moving forward"),
+            "Move the body forward at the motion's speed (off: walk on the spot)",
+        )
+        .changed();
+        let posture = Param::new(key::POSTURE_GAIN);
+        changed |= widgets::add(
+            ui,
+            posture,
+            egui::Slider::new(&mut params.posture_gain, posture.range())
+                .text(posture.text("Posture pull")),
+            "Not in the thesis: before each frame's IK every joint moves this fraction of its \
+             joint gain toward its centre angle (0 = off, the thesis; unitless, 0 to 1)",
+        )
+        .changed();
         if !params.wounded.is_empty() {
-            ui.label("Wounded weights act:");
+            Param::new(key::WOUND_FORM).hover(
+                ui.label("Wounded weights act:"),
+                "On the IK's step or on the angle shown",
+            );
             for form in WoundForm::ALL {
                 let (label, tip) = wound_label(form);
-                changed |= ui
-                    .radio_value(&mut params.wound_form, form, label)
-                    .on_hover_text(tip)
-                    .changed();
+                changed |= widgets::marked(ui, form == WoundForm::Step, |ui| {
+                    ui.radio_value(&mut params.wound_form, form, label)
+                })
+                .on_hover_text(tip)
+                .changed();
             }
             ui.label("Wounded joints (multiply weight):");
+            let weight = Param::new(key::WOUNDED).band(0.0..=2.0);
             for wounded in &mut params.wounded {
-                changed |= ui
-                    .add(
-                        egui::Slider::new(&mut wounded.multiply, 0.0..=2.0)
-                            .text(wounded.joint.as_str()),
-                    )
-                    .on_hover_text(
-                        "Weight of this wounded joint in the wounded motions, 0 to 10 (0 stiff, \
-                         1 normal, unitless; the slider covers 0 to 2)",
-                    )
-                    .changed();
+                changed |= widgets::add(
+                    ui,
+                    weight,
+                    egui::Slider::new(&mut wounded.multiply, weight.range())
+                        .text(wounded.joint.as_str()),
+                    "Weight of this wounded joint in the wounded motions, 0 to 10 (0 stiff, \
+                     1 normal, unitless; the slider covers 0 to 2)",
+                )
+                .changed();
             }
         }
         if changed {
@@ -172,36 +183,50 @@ fn speed_and_targets(ui: &mut egui::Ui, lab: &mut Lab) {
     let running = lab.session.settings.mode.running();
     let mut changed = false;
     ui.collapsing("Speed", |ui| {
+        let cycle = Param::new(cycle_key(params.script, running)).band(0.2..=3.0);
         let frequency = match (params.script, running) {
             (TargetScript::Lab, false) => &mut params.walk.frequency_hz,
             (TargetScript::Lab, true) => &mut params.run.frequency_hz,
             (TargetScript::Listing, false) => &mut params.listing.walk.frequency_hz,
             (TargetScript::Listing, true) => &mut params.listing.run.frequency_hz,
         };
-        changed |= ui
-            .add(egui::Slider::new(frequency, 0.2..=3.0).text("Step frequency (Hz)"))
-            .on_hover_text("Cycles per second of the target sinusoids, hertz")
-            .changed();
-        changed |= ui
-            .add(egui::Slider::new(&mut params.slowdown, 1.0..=20.0).text("Slowdown"))
-            .on_hover_text("Divides the motion's frequency and speed (1 = real time, unitless)")
-            .changed();
+        changed |= widgets::add(
+            ui,
+            cycle,
+            egui::Slider::new(frequency, cycle.range()).text("Step frequency (Hz)"),
+            "Cycles per second of the target sinusoids, hertz",
+        )
+        .changed();
+        let slowdown = Param::new(key::SLOWDOWN).band(1.0..=20.0);
+        changed |= widgets::add(
+            ui,
+            slowdown,
+            egui::Slider::new(&mut params.slowdown, slowdown.range())
+                .text(slowdown.text("Slowdown")),
+            "Divides the motion's frequency and speed (1 = real time, unitless)",
+        )
+        .changed();
+        let speed_param = Param::new(key::THESIS_SPEED).band(0.0..=6.0);
         let mut matched = params.speed_mps.is_none();
-        if ui
-            .checkbox(&mut matched, "Speed matched to stride")
-            .on_hover_text(
-                "Body speed follows stride length × step frequency, so the feet do not slide",
-            )
-            .changed()
+        if widgets::add(
+            ui,
+            speed_param,
+            egui::Checkbox::new(&mut matched, "Speed matched to stride"),
+            "Body speed follows stride length × step frequency, so the feet do not slide",
+        )
+        .changed()
         {
             params.speed_mps = if matched { None } else { Some(script_speed) };
             changed = true;
         }
         if let Some(speed) = params.speed_mps.as_mut() {
-            changed |= ui
-                .add(egui::Slider::new(speed, 0.0..=6.0).text("Speed (m/s)"))
-                .on_hover_text("Forward body speed, metres per second")
-                .changed();
+            changed |= widgets::add(
+                ui,
+                speed_param,
+                egui::Slider::new(speed, speed_param.range()).text(speed_param.text("Speed")),
+                "Forward body speed, metres per second",
+            )
+            .changed();
         }
     });
     ui.collapsing("Target positions", |ui| match params.script {
@@ -213,11 +238,32 @@ fn speed_and_targets(ui: &mut egui::Ui, lab: &mut Lab) {
     }
 }
 
-/// One row of x, y, z drag values in metres; whether any changed.
-fn vector_row(ui: &mut egui::Ui, label: &str, what: &str, vector: &mut glam::DVec3) -> bool {
+/// The table's row of the walking or running cycle of `script`: the lab
+/// script's (`scenario.thesis.walk`, `.run`) or §5.2.2's listing.
+fn cycle_key(script: TargetScript, running: bool) -> &'static str {
+    match (script, running) {
+        (TargetScript::Lab, false) => key::WALK,
+        (TargetScript::Lab, true) => key::RUN,
+        (TargetScript::Listing, _) => key::LISTING,
+    }
+}
+
+/// One row of x, y, z drag values in metres of the table's row `param`
+/// (with the lab tag after the label when it is the lab's); whether any changed.
+fn vector_row(
+    ui: &mut egui::Ui,
+    param: Param,
+    label: &str,
+    what: &str,
+    vector: &mut glam::DVec3,
+) -> bool {
     let mut changed = false;
+    let param = param.band(-2.0..=2.0);
     ui.horizontal(|ui| {
         ui.label(label);
+        if param.is_lab() {
+            widgets::lab_mark(ui);
+        }
         for (axis, component) in [
             ("x", &mut vector.x),
             ("y", &mut vector.y),
@@ -227,12 +273,15 @@ fn vector_row(ui: &mut egui::Ui, label: &str, what: &str, vector: &mut glam::DVe
                 .add(
                     egui::DragValue::new(component)
                         .speed(0.005)
-                        .range(-2.0..=2.0)
+                        .range(param.range())
                         .suffix(" m"),
                 )
-                .on_hover_text(format!(
-                    "{label} {what}, {axis} coordinate in metres (drag to change)"
-                ))
+                .on_hover_ui(|ui| {
+                    param.tooltip(
+                        ui,
+                        &format!("{label} {what}, {axis} coordinate in metres (drag to change)"),
+                    );
+                })
                 .changed();
         }
     });
@@ -246,6 +295,7 @@ fn lab_targets(ui: &mut egui::Ui, params: &mut ThesisParams, running: bool) -> b
     } else {
         &mut params.walk
     };
+    let param = Param::new(cycle_key(TargetScript::Lab, running));
     let mut changed = false;
     for (label, vector) in [
         ("Front foot", &mut shape.front_foot),
@@ -253,12 +303,16 @@ fn lab_targets(ui: &mut egui::Ui, params: &mut ThesisParams, running: bool) -> b
         ("Front hand", &mut shape.front_hand),
         ("Back hand", &mut shape.back_hand),
     ] {
-        changed |= vector_row(ui, label, "extreme", vector);
+        changed |= vector_row(ui, param, label, "extreme", vector);
     }
-    changed |= ui
-        .add(egui::Slider::new(&mut shape.step_height_m, 0.0..=0.4).text("Step height (m)"))
-        .on_hover_text("Highest lift of a swinging foot, metres")
-        .changed();
+    let lift = param.band(0.0..=0.4);
+    changed |= widgets::add(
+        ui,
+        lift,
+        egui::Slider::new(&mut shape.step_height_m, lift.range()).text("Step height (m)"),
+        "Highest lift of a swinging foot, metres",
+    )
+    .changed();
     changed
 }
 
@@ -277,13 +331,24 @@ fn listing_targets(ui: &mut egui::Ui, params: &mut ThesisParams, running: bool) 
         ("Left hand", &mut cycle.left_hand),
         ("Right hand", &mut cycle.right_hand),
     ];
+    let param = Param::new(key::LISTING);
     for (label, target) in targets {
-        changed |= vector_row(ui, label, "centre", &mut target.center);
-        changed |= vector_row(ui, "   amplitude", "sine amplitude", &mut target.amplitude);
+        changed |= vector_row(ui, param, label, "centre", &mut target.center);
+        changed |= vector_row(
+            ui,
+            param,
+            "   amplitude",
+            "sine amplitude",
+            &mut target.amplitude,
+        );
     }
-    changed |= ui
-        .add(egui::Slider::new(&mut cycle.root_height_m, 0.5..=1.5).text("Root height (m)"))
-        .on_hover_text("Height of the root, the targets' origin, above the ground, metres")
-        .changed();
+    let root = param.band(0.5..=1.5);
+    changed |= widgets::add(
+        ui,
+        root,
+        egui::Slider::new(&mut cycle.root_height_m, root.range()).text("Root height (m)"),
+        "Height of the root, the targets' origin, above the ground, metres",
+    )
+    .changed();
     changed
 }

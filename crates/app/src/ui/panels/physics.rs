@@ -3,10 +3,13 @@
 //! state machine's state (Figure 4), and the live Table-2 figures beside the
 //! paper's animation column.
 
+use gaitlab_core::params::Origin;
+use gaitlab_core::preset::physics::MAX_CONTROLLER_VALUE;
 use gaitlab_engine::DriverKind;
 
 use super::panel::Panel;
 use crate::lab::Lab;
+use crate::ui::param_widgets::{self as widgets, Param, key};
 
 /// The physics panel.
 pub struct PhysicsPanel;
@@ -71,36 +74,45 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 })
                 .response
                 .on_hover_text("The gait the controllers' state machine runs");
-            let response = ui
-                .add(egui::Slider::new(&mut speed, SPEED_RANGE_MPS).text("Desired speed (m/s)"))
-                .on_hover_text("ẋ_d of eq. 3: foot placement about the neutral point regulates it");
+            let speed_param = Param::new(key::PHYSICS_SPEED).band(SPEED_RANGE_MPS);
+            let response = widgets::add(
+                ui,
+                speed_param,
+                egui::Slider::new(&mut speed, speed_param.range())
+                    .text(speed_param.text("Desired speed")),
+                "ẋ_d of eq. 3: foot placement about the neutral point regulates it",
+            );
             if let Some(band) = tested {
-                band_under_slider(ui, response.rect, SPEED_RANGE_MPS, band, false);
+                band_under_slider(ui, response.rect, speed_param.range(), band, false);
             }
             if response.changed() {
-                edits.push(("speed_mps", speed));
+                edits.push((speed_param.command(), speed));
             }
             speed_range_line(ui, speed, tested);
-            if ui
-                .add(egui::Slider::new(&mut hop, 0.02..=0.4).text("Hop height (m)"))
-                .on_hover_text("Eq. 2: the thrust in stance is set so each hop reaches this height")
-                .changed()
+            let hop_param = Param::new(key::HOP_HEIGHT).band(HOP_RANGE_M);
+            if widgets::add(
+                ui,
+                hop_param,
+                egui::Slider::new(&mut hop, hop_param.range()).text(hop_param.text("Hop height")),
+                "Eq. 2: the thrust in stance is set so each hop reaches this height",
+            )
+            .changed()
             {
-                edits.push(("hop_height_m", hop));
+                edits.push((hop_param.command(), hop));
             }
-            let response = ui
-                .add(
-                    egui::Slider::new(&mut scale, SCALE_RANGE)
-                        .logarithmic(true)
-                        .text("Scale L"),
-                )
-                .on_hover_text(
-                    "Table 1's dynamic scaling: lengths ×L, masses ×L³, speeds and times ×√L; \
-                     the creature restarts at the new size. The green band: the scales this \
-                     gait was tested to hold at (tools/physics_band_sweep.py)",
-                );
+            let scale_param = Param::new(key::SCALE).band(SCALE_RANGE);
+            let response = widgets::add(
+                ui,
+                scale_param,
+                egui::Slider::new(&mut scale, scale_param.range())
+                    .logarithmic(true)
+                    .text(scale_param.text("Scale L")),
+                "Table 1's dynamic scaling: lengths ×L, masses ×L³, speeds and times ×√L; \
+                 the creature restarts at the new size. The green band: the scales this \
+                 gait was tested to hold at (tools/physics_band_sweep.py)",
+            );
             if let Some(band) = tested_scale {
-                band_under_slider(ui, response.rect, SCALE_RANGE, band, true);
+                band_under_slider(ui, response.rect, scale_param.range(), band, true);
             }
             if response.drag_stopped() || (response.changed() && !response.dragged()) {
                 new_scale = Some(scale);
@@ -130,20 +142,38 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
             }
             egui::CollapsingHeader::new("Gains").show(ui, |ui| {
                 ui.label("Up to 1000× the default: too much and the simulation blows up, and the creature is put back.");
+                let rows = widgets::controller_rows(ui, lab, gains.iter().map(|g| g.name));
                 for gain in &gains {
                     let mut value = gain.value;
-                    let hi = if gain.default > 0.0 { gain.default * 1000.0 } else { 1.0 };
-                    if ui
-                        .add(
+                    let hi = if gain.default > 0.0 {
+                        (gain.default * 1000.0).min(MAX_CONTROLLER_VALUE)
+                    } else {
+                        1.0
+                    };
+                    let row = widgets::controller_row(&rows, gain.name);
+                    let lab_row = row.is_some_and(|r| r.origin == Origin::Lab);
+                    let text = if gain.unit.is_empty() {
+                        gain.label.to_owned()
+                    } else {
+                        format!("{} ({})", gain.label, gain.unit)
+                    };
+                    if widgets::marked(ui, lab_row, |ui| {
+                        ui.add(
                             egui::Slider::new(&mut value, 0.0..=hi)
                                 .logarithmic(true)
-                                .text(format!("{} ({})", gain.label, gain.unit)),
+                                .text(text),
                         )
-                        .on_hover_text(format!(
+                    })
+                    .on_hover_ui(|ui| {
+                        ui.label(format!(
                             "{}: {} {}, default {}; the preset's key is {}",
                             gain.label, gain.value, gain.unit, gain.default, gain.name
-                        ))
-                        .changed()
+                        ));
+                        if let Some(row) = row {
+                            widgets::controller_tooltip(ui, row, hi);
+                        }
+                    })
+                    .changed()
                     {
                         gain_edits.push((gain.name, value));
                     }
@@ -256,10 +286,16 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     }
 }
 
-/// The desired-speed slider's range, m/s.
+/// The desired-speed slider's band, m/s (the table takes ±15 m/s; the
+/// slider's tooltip says both).
 const SPEED_RANGE_MPS: std::ops::RangeInclusive<f64> = -1.0..=6.0;
 
-/// The scale slider's range (logarithmic).
+/// The hop-height slider's band, m (the table takes 0–2 m; the slider's
+/// tooltip says both).
+const HOP_RANGE_M: std::ops::RangeInclusive<f64> = 0.02..=0.4;
+
+/// The scale slider's band (logarithmic): the scales the tested bands were
+/// swept over (the table takes 0.05–20; the slider's tooltip says both).
 const SCALE_RANGE: std::ops::RangeInclusive<f64> = 0.25..=4.0;
 
 /// A green band under a slider's rail (egui's: [`egui::style::Spacing::slider_width`]

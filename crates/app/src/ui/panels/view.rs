@@ -4,6 +4,7 @@
 use super::panel::Panel;
 use crate::lab::Lab;
 use crate::theme::Theme;
+use crate::ui::param_widgets::{self as widgets, Param, key};
 
 /// The View and Object transformation panels.
 pub struct ViewPanel;
@@ -45,12 +46,14 @@ fn view(ui: &mut egui::Ui, lab: &mut Lab) {
     });
     ui.collapsing("Object transformation", |ui| {
         let mut heading = lab.session.settings.heading_deg;
-        if ui
-            .add(egui::Slider::new(&mut heading, -180.0..=180.0).text("Heading (°)"))
-            .on_hover_text(
-                "Direction the figure faces, degrees about the vertical axis (restarts the motion)",
-            )
-            .changed()
+        let param = Param::new(key::HEADING).in_degrees();
+        if widgets::add(
+            ui,
+            param,
+            egui::Slider::new(&mut heading, param.range()).text(param.text("Heading")),
+            "Direction the figure faces, degrees about the vertical axis (restarts the motion)",
+        )
+        .changed()
         {
             lab.set_heading_deg(heading);
         }
