@@ -65,8 +65,16 @@ fn ranges_from_tables(schema: &mut Value) {
                 min_open,
                 max_open,
             } => {
-                let low = if min_open { "exclusiveMinimum" } else { "minimum" };
-                let high = if max_open { "exclusiveMaximum" } else { "maximum" };
+                let low = if min_open {
+                    "exclusiveMinimum"
+                } else {
+                    "minimum"
+                };
+                let high = if max_open {
+                    "exclusiveMaximum"
+                } else {
+                    "maximum"
+                };
                 map.insert(low.to_owned(), min.into());
                 map.insert(high.to_owned(), max.into());
             }
