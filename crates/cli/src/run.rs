@@ -95,7 +95,10 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
     if creature.scenario.engine == Engine::Physics {
         for (name, value) in &gains {
             driver
-                .apply(EngineCommand::Gain { name, value: *value })
+                .apply(EngineCommand::Gain {
+                    name,
+                    value: *value,
+                })
                 .map_err(|e| Failure::input(format!("--set {e}")))?;
         }
     } else if let Some((name, _)) = gains.first() {
