@@ -62,41 +62,53 @@ pub fn eq9_slope_range(gait: &GaitParams, t_s: f64, g_mps2: f64, weights: &[f64]
 }
 
 /// The steady gaits' lowest points and pitch ranges before a change and now.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct TransitionBounds {
     low_before_m: f64,
     high_before_m: f64,
     slope_before: (f64, f64),
-    /// `[P, β]` and phases the present gait's figures are for.
-    key: ([f64; 2], Vec<f64>),
+    /// The present gait's figures are due: a change started, or the gait
+    /// changed again while the legs take one on (a queued edit the driver
+    /// took on).
+    now_due: bool,
     low_now_m: f64,
     high_now_m: f64,
     slope_now: (f64, f64),
 }
 
-impl TransitionBounds {
-    /// Bounds for `legs` legs (the only allocation).
-    #[must_use]
-    pub fn new(legs: usize) -> Self {
+impl Default for TransitionBounds {
+    fn default() -> Self {
         Self {
-            key: ([f64::NAN; 2], Vec::with_capacity(legs)),
-            ..Self::default()
+            low_before_m: 0.0,
+            high_before_m: 0.0,
+            slope_before: (0.0, 0.0),
+            now_due: true,
+            low_now_m: 0.0,
+            high_now_m: 0.0,
+            slope_now: (0.0, 0.0),
         }
     }
+}
 
-    /// A change starts at `t_s` from the steady gait `before`.
+impl TransitionBounds {
+    /// A change starts at `t_s` from the steady gait `before`; the present
+    /// gait's figures follow at the next [`TransitionBounds::refresh`].
     pub fn start(&mut self, before: &GaitParams, t_s: f64, g_mps2: f64, weights: &[f64]) {
         (_, self.low_before_m, self.high_before_m) = eq9_centre_and_range_m(before, t_s, g_mps2);
         self.slope_before = eq9_slope_range(before, t_s, g_mps2, weights);
+        self.now_due = true;
     }
 
-    /// Brings the present gait's figures up to date (recomputed only when its values change).
+    /// The gait's period, duty factor or phases changed while the legs take
+    /// a change on: its figures follow at the next [`TransitionBounds::refresh`].
+    pub fn gait_changed(&mut self) {
+        self.now_due = true;
+    }
+
+    /// Brings the present gait's figures up to date at `t_s` when they are
+    /// due (a change started, or the gait changed since).
     pub fn refresh(&mut self, gait: &GaitParams, t_s: f64, g_mps2: f64, weights: &[f64]) {
-        let key = [gait.period_s(), gait.duty_factor()];
-        if self.key.0 != key || self.key.1 != gait.phases() {
-            self.key.0 = key;
-            self.key.1.clear();
-            self.key.1.extend_from_slice(gait.phases());
+        if std::mem::take(&mut self.now_due) {
             (_, self.low_now_m, self.high_now_m) = eq9_centre_and_range_m(gait, t_s, g_mps2);
             self.slope_now = eq9_slope_range(gait, t_s, g_mps2, weights);
         }
@@ -188,7 +200,7 @@ mod tests {
         let bounds = TransitionBounds {
             slope_before: (-0.1, 0.05),
             slope_now: (-0.02, 0.2),
-            ..TransitionBounds::new(4)
+            ..TransitionBounds::default()
         };
         assert_eq!(bounds.pitch_slope(0.3), 0.2);
         assert_eq!(bounds.pitch_slope(-0.3), -0.1);
