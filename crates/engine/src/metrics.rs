@@ -613,16 +613,7 @@ impl PhysicsRunMetrics {
             start_note: driver.start_note().map(str::to_owned),
             table2: {
                 let names: Vec<&str> = sim.creature.legs.iter().map(|l| l.name.as_str()).collect();
-                gaitlab_physics::engine::table2::compare(&s, driver.gait(), &names)
-                    .into_iter()
-                    .map(|c| Table2Entry {
-                        quantity: c.row.label,
-                        paper: c.row.animation,
-                        measured: c.measured,
-                        diff_pct: c.diff_pct(),
-                        input: c.row.quantity.is_input(),
-                    })
-                    .collect()
+                crate::catalog::table2(&s, driver.gait(), &names)
             },
             steps: sim.steps,
             steps_per_second: if step_s > 0.0 { steps / step_s } else { 0.0 },

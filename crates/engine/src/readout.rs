@@ -319,7 +319,7 @@ impl AnyDriver {
             return None;
         };
         let sim = driver.sim();
-        let com = gaitlab_physics::dynamics::energy::center_of_mass(&sim.creature.model, &sim.data);
+        let com = driver.centre_of_mass();
         Some(RouteReadout {
             steerable: sim.creature.model.free_base(),
             body_m: DVec2::new(com.x, com.z) / driver.params().scale,

@@ -126,8 +126,7 @@ impl AnyDriver {
         };
         let s = driver.summary();
         let probe = driver.probe();
-        let sim = driver.sim();
-        let com = gaitlab_physics::dynamics::energy::center_of_mass(&sim.creature.model, &sim.data);
+        let com = driver.centre_of_mass();
         Some(PhysicsState {
             model: driver.params().model.name(),
             scale: driver.params().scale,

@@ -52,6 +52,7 @@ fn allocations_during(f: impl FnOnce()) -> usize {
 #[test]
 fn stepping_the_drivers_allocates_nothing() {
     poda_driver_allocates_nothing();
+    key_centres_allocate_nothing();
     let skeleton = common::human();
     for method in Method::ALL {
         for mode in ThesisMode::ALL {
@@ -159,4 +160,40 @@ fn poda_driver_allocates_nothing() {
             );
         }
     }
+}
+
+/// Key leg positions with centre angles: the key-centres stage evaluates its
+/// splines in a scratch buffer the driver owns (the bundled quadruped with
+/// every knee given a centre on the middle key).
+fn key_centres_allocate_nothing() {
+    use gaitlab_core::preset::load_bundled;
+    use gaitlab_core::preset::poda::KeyCenters;
+    use gaitlab_motion::PodaDriver;
+    let Some(Ok(creature)) = load_bundled("poda-quadruped") else {
+        panic!("poda-quadruped is bundled and valid");
+    };
+    let mut params = creature.scenario.poda_params();
+    let middle: KeyCenters = [
+        ("3", [-1.2, 1.0]),
+        ("left_hind_knee_x", [1.2, 1.0]),
+        ("right_hind_knee_x", [1.2, 1.0]),
+    ]
+    .iter()
+    .map(|(k, v)| ((*k).to_owned(), *v))
+    .collect();
+    params.transfer_key_centers = vec![KeyCenters::new(), middle, KeyCenters::new()];
+    let mut driver = match PodaDriver::with_params(&creature, params) {
+        Ok(driver) => driver,
+        Err(error) => panic!("{error}"),
+    };
+    // Warm up over two cycles: the body plan and metrics reach their size.
+    for _ in 0..150 {
+        driver.step(1.0 / 60.0);
+    }
+    let count = allocations_during(|| {
+        for _ in 0..240 {
+            driver.step(1.0 / 60.0);
+        }
+    });
+    assert_eq!(count, 0, "key centres: {count} allocations in 240 frames");
 }

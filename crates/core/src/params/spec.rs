@@ -206,6 +206,15 @@ pub struct ParamSpec {
 }
 
 impl ParamSpec {
+    /// The unit after a number (` m`); empty for a pure number.
+    fn unit_suffix(&self) -> String {
+        if self.unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {}", self.unit)
+        }
+    }
+
     /// Checks a real value against the domain.
     ///
     /// # Errors
@@ -215,11 +224,7 @@ impl ParamSpec {
         if self.domain.contains(value) {
             return Ok(());
         }
-        let unit = if self.unit.is_empty() {
-            String::new()
-        } else {
-            format!(" {}", self.unit)
-        };
+        let unit = self.unit_suffix();
         Err(PresetError::new(
             path,
             match self.domain {
@@ -244,11 +249,7 @@ impl ParamSpec {
         if self.domain.contains(value) {
             Ok(value)
         } else {
-            let unit = if self.unit.is_empty() {
-                String::new()
-            } else {
-                format!(" {}", self.unit)
-            };
+            let unit = self.unit_suffix();
             Err(format!(
                 "{key}: {value} is outside {}{unit}",
                 self.domain.describe()

@@ -120,14 +120,7 @@ const HOPPER: [ControllerParam; 20] = [
         Origin::Open,
         "eq. 1's b; the paper prints no value: light, so most of a landing's energy returns",
     ),
-    row(
-        "leg_travel_m",
-        "Telescoping leg's travel",
-        "m",
-        TABLE3,
-        Origin::Open,
-        "The leg's stop: Table 3 gives the links' lengths, not how far the leg telescopes",
-    ),
+    LEG_TRAVEL_M,
     row(
         "landing_rest_m",
         "Leg rest length for landing",
@@ -168,14 +161,7 @@ const HOPPER: [ControllerParam; 20] = [
         Origin::Open,
         "eq. 3's gain; the paper prints none: 0.12 s leaves 4–6 % (inside its 10 %)",
     ),
-    row(
-        "speed_integral_gain",
-        "Speed trim integral gain",
-        "",
-        LAB_TRIM,
-        Origin::Lab,
-        "Gain of the lab's integral speed trim (lab_additions.speed_trim); eq. 3 has no integral",
-    ),
+    SPEED_INTEGRAL_GAIN,
     row(
         "swing_kp",
         "Swing hip stiffness (eq. 5)",
@@ -240,14 +226,7 @@ const HOPPER: [ControllerParam; 20] = [
         Origin::Open,
         "eq. 5's servo on the ball hip's third axis; no value printed",
     ),
-    row(
-        "max_hip_torque",
-        "Largest hip torque",
-        "N·m",
-        ACTUATORS,
-        Origin::Open,
-        "The paper names the actuators' available torque as shaping the motion, gives none",
-    ),
+    MAX_HIP_TORQUE,
     row(
         "max_yaw_torque",
         "Largest trunk-yaw torque through the stance hips",
@@ -336,6 +315,158 @@ const GALLOP_OWN: [ControllerParam; 8] = [
 
 const BIPED_GALLOP_ROWS: [ControllerParam; 28] = concat(&GALLOP_OWN, &HOPPER);
 
+// Rows that two or three controllers share word for word.
+
+/// `leg_travel_m`, the same in every controller that has it.
+const LEG_TRAVEL_M: ControllerParam = row(
+    "leg_travel_m",
+    "Telescoping leg's travel",
+    "m",
+    TABLE3,
+    Origin::Open,
+    "The leg's stop: Table 3 gives the links' lengths, not how far the leg telescopes",
+);
+
+/// `speed_integral_gain`, the same in every controller that has it.
+const SPEED_INTEGRAL_GAIN: ControllerParam = row(
+    "speed_integral_gain",
+    "Speed trim integral gain",
+    "",
+    LAB_TRIM,
+    Origin::Lab,
+    "Gain of the lab's integral speed trim (lab_additions.speed_trim); eq. 3 has no integral",
+);
+
+/// `max_hip_torque`, the same in every controller that has it.
+const MAX_HIP_TORQUE: ControllerParam = row(
+    "max_hip_torque",
+    "Largest hip torque",
+    "N·m",
+    ACTUATORS,
+    Origin::Open,
+    "The paper names the actuators' available torque as shaping the motion, gives none",
+);
+
+/// `leg_stiffness`, the same in every controller that has it.
+const LEG_STIFFNESS: ControllerParam = row(
+    "leg_stiffness",
+    "Leg spring stiffness k (eq. 1)",
+    "N/m",
+    EQ1,
+    Origin::Open,
+    "eq. 1's k per leg; the paper prints no value",
+);
+
+/// `leg_damping`, the same in every controller that has it.
+const LEG_DAMPING: ControllerParam = row(
+    "leg_damping",
+    "Leg spring damping b in stance (eq. 1)",
+    "N·s/m",
+    EQ1,
+    Origin::Open,
+    "eq. 1's b; the paper prints no value",
+);
+
+/// `thrust_m`, the same in every controller that has it.
+const THRUST_M: ControllerParam = row(
+    "thrust_m",
+    "Initial thrust: extra rest length in Thrust (eq. 2)",
+    "m",
+    EQ2_THRUST,
+    Origin::Open,
+    "Figure 4's leg extension injects eq. 2's energy; no length printed",
+);
+
+/// `max_thrust_m`, the same in every controller that has it.
+const MAX_THRUST_M: ControllerParam = row(
+    "max_thrust_m",
+    "Largest thrust",
+    "m",
+    LAB,
+    Origin::Lab,
+    "Bound of the lab's flight-regulated thrust",
+);
+
+/// `placement_gain_s`, the same in every controller that has it.
+const PLACEMENT_GAIN_S: ControllerParam = row(
+    "placement_gain_s",
+    "Foot placement gain k_ẋ (eq. 3)",
+    "s",
+    EQ3,
+    Origin::Open,
+    "eq. 3's gain; the paper prints none",
+);
+
+/// `pitch_kv`, the same in every controller that has it.
+const PITCH_KV: ControllerParam = row(
+    "pitch_kv",
+    "Pitch damping k_v (eq. 4)",
+    TORSION_DAMPING,
+    EQ4,
+    Origin::Open,
+    "eq. 4's k_v; the paper prints no value",
+);
+
+/// `roll_kp`, the same in every controller that has it.
+const ROLL_KP: ControllerParam = row(
+    "roll_kp",
+    "Roll stiffness (eq. 4)",
+    TORSION,
+    EQ4,
+    Origin::Open,
+    "eq. 4 on roll; the paper prints no value",
+);
+
+/// `roll_kv`, the same in every controller that has it.
+const ROLL_KV: ControllerParam = row(
+    "roll_kv",
+    "Roll damping (eq. 4)",
+    TORSION_DAMPING,
+    EQ4,
+    Origin::Open,
+    "eq. 4 on roll; the paper prints no value",
+);
+
+/// `yaw_kv`, the same in every controller that has it.
+const YAW_KV: ControllerParam = row(
+    "yaw_kv",
+    "Trunk yaw damping in stance",
+    TORSION_DAMPING,
+    LAB,
+    Origin::Lab,
+    "Damping of the lab's yaw servo",
+);
+
+/// `swing_kp`, the same in every controller that has it.
+const SWING_KP: ControllerParam = row(
+    "swing_kp",
+    "Swing hip stiffness (eq. 5)",
+    TORSION,
+    EQ5_SWING,
+    Origin::Open,
+    "eq. 5's position gain positioning the legs for landing; the paper prints none",
+);
+
+/// `swing_kv`, the same in every controller that has it.
+const SWING_KV: ControllerParam = row(
+    "swing_kv",
+    "Swing hip damping (eq. 5)",
+    TORSION_DAMPING,
+    EQ5_SWING,
+    Origin::Open,
+    "eq. 5's velocity gain positioning the legs for landing; the paper prints none",
+);
+
+/// `swing_roll_follow`, the same in every controller that has it.
+const SWING_ROLL_FOLLOW: ControllerParam = row(
+    "swing_roll_follow",
+    "Share of trunk roll in eq. 3's leg aim",
+    "",
+    EQ3,
+    Origin::Open,
+    "The paper does not say which attitude eq. 3's kinematic transformation uses",
+);
+
 /// [`BipedRunParams`]' parameters, in [`NamedParameters::NAMES`] order.
 pub const BIPED_RUN: &[ControllerParam] = &HOPPER;
 
@@ -353,14 +484,7 @@ pub const KANGAROO_HOP: &[ControllerParam] = &[
         Origin::Lab,
         "Rate of the lab's speed ramp (lab_additions.speed_ramp); the paper's speed is not ramped",
     ),
-    row(
-        "speed_integral_gain",
-        "Speed trim integral gain",
-        "",
-        LAB_TRIM,
-        Origin::Lab,
-        "Gain of the lab's integral speed trim (lab_additions.speed_trim); eq. 3 has no integral",
-    ),
+    SPEED_INTEGRAL_GAIN,
     row(
         "speed_integral_max_mps",
         "Largest speed trim correction",
@@ -630,30 +754,9 @@ pub const KANGAROO_HOP: &[ControllerParam] = &[
 /// [`QuadrupedBoundParams`]' parameters (bound and gallop), in
 /// [`NamedParameters::NAMES`] order.
 pub const QUADRUPED_BOUND: &[ControllerParam] = &[
-    row(
-        "leg_stiffness",
-        "Leg spring stiffness k (eq. 1)",
-        "N/m",
-        EQ1,
-        Origin::Open,
-        "eq. 1's k per leg; the paper prints no value",
-    ),
-    row(
-        "leg_travel_m",
-        "Telescoping leg's travel",
-        "m",
-        TABLE3,
-        Origin::Open,
-        "The leg's stop: Table 3 gives the links' lengths, not how far the leg telescopes",
-    ),
-    row(
-        "leg_damping",
-        "Leg spring damping b in stance (eq. 1)",
-        "N·s/m",
-        EQ1,
-        Origin::Open,
-        "eq. 1's b; the paper prints no value",
-    ),
+    LEG_STIFFNESS,
+    LEG_TRAVEL_M,
+    LEG_DAMPING,
     row(
         "leg_air_damping",
         "Leg damping while the foot is in the air",
@@ -678,14 +781,7 @@ pub const QUADRUPED_BOUND: &[ControllerParam] = &[
         Origin::Open,
         "Figure 4 shortens the idle (virtual) leg without a length",
     ),
-    row(
-        "thrust_m",
-        "Initial thrust: extra rest length in Thrust (eq. 2)",
-        "m",
-        EQ2_THRUST,
-        Origin::Open,
-        "Figure 4's leg extension injects eq. 2's energy; no length printed",
-    ),
+    THRUST_M,
     row(
         "rear_extra_thrust_m",
         "Rear pair's extra thrust",
@@ -694,14 +790,7 @@ pub const QUADRUPED_BOUND: &[ControllerParam] = &[
         Origin::Lab,
         "A term of the lab's (0 by default: both pairs thrust alike)",
     ),
-    row(
-        "max_thrust_m",
-        "Largest thrust",
-        "m",
-        LAB,
-        Origin::Lab,
-        "Bound of the lab's flight-regulated thrust",
-    ),
+    MAX_THRUST_M,
     row(
         "min_thrust_m",
         "Smallest thrust",
@@ -774,22 +863,8 @@ pub const QUADRUPED_BOUND: &[ControllerParam] = &[
         Origin::Open,
         "eq. 3 uses the last measured stance; before one, 0.09 s, between Table 2's 0.10 and 0.08",
     ),
-    row(
-        "placement_gain_s",
-        "Foot placement gain k_ẋ (eq. 3)",
-        "s",
-        EQ3,
-        Origin::Open,
-        "eq. 3's gain; the paper prints none",
-    ),
-    row(
-        "speed_integral_gain",
-        "Speed trim integral gain",
-        "",
-        LAB_TRIM,
-        Origin::Lab,
-        "Gain of the lab's integral speed trim (lab_additions.speed_trim); eq. 3 has no integral",
-    ),
+    PLACEMENT_GAIN_S,
+    SPEED_INTEGRAL_GAIN,
     row(
         "speed_bias_cap",
         "Largest speed trim, as a fraction of the desired speed",
@@ -830,30 +905,9 @@ pub const QUADRUPED_BOUND: &[ControllerParam] = &[
         Origin::Open,
         "eq. 4's k_p, weak so the bound's pitching stays the gait's own; no value printed",
     ),
-    row(
-        "pitch_kv",
-        "Pitch damping k_v (eq. 4)",
-        TORSION_DAMPING,
-        EQ4,
-        Origin::Open,
-        "eq. 4's k_v; the paper prints no value",
-    ),
-    row(
-        "roll_kp",
-        "Roll stiffness (eq. 4)",
-        TORSION,
-        EQ4,
-        Origin::Open,
-        "eq. 4 on roll; the paper prints no value",
-    ),
-    row(
-        "roll_kv",
-        "Roll damping (eq. 4)",
-        TORSION_DAMPING,
-        EQ4,
-        Origin::Open,
-        "eq. 4 on roll; the paper prints no value",
-    ),
+    PITCH_KV,
+    ROLL_KP,
+    ROLL_KV,
     row(
         "yaw_kp",
         "Trunk yaw stiffness in stance",
@@ -862,14 +916,7 @@ pub const QUADRUPED_BOUND: &[ControllerParam] = &[
         Origin::Lab,
         "A yaw servo toward the heading by fore–aft foot forces; eq. 4 servoes pitch and roll",
     ),
-    row(
-        "yaw_kv",
-        "Trunk yaw damping in stance",
-        TORSION_DAMPING,
-        LAB,
-        Origin::Lab,
-        "Damping of the lab's yaw servo",
-    ),
+    YAW_KV,
     row(
         "posture_force_ratio",
         "Largest posture foot force, as a fraction of the spring's",
@@ -886,38 +933,10 @@ pub const QUADRUPED_BOUND: &[ControllerParam] = &[
         Origin::Lab,
         "The leg sweeps back to match ground speed, which the paper's animations do not do",
     ),
-    row(
-        "swing_kp",
-        "Swing hip stiffness (eq. 5)",
-        TORSION,
-        EQ5_SWING,
-        Origin::Open,
-        "eq. 5's position gain positioning the legs for landing; the paper prints none",
-    ),
-    row(
-        "swing_kv",
-        "Swing hip damping (eq. 5)",
-        TORSION_DAMPING,
-        EQ5_SWING,
-        Origin::Open,
-        "eq. 5's velocity gain positioning the legs for landing; the paper prints none",
-    ),
-    row(
-        "swing_roll_follow",
-        "Share of trunk roll in eq. 3's leg aim",
-        "",
-        EQ3,
-        Origin::Open,
-        "The paper does not say which attitude eq. 3's kinematic transformation uses",
-    ),
-    row(
-        "max_hip_torque",
-        "Largest hip torque",
-        "N·m",
-        ACTUATORS,
-        Origin::Open,
-        "The paper names the actuators' available torque as shaping the motion, gives none",
-    ),
+    SWING_KP,
+    SWING_KV,
+    SWING_ROLL_FOLLOW,
+    MAX_HIP_TORQUE,
     row(
         "gallop_shorter_m",
         "Gallop: second leg of a pair lands shorter",
@@ -947,22 +966,8 @@ pub const QUADRUPED_BOUND: &[ControllerParam] = &[
 /// [`QuadrupedRunParams`]' parameters (the trot), in
 /// [`NamedParameters::NAMES`] order.
 pub const QUADRUPED_RUN: &[ControllerParam] = &[
-    row(
-        "leg_stiffness",
-        "Leg spring stiffness k (eq. 1)",
-        "N/m",
-        EQ1,
-        Origin::Open,
-        "eq. 1's k per leg; the paper prints no value",
-    ),
-    row(
-        "leg_damping",
-        "Leg spring damping b in stance (eq. 1)",
-        "N·s/m",
-        EQ1,
-        Origin::Open,
-        "eq. 1's b; the paper prints no value",
-    ),
+    LEG_STIFFNESS,
+    LEG_DAMPING,
     row(
         "leg_air_damping",
         "Leg damping while the foot is off the ground",
@@ -971,14 +976,7 @@ pub const QUADRUPED_RUN: &[ControllerParam] = &[
         Origin::Lab,
         "A second damping so a lengthened leg does not ring before landing; eq. 1 has one b",
     ),
-    row(
-        "leg_travel_m",
-        "Telescoping leg's travel",
-        "m",
-        TABLE3,
-        Origin::Open,
-        "The leg's stop: Table 3 gives the links' lengths, not how far the leg telescopes",
-    ),
+    LEG_TRAVEL_M,
     row(
         "landing_rest_m",
         "Leg rest length for landing and standing",
@@ -995,14 +993,7 @@ pub const QUADRUPED_RUN: &[ControllerParam] = &[
         Origin::Open,
         "Figure 4 keeps the idle (virtual) leg short without a length",
     ),
-    row(
-        "thrust_m",
-        "Initial thrust: extra rest length in Thrust (eq. 2)",
-        "m",
-        EQ2_THRUST,
-        Origin::Open,
-        "Figure 4's leg extension injects eq. 2's energy; no length printed",
-    ),
+    THRUST_M,
     row(
         "flight0_s",
         "Desired flight after pair 0's lift-off",
@@ -1027,14 +1018,7 @@ pub const QUADRUPED_RUN: &[ControllerParam] = &[
         Origin::Paper,
         "eq. 3 uses the last measured stance; before one, Table 2's animated trot stance, 0.09 s",
     ),
-    row(
-        "placement_gain_s",
-        "Foot placement gain k_ẋ (eq. 3)",
-        "s",
-        EQ3,
-        Origin::Open,
-        "eq. 3's gain; the paper prints none",
-    ),
+    PLACEMENT_GAIN_S,
     row(
         "pitch_kp",
         "Pitch stiffness k_p (eq. 4)",
@@ -1043,30 +1027,9 @@ pub const QUADRUPED_RUN: &[ControllerParam] = &[
         Origin::Open,
         "eq. 4's k_p; the paper prints no value",
     ),
-    row(
-        "pitch_kv",
-        "Pitch damping k_v (eq. 4)",
-        TORSION_DAMPING,
-        EQ4,
-        Origin::Open,
-        "eq. 4's k_v; the paper prints no value",
-    ),
-    row(
-        "roll_kp",
-        "Roll stiffness (eq. 4)",
-        TORSION,
-        EQ4,
-        Origin::Open,
-        "eq. 4 on roll; the paper prints no value",
-    ),
-    row(
-        "roll_kv",
-        "Roll damping (eq. 4)",
-        TORSION_DAMPING,
-        EQ4,
-        Origin::Open,
-        "eq. 4 on roll; the paper prints no value",
-    ),
+    PITCH_KV,
+    ROLL_KP,
+    ROLL_KV,
     row(
         "pitch_d",
         "Desired stance pitch ϕ_d (eq. 4)",
@@ -1107,14 +1070,7 @@ pub const QUADRUPED_RUN: &[ControllerParam] = &[
         Origin::Lab,
         "An integrator on each flight's time error; the paper does not say how it sets eq. 2",
     ),
-    row(
-        "max_thrust_m",
-        "Largest thrust",
-        "m",
-        LAB,
-        Origin::Lab,
-        "Bound of the lab's flight-regulated thrust",
-    ),
+    MAX_THRUST_M,
     row(
         "yaw_kp",
         "Trunk yaw stiffness in stance",
@@ -1123,46 +1079,11 @@ pub const QUADRUPED_RUN: &[ControllerParam] = &[
         Origin::Lab,
         "A yaw servo toward the heading through the stance hips; eq. 4 servoes pitch and roll",
     ),
-    row(
-        "yaw_kv",
-        "Trunk yaw damping in stance",
-        TORSION_DAMPING,
-        LAB,
-        Origin::Lab,
-        "Damping of the lab's yaw servo",
-    ),
-    row(
-        "swing_kp",
-        "Swing hip stiffness (eq. 5)",
-        TORSION,
-        EQ5_SWING,
-        Origin::Open,
-        "eq. 5's position gain positioning the legs for landing; the paper prints none",
-    ),
-    row(
-        "swing_kv",
-        "Swing hip damping (eq. 5)",
-        TORSION_DAMPING,
-        EQ5_SWING,
-        Origin::Open,
-        "eq. 5's velocity gain positioning the legs for landing; the paper prints none",
-    ),
-    row(
-        "swing_roll_follow",
-        "Share of trunk roll in eq. 3's leg aim",
-        "",
-        EQ3,
-        Origin::Open,
-        "The paper does not say which attitude eq. 3's kinematic transformation uses",
-    ),
-    row(
-        "max_hip_torque",
-        "Largest hip torque",
-        "N·m",
-        ACTUATORS,
-        Origin::Open,
-        "The paper names the actuators' available torque as shaping the motion, gives none",
-    ),
+    YAW_KV,
+    SWING_KP,
+    SWING_KV,
+    SWING_ROLL_FOLLOW,
+    MAX_HIP_TORQUE,
 ];
 
 /// The table of the parameters type whose names are `names` (a

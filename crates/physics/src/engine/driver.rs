@@ -340,6 +340,12 @@ impl PhysicsDriver {
             .unwrap_or_else(|| self.controller.phase_name())
     }
 
+    /// The whole creature's centre of mass in the world, metres.
+    #[must_use]
+    pub fn centre_of_mass(&self) -> DVec3 {
+        crate::dynamics::energy::center_of_mass(&self.sim.creature.model, &self.sim.data)
+    }
+
     /// The trunk of a free-floating creature as a capsule `(a, b, radius)` in
     /// the world (see [`probe::trunk_capsule`]).
     #[must_use]
