@@ -54,16 +54,7 @@ pub fn tested_scales(species: Species, gait: &str) -> Option<(f64, f64)> {
 /// tabulate. The comparison the page, `--json` and the docs print.
 #[must_use]
 pub fn table2(summary: &GaitSummary, gait: &str, legs: &[&str]) -> Vec<Table2Entry> {
-    gaitlab_physics::engine::table2::compare(summary, gait, legs)
-        .into_iter()
-        .map(|c| Table2Entry {
-            quantity: c.row.label,
-            paper: c.row.animation,
-            measured: c.measured,
-            diff_pct: c.diff_pct(),
-            input: c.row.quantity.is_input(),
-        })
-        .collect()
+    crate::metrics::table2_entries(summary, gait, legs)
 }
 
 /// Checks She 2006's motion parameters (§5.2's shapes, speeds and wounded

@@ -613,11 +613,32 @@ impl PhysicsRunMetrics {
             start_note: driver.start_note().map(str::to_owned),
             table2: {
                 let names: Vec<&str> = sim.creature.legs.iter().map(|l| l.name.as_str()).collect();
-                crate::catalog::table2(&s, driver.gait(), &names)
+                table2_entries(&s, driver.gait(), &names)
             },
             steps: sim.steps,
             steps_per_second: if step_s > 0.0 { steps / step_s } else { 0.0 },
             realtime_factor: if step_s > 0.0 { sim.time / step_s } else { 0.0 },
         }
     }
+}
+
+/// Table 2's rows for `gait` beside the run's figures in `summary` (`legs`
+/// names the creature's legs, in leg order): `--json`'s `table2`, and the
+/// page's through [`crate::catalog::table2`].
+#[must_use]
+pub fn table2_entries(
+    summary: &gaitlab_physics::engine::metrics::GaitSummary,
+    gait: &str,
+    legs: &[&str],
+) -> Vec<Table2Entry> {
+    gaitlab_physics::engine::table2::compare(summary, gait, legs)
+        .into_iter()
+        .map(|c| Table2Entry {
+            quantity: c.row.label,
+            paper: c.row.animation,
+            measured: c.measured,
+            diff_pct: c.diff_pct(),
+            input: c.row.quantity.is_input(),
+        })
+        .collect()
 }
