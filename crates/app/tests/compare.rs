@@ -58,9 +58,15 @@ fn four_views_at_full_reach() -> Lab {
     lab
 }
 
-/// Asserts pinv's jitter is at least `factor` times every other view's.
-fn assert_pinv_worst(preset: &str, views: &str, factor: f64) {
-    let mut lab = lab(preset);
+/// The human as saved on 2026-12-06: a `gaitlab-preset/1` file, so with the
+/// lab's solver settings of then (the limit re-solve, λ = 0.05 m, the step
+/// clamp on every method, Buss's α) and its target script, posture pull and
+/// start ramp; the bundled human now runs the thesis alone.
+const HUMAN_2026_12_06: &str = include_str!("../../cli/tests/fixtures/human_2026_12_06.json");
+
+/// The singularity scenario's figures, (method, jitter, mean error, limit
+/// hits) per view, after 12 s on `lab`.
+fn singularity(mut lab: Lab, name: &str, views: &str) -> Vec<(String, f64, f64, u64)> {
     let command = format!(r#"{{"compare":{{"views":{views},"scenario":"singularity"}}}}"#);
     if let Err(error) = lab.command(&command) {
         panic!("{error}");
@@ -68,10 +74,20 @@ fn assert_pinv_worst(preset: &str, views: &str, factor: f64) {
     let figures = run(&mut lab, 12.0);
     for (method, jitter, error, hits) in &figures {
         println!(
-            "{preset:>13} singularity {method:>9}: jitter {jitter:.3e} rad/frame², mean error {:.1} mm, limit hits {hits}",
+            "{name:>13} singularity {method:>9}: jitter {jitter:.3e} rad/frame², mean error {:.1} mm, limit hits {hits}",
             error * 1e3
         );
     }
+    figures
+}
+
+/// Asserts pinv's jitter is at least `factor` times every other view's.
+fn assert_pinv_worst(preset: &str, views: &str, factor: f64) {
+    assert_pinv_worst_in(lab(preset), preset, views, factor);
+}
+
+fn assert_pinv_worst_in(lab: Lab, preset: &str, views: &str, factor: f64) {
+    let figures = singularity(lab, preset, views);
     let pinv = figures
         .iter()
         .find(|f| f.0 == "pinv")
@@ -88,9 +104,51 @@ fn assert_pinv_worst(preset: &str, views: &str, factor: f64) {
 
 #[test]
 fn the_singularity_scenario_ranks_pinv_jitter_worst_on_the_human() {
-    // The human's legs have few joints and bent-knee limits: the margin is smaller.
-    assert_pinv_worst("human", r#"["transpose","pinv","dls","sdls"]"#, 1.5);
-    assert_pinv_worst("human", r#"["pinv","ccd"]"#, 1.5);
+    // With the lab's settings of 2026-12-06 (the limit re-solve above all):
+    // the human's legs have few joints and bent-knee limits, the margin is smaller.
+    for views in [r#"["transpose","pinv","dls","sdls"]"#, r#"["pinv","ccd"]"#] {
+        let mut lab = Lab::new(Settings::default());
+        if let Err(error) = lab.set_custom_preset(HUMAN_2026_12_06) {
+            panic!("{error}");
+        }
+        assert_pinv_worst_in(lab, "human 2026-12-06", views, 1.5);
+    }
+}
+
+/// The bundled human runs the thesis alone (§6.1.1.1's clamp, §4.4.1's α; no
+/// re-solve, docs/parameters.md "Both ways"). Near the singularity pinv then
+/// loses its targets (§4.4.2: "unable to effectively track targets"): its
+/// error is at least twice every other view's, and its jitter stays above
+/// DLS's and SDLS's (by less than 1.5×: clamped at the straight knee, it
+/// cannot swing). The transpose with §4.4.1's α jitters most (§5.3: pinv "a
+/// little bit better than Jacobian transpose method in giving a smooth visual
+/// result").
+#[test]
+fn the_singularity_scenario_loses_pinvs_targets_on_the_thesis_human() {
+    for views in [r#"["transpose","pinv","dls","sdls"]"#, r#"["pinv","ccd"]"#] {
+        let figures = singularity(lab("human"), "human", views);
+        let of = |method: &str| {
+            figures
+                .iter()
+                .find(|f| f.0 == method)
+                .map_or((f64::NAN, f64::NAN), |f| (f.1, f.2))
+        };
+        let (pinv_jitter, pinv_error) = of("pinv");
+        for (method, jitter, error, _) in &figures {
+            match method.as_str() {
+                "pinv" => {}
+                "transpose" => assert!(*jitter > 5.0 * pinv_jitter, "{method}: {jitter:e}"),
+                "dls" | "sdls" => assert!(pinv_jitter > *jitter, "{method}: {jitter:e}"),
+                _ => {}
+            }
+            if method != "pinv" {
+                assert!(
+                    pinv_error > 2.0 * *error,
+                    "pinv error {pinv_error} m against {method}'s {error} m"
+                );
+            }
+        }
+    }
 }
 
 #[test]
@@ -342,16 +400,27 @@ fn a_preset_with_its_own_ik_options_runs_with_them_and_the_panel_keeps_its_own_o
     if let Err(error) = lab.command(r#"{"lambda":0.3}"#) {
         panic!("{error}");
     }
-    // human → ik-quadruped: both leave scenario.ik at the defaults of
-    // gaitlab-preset/1, λ stays.
-    if let Err(error) = lab.set_preset("ik-quadruped") {
+    // human → ik-quadruped → she-2006: all three leave scenario.ik at the
+    // thesis' solver of gaitlab-preset/2, λ stays.
+    for preset in ["ik-quadruped", "she-2006"] {
+        if let Err(error) = lab.set_preset(preset) {
+            panic!("{error}");
+        }
+        assert_eq!(state(&lab)["ik"]["lambda"], 0.3, "{preset}");
+        assert_eq!(state(&lab)["ik"]["limit_passes"], 1, "{preset}");
+        assert_eq!(state(&lab)["ik"]["clamp_every_method"], false, "{preset}");
+    }
+    // The human as saved on 2026-12-06 (gaitlab-preset/1) has its own: the
+    // lab's re-solve, λ = 0.05 m, the clamp on every method, Buss's α.
+    if let Err(error) = lab.set_custom_preset(HUMAN_2026_12_06) {
         panic!("{error}");
     }
-    assert_eq!(state(&lab)["ik"]["lambda"], 0.3);
     assert_eq!(state(&lab)["ik"]["limit_passes"], 4);
+    assert_eq!(state(&lab)["ik"]["lambda"], 0.05);
     assert_eq!(state(&lab)["ik"]["clamp_every_method"], true);
-    // she-2006 has its own: clamp-only limits, λ back to the thesis' 0.2 m
-    // (gaitlab-preset/2), the clamp on pinv alone, §4.4.1's α.
+    assert_eq!(state(&lab)["ik"]["transpose_alpha"], "buss");
+    // she-2006 has its own again: clamp-only limits, λ back to the thesis'
+    // 0.2 m (gaitlab-preset/2), the clamp on pinv alone, §4.4.1's α.
     if let Err(error) = lab.set_preset("she-2006") {
         panic!("{error}");
     }

@@ -128,9 +128,11 @@ fn bvh_and_csv_of_a_take_describe_the_same_motion() {
         worst_effector_m < 1e-9,
         "recorded foot vs FK of the recorded pose: {worst_effector_m} m (stale positions?)"
     );
+    // The human runs §5.2.2's listing, whose running foot targets are out of
+    // reach (She 2006 §5.3): DLS holds the foot 0.1 to 0.2 m from its target.
     assert!(
-        worst_error_m < 0.01,
-        "DLS run keeps the foot within 1 cm of its target: {worst_error_m} m"
+        (0.05..0.2).contains(&worst_error_m),
+        "running, DLS keeps the foot near its unreachable target: {worst_error_m} m"
     );
     // One row per simulated frame, 1/60 s apart.
     assert!(

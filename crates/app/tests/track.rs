@@ -5,6 +5,7 @@
 //! creature's own motion back.
 
 use gaitlab_app::{Lab, Settings};
+use gaitlab_core::Kinematics;
 use gaitlab_core::driver::Driver;
 use serde_json::Value;
 
@@ -19,9 +20,13 @@ fn command(lab: &mut Lab, json: &str) {
 }
 
 /// Two seconds at 30 rows a second: each effector's rest position, the feet
-/// lifted and the hands swung by up to 5 cm.
+/// lifted and the hands swung by up to 5 cm. The rest pose's, not the
+/// figure's first frame's: a followed recording holds the root where the
+/// rest pose has it, and the human's first frame is already on §5.2.2's
+/// listing, with its root 8 cm lower.
 fn recording(lab: &Lab) -> String {
-    let rest: Vec<_> = lab.driver().effector_positions().to_vec();
+    let creature = lab.creature();
+    let rest = Kinematics::of(&creature.skeleton, &creature.rest_pose()).effector_position;
     let mut csv = String::from("t");
     for e in 0..rest.len() {
         csv.push_str(&format!(",e{e}_x,e{e}_y,e{e}_z"));

@@ -10,8 +10,12 @@ fn harness() -> Harness<'static, Lab> {
     let mut lab = Lab::new(Settings::default());
     // Tests drive time themselves: start paused so the harness settles.
     lab.set_paused(true);
+    // One step moves the human 2.8 cm at once (She 2006 starts the cycle at
+    // once, no ramp from standing); the following camera eases after it over
+    // up to a few dozen repaints (19 after five steps).
     Harness::builder()
         .with_size(egui::vec2(1200.0, 800.0))
+        .with_max_steps(32)
         .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab)
 }
 

@@ -253,6 +253,39 @@ fn the_she_2006_preset_from_before_the_thesis_solver_runs_as_it_was_made() {
     );
 }
 
+/// DESIGN.md "Versions": the poda-quadruped preset as it was on 2026-12-06
+/// (a `gaitlab-preset/1` file), saved bounding, before Figure 2's body
+/// pitch and eq. 2's foot orientation were on by default: the file runs
+/// exactly as recorded then (level, `without_body_pitch` and
+/// `without_foot_orientation` listed), and the bundled quadruped now pitches
+/// as it bounds, with nothing left out.
+#[test]
+fn the_poda_quadruped_from_before_the_body_pitch_runs_as_it_was_made() {
+    let (all, got, want) = replay("poda-quadruped_2026_12_06");
+    assert_eq!(
+        all["lab_additions"],
+        serde_json::json!([
+            "turn_within_reach",
+            "yaw_toward_actual",
+            "fore_aft_surge",
+            "without_body_pitch",
+            "without_foot_orientation"
+        ])
+    );
+    assert_eq!(got, want);
+    assert_eq!(want["body_pitch_range_deg"], serde_json::json!([0.0, 0.0]));
+    let now = run_json("poda-quadruped", "10", &["--gait", "bound"]);
+    assert_eq!(
+        now["lab_additions"],
+        serde_json::json!(["turn_within_reach", "yaw_toward_actual", "fore_aft_surge"])
+    );
+    let pitch = &now["body_pitch_range_deg"];
+    assert!(
+        pitch[0].as_f64() < Some(-10.0) && pitch[1].as_f64() > Some(10.0),
+        "{pitch}"
+    );
+}
+
 fn cli_metrics(preset: &str, seconds: &str) -> Value {
     run_json(preset, seconds, &[])
 }
@@ -343,4 +376,63 @@ fn a_physics_run_carries_table_2_for_its_gait() {
     // A gait the paper does not tabulate: no rows.
     let gallop = run_json("raibert-biped", "2", &["--gait", "gallop"]);
     assert_eq!(gallop["table2"].as_array().map(Vec::len), Some(0));
+}
+
+/// DESIGN.md "Versions", issue 41 item 2: the human and ik-quadruped presets
+/// as they were on 2026-12-06 (`gaitlab-preset/1` files, so with the lab's
+/// old defaults written in: its script, the posture pull, the start ramp and
+/// the limit re-solve) run exactly as recorded then. The bundled files are
+/// now `gaitlab-preset/2` and keep only the additions without which they
+/// fail a claim of She 2006 (docs/parameters.md "Both ways",
+/// `tools/ik_additions_both_ways.py`): the human none, so it runs §5.2.2's
+/// listing with its hands out of reach (§5.3); ik-quadruped the lab's script
+/// alone, without which its walking feet are out of reach (§5.3, Figure 5.10).
+#[test]
+fn the_ik_presets_from_before_the_rule_on_additions_run_as_they_were_made() {
+    let old_lab = serde_json::json!(["limit_re_solve", "lab_script", "posture_pull", "start_ramp"]);
+    let error = |run: &Value, i: usize| run["effectors"][i]["mean_error_m"].as_f64();
+    let reach = |run: &Value, i: usize| run["effectors"][i]["reachable"].as_f64();
+
+    let (all, got, want) = replay("human_2026_12_06");
+    assert_eq!(all["lab_additions"], old_lab);
+    assert_eq!(got, want);
+    let now = run_json("human", "10", &[]);
+    assert_eq!(now["lab_additions"], serde_json::json!([]));
+    assert_eq!(now["within_limits"], true);
+    // Feet 0, 1 on their reachable targets both ways; the hands (2, 3) were
+    // on the lab's targets in front and are now out of reach of the listing's.
+    for i in [0, 1] {
+        assert!(
+            error(&want, i) < Some(1e-6) && error(&now, i) < Some(1e-6),
+            "foot {i}"
+        );
+        assert_eq!(reach(&now, i), Some(1.0), "foot {i}");
+    }
+    for i in [2, 3] {
+        let (was, is) = (error(&want, i), error(&now, i));
+        assert!(
+            was < Some(1e-6) && is > Some(0.2),
+            "hand {i}: {was:?} → {is:?} m"
+        );
+        assert_eq!(reach(&now, i), Some(0.0), "hand {i}");
+    }
+
+    let (all, got, want) = replay("ik-quadruped_2026_12_06");
+    assert_eq!(all["lab_additions"], old_lab);
+    assert_eq!(got, want);
+    let now = run_json("ik-quadruped", "10", &[]);
+    assert_eq!(now["lab_additions"], serde_json::json!(["lab_script"]));
+    assert_eq!(now["within_limits"], true);
+    let paper = run_json("ik-quadruped", "10", &["--paper-alone"]);
+    // The hind feet (2, 3) play the thesis' feet: on their targets with the
+    // lab's script, as before; out of reach of the listing's by 0.3 m.
+    for i in [2, 3] {
+        assert!(
+            error(&want, i) < Some(1e-6) && error(&now, i) < Some(1e-3),
+            "hind foot {i}"
+        );
+        assert_eq!(reach(&now, i), Some(1.0), "hind foot {i}");
+        assert!(error(&paper, i) > Some(0.3), "hind foot {i}");
+        assert_eq!(reach(&paper, i), Some(0.0), "hind foot {i}");
+    }
 }

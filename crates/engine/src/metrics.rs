@@ -297,6 +297,14 @@ pub struct GaitRunMetrics {
     pub gaits_available: Vec<&'static str>,
     /// Largest horizontal drift of any planted foot during support, metres.
     pub foot_slip_max_m: f64,
+    /// The legs that hold their foot's orientation as well as its position
+    /// where their joints' limits allow (Girard & Maciejewski 1985 eq. 2's
+    /// six components: legs of six joints or more, with
+    /// `scenario.poda.foot_orientation` on); empty when none.
+    pub foot_orientation_legs: Vec<String>,
+    /// Largest turn of any planted foot during its support, degrees: the
+    /// angle of its orientation from the one it had at the support's start.
+    pub foot_turn_max_deg: f64,
     /// Largest distance of the body from its path, metres (corners it cut).
     pub path_error_max_m: f64,
     /// Each leg's figures.
@@ -372,6 +380,8 @@ impl GaitRunMetrics {
             gait: driver.gait_name().to_owned(),
             gaits_available: gaitlab_motion::poda::gait_names(gait.leg_count()).collect(),
             foot_slip_max_m: metrics.foot_slip_max_m(),
+            foot_orientation_legs: metrics.orientation_legs().map(str::to_owned).collect(),
+            foot_turn_max_deg: metrics.foot_turn_max_rad().to_degrees(),
             path_error_max_m: driver.path_error_max_m(),
             legs,
             period_s: period,

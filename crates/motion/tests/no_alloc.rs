@@ -138,6 +138,14 @@ fn poda_driver_allocates_nothing() {
         for _ in 0..150 {
             driver.step(1.0 / 60.0);
         }
+        // The quadruped's 9-joint legs hold their feet's orientation (eq. 2's
+        // six rows): its frames cover that path of the IK.
+        let holding = driver.metrics().orientation_legs().count();
+        assert_eq!(
+            holding,
+            if preset == "poda-quadruped" { 4 } else { 0 },
+            "{preset}"
+        );
         let count = allocations_during(|| {
             for _ in 0..240 {
                 driver.step(1.0 / 60.0);

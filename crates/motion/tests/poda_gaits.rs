@@ -122,6 +122,10 @@ fn vertical_motion_repeats_with_the_gait_period() {
         let fundamental_is_p = gait != "bound";
         let mut params = creature.scenario.poda_params();
         params.gait = Some(gait.to_owned());
+        // Eq. 12–13's superposition alone: with Figure 2's pitch the root,
+        // off the legs' centre, also rises and falls with the pitch, once a
+        // cycle (docs/poda.md, "Body pitch").
+        params.body_pitch = false;
         // P = 0.6 s = 36 frames at 60 fps.
         let mut driver = PodaDriver::with_params(&creature, params).expect("driver");
         let y = heights(&mut driver, 1.0, 3.0);

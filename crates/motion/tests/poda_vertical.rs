@@ -23,6 +23,9 @@ fn quadruped_in(gait: &str) -> PodaDriver {
     };
     if let Some(poda) = creature.scenario.poda.as_mut() {
         poda.gait = Some(gait.to_owned());
+        // Eq. 12–13's height alone: with Figure 2's pitch the root, off the
+        // legs' centre, also rises and falls with the pitch (docs/poda.md).
+        poda.body_pitch = false;
     }
     match PodaDriver::new(&creature) {
         Ok(driver) => driver,

@@ -18,7 +18,8 @@ fn driver(
     mode: ThesisMode,
     method: Method,
 ) -> ThesisDriver {
-    // λ = 0.05 m: what the `human` preset (a `gaitlab-preset/1` file) runs.
+    // λ = 0.05 m: what the `human` preset ran as a `gaitlab-preset/1` file
+    // (until 2026-12-06), with the lab's script of `common::human_params`.
     let options = IkOptions {
         method,
         lambda: 0.05,

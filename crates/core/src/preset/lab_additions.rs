@@ -76,8 +76,13 @@ const WITHOUT_BODY_PITCH: LabAddition = LabAddition {
     reason: "Figure 2's body pitch from the front and rear legs' vertical motion is left out",
 };
 
+const WITHOUT_FOOT_ORIENTATION: LabAddition = LabAddition {
+    name: "without_foot_orientation",
+    reason: "eq. 2's foot orientation is left out: every foot holds its position alone",
+};
+
 /// Every PODA addition in force with `params`, and Figure 2's body pitch
-/// where it is left out.
+/// and eq. 2's foot orientation where they are left out.
 #[must_use]
 pub fn poda_lab_additions(params: &PodaParams) -> Vec<LabAddition> {
     [
@@ -86,6 +91,7 @@ pub fn poda_lab_additions(params: &PodaParams) -> Vec<LabAddition> {
         params.fore_aft_surge.then_some(FORE_AFT_SURGE),
         params.gait_by_speed.then_some(GAIT_BY_SPEED),
         (!params.body_pitch).then_some(WITHOUT_BODY_PITCH),
+        (!params.foot_orientation).then_some(WITHOUT_FOOT_ORIENTATION),
     ]
     .into_iter()
     .flatten()
@@ -158,6 +164,30 @@ mod tests {
         }
     }
 
+    /// Issue 41 item 2: a bundled IK preset keeps an addition only where
+    /// the thesis alone fails one of its claims (docs/parameters.md "Both
+    /// ways"): the human none, ik-quadruped the lab's script (the listing's
+    /// feet are out of reach of its legs).
+    #[test]
+    fn the_bundled_ik_presets_keep_only_what_a_claim_needs() {
+        for (name, kept) in [("human", &[][..]), ("ik-quadruped", &["lab_script"][..])] {
+            let Some(Ok(creature)) = load_bundled(name) else {
+                panic!("{name}")
+            };
+            let scenario = &creature.scenario;
+            for method in Method::ALL.into_iter().filter(|m| *m != Method::Ccd) {
+                for mode in ThesisMode::ALL {
+                    let ik = IkOptions {
+                        method,
+                        ..scenario.ik.clone()
+                    };
+                    let found = thesis_lab_additions(&scenario.thesis, &ik, mode);
+                    assert_eq!(names(&found), kept, "{name} {method:?} {mode:?}");
+                }
+            }
+        }
+    }
+
     #[test]
     fn the_bundled_poda_presets_name_what_they_add() {
         for name in ["hexapod", "poda-quadruped", "poda-biped", "insect-14"] {
@@ -167,20 +197,20 @@ mod tests {
             let found = poda_lab_additions(&creature.scenario.poda_params());
             assert_eq!(
                 names(&found),
-                [
-                    "turn_within_reach",
-                    "yaw_toward_actual",
-                    "fore_aft_surge",
-                    "without_body_pitch"
-                ],
+                ["turn_within_reach", "yaw_toward_actual", "fore_aft_surge"],
                 "{name}"
             );
         }
-        let paper = PodaParams {
-            body_pitch: true,
+        assert!(poda_lab_additions(&PodaParams::default()).is_empty());
+        let level = PodaParams {
+            body_pitch: false,
+            foot_orientation: false,
             ..PodaParams::default()
         };
-        assert!(poda_lab_additions(&paper).is_empty());
+        assert_eq!(
+            names(&poda_lab_additions(&level)),
+            ["without_body_pitch", "without_foot_orientation"]
+        );
     }
 
     #[test]

@@ -3,7 +3,7 @@
 //! step clamp on pinv only (§4.4.2), joints clamped at their limits
 //! (§6.1.1.1), §5.2.2's listing, §5.1.1's weights on the angle shown, no
 //! posture pull, no start ramp), Girard & Maciejewski 1985 (Figure 2's body
-//! pitch on; no turning within reach, yaw toward the actual, surge or gait by
+//! pitch and eq. 2's foot orientation on; no turning within reach, yaw toward the actual, surge or gait by
 //! speed) or Raibert & Hodgins 1991 (no named addition; gait changes take
 //! over at the next flight). The page's "Run the paper alone" and its
 //! `paper_alone` command.
@@ -31,6 +31,7 @@ const PODA_OFF: &[(&str, ValueOf)] = &[
     ("scenario.poda.fore_aft_surge", ValueOf::Bool(false)),
     ("scenario.poda.gait_by_speed", ValueOf::Bool(false)),
     ("scenario.poda.body_pitch", ValueOf::Bool(true)),
+    ("scenario.poda.foot_orientation", ValueOf::Bool(true)),
     ("scenario.poda.vertical_gain", ValueOf::Int(1)),
 ];
 const PHYSICS_OFF: &[(&str, ValueOf)] = &[

@@ -237,11 +237,25 @@ pub struct PodaParams {
     /// motion (Girard & Maciejewski 1985, Figure 2 and "Rotational Control":
     /// the pitch "is due to the separation of the application of vertical
     /// acceleration between the front and rear sections of the body").
-    /// Default off, and off in the bundled presets: a steady pitching gait
-    /// keeps its feet planted, but while legs take a gait change on a
-    /// pitching quadruped's feet still slip up to 30.8 mm (docs/poda.md,
+    /// Default on (a `gaitlab-preset/1` file without the key ran level): while
+    /// legs take a gait change on, the body pitches less in a frame whose
+    /// planted foot the legs could not hold at the full pitch (docs/poda.md,
     /// "Body pitch").
     pub body_pitch: bool,
+    /// Hold each foot's orientation, eq. 2's last three components, where
+    /// its leg has the joints for it (six or more): a planted foot keeps the
+    /// orientation it touched down with, and a foot in transfer turns from
+    /// its lift-off orientation to the one it will touch down with (level,
+    /// facing the body's heading). Where the joints' limits refuse it (the
+    /// quadruped's bound and gallops crouch so low that a level foot would
+    /// need a knee past its limit) the position wins: the foot tilts as the
+    /// limits force and the leg holds its position alone for a few supports
+    /// before trying again (docs/poda.md, "The foot's orientation"). A leg
+    /// with fewer joints holds its foot's position alone (`--json`'s
+    /// `foot_orientation_legs` says which legs hold it, `foot_turn_max_deg`
+    /// how far a planted foot turned). Default on (a `gaitlab-preset/1` file
+    /// without the key held positions alone).
+    pub foot_orientation: bool,
     /// Follow the body path only as tightly as the legs reach (the lab's
     /// reading of "Horizontal Control": the body's turning and speeding up
     /// "must be coherent with its leg support duration pattern"): the
@@ -304,7 +318,8 @@ impl Default for PodaParams {
             body_mass_kg: 30.0,
             max_leg_force_n: None,
             vertical_gain: 1.0,
-            body_pitch: false,
+            body_pitch: true,
+            foot_orientation: true,
             turn_within_reach: false,
             yaw_toward_actual: false,
             fore_aft_surge: false,

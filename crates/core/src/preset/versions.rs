@@ -8,6 +8,7 @@
 //! | `scenario.ik.clamp_every_method` | true: the step clamp on transpose and DLS too | false: pinv only (She 2006 §4.4.2) |
 //! | `scenario.ik.transpose_alpha` | `buss` | `thesis` (§4.4.1) |
 //! | `scenario.ik.lambda` | 0.05 m | 0.2 m (the measured choice, docs/she-2006.md) |
+//! | `scenario.poda.foot_orientation` | false: positions alone | true: eq. 2's orientation where a leg has six joints |
 //!
 //! and, for a key that both versions have, a `/2` file takes the paper's
 //! behaviour where a `/1` file took the lab's:
@@ -19,6 +20,7 @@
 //! | `scenario.thesis.wound_form` | `step` | `angle` (§5.1.1) |
 //! | `scenario.thesis.posture_gain` | 0.1 | 0: no posture pull |
 //! | `scenario.thesis.start_ramp_s` | 1 s | 0: the cycle at once |
+//! | `scenario.poda.body_pitch` | false: level | true: Figure 2's pitch |
 //! | `scenario.physics.lab_additions` | every addition the gait offers on, with the controllers' earlier defaults | none: the paper's laws |
 //! | `scenario.physics.lab_additions.<name>` | the gait's own default (the speed trim on for the gallops and the bound, the kangaroo's ramp and tail feedback) | off |
 
@@ -43,6 +45,14 @@ struct GivenScenario {
     ik: GivenIk,
     #[serde(default)]
     thesis: GivenThesis,
+    #[serde(default)]
+    poda: Option<GivenPoda>,
+}
+
+#[derive(Default, Deserialize)]
+struct GivenPoda {
+    body_pitch: Option<IgnoredAny>,
+    foot_orientation: Option<IgnoredAny>,
 }
 
 #[derive(Default, Deserialize)]
@@ -103,6 +113,15 @@ pub(super) fn write_in_old_defaults(preset: &mut Preset, json: &str) {
     if keys.start_ramp_s.is_none() {
         thesis.start_ramp_s = start_ramp_s;
     }
+    if let Some(poda) = preset.scenario.poda.as_mut() {
+        let keys = given.scenario.poda.unwrap_or_default();
+        if keys.body_pitch.is_none() {
+            poda.body_pitch = false;
+        }
+        if keys.foot_orientation.is_none() {
+            poda.foot_orientation = false;
+        }
+    }
 }
 
 /// A `gaitlab-preset/2` file: every lab addition to the physics control
@@ -162,6 +181,34 @@ mod tests {
         let thesis = preset("gaitlab-preset/2", "{}").scenario.thesis;
         assert_eq!(thesis, crate::preset::thesis::ThesisParams::default());
         assert_eq!(thesis.script, crate::preset::thesis::TargetScript::Listing);
+    }
+
+    #[test]
+    fn a_version_1_poda_file_runs_level_and_a_version_2_file_pitches() {
+        let json = include_str!("../../../../presets/hexapod.json");
+        let read = |json: &str| match Preset::from_json_for(json, Purpose::Tracking) {
+            Ok(preset) => preset.scenario.poda.unwrap_or_default(),
+            Err(error) => panic!("{error}"),
+        };
+        let now = read(json);
+        assert!(now.body_pitch && now.foot_orientation);
+        let old = json.replacen("gaitlab-preset/2", "gaitlab-preset/1", 1);
+        let old = read(&old);
+        assert!(!old.body_pitch && !old.foot_orientation);
+        // A /1 file that names them keeps what it names.
+        let named = json.replacen(
+            "\"format\": \"gaitlab-preset/2\",",
+            "\"format\": \"gaitlab-preset/1\",",
+            1,
+        );
+        let named = named.replacen(
+            "\"turn_within_reach\"",
+            "\"body_pitch\": true, \"foot_orientation\": true, \"turn_within_reach\"",
+            1,
+        );
+        assert!(named.contains("gaitlab-preset/1") && named.contains("\"body_pitch\": true"));
+        let named = read(&named);
+        assert!(named.body_pitch && named.foot_orientation);
     }
 
     #[test]

@@ -1,13 +1,17 @@
 //! Gait figures measured from the motion, not echoed from the parameters
 //! (DESIGN.md gait metrics): each leg's duty factor and relative phase (PODA
 //! eq. 9's convention: a leg with phase R touches down at t ≡ −R·P), foot
-//! slip during support, the body's speed and stride length.
+//! slip and foot turn during support (the turn: the foot's orientation,
+//! eq. 2's last three components, against the one it had when the gait put
+//! it in support), the body's speed and stride length.
 //!
 //! Contact is read from the feet: a foot is on the ground while its height is
 //! at most [`CONTACT_HEIGHT_M`]; touchdown and lift-off times are interpolated
 //! between frames where the height crosses that threshold.
 
-use glam::{DVec2, DVec3};
+use glam::{DMat3, DQuat, DVec2, DVec3};
+
+use super::foot_orientation::angle_between_rad;
 
 /// Height above the ground at or below which a foot counts as in contact, metres.
 pub const CONTACT_HEIGHT_M: f64 = 1e-3;
@@ -29,6 +33,13 @@ pub struct LegMetrics {
     slip_origin: Option<DVec2>,
     /// Largest horizontal drift of the foot during one support phase, metres.
     pub slip_max_m: f64,
+    /// Whether the leg's IK holds the foot's orientation (eq. 2), as the
+    /// driver's model decided it.
+    pub holds_orientation: bool,
+    turn_origin: Option<DQuat>,
+    /// Largest turn of the foot during one support phase, radians: its
+    /// orientation's angle from the one it had at the support's first frame.
+    pub turn_max_rad: f64,
 }
 
 impl LegMetrics {
@@ -104,6 +115,16 @@ impl LegMetrics {
             self.slip_max_m = self.slip_max_m.max((xz - origin).length());
         } else {
             self.slip_origin = None;
+        }
+    }
+
+    fn record_turn(&mut self, rotation: DMat3, gait_support: bool) {
+        if gait_support {
+            let rotation = DQuat::from_mat3(&rotation);
+            let origin = *self.turn_origin.get_or_insert(rotation);
+            self.turn_max_rad = self.turn_max_rad.max(angle_between_rad(origin, rotation));
+        } else {
+            self.turn_origin = None;
         }
     }
 
@@ -200,6 +221,41 @@ impl GaitMetrics {
         }
     }
 
+    /// The same metrics with `held[i]` saying whether leg `i`'s IK holds its
+    /// foot's orientation (eq. 2).
+    #[must_use]
+    pub fn holding_orientation(mut self, held: impl IntoIterator<Item = bool>) -> Self {
+        for (leg, held) in self.legs.iter_mut().zip(held) {
+            leg.holds_orientation = held;
+        }
+        self
+    }
+
+    /// Records this frame's foot orientations (rotation matrices from each
+    /// foot's frame to the world, in leg order) with whether the gait has
+    /// each foot in support: the turn of a foot in support is measured from
+    /// its orientation at the support's first frame, as its slip is from its
+    /// position then.
+    pub fn record_turns(&mut self, feet: impl Iterator<Item = (DMat3, bool)>) {
+        for (leg, (rotation, support)) in self.legs.iter_mut().zip(feet) {
+            leg.record_turn(rotation, support);
+        }
+    }
+
+    /// Largest turn of any planted foot during its support, radians.
+    #[must_use]
+    pub fn foot_turn_max_rad(&self) -> f64 {
+        self.legs.iter().map(|l| l.turn_max_rad).fold(0.0, f64::max)
+    }
+
+    /// The names of the legs whose IK holds their foot's orientation, in leg order.
+    pub fn orientation_legs(&self) -> impl Iterator<Item = &str> {
+        self.legs
+            .iter()
+            .filter(|l| l.holds_orientation)
+            .map(|l| l.name.as_str())
+    }
+
     /// Records this frame's fore-aft surge, metres forward of the body's even
     /// motion along its path.
     pub fn record_surge(&mut self, surge_m: f64) {
@@ -274,5 +330,26 @@ mod tests {
         let phase = leg.relative_phase(period).unwrap_or(-1.0);
         assert!((phase - 0.75).abs() < 0.01, "phase {phase}");
         assert!(leg.slip_max_m < 1e-12);
+    }
+
+    #[test]
+    fn a_foots_turn_is_measured_from_the_start_of_each_support() {
+        let mut metrics = GaitMetrics::new(["leg"]).holding_orientation([true]);
+        let turned = |rad: f64| DMat3::from_rotation_x(rad) * DMat3::from_rotation_y(0.4);
+        // Support: 0.01 rad, then 0.03 rad from where it touched down.
+        for rad in [0.0, 0.01, 0.03] {
+            metrics.record_turns(std::iter::once((turned(rad), true)));
+        }
+        // Transfer: any turn; the next support starts where it lands.
+        for rad in [0.5, 0.9] {
+            metrics.record_turns(std::iter::once((turned(rad), false)));
+        }
+        for rad in [0.9, 0.91] {
+            metrics.record_turns(std::iter::once((turned(rad), true)));
+        }
+        assert!((metrics.foot_turn_max_rad() - 0.03).abs() < 1e-12);
+        assert_eq!(metrics.orientation_legs().collect::<Vec<_>>(), ["leg"]);
+        let without = GaitMetrics::new(["leg"]);
+        assert_eq!(without.orientation_legs().count(), 0);
     }
 }

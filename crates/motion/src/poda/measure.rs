@@ -1,5 +1,6 @@
 //! What the driver measures after each frame (the lab's, not the paper's):
-//! the gait metrics of the feet and body ([`super::gait_metrics`]), the
+//! the gait metrics of the feet and body ([`super::gait_metrics`]: their
+//! slip and, against eq. 2's orientation, their turn in support), the
 //! static stability of the support feet under the body's centre, where
 //! PODA's body dynamics put the mass ([`super::stability`]), and the body's
 //! distance from its path.
@@ -21,12 +22,19 @@ pub fn record(model: &PodaModel, state: &mut PodaState, t_prev: f64, t: f64, fir
         .zip(runs)
         .map(|(leg, run)| (effectors[leg.effector], run.support));
     if first {
-        state.metrics = GaitMetrics::new(legs.iter().map(|l| l.name.as_str()));
+        state.metrics = GaitMetrics::new(legs.iter().map(|l| l.name.as_str()))
+            .holding_orientation(legs.iter().map(|l| l.holds_orientation));
         state.stability.clear();
     }
     state
         .metrics
         .record(t_prev, t, feet, state.pose.root.position, state.pitch_rad);
+    let rotations = &state.kin.effector_rotation;
+    state.metrics.record_turns(
+        legs.iter()
+            .zip(runs)
+            .map(|(leg, run)| (rotations[leg.effector], run.support)),
+    );
     state.metrics.record_surge(state.surge_m);
     // The support feet's polygon against the body's centre, where PODA's
     // body dynamics put the mass.

@@ -2,14 +2,16 @@
 //! legs — the gait model (eq. 7–9), named gaits, Catmull-Rom splines for foot
 //! transfer trajectories and body paths, and per-leg pseudoinverse IK with
 //! null-space center angles (eq. 5–6), which key leg positions may change
-//! along the transfer. The driver ([`PodaDriver`]) is a fixed model
-//! (`model.rs`), a changing state (`state.rs`) and the stages of `stages/`
-//! as functions of the two; live edits reach the stages as events
-//! (`edits.rs`).
+//! along the transfer, holding the foot's orientation as well as its
+//! position (eq. 2) where a leg has six joints or more. The driver
+//! ([`PodaDriver`]) is a fixed model (`model.rs`), a changing state
+//! (`state.rs`) and the stages of `stages/` as functions of the two; live
+//! edits reach the stages as events (`edits.rs`).
 
 pub mod body_track;
 pub mod driver;
 mod edits;
+pub mod foot_orientation;
 pub mod gait;
 pub mod gait_by_speed;
 mod gait_edit;

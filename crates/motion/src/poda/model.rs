@@ -3,17 +3,19 @@
 //! eq. 11 carries into the world, hips and straight lengths), the rest pose
 //! and stand height, the transfer spline's key leg positions and the
 //! centres they carry ("Leg Support and Transfer Trajectories"), the body
-//! path ("Horizontal Control"), the body's pitch weights (Figure 2) and the
-//! IK options (eq. 5–6). The stages read it and never write it; only the
-//! driver's setters change it, between frames.
+//! path ("Horizontal Control"), the body's pitch weights (Figure 2), the IK
+//! options (eq. 5–6) and which legs hold their foot's orientation (eq. 2's
+//! last three components, [`super::foot_orientation`]). The stages read it
+//! and never write it; only the driver's setters change it, between frames.
 
 use std::sync::Arc;
 
 use gaitlab_core::preset::poda::check_transfer_key_centers;
 use gaitlab_core::preset::{Creature, PodaParams};
 use gaitlab_core::{Kinematics, Pose, Skeleton};
-use glam::{DVec2, DVec3};
+use glam::{DQuat, DVec2, DVec3};
 
+use super::foot_orientation::{heading_rad, yaw_rotation};
 use super::gait::{GaitError, GaitParams};
 use super::gaits::{gait_names, named_gait};
 use super::key_centers::{self, LegKeyCenters};
@@ -47,7 +49,21 @@ pub struct PodaLeg {
     pub length_m: f64,
     /// The leg's joints that key leg positions give centres and gains.
     pub key_centers: LegKeyCenters,
+    /// Whether the leg holds its foot's orientation as well as its position
+    /// (eq. 2's six components) where its joints' limits allow (the targets
+    /// stage lets a refused foot go): `foot_orientation` is on and the leg
+    /// has [`ORIENTATION_JOINTS`] joints or more.
+    pub holds_orientation: bool,
+    /// The foot's orientation in the rest pose relative to the body's
+    /// ground yaw there (from the foot's frame to the body's level frame):
+    /// carried by the ground yaw at a touchdown, the orientation the foot
+    /// touches down with.
+    pub rest_foot_rotation: DQuat,
 }
+
+/// The fewest joints a leg needs to hold its foot's orientation as well as
+/// its position: one per component of eq. 2's end-effector vector.
+pub const ORIENTATION_JOINTS: usize = 6;
 
 /// What the stages read and never write (module docs).
 #[derive(Clone, Debug)]
@@ -154,14 +170,21 @@ fn legs(
         length_m += (rest_kin.effector_position[effector] - last).length();
         let hip_body =
             rest.root.rotation.transpose() * (rest_kin.joint_position[hip] - rest.root.position);
+        let joints = chain[start..].to_vec();
+        let rest_yaw = yaw_rotation(heading_rad(rest.root.rotation));
+        let rest_foot_rotation = (rest_yaw.conjugate()
+            * DQuat::from_mat3(&rest_kin.effector_rotation[effector]))
+        .normalize();
         legs.push(PodaLeg {
             hip_body,
             length_m,
             name: spec.name.clone().unwrap_or_else(|| spec.effector.clone()),
-            joints: chain[start..].to_vec(),
+            holds_orientation: params.foot_orientation && joints.len() >= ORIENTATION_JOINTS,
+            joints,
             effector,
             reference_body: DVec3::new(foot.x, -stand_height_m, foot.z),
             key_centers: LegKeyCenters::new(),
+            rest_foot_rotation,
         });
     }
     if legs.is_empty() {

@@ -2,7 +2,8 @@
 //! write frame by frame — the time and the gait with the legs' clock (eq. 9
 //! or their own cycles), the body's planned track (eq. 14–15 and yaw) and
 //! pose, each leg's run (support, planted foot, footholds of eq. 11, foot
-//! target), the IK's pose and workspace (eq. 5–6), the metrics, and the
+//! target and, where the leg holds it, the foot's orientation target of
+//! eq. 2), the IK's pose and workspace (eq. 5–6), the metrics, and the
 //! live edits queued since the last frame ([`super::edits`]).
 
 use gaitlab_core::driver::IkFrameReport;
@@ -10,7 +11,7 @@ use gaitlab_core::ik::Targets;
 use gaitlab_core::preset::Creature;
 use gaitlab_core::preset::poda::MAX_TRANSFER_KEYS;
 use gaitlab_core::{Kinematics, Pose};
-use glam::{DVec2, DVec3};
+use glam::{DQuat, DVec2, DVec3};
 
 use super::body_track::{BodyDynamics, BodyTrack};
 use super::edits::Edits;
@@ -48,6 +49,28 @@ pub struct LegRun {
     pub liftoff_s: Option<f64>,
     /// This frame's touchdown time, when the foot landed since the last frame.
     pub touchdown_s: Option<f64>,
+    /// The orientation the foot touched down with (eq. 2; from the foot's
+    /// frame to the world), held through the support and turned from in
+    /// the transfer after it. Kept only for a leg that holds its foot's
+    /// orientation (identity for the others).
+    pub planted_rotation: DQuat,
+    /// The foot's orientation target this frame (eq. 2; from the foot's
+    /// frame to the world): the planted orientation in support, on its way
+    /// to the touchdown orientation in transfer. Kept only for a leg that
+    /// holds its foot's orientation (identity for the others).
+    pub rotation_target: DQuat,
+    /// Whether the leg holds its foot's orientation now, in this support and
+    /// the transfer after it (decided at each touchdown; only for a leg of
+    /// six joints or more with `foot_orientation` on).
+    pub holding: bool,
+    /// Supports in a row in which the leg's joints refused its planted
+    /// foot's orientation (the foot ended a frame more than a degree from
+    /// it); 0 after a support held to its lift-off.
+    pub orientation_refusals: u32,
+    /// Supports the leg still holds its foot's position alone after its
+    /// last refusal (one after the first refusal in a row, doubling with
+    /// each further one, at most eight).
+    pub supports_alone: u32,
 }
 
 /// What the stages write (module docs).
@@ -76,6 +99,9 @@ pub struct PodaState {
     pub center_points: Vec<DVec3>,
     /// The pose this frame.
     pub pose: Pose,
+    /// The joints before this frame's IK (scratch of the IK stage, which
+    /// solves a frame again at a smaller pitch where a planted foot slips).
+    pub joints_before: Vec<f64>,
     /// Forward kinematics of the pose.
     pub kin: Kinematics,
     /// Every effector's target this frame (the feet's, the others where they are).
@@ -99,6 +125,14 @@ pub struct PodaState {
     pub path_speed_read_s: f64,
     /// The live edits queued since the last frame.
     pub edits: Edits,
+    /// The time of the frame whose orientation targets the targets stage
+    /// placed (`runs[i].rotation_target`); a restart places positions alone,
+    /// and the IK stage then places the orientations from eq. 9 at time 0.
+    pub rotations_placed_s: f64,
+    /// Whether some leg had not yet taken the gait on at the last frame
+    /// (the targets stage forgets the legs' refused orientations when they
+    /// all have).
+    pub legs_were_shifting: bool,
 }
 
 /// The body's dynamics options of `model` (eq. 14–15 and yaw).
@@ -152,6 +186,7 @@ impl PodaState {
                 .collect(),
             center_points: Vec::with_capacity(MAX_TRANSFER_KEYS + 2),
             pose: model.rest.clone(),
+            joints_before: model.rest.joints.clone(),
             kin: Kinematics::new(&model.skeleton),
             targets: Targets {
                 position: vec![DVec3::ZERO; effectors],
@@ -166,6 +201,8 @@ impl PodaState {
             path_error_max_m: 0.0,
             path_speed_read_s: f64::NEG_INFINITY,
             edits: Edits::new(n),
+            rotations_placed_s: f64::NAN,
+            legs_were_shifting: false,
         }
     }
 

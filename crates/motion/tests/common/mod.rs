@@ -30,9 +30,16 @@ pub fn human() -> Skeleton {
     creature().skeleton
 }
 
-/// The human's thesis parameters (the defaults plus the preset's wounded joints).
+/// The lab's thesis parameters (gaitlab's target script, posture pull, start
+/// ramp and step wounds: what the `human` preset ran as a `gaitlab-preset/1`
+/// file until 2026-12-06) with the preset's wounded joints. The drivers'
+/// tests here exercise the lab's script; the bundled human now runs §5.2.2's
+/// listing alone (docs/parameters.md "Both ways").
 pub fn human_params() -> ThesisParams {
-    creature().scenario.thesis
+    ThesisParams {
+        wounded: creature().scenario.thesis.wounded,
+        ..ThesisParams::lab()
+    }
 }
 
 /// Knee rest and center angle of [`human_bent_knees`], radians.
