@@ -148,7 +148,7 @@ fn print_put_backs(m: &PhysicsRunMetrics) {
 
 fn print_physics(m: &PhysicsRunMetrics) {
     outln!(
-        "{} · engine physics · gait {} · {:.1} s simulated · fell {} · speed {:.2} of {:.2} m/s · stride {:.2} m in {:.2} s · flight {:.3} s · stance {:.3} s · pitch {:.1}° · roll {:.1}° · friction needed {:.2} · cost of transport {:.2} · {:.0} steps/s ({:.0}× real time)",
+        "{} · engine physics · gait {} · {:.1} s simulated · fell {} · speed {:.2} of {:.2} m/s · stride {:.2} m in {:.2} s · flight {:.3} s · stance {:.3} s · pitch {:.1}° · roll {:.1}° · friction needed {:.2} (mid-support {:.2}, first and last 10 ms {:.2}) · cost of transport {:.2} · {:.0} steps/s ({:.0}× real time)",
         m.preset,
         m.gait,
         m.sim_seconds,
@@ -162,6 +162,8 @@ fn print_physics(m: &PhysicsRunMetrics) {
         m.pitch_magnitude_deg,
         m.roll_magnitude_deg,
         m.friction_needed_max,
+        m.friction_needed_mid,
+        m.friction_needed_edges,
         m.cost_of_transport,
         m.steps_per_second,
         m.realtime_factor,

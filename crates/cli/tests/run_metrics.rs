@@ -286,6 +286,42 @@ fn the_poda_quadruped_from_before_the_body_pitch_runs_as_it_was_made() {
     );
 }
 
+/// Raibert & Hodgins 1991, "Modeling", read as the paper reads it: the
+/// friction needed in the middle of each support apart from its first and
+/// last 10 ms, and the peak vertical force on each leg (issue 42's
+/// baseline, docs/physics.md "Friction and force"). The paper-only trot
+/// needs far more at the edges than in the middle (12.4 against 3.7 on
+/// 2026-12-06); every figure is within the whole-support one, and no leg
+/// carries more than all of them together.
+#[test]
+fn the_friction_needed_is_read_apart_at_the_supports_edges() {
+    let run = run_json("raibert-quadruped", "8", &["--paper-alone"]);
+    let figure = |key: &str| run[key].as_f64().unwrap_or(f64::NAN);
+    let (max, mid, edges) = (
+        figure("friction_needed_max"),
+        figure("friction_needed_mid"),
+        figure("friction_needed_edges"),
+    );
+    assert!(
+        mid > 0.0 && mid <= max && edges <= max,
+        "{mid} {edges} {max}"
+    );
+    assert!(
+        edges > 2.0 * mid,
+        "edges {edges} against the middle's {mid}"
+    );
+    let legs: Vec<f64> = run["peak_leg_force_bw"]
+        .as_array()
+        .map(|a| a.iter().filter_map(Value::as_f64).collect())
+        .unwrap_or_default();
+    let total = figure("peak_vertical_force_bw");
+    assert_eq!(legs.len(), 4, "{run}");
+    assert!(
+        legs.iter().all(|&leg| leg > 1.0 && leg <= total + 1e-9),
+        "{legs:?} against {total}"
+    );
+}
+
 fn cli_metrics(preset: &str, seconds: &str) -> Value {
     run_json(preset, seconds, &[])
 }

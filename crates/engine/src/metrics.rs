@@ -513,6 +513,16 @@ pub struct PhysicsRunMetrics {
     pub speed_swing_mps: f64,
     /// Largest horizontal-to-vertical ground force ratio needed.
     pub friction_needed_max: f64,
+    /// The same within the supports that ended, without their first and
+    /// last 10 ms (Raibert & Hodgins 1991, "Modeling": about 0.5 would
+    /// have held the quadruped's and kangaroo's feet there, the biped's
+    /// "always less than 1").
+    pub friction_needed_mid: f64,
+    /// The same within the first and last 10 ms of those supports (the
+    /// paper: "almost 2.0").
+    pub friction_needed_edges: f64,
+    /// Each leg's largest vertical ground force, × body weight, in leg order.
+    pub peak_leg_force_bw: Vec<f64>,
     /// Cost of transport: positive actuator work over weight × distance
     /// (dimensionless; 0 before any travel).
     pub cost_of_transport: f64,
@@ -613,6 +623,9 @@ impl PhysicsRunMetrics {
             peak_vertical_force_bw: s.peak_vertical_force_bw,
             speed_swing_mps: s.speed_swing_mps,
             friction_needed_max: s.friction_needed_max,
+            friction_needed_mid: s.friction_needed_mid,
+            friction_needed_edges: s.friction_needed_edges,
+            peak_leg_force_bw: s.peak_leg_force_bw.clone(),
             cost_of_transport: s.cost_of_transport,
             lab_additions,
             start: if driver.started_on_cycle() {

@@ -2,8 +2,9 @@
 //! simulation as it runs: stride length and duration, flight and stance
 //! durations, pitch and roll magnitudes, change of leg length during support,
 //! speed and its swing within a stride, peak vertical acceleration, the
-//! friction the motion needed ("Modeling": max |f_t|/f_n over stance), and
-//! whether it fell.
+//! friction the motion needed ("Modeling": max |f_t|/f_n over stance; apart,
+//! as the paper reads it, the first and last [`EDGE_S`] of each support
+//! from the rest), the peak vertical force on each leg, and whether it fell.
 //!
 //! Feed it every step with [`GaitRecorder::record`]; read
 //! [`GaitRecorder::summary`]. Everything before `settle_s` is ignored.
@@ -12,6 +13,11 @@ use glam::DVec3;
 
 use crate::control::attitude::{attitude_error, heading_forward};
 use crate::world::sim::Sim;
+
+/// The start and the end of a support the paper sets apart when it reads the
+/// friction needed ("with the exception of the very beginning and end of
+/// the support period … up to 10 ms"), seconds.
+pub const EDGE_S: f64 = 0.010;
 
 /// One support period of one leg.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -73,6 +79,13 @@ pub struct GaitSummary {
     pub speed_swing_mps: f64,
     /// Largest |f_t| / f_n at any foot carrying ≥ 10 % of body weight.
     pub friction_needed_max: f64,
+    /// The same over the supports that ended after settling, without their
+    /// first and last [`EDGE_S`].
+    pub friction_needed_mid: f64,
+    /// The same within the first and last [`EDGE_S`] of those supports.
+    pub friction_needed_edges: f64,
+    /// Each leg's largest vertical ground force, × body weight.
+    pub peak_leg_force_bw: Vec<f64>,
     /// Cost of transport: the positive work of every joint's actuator
     /// (leg springs, hip servos, stops; Σ max(0, τ·q̇) dt) after settling,
     /// over body weight × distance travelled along the heading. The
@@ -116,6 +129,12 @@ pub struct GaitRecorder {
     fell: bool,
     peak_force: f64,
     friction: f64,
+    /// Per leg, the open support's (time, |f_t|/f_n) samples; classified
+    /// into `friction_mid` and `friction_edges` at its lift-off.
+    friction_samples: Vec<Vec<(f64, f64)>>,
+    friction_mid: f64,
+    friction_edges: f64,
+    peak_leg_force: Vec<f64>,
     /// Positive actuator work since settling (J) and the weight (N).
     positive_work_j: f64,
     weight_n: f64,
@@ -148,6 +167,10 @@ impl GaitRecorder {
             fell: false,
             peak_force: 0.0,
             friction: 0.0,
+            friction_samples: vec![Vec::new(); legs],
+            friction_mid: 0.0,
+            friction_edges: 0.0,
+            peak_leg_force: vec![0.0; legs],
             positive_work_j: 0.0,
             weight_n: 0.0,
         }
@@ -194,12 +217,21 @@ impl GaitRecorder {
             vertical += contact.force.y;
             let hip = d.world[c.trunk].rot * leg.hip_in_trunk + d.world[c.trunk].pos;
             let length = (contact.position - hip).length();
-            if contact.touching && contact.force.y > 0.1 * weight && settled {
-                let ft = DVec3::new(contact.force.x, 0.0, contact.force.z).length();
-                self.friction = self.friction.max(ft / contact.force.y);
+            if settled && weight > 0.0 {
+                self.peak_leg_force[i] = self.peak_leg_force[i].max(contact.force.y / weight);
+            }
+            // The touchdown's sample belongs to the support it starts: the
+            // samples are cleared at the touchdown (below) before it is kept.
+            let friction =
+                (contact.touching && contact.force.y > 0.1 * weight && settled).then(|| {
+                    DVec3::new(contact.force.x, 0.0, contact.force.z).length() / contact.force.y
+                });
+            if let Some(ratio) = friction {
+                self.friction = self.friction.max(ratio);
             }
             match (self.touching[i], contact.touching) {
                 (false, true) => {
+                    self.friction_samples[i].clear();
                     self.open_stance[i] = Some((t, length, length));
                     if i == 0 {
                         self.close_stride(t, com, settled);
@@ -211,6 +243,12 @@ impl GaitRecorder {
                     }
                 }
                 (true, false) => {
+                    if let Some((start, _, _)) = self.open_stance[i]
+                        && settled
+                        && start >= self.settle_s
+                    {
+                        self.classify_friction(i, start, t);
+                    }
                     if let Some((start, at_td, min)) = self.open_stance[i].take()
                         && settled
                         && start >= self.settle_s
@@ -226,6 +264,9 @@ impl GaitRecorder {
                     }
                 }
                 (false, false) => {}
+            }
+            if let Some(ratio) = friction {
+                self.friction_samples[i].push((t, ratio));
             }
             self.touching[i] = contact.touching;
         }
@@ -248,6 +289,20 @@ impl GaitRecorder {
                 self.tail_range = (self.tail_range.0.min(tail), self.tail_range.1.max(tail));
             }
         }
+    }
+
+    /// Leg `i`'s support from `start_s` to its lift-off at `end_s`: each
+    /// friction sample within [`EDGE_S`] of either end counts for the
+    /// edges, the rest for the middle.
+    fn classify_friction(&mut self, i: usize, start_s: f64, end_s: f64) {
+        for &(t, ratio) in &self.friction_samples[i] {
+            if t - start_s < EDGE_S || end_s - t < EDGE_S {
+                self.friction_edges = self.friction_edges.max(ratio);
+            } else {
+                self.friction_mid = self.friction_mid.max(ratio);
+            }
+        }
+        self.friction_samples[i].clear();
     }
 
     fn close_stride(&mut self, t: f64, com: DVec3, settled: bool) {
@@ -316,6 +371,9 @@ impl GaitRecorder {
             peak_vertical_force_bw: self.peak_force,
             speed_swing_mps: mean(&mut self.speed_spans.iter().copied()),
             friction_needed_max: self.friction,
+            friction_needed_mid: self.friction_mid,
+            friction_needed_edges: self.friction_edges,
+            peak_leg_force_bw: self.peak_leg_force.clone(),
             cost_of_transport: match self.start {
                 Some((_, c0)) if (self.last.1 - c0).dot(fwd) > 1e-3 && self.weight_n > 0.0 => {
                     self.positive_work_j / (self.weight_n * (self.last.1 - c0).dot(fwd))
@@ -327,5 +385,32 @@ impl GaitRecorder {
             flights: self.flights.clone(),
             stances: self.stances.clone(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_supports_first_and_last_ten_ms_count_for_the_edges() {
+        let mut recorder = GaitRecorder::new(1, 1.0, 0.0, 0.0);
+        // A support from 1.000 s to 1.100 s: a spike 4 ms in, one 3 ms
+        // before lift-off, and 0.4 in the middle.
+        recorder.friction_samples[0] = vec![
+            (1.004, 1.9),
+            (1.012, 0.3),
+            (1.050, 0.4),
+            (1.088, 0.2),
+            (1.097, 1.2),
+        ];
+        recorder.classify_friction(0, 1.0, 1.1);
+        assert_eq!(recorder.friction_edges, 1.9);
+        assert_eq!(recorder.friction_mid, 0.4);
+        assert!(recorder.friction_samples[0].is_empty());
+        // A later support's middle raises the middle's figure only.
+        recorder.friction_samples[0] = vec![(2.05, 0.7)];
+        recorder.classify_friction(0, 2.0, 2.1);
+        assert_eq!((recorder.friction_mid, recorder.friction_edges), (0.7, 1.9));
     }
 }
