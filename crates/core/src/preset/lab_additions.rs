@@ -146,31 +146,17 @@ mod tests {
         list.iter().map(|a| a.name).collect()
     }
 
-    #[test]
-    fn the_she_2006_preset_runs_the_thesis_alone_with_every_method() {
-        let Some(Ok(creature)) = load_bundled("she-2006") else {
-            panic!("she-2006")
-        };
-        let scenario = &creature.scenario;
-        for method in Method::ALL.into_iter().filter(|m| *m != Method::Ccd) {
-            for mode in ThesisMode::ALL {
-                let ik = IkOptions {
-                    method,
-                    ..scenario.ik.clone()
-                };
-                let found = thesis_lab_additions(&scenario.thesis, &ik, mode);
-                assert_eq!(names(&found), Vec::<&str>::new(), "{method:?} {mode:?}");
-            }
-        }
-    }
-
     /// Issue 41 item 2: a bundled IK preset keeps an addition only where
     /// the thesis alone fails one of its claims (docs/parameters.md "Both
-    /// ways"): the human none, ik-quadruped the lab's script (the listing's
-    /// feet are out of reach of its legs).
+    /// ways"): the human and she-2006 none, ik-quadruped the lab's script
+    /// (the listing's feet are out of reach of its legs).
     #[test]
     fn the_bundled_ik_presets_keep_only_what_a_claim_needs() {
-        for (name, kept) in [("human", &[][..]), ("ik-quadruped", &["lab_script"][..])] {
+        for (name, kept) in [
+            ("she-2006", &[][..]),
+            ("human", &[][..]),
+            ("ik-quadruped", &["lab_script"][..]),
+        ] {
             let Some(Ok(creature)) = load_bundled(name) else {
                 panic!("{name}")
             };

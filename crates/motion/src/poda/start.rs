@@ -68,6 +68,7 @@ pub fn restart(model: &PodaModel, state: &mut PodaState) {
     }
     state.path_error_max_m = 0.0;
     body::place(model, state, 0.0);
+    targets::place_rotations_at_start(model, state);
     ik::solve(model, state, RESET_ITERATIONS);
     measure::record(model, state, 0.0, 0.0, true);
 }

@@ -125,10 +125,6 @@ pub struct PodaState {
     pub path_speed_read_s: f64,
     /// The live edits queued since the last frame.
     pub edits: Edits,
-    /// The time of the frame whose orientation targets the targets stage
-    /// placed (`runs[i].rotation_target`); a restart places positions alone,
-    /// and the IK stage then places the orientations from eq. 9 at time 0.
-    pub rotations_placed_s: f64,
     /// Whether some leg had not yet taken the gait on at the last frame
     /// (the targets stage forgets the legs' refused orientations when they
     /// all have).
@@ -201,7 +197,6 @@ impl PodaState {
             path_error_max_m: 0.0,
             path_speed_read_s: f64::NEG_INFINITY,
             edits: Edits::new(n),
-            rotations_placed_s: f64::NAN,
             legs_were_shifting: false,
         }
     }

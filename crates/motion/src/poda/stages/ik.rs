@@ -16,12 +16,11 @@
 //! and the IK report.
 
 use gaitlab_core::RootTransform;
-use glam::DMat3;
+use glam::{DMat3, DVec3};
 
 use crate::poda::foot_orientation::orientation_error_rad;
 use crate::poda::key_centers;
 use crate::poda::model::PodaModel;
-use crate::poda::stages::targets;
 use crate::poda::state::PodaState;
 use crate::poda::transition::{PlantedLeg, reach_ceiling_m};
 
@@ -147,8 +146,7 @@ fn key_centres(model: &PodaModel, state: &mut PodaState) {
 /// Iterates every leg toward its target (one FK per iteration for the
 /// whole body), centering first, then exact steps; then the report. A leg
 /// that holds its foot's orientation iterates toward its orientation target
-/// too (eq. 2's six rows), placed from eq. 9 at time 0 where the targets
-/// stage did not place this frame's (a restart), and iterates until its
+/// too (eq. 2's six rows), and iterates until its
 /// foot is within the tolerance in position and in turn (the turn that
 /// moves a point one straight leg away by the tolerance), its turn left
 /// out where its joints refused it; a planted foot of such a leg still off
@@ -159,9 +157,6 @@ fn iterate(model: &PodaModel, state: &mut PodaState, iterations: usize) {
     /// second-order residual in the foot's position, and a planted foot's
     /// slip is the difference of two frames' residuals.
     const POSITION_SHARE_OF_TOLERANCE: f64 = 0.5;
-    if state.rotations_placed_s != state.time {
-        targets::place_rotations_at_start(model, state);
-    }
     let tolerance = model.params.tolerance_m;
     let skeleton = &model.skeleton;
     let mut used = 0;
@@ -176,7 +171,7 @@ fn iterate(model: &PodaModel, state: &mut PodaState, iterations: usize) {
             .zip(&state.runs)
             .zip(&state.ik)
             .map(|((leg, run), ik)| {
-                let miss_m = (state.kin.effector_position[leg.effector] - run.target).length();
+                let miss_m = foot_miss_m(state, leg.effector, run.target);
                 if leg.holds_orientation && run.holding && !ik.turn_refused() {
                     let turn_rad = orientation_error_rad(
                         run.rotation_target,
@@ -234,6 +229,12 @@ fn iterate(model: &PodaModel, state: &mut PodaState, iterations: usize) {
         .fold(0.0, f64::max);
 }
 
+/// How far the effector `effector` is from `target` in the last forward
+/// kinematics, metres.
+fn foot_miss_m(state: &PodaState, effector: usize, target: DVec3) -> f64 {
+    (state.kin.effector_position[effector] - target).length()
+}
+
 /// A planted foot of a leg that holds its foot's orientation still off its
 /// spot after the frame's iterations (a foot held level until a knee or an
 /// elbow reached its limit: the position rows over the joints left are
@@ -242,7 +243,7 @@ fn iterate(model: &PodaModel, state: &mut PodaState, iterations: usize) {
 /// rest angles and the leg solved again for its position alone, as a
 /// restart settles it. Its foot then stands tilted as the limits force it;
 /// the targets stage sees the refused orientation at the next frame and
-/// lets it go ([`targets::place`]).
+/// lets it go ([`crate::poda::stages::targets::place`]).
 fn reseed_stuck_feet(model: &PodaModel, state: &mut PodaState) {
     /// Iterations of the legs solved again (a restart's).
     const RESEED_ITERATIONS: usize = 60;
@@ -253,8 +254,10 @@ fn reseed_stuck_feet(model: &PodaModel, state: &mut PodaState) {
     // One bit per leg (the legs solved again); legs past 64 are never.
     let mut reseeded: u64 = 0;
     for (i, (leg, run)) in model.legs.iter().zip(&state.runs).enumerate().take(64) {
-        let miss_m = (state.kin.effector_position[leg.effector] - run.target).length();
-        if leg.holds_orientation && run.support && miss_m > stuck_m {
+        if leg.holds_orientation
+            && run.support
+            && foot_miss_m(state, leg.effector, run.target) > stuck_m
+        {
             for &j in &leg.joints {
                 state.pose.joints[j] = model.rest.joints[j];
             }
@@ -275,9 +278,7 @@ fn reseed_stuck_feet(model: &PodaModel, state: &mut PodaState) {
             .zip(&state.runs)
             .enumerate()
             .filter(|(i, _)| is_reseeded(*i))
-            .map(|(_, (leg, run))| {
-                (state.kin.effector_position[leg.effector] - run.target).length()
-            })
+            .map(|(_, (leg, run))| foot_miss_m(state, leg.effector, run.target))
             .fold(0.0, f64::max);
         if it > 0 && worst < tolerance {
             break;

@@ -77,7 +77,6 @@ pub fn place(model: &PodaModel, state: &mut PodaState, t: f64) {
         run.target = target;
         run.progress = phase.fraction;
     }
-    state.rotations_placed_s = t;
 }
 
 /// Whether leg `i` holds its foot's orientation this frame and, at a
@@ -170,9 +169,8 @@ pub fn transfer_rotation(
 /// (but in a transfer that key positions shape), its refusals forgotten; a
 /// supporting foot holds the orientation of its last touchdown, a
 /// transferring one is on its way from the orientation of the touchdown
-/// before its lift-off to that of its next touchdown. The
-/// restart places the feet's positions alone; the IK stage calls this when
-/// the orientations of the frame were not placed (`rotations_placed_s`).
+/// before its lift-off to that of its next touchdown. The restart
+/// (`crate::poda::start`) calls it after placing the feet's positions.
 pub fn place_rotations_at_start(model: &PodaModel, state: &mut PodaState) {
     state.legs_were_shifting = false;
     let support_s = state.gait.support_s();
