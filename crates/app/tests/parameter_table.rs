@@ -28,6 +28,7 @@ const NOT_PARAMETERS: &[&str] = &[
     "paused",
     "pause",
     "reset",
+    "push_mps",
     "step",
     "playback_rate",
     "step_back_s",

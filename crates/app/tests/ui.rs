@@ -507,6 +507,40 @@ fn the_waypoint_panel_lays_a_square_the_biped_steers_along() {
 }
 
 #[test]
+fn a_push_by_command_is_judged_and_a_planar_creature_refuses_a_sideways_one() {
+    let mut harness = poda_harness("raibert-kangaroo", 1400.0);
+    harness.run();
+    let lab = harness.state_mut();
+    assert_eq!(
+        lab.command(r#"{"push_mps": [0.3, 0]}"#).err().as_deref(),
+        Some(
+            "push_mps: this creature is planar (forward and up only): a sideways push (0.3 m/s) has nowhere to go"
+        )
+    );
+    assert!(
+        lab.command(r#"{"push_mps": [0, 11]}"#)
+            .is_err_and(|e| e.starts_with("push_mps: ")),
+        "above 10 m/s"
+    );
+    lab.command(r#"{"push_mps": [0, -0.3]}"#).expect("pushed");
+    lab.set_paused(false);
+    for _ in 0..(6 * 60) {
+        lab.advance(1.0 / 60.0);
+    }
+    let pushes = lab
+        .driver()
+        .physics()
+        .map(|d| d.pushes().to_vec())
+        .expect("physics");
+    assert_eq!(pushes.len(), 1, "{pushes:?}");
+    assert_eq!(pushes[0].dv_mps, [0.0, -0.3]);
+    assert!(
+        pushes[0].recovered().is_some(),
+        "judged after 5 s: {pushes:?}"
+    );
+}
+
+#[test]
 fn the_physics_plots_each_hold_one_unit_and_open_on_a_phone() {
     // Wide: four plots, one unit each, their axes labelled.
     let mut harness = poda_harness("raibert-biped", 900.0);

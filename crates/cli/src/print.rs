@@ -169,6 +169,23 @@ fn print_physics(m: &PhysicsRunMetrics) {
         m.realtime_factor,
     );
     print_put_backs(m);
+    for p in &m.pushes {
+        let verdict = match p.recovered {
+            Some(true) => "recovered",
+            Some(false) if p.fell => "fell",
+            Some(false) => "did not recover its speed",
+            None => "no verdict: the run ended within 5 s of it",
+        };
+        let after = p.speed_after_mps.map_or_else(String::new, |v| {
+            format!(" (speed {v:.2} of {:.2} m/s after 5 s)", p.desired_mps)
+        });
+        outln!(
+            "push at {:.2} s of ({:+.2}, {:+.2}) m/s: {verdict}{after}",
+            p.at_s,
+            p.dv_mps[0],
+            p.dv_mps[1]
+        );
+    }
     if m.table2.is_empty() {
         return;
     }

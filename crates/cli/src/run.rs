@@ -1,6 +1,6 @@
 //! `gaitlab run PRESET_OR_FILE [--mode M] [--method K] [--gait G] [--path FILE]
 //! [--speed V] [--seconds S] [--fps N] [--set KEY=VALUE] [--switch T:GAIT]
-//! [--edit T:KEY=VALUE] [--trace FILE] [--bvh FILE]
+//! [--edit T:KEY=VALUE] [--push T:VX,VZ] [--trace FILE] [--bvh FILE]
 //! [--csv FILE] [--last S] [--json]`: any preset headless. The options each engine
 //! takes are checked here; the driver comes from the engine layer's `driver_for`.
 
@@ -72,6 +72,14 @@ pub struct RunArgs {
     /// with the reason.
     #[arg(long = "edit", value_name = "T:KEY=VALUE")]
     pub edit: Vec<String>,
+    /// Push the physics creature at T simulated seconds, repeatable:
+    /// `--push 8:0,-0.3` changes its trunk's velocity by VX (sideways, world
+    /// x) and VZ (forward at heading 0, world z) m/s at once. `--json` lists
+    /// each under `pushes` with whether it recovered (no fall, and its
+    /// forward speed over the last of the next 5 s within 10 % of the
+    /// desired), and `recovered` for all of them
+    #[arg(long = "push", value_name = "T:VX,VZ")]
+    pub push: Vec<String>,
     /// Write the simulation's state after every integration step (0.4 ms at
     /// scale 1) as CSV to this file: time, the state machine's state, trunk and
     /// centre of mass, attitude, per leg its length, spring rest, contact and
@@ -108,7 +116,13 @@ pub fn run(args: &RunArgs) -> Result<(), Failure> {
         )));
     }
     let (fps, frames) = timing(args.fps, creature.scenario.fps, args.seconds)?;
-    let mut schedule = Schedule::parse(&args.switch, &args.edit)?;
+    if !args.push.is_empty() && creature.scenario.engine != Engine::Physics {
+        return Err(Failure::input(format!(
+            "--push: engine {} is not simulated; only a physics creature can be pushed",
+            creature.scenario.engine.name()
+        )));
+    }
+    let mut schedule = Schedule::parse(&args.switch, &args.edit, &args.push)?;
     if !schedule.is_empty() && creature.scenario.engine == Engine::Ik {
         return Err(Failure::input(
             "--switch and --edit change gaits: engine ik has none (its motion is --mode)",

@@ -1,6 +1,6 @@
-//! `--switch T:GAIT` and `--edit T:KEY=VALUE`: the live changes of a
-//! headless run (a gait switch, a gait-value edit, as the page's commands
-//! make them), applied through the engine layer's [`TimedChange`] when the
+//! `--switch T:GAIT`, `--edit T:KEY=VALUE` and `--push T:VX,VZ`: the live
+//! changes of a headless run (a gait switch, a gait-value edit, as the
+//! page's commands make them, and a push of a physics creature's trunk), applied through the engine layer's [`TimedChange`] when the
 //! run's clock reaches them, each with what happened.
 
 use gaitlab_engine::{AnyDriver, TimedChange};
@@ -37,13 +37,17 @@ pub struct Schedule {
 }
 
 impl Schedule {
-    /// Reads the `--switch` and `--edit` arguments; changes at the same time
-    /// apply in the order given, switches first.
+    /// Reads the `--switch`, `--edit` and `--push` arguments; changes at the
+    /// same time apply in the order given, switches first, pushes last.
     ///
     /// # Errors
     /// `--switch TEXT: reason` / `--edit TEXT: reason` for a malformed one.
-    pub fn parse(switches: &[String], edits: &[String]) -> Result<Self, Failure> {
-        let mut changes = Vec::with_capacity(switches.len() + edits.len());
+    pub fn parse(
+        switches: &[String],
+        edits: &[String],
+        pushes: &[String],
+    ) -> Result<Self, Failure> {
+        let mut changes = Vec::with_capacity(switches.len() + edits.len() + pushes.len());
         for text in switches {
             changes.push(
                 TimedChange::switch(text).map_err(|e| Failure::input(format!("--switch {e}")))?,
@@ -52,6 +56,10 @@ impl Schedule {
         for text in edits {
             changes
                 .push(TimedChange::edit(text).map_err(|e| Failure::input(format!("--edit {e}")))?);
+        }
+        for text in pushes {
+            changes
+                .push(TimedChange::push(text).map_err(|e| Failure::input(format!("--push {e}")))?);
         }
         changes.sort_by(|a, b| a.at_s.total_cmp(&b.at_s));
         Ok(Self {
@@ -99,13 +107,14 @@ mod tests {
         let schedule = Schedule::parse(
             &["5:trot".to_owned(), "1:walk".to_owned()],
             &["3:period_s=0.8".to_owned()],
+            &["4:0.3,0".to_owned()],
         );
         let Ok(schedule) = schedule else {
             panic!("parses")
         };
         let times: Vec<f64> = schedule.changes.iter().map(|c| c.at_s).collect();
-        assert_eq!(times, [1.0, 3.0, 5.0]);
-        let error = Schedule::parse(&[], &["x".to_owned()]).err();
+        assert_eq!(times, [1.0, 3.0, 4.0, 5.0]);
+        let error = Schedule::parse(&[], &["x".to_owned()], &[]).err();
         assert!(
             error.is_some_and(|e| e.message.starts_with("--edit \"x\"")),
             "a malformed edit names the flag"

@@ -26,7 +26,7 @@ pub struct TuneArgs {
     /// Desired speed of the tuned runs, m/s at scale 1 (default: the preset's).
     #[arg(long)]
     pub speed: Option<f64>,
-    /// Weighted terms to minimise: fall, speed, table2, energy, jump, steps, switch, pairs (`fall=10,speed=1,table2=1,energy=0.5`).
+    /// Weighted terms to minimise: fall, speed, table2, energy, jump, steps, switch, pairs, friction (`fall=10,speed=1,table2=1,energy=0.5`).
     #[arg(long, default_value = "fall=10,speed=1")]
     pub objective: String,
     /// Further desired speeds every candidate also runs at, m/s at scale 1

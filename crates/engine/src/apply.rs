@@ -66,6 +66,9 @@ pub enum EngineCommand<'a> {
     ObstacleAhead(f64),
     /// Face this heading, radians about +y.
     Heading(f64),
+    /// Push the physics creature: change its trunk's horizontal velocity
+    /// by `[x, z]` m/s (world; z is forward at heading 0).
+    Push([f64; 2]),
     /// Run the thesis motion `mode`.
     Mode(ThesisMode),
     /// Replace the thesis script's parameters.
@@ -190,6 +193,12 @@ impl AnyDriver {
                 Ok(Applied::Restart)
             }
             (EngineCommand::Heading(_), _) => Ok(Applied::Restart),
+            (EngineCommand::Push(dv), AnyDriver::Physics(physics)) => {
+                physics.push(dv).map(|()| Applied::Done)
+            }
+            (EngineCommand::Push(_), _) => Err(format!(
+                "push: engine {engine} is not simulated; only a physics creature can be pushed"
+            )),
             (EngineCommand::Mode(mode), AnyDriver::Thesis(thesis)) => {
                 thesis.set_mode(mode);
                 Ok(Applied::Done)

@@ -1,7 +1,8 @@
-//! Live changes to a running driver — a gait switch and a gait-value edit
-//! (Girard & Maciejewski 1985's eq. 7–8 gait values and eq. 12–13 leg force;
+//! Live changes to a running driver — a gait switch, a gait-value edit and
+//! a push (Girard & Maciejewski 1985's eq. 7–8 gait values and eq. 12–13 leg force;
 //! Raibert & Hodgins 1991's desired speed and hop height) — in one place for
-//! the page's commands and the CLI's `--switch T:GAIT` / `--edit T:KEY=VALUE`.
+//! the page's commands and the CLI's `--switch T:GAIT` / `--edit T:KEY=VALUE`
+//! / `--push T:VX,VZ`.
 //! The drivers validate; this module routes and words the errors.
 
 use crate::AnyDriver;
@@ -70,6 +71,9 @@ pub enum Change {
         /// The new value, in the key's unit.
         value: f64,
     },
+    /// Push the physics creature's trunk by `[x, z]` m/s
+    /// ([`EngineCommand::Push`]).
+    Push([f64; 2]),
 }
 
 /// A change at a time of the run.
@@ -132,6 +136,32 @@ impl TimedChange {
         })
     }
 
+    /// Reads `T:VX,VZ` (`--push`): a change of the trunk's velocity, m/s,
+    /// world x (sideways) and z (forward at heading 0).
+    ///
+    /// # Errors
+    /// What is wrong with the text: the shape, the time, or a speed that is
+    /// not a finite number.
+    pub fn push(text: &str) -> Result<Self, String> {
+        let (at_s, rest) = time_and_rest(text, "T:VX,VZ")?;
+        let Some((vx, vz)) = rest.split_once(',') else {
+            return Err(format!(
+                "{text:?}: expected T:VX,VZ (m/s sideways, forward)"
+            ));
+        };
+        let speed = |name: &str, v: &str| {
+            v.trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| format!("{text:?}: {name} must be a finite number of m/s"))
+        };
+        Ok(Self {
+            at_s,
+            change: Change::Push([speed("VX", vx)?, speed("VZ", vz)?]),
+        })
+    }
+
     /// Applies the change to `driver`; returns the derived values' names.
     ///
     /// # Errors
@@ -140,6 +170,7 @@ impl TimedChange {
         match &self.change {
             Change::Switch(name) => switch_gait(driver, name).map(|()| Vec::new()),
             Change::Edit { key, value } => edit_value(driver, key, *value),
+            Change::Push(dv) => driver.apply(EngineCommand::Push(*dv)).map(|_| Vec::new()),
         }
     }
 
@@ -149,6 +180,7 @@ impl TimedChange {
         match &self.change {
             Change::Switch(name) => format!("{}:{name}", self.at_s),
             Change::Edit { key, value } => format!("{}:{key}={value}", self.at_s),
+            Change::Push([vx, vz]) => format!("{}:push {vx},{vz}", self.at_s),
         }
     }
 }
@@ -205,6 +237,22 @@ mod tests {
             ("1:period_s=inf", "finite number"),
         ] {
             let error = TimedChange::edit(text).err().unwrap_or_default();
+            assert!(error.contains(part), "{text}: {error}");
+        }
+        assert_eq!(
+            TimedChange::push("6:-0.3, 0.25"),
+            Ok(TimedChange {
+                at_s: 6.0,
+                change: Change::Push([-0.3, 0.25])
+            })
+        );
+        for (text, part) in [
+            ("6:0.3", "expected T:VX,VZ"),
+            ("6:x,0", "VX must be"),
+            ("6:0,inf", "VZ must be"),
+            ("x:0,0", "seconds ≥ 0"),
+        ] {
+            let error = TimedChange::push(text).err().unwrap_or_default();
             assert!(error.contains(part), "{text}: {error}");
         }
     }

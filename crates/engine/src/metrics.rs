@@ -456,6 +456,45 @@ pub struct PutBackEntry {
     pub why: String,
 }
 
+/// One push of the run and what followed (`run --push`, `run --json`'s
+/// `pushes`, `state().physics.pushes`; `gaitlab_physics::engine::push`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct PushEntry {
+    /// Seconds into the whole run.
+    pub at_s: f64,
+    /// The change of the trunk's velocity, world [x (sideways), z
+    /// (forward at heading 0)], m/s.
+    pub dv_mps: [f64; 2],
+    /// The desired speed then, m/s.
+    pub desired_mps: f64,
+    /// Forward speed over the last second of the five after the push, m/s
+    /// (none when the run ended sooner or the creature fell).
+    pub speed_after_mps: Option<f64>,
+    /// Whether it fell or was put back within those five seconds.
+    pub fell: bool,
+    /// No fall, and that speed within 10 % of the desired one; none when
+    /// the run ended before the five seconds were up.
+    pub recovered: Option<bool>,
+}
+
+/// The run's pushes with their recoveries, in order.
+#[must_use]
+pub fn push_entries(driver: &PhysicsDriver) -> Vec<PushEntry> {
+    driver
+        .pushes()
+        .iter()
+        .map(|p| PushEntry {
+            at_s: p.at_s,
+            dv_mps: p.dv_mps,
+            desired_mps: p.desired_mps,
+            speed_after_mps: p.speed_after_mps,
+            fell: p.fell,
+            recovered: p.recovered(),
+        })
+        .collect()
+}
+
 /// DESIGN.md's `always` and `physics` keys plus Table 2's extras.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PhysicsRunMetrics {
@@ -482,6 +521,11 @@ pub struct PhysicsRunMetrics {
     pub blow_up: Option<String>,
     /// Every put-back of the run, in order, each with the run's own time.
     pub put_backs: Vec<PutBackEntry>,
+    /// Every push of the run (`--push`), in order, with its recovery.
+    pub pushes: Vec<PushEntry>,
+    /// Whether the creature recovered from every push: none without a
+    /// push or while one has no verdict yet.
+    pub recovered: Option<bool>,
     /// Each virtual leg's touchdown and lift-off gaps (the trot, bound and
     /// gallops; empty for one-legged gaits).
     pub pairs: Vec<PairTimingEntry>,
@@ -601,6 +645,15 @@ impl PhysicsRunMetrics {
                 alone: t.alone,
             })
             .collect(),
+            pushes: push_entries(driver),
+            recovered: driver
+                .pushes()
+                .iter()
+                .map(gaitlab_physics::engine::push::Push::recovered)
+                .try_fold(None, |all: Option<bool>, r| {
+                    r.map(|r| Some(all.unwrap_or(true) && r))
+                })
+                .flatten(),
             put_backs: driver
                 .put_backs()
                 .iter()

@@ -37,6 +37,8 @@ pub struct PhysicsState {
     pub fell: bool,
     /// Times it was put back after a fall.
     pub resets: u32,
+    /// Its pushes (`push_mps`), each with whether it recovered.
+    pub pushes: Vec<crate::metrics::PushEntry>,
     /// Body height, metres.
     pub height_m: f64,
     /// Body pitch, degrees.
@@ -140,6 +142,7 @@ impl AnyDriver {
             speed_mean_mps: s.speed_mean_mps,
             fell: s.fell,
             resets: driver.resets(),
+            pushes: crate::metrics::push_entries(driver),
             height_m: probe.height_m,
             pitch_deg: probe.pitch_deg,
             roll_deg: probe.roll_deg,

@@ -27,14 +27,19 @@
 //!   timing ([`timing_cost`]): in unison for the trot and the bound, half a
 //!   stance apart for the gallops ([`GALLOP_GAP_SHARE`]); 1 for a run with
 //!   no pair to judge. 0 for a one-legged gait.
+//! - `friction`: how far the friction the run needed exceeds what the paper
+//!   says its motions needed ([`paper_friction_bounds`]): the excess of the
+//!   middle of the supports over its bound plus that of their first and
+//!   last 10 ms ([`friction_excess`]).
 
-use gaitlab_physics::engine::metrics::GaitSummary;
+use gaitlab_core::portable::Portable;
+use gaitlab_physics::engine::metrics::{GaitSummary, paper_friction_bounds};
 use gaitlab_physics::engine::pair_timing::{GALLOP_GAP_SHARE, pair_timing, timing_cost};
 use gaitlab_physics::engine::table2::compare;
 
 /// The names [`Objective::parse`] knows.
-pub const TERMS: [&str; 8] = [
-    "fall", "speed", "table2", "energy", "jump", "steps", "switch", "pairs",
+pub const TERMS: [&str; 9] = [
+    "fall", "speed", "table2", "energy", "jump", "steps", "switch", "pairs", "friction",
 ];
 
 /// The boxes of the `jump` term, one run each: the near face's distance
@@ -68,6 +73,8 @@ pub struct Objective {
     pub switch: f64,
     /// Weight of `pairs`.
     pub pairs: f64,
+    /// Weight of `friction`.
+    pub friction: f64,
 }
 
 impl Default for Objective {
@@ -82,6 +89,7 @@ impl Default for Objective {
             steps: 0.0,
             switch: 0.0,
             pairs: 0.0,
+            friction: 0.0,
         }
     }
 }
@@ -101,6 +109,7 @@ impl Objective {
             steps: 0.0,
             switch: 0.0,
             pairs: 0.0,
+            friction: 0.0,
         };
         for part in text.split(',').map(str::trim).filter(|p| !p.is_empty()) {
             let (name, weight) = part
@@ -123,6 +132,7 @@ impl Objective {
                 "steps" => o.steps = w,
                 "switch" => o.switch = w,
                 "pairs" => o.pairs = w,
+                "friction" => o.friction = w,
                 other => {
                     return Err(format!(
                         "objective: unknown term \"{other}\" (terms: {})",
@@ -131,7 +141,16 @@ impl Objective {
                 }
             }
         }
-        if o.fall + o.speed + o.table2 + o.energy + o.jump + o.steps + o.switch + o.pairs <= 0.0 {
+        let total = o.fall
+            + o.speed
+            + o.table2
+            + o.energy
+            + o.jump
+            + o.steps
+            + o.switch
+            + o.pairs
+            + o.friction;
+        if total <= 0.0 {
             return Err("objective: every weight is 0".to_owned());
         }
         Ok(o)
@@ -180,8 +199,30 @@ impl Objective {
             let timings = pair_timing(&s.stances, pairs);
             cost += self.pairs * timing_cost(&timings, &s.leg_stance_s, target).unwrap_or(1.0);
         }
+        if self.friction > 0.0 {
+            cost += self.friction * friction_excess(s, legs.len());
+        }
         cost
     }
+}
+
+/// The `friction` term of a run of a creature with `legs` legs: each of
+/// the middle's and the edges' excess over [`paper_friction_bounds`] as the
+/// logarithm of its ratio to the bound (0 within it; capped at 3, 20 times
+/// the bound), summed: far over the bound still has a slope to descend. A
+/// run that never measured a support (all zero) costs 0 here: `fall`
+/// judges it.
+#[must_use]
+pub fn friction_excess(s: &GaitSummary, legs: usize) -> f64 {
+    let (mid, edges) = paper_friction_bounds(legs);
+    let over = |value: f64, bound: f64| {
+        if value > bound {
+            (value / bound).pln().min(3.0)
+        } else {
+            0.0
+        }
+    };
+    over(s.friction_needed_mid, mid) + over(s.friction_needed_edges, edges)
 }
 
 #[cfg(test)]
@@ -226,5 +267,29 @@ mod tests {
         let p = Objective::parse("pairs=3").expect("parses");
         assert!((p.cost(&s, false, "bound", &[], &[[0, 1]]) - 3.0).abs() < 1e-12);
         assert_eq!(p.cost(&s, false, "run", &[], &[]), 0.0);
+    }
+
+    /// ln 1.5 and ln 1.25, to 17 digits.
+    const LN_1_5: f64 = 0.405_465_108_108_164_4;
+    const LN_1_25: f64 = 0.223_143_551_314_209_76;
+
+    #[test]
+    fn friction_costs_only_what_exceeds_the_papers_figures() {
+        let f = Objective::parse("friction=2").expect("parses");
+        let run = |mid, edges| GaitSummary {
+            friction_needed_mid: mid,
+            friction_needed_edges: edges,
+            ..GaitSummary::default()
+        };
+        let quadruped = ["fl", "fr", "rl", "rr"];
+        // Within the quadruped's 0.6 and 2.0: nothing.
+        assert_eq!(f.cost(&run(0.55, 1.9), false, "trot", &quadruped, &[]), 0.0);
+        // The middle 1.5 times its bound (0.9 of 0.6), the edges 1.25 times (2.5 of 2.0).
+        let c = f.cost(&run(0.9, 2.5), false, "trot", &quadruped, &[]);
+        assert!((c - 2.0 * (LN_1_5 + LN_1_25)).abs() < 1e-12, "{c}");
+        // Each part is capped at 3 (20 times the bound and more).
+        assert!((friction_excess(&run(0.6 * 30.0, 2.0 * 40.0), 4) - 6.0).abs() < 1e-12);
+        // The biped's bound is 1 everywhere: 1.5 at the edges costs ln 1.5.
+        assert!((friction_excess(&run(0.5, 1.5), 2) - LN_1_5).abs() < 1e-12);
     }
 }

@@ -307,6 +307,7 @@ impl Problem {
                 speed: 0.0,
                 energy: 0.0,
                 pairs: 0.0,
+                friction: 0.0,
                 ..*o
             };
             let rest = Objective { table2: 0.0, ..*o };

@@ -148,6 +148,11 @@ pub struct Command {
     /// Put a box this many metres ahead of the kangaroo, which jumps it
     /// (the panel's "Place a box 3 m ahead"), [1, 20].
     pub obstacle_ahead_m: Option<f64>,
+    /// Push the physics creature now: change its trunk's horizontal
+    /// velocity by `[x, z]` m/s (world; z is forward at heading 0), each
+    /// within ±10 (`run --push`; `state().physics.pushes` tells whether it
+    /// recovered).
+    pub push_mps: Option<[f64; 2]>,
     /// The physics creature's path: waypoints `[x, z]`, metres, followed
     /// from the first (the panel's waypoint editor); `[]` clears it.
     pub waypoints: Option<Vec<[f64; 2]>>,
@@ -351,6 +356,10 @@ impl Lab {
         if let Some(distance) = c.obstacle_ahead_m {
             self.place_obstacle(distance)
                 .map_err(|e| e.replacen("obstacle:", "obstacle_ahead_m:", 1))?;
+        }
+        if let Some(dv) = c.push_mps {
+            self.push(dv)
+                .map_err(|e| e.replacen("push:", "push_mps:", 1))?;
         }
         if let Some(points) = &c.waypoints {
             self.set_waypoints(points)?;

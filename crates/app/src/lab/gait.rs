@@ -100,6 +100,20 @@ impl Lab {
         }
     }
 
+    /// Pushes the physics creature: its trunk's horizontal velocity changes
+    /// by `dv_mps` = `[x, z]` m/s at once ([`EngineCommand::Push`]).
+    ///
+    /// # Errors
+    /// `push: …` when the engine is not physics, the creature is planar
+    /// and the push sideways, or a speed is not finite within ±10 m/s;
+    /// nothing changes.
+    pub fn push(&mut self, dv_mps: [f64; 2]) -> Result<(), String> {
+        self.stage
+            .driver
+            .apply(EngineCommand::Push(dv_mps))
+            .map(drop)
+    }
+
     /// Has the physics creature follow `waypoints` (`[x, z]`, m at scale 1)
     /// from the first ([`EngineCommand::Waypoints`]).
     ///

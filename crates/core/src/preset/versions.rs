@@ -9,6 +9,7 @@
 //! | `scenario.ik.transpose_alpha` | `buss` | `thesis` (§4.4.1) |
 //! | `scenario.ik.lambda` | 0.05 m | 0.2 m (the measured choice, docs/she-2006.md) |
 //! | `scenario.poda.foot_orientation` | false: positions alone | true: eq. 2's orientation where a leg has six joints |
+//! | `scenario.physics.controller_by_gait.trot.unison_liftoff` (quadruped; or in `controller`) | 0: each leg of a pair unloads on its own | 1: the pair leaves the ground as one virtual leg ("Gaits") |
 //!
 //! and, for a key that both versions have, a `/2` file takes the paper's
 //! behaviour where a `/1` file took the lab's:
@@ -75,6 +76,9 @@ struct GivenIk {
 pub const V1_LAMBDA_M: f64 = 0.05;
 /// The limit passes every `gaitlab-preset/1` file without `limit_passes` ran with.
 pub const V1_LIMIT_PASSES: usize = 4;
+/// The trot's lift-off every `gaitlab-preset/1` quadruped file without
+/// the key ran with: each leg of a pair unloading on its own (0).
+pub const V1_TROT_LIFTOFF: (&str, f64) = ("unison_liftoff", 0.0);
 
 /// Writes into `preset`, parsed from `json`, what its format meant by each key
 /// it leaves out. A `gaitlab-preset/2` file is left as parsed.
@@ -112,6 +116,22 @@ pub(super) fn write_in_old_defaults(preset: &mut Preset, json: &str) {
     }
     if keys.start_ramp_s.is_none() {
         thesis.start_ramp_s = start_ramp_s;
+    }
+    if let Some(physics) = preset.scenario.physics.as_mut()
+        && physics.model.name() == "quadruped"
+    {
+        let given = physics.controller.contains_key(V1_TROT_LIFTOFF.0)
+            || physics
+                .controller_by_gait
+                .get("trot")
+                .is_some_and(|own| own.contains_key(V1_TROT_LIFTOFF.0));
+        if !given {
+            physics
+                .controller_by_gait
+                .entry("trot".to_owned())
+                .or_default()
+                .insert(V1_TROT_LIFTOFF.0.to_owned(), V1_TROT_LIFTOFF.1);
+        }
     }
     if let Some(poda) = preset.scenario.poda.as_mut() {
         let keys = given.scenario.poda.unwrap_or_default();
@@ -209,6 +229,35 @@ mod tests {
         assert!(named.contains("gaitlab-preset/1") && named.contains("\"body_pitch\": true"));
         let named = read(&named);
         assert!(named.body_pitch && named.foot_orientation);
+    }
+
+    #[test]
+    fn a_version_1_quadruped_without_the_key_trots_leg_by_leg() {
+        let json = include_str!("../../../../presets/raibert-quadruped.json");
+        let unison = |json: &str| match Preset::from_json_for(json, Purpose::Scenario) {
+            Ok(preset) => preset.scenario.physics.and_then(|p| {
+                p.controller_by_gait
+                    .get("trot")
+                    .and_then(|own| own.get("unison_liftoff").copied())
+            }),
+            Err(error) => panic!("{error}"),
+        };
+        // The bundled file names it: the pair leaves the ground as one.
+        assert_eq!(unison(json), Some(1.0));
+        // Left out of a /1 file: each leg on its own, as such files ran.
+        let mut value: serde_json::Value = serde_json::from_str(json).expect("JSON");
+        let trot = &mut value["scenario"]["physics"]["controller_by_gait"]["trot"];
+        assert!(
+            trot.as_object_mut()
+                .is_some_and(|t| t.remove("unison_liftoff").is_some())
+        );
+        assert_eq!(
+            unison(&value.to_string()),
+            Some(crate::preset::versions::V1_TROT_LIFTOFF.1)
+        );
+        // A /2 file without it trots as the paper says.
+        value["format"] = "gaitlab-preset/2".into();
+        assert_eq!(unison(&value.to_string()), None);
     }
 
     #[test]

@@ -1084,6 +1084,14 @@ pub const QUADRUPED_RUN: &[ControllerParam] = &[
     SWING_KV,
     SWING_ROLL_FOLLOW,
     MAX_HIP_TORQUE,
+    row(
+        "unison_liftoff",
+        "A pair leaves the ground as one virtual leg (1) or leg by leg (0)",
+        "",
+        "Raibert & Hodgins 1991, \"Gaits\" (virtual legs)",
+        Origin::Paper,
+        "\"The members of each pair strike the ground in unison and leave the ground in unison\"",
+    ),
 ];
 
 /// The table of the parameters type whose names are `names` (a

@@ -114,6 +114,7 @@ impl NamedParameters for QuadrupedRunParams {
         "swing_kv",
         "swing_roll_follow",
         "max_hip_torque",
+        "unison_liftoff",
     ];
 
     fn slot(&mut self, name: &str) -> Option<&mut f64> {
@@ -146,6 +147,7 @@ impl NamedParameters for QuadrupedRunParams {
             "swing_kv" => &mut self.swing_kv,
             "swing_roll_follow" => &mut self.swing_roll_follow,
             "max_hip_torque" => &mut self.max_hip_torque,
+            "unison_liftoff" => &mut t.unison_liftoff,
             _ => return None,
         })
     }

@@ -52,6 +52,14 @@ pub struct GaitTuning {
     /// Whether the landing pair lengthens only once its hips descend
     /// (else at once, as Figure 4's flight state does).
     pub wait_for_descent: bool,
+    /// 1: the pair is one virtual leg at lift-off ("Gaits": its members
+    /// "leave the ground in unison"): it unloads when its legs in stance
+    /// have all reached thrust and are, on average, near full length, and
+    /// both shorten together. 0: each leg unloads on its own spring, as
+    /// the trot did before 2026-12-06, so one leg may carry the pair's
+    /// posture torque alone at the end of the stance (`gaitlab-preset/1`
+    /// files without the key).
+    pub unison_liftoff: f64,
 }
 
 /// Parameters of [`QuadrupedRun`](super::quadruped_run::QuadrupedRun); all at scale 1 (the controller scales
@@ -107,6 +115,7 @@ impl Default for QuadrupedRunParams {
             pitch_swing: 0.0,
             posture_force_ratio: f64::INFINITY,
             wait_for_descent: true,
+            unison_liftoff: 1.0,
         };
         Self {
             speed_mps: 2.3,

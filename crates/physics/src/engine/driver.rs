@@ -22,6 +22,7 @@ use crate::engine::gait_entry::enter_at_start;
 use crate::engine::metrics::{GaitRecorder, GaitSummary};
 use crate::engine::preset::creature_from_preset;
 use crate::engine::probe::{self, PhysicsProbe};
+use crate::engine::push::Push;
 use crate::engine::steering::Steering;
 use crate::world::ground::{GroundParams, Obstacle};
 use crate::world::sim::{Controller, Sim, SimOptions};
@@ -33,6 +34,12 @@ pub const FALL_RESET_S: f64 = 1.5;
 /// hours must not grow the list without end); [`PhysicsDriver::resets`]
 /// counts them all.
 pub const MAX_PUT_BACKS: usize = 100;
+
+/// How many pushes a run keeps with their recoveries.
+pub const MAX_PUSHES: usize = 100;
+
+/// The largest push [`PhysicsDriver::push`] takes, per axis (m/s).
+pub const MAX_PUSH_MPS: f64 = 10.0;
 
 /// One time the guard put the creature back at the start.
 #[derive(Clone, Debug, PartialEq)]
@@ -83,6 +90,8 @@ pub struct PhysicsDriver {
     put_backs: Vec<PutBack>,
     /// Seconds of the run before the current attempt began.
     attempt_start_s: f64,
+    /// The pushes of the run, in order ([`PhysicsDriver::push`]).
+    pushes: Vec<Push>,
 }
 
 fn scaled_skeleton(skeleton: &Skeleton, l: f64) -> Result<Skeleton, PresetError> {
@@ -235,6 +244,7 @@ impl PhysicsDriver {
             resets: 0,
             put_backs: Vec::new(),
             attempt_start_s: 0.0,
+            pushes: Vec::new(),
         };
         driver.update_pose();
         Ok(driver)
@@ -434,6 +444,67 @@ impl PhysicsDriver {
     #[must_use]
     pub fn run_time_s(&self) -> f64 {
         self.attempt_start_s + self.sim.time
+    }
+
+    /// Push the creature: change its trunk's horizontal velocity by
+    /// `dv_mps` = [x (sideways), z (forward at heading 0)] m/s, in the world
+    /// frame, now — the whole creature's velocity, as an impulse on its body
+    /// gives it at once ([`super::push`]). The recovery is judged over the
+    /// next [`RECOVERY_S`](super::push::RECOVERY_S) seconds ([`Self::pushes`]).
+    ///
+    /// # Errors
+    /// `push: reason` for a change that is not finite or above 10 m/s, or
+    /// a sideways one on a planar creature (the kangaroo); nothing changes.
+    pub fn push(&mut self, dv_mps: [f64; 2]) -> Result<(), String> {
+        if !dv_mps
+            .iter()
+            .all(|v| v.is_finite() && v.abs() <= MAX_PUSH_MPS)
+        {
+            return Err(format!(
+                "push: {dv_mps:?} must be two finite speeds within ±{MAX_PUSH_MPS} m/s"
+            ));
+        }
+        let data = &mut self.sim.data;
+        if self.sim.creature.model.free_base() {
+            let world = DVec3::new(dv_mps[0], 0.0, dv_mps[1]);
+            data.base_velocity.linear += data.base_orientation.inverse() * world;
+        } else if dv_mps[0] != 0.0 {
+            return Err(format!(
+                "push: this creature is planar (forward and up only): a sideways push ({} m/s) has nowhere to go",
+                dv_mps[0]
+            ));
+        } else if let Some(v) = data.qd.first_mut() {
+            *v += dv_mps[1];
+        }
+        if self.pushes.len() < MAX_PUSHES {
+            let desired = self.params.speed_mps * self.params.scale.sqrt();
+            let forward = crate::control::attitude::heading_forward(self.heading());
+            self.pushes
+                .push(Push::new(self.run_time_s(), dv_mps, desired, forward));
+        }
+        Ok(())
+    }
+
+    /// The run's pushes with their recoveries, in order (the first
+    /// [`MAX_PUSHES`]).
+    #[must_use]
+    pub fn pushes(&self) -> &[Push] {
+        &self.pushes
+    }
+
+    fn watch_pushes(&mut self) {
+        let now = self.run_time_s();
+        if !self.pushes.iter().any(|p| p.open(now)) {
+            return;
+        }
+        let fell = self
+            .fell_at
+            .map(|t| self.attempt_start_s + t)
+            .or_else(|| self.put_backs.last().map(|p| p.run_time_s));
+        let com = self.centre_of_mass();
+        for p in &mut self.pushes {
+            p.observe(now, com, fell);
+        }
     }
 
     /// Put the creature back at the start after a blow-up or a fall,
@@ -776,6 +847,7 @@ impl PhysicsDriver {
             }
             self.recorder.record(&self.sim);
             self.take_over();
+            self.watch_pushes();
             after_step(self);
             stepped += 1;
         }
@@ -817,6 +889,7 @@ impl Driver for PhysicsDriver {
         self.resets = 0;
         self.put_backs.clear();
         self.attempt_start_s = 0.0;
+        self.pushes.clear();
     }
 
     fn skeleton(&self) -> &Skeleton {

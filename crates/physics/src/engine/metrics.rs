@@ -19,6 +19,17 @@ use crate::world::sim::Sim;
 /// the support period … up to 10 ms"), seconds.
 pub const EDGE_S: f64 = 0.010;
 
+/// The friction the paper says its motions needed ("Modeling"), as
+/// `(middle, edges)` bounds on [`GaitSummary::friction_needed_mid`] and
+/// [`GaitSummary::friction_needed_edges`] for a creature with `legs` legs:
+/// the biped's "always less than 1" (1.0 for both), the quadruped's and
+/// the kangaroo's "about 0.5" apart from the edges' "almost 2.0" (read as
+/// 0.6 and 2.0).
+#[must_use]
+pub fn paper_friction_bounds(legs: usize) -> (f64, f64) {
+    if legs == 2 { (1.0, 1.0) } else { (0.6, 2.0) }
+}
+
 /// One support period of one leg.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Stance {

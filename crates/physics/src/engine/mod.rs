@@ -8,7 +8,7 @@
 //! [`table2`] holds the paper's; [`mjcf`] exports the creature to MuJoCo;
 //! [`trace`] writes its state after every step; [`cycle_start`] starts a
 //! run on the gait's cycle, and [`gait_entry`] a switched-to gait at its
-//! own start.
+//! own start; [`push`] pushes the trunk and judges the recovery.
 
 pub mod consistency;
 pub mod cycle_start;
@@ -20,6 +20,7 @@ pub mod pair_timing;
 pub mod parameters;
 pub mod preset;
 pub mod probe;
+pub mod push;
 pub mod steering;
 pub mod table2;
 pub mod trace;

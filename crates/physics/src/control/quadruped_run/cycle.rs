@@ -1,8 +1,9 @@
 //! The trot's leg cycle (Raibert & Hodgins 1991, Figure 4 on a virtual leg):
-//! each leg of the active diagonal pair lands, compresses, thrusts and
-//! unloads on its own spring's events; the virtual leg lifts off when the
-//! pair has left the ground, and each flight regulates that pair's thrust
-//! (eq. 2 on the Table-2 flight time).
+//! each leg of the active diagonal pair lands, compresses and thrusts on
+//! its own spring's events; the pair unloads as one virtual leg when its
+//! legs are near full length on average (`unison_liftoff`), and lifts off
+//! when both feet have left the ground; each flight regulates that pair's
+//! thrust (eq. 2 on the Table-2 flight time).
 
 use super::{QuadrupedRun, TROT_PAIRS};
 use crate::control::leg_spring::LegSpring;
@@ -25,6 +26,7 @@ impl QuadrupedRun {
         let time_s = self.plan.scale.time();
         let pair = TROT_PAIRS[self.active];
         let landing = t.landing_rest_m * l;
+        let unison = t.unison_liftoff > 0.5;
         // Flight time of the pair that lifted off last ends at the first touch
         // of any foot.
         if let Some(p) = self.liftoff_pair
@@ -69,7 +71,7 @@ impl QuadrupedRun {
                         shortened: (qd < 0.0 && q < self.stance_rest[i] - 0.002 * l)
                             || input.time - self.leg_touchdown[i] > 0.015 * time_s,
                         lengthening: qd >= 0.0,
-                        extended: q >= self.stance_rest[i] - 0.005 * l,
+                        extended: !unison && q >= self.stance_rest[i] - 0.005 * l,
                     });
                 }
             }
@@ -78,6 +80,28 @@ impl QuadrupedRun {
                 self.done[i] =
                     *phase != Phase::Loading || input.time - self.leg_touchdown[i] > 0.01 * time_s;
                 *phase = Phase::Flight;
+            }
+        }
+        // The pair is one virtual leg ("Gaits": its members "strike the
+        // ground in unison and leave the ground in unison"): it unloads
+        // when its legs in stance are all in thrust and, on average, near
+        // full length. Leg by leg, the first leg off left the other to
+        // carry the pair's posture torque alone: a trot needing friction
+        // 3.7 mid-support and 12.4 at its end (docs/physics.md).
+        let (mut qm, mut n, mut thrusting) = (0.0, 0.0, unison);
+        for &i in &pair {
+            if self.done[i] || self.leg_phase[i] == Phase::Flight {
+                continue;
+            }
+            thrusting &= self.leg_phase[i] == Phase::Thrust;
+            qm += input.data.q[input.creature.legs[i].spring] - self.stance_rest[i];
+            n += 1.0;
+        }
+        if n > 0.0 && thrusting && qm / n >= -0.005 * l {
+            for &i in &pair {
+                if self.leg_phase[i] == Phase::Thrust {
+                    self.leg_phase[i] = Phase::Unloading;
+                }
             }
         }
         if self.in_stance
