@@ -42,7 +42,7 @@ fn pitching_bound(speed_mps: f64) -> Creature {
             .or_default();
         for (name, value) in [
             ("leg_damping", 15.0),
-            ("leg_stiffness", 5655.202_882_667_869),
+            ("leg_stiffness", 5_655.202_882_667_869),
             ("pitch_kp", 105.396_779_337_337_18),
             ("pitch_kv", 12.643_275_667_552_002),
             ("placement_gain_s", 0.398_700_744_865_114_03),
