@@ -541,6 +541,58 @@ fn a_push_by_command_is_judged_and_a_planar_creature_refuses_a_sideways_one() {
 }
 
 #[test]
+fn the_panel_pushes_forward_draws_the_push_and_judges_it() {
+    use gaitlab_app::render::physics_overlay::PUSH_COLOR;
+    let mut harness = poda_harness("raibert-quadruped", 1400.0);
+    harness.run_steps(30);
+    // Run `seconds` of the creature, then pause again for the panel.
+    let run_for = |harness: &mut Harness<'static, Lab>, seconds: f64| {
+        let lab = harness.state_mut();
+        lab.set_paused(false);
+        for _ in 0..(seconds * 60.0) as usize {
+            lab.advance(1.0 / 60.0);
+        }
+        lab.set_paused(true);
+        // The view eases toward the moved creature: a few frames to settle.
+        harness.run_steps(30);
+    };
+    run_for(&mut harness, 2.0);
+    harness.get_by_label("Push forward").click();
+    harness.run_steps(2);
+    run_for(&mut harness, 0.1);
+    let pushes = harness
+        .state()
+        .driver()
+        .physics()
+        .map(|d| d.pushes().to_vec())
+        .expect("physics");
+    assert_eq!(pushes.len(), 1, "{pushes:?}");
+    // Heading 0: forward is +z, 0.3 m/s.
+    assert!((pushes[0].dv_mps[1] - 0.3).abs() < 1e-12 && pushes[0].dv_mps[0].abs() < 1e-12);
+    let drawn = |lab: &Lab| {
+        lab.stage()
+            .scene()
+            .segments()
+            .iter()
+            .filter(|s| s.color == PUSH_COLOR)
+            .count()
+    };
+    assert_eq!(
+        drawn(harness.state()),
+        3,
+        "the arrow: a shaft and two barbs"
+    );
+    run_for(&mut harness, 6.0);
+    assert_eq!(drawn(harness.state()), 0, "gone a second after");
+    assert!(
+        harness
+            .query_all_by_label_contains("Last push at t = ")
+            .next()
+            .is_some()
+    );
+}
+
+#[test]
 fn the_physics_plots_each_hold_one_unit_and_open_on_a_phone() {
     // Wide: four plots, one unit each, their axes labelled.
     let mut harness = poda_harness("raibert-biped", 900.0);

@@ -33,6 +33,12 @@ pub struct ProbeReadout {
     pub phase_index: usize,
 }
 
+/// How long a push stays drawn after it, seconds of the run.
+pub const PUSH_SHOWN_S: f64 = 1.0;
+
+/// The drawn push's length per m/s of velocity change, metres.
+pub const PUSH_ARROW_M_PER_MPS: f64 = 1.0;
+
 impl AnyDriver {
     /// PODA's foot targets this frame, each with whether its leg supports.
     pub fn foot_targets(&self) -> impl Iterator<Item = (DVec3, bool)> + '_ {
@@ -75,6 +81,23 @@ impl AnyDriver {
     #[must_use]
     pub fn trunk_capsule(&self) -> Option<(DVec3, DVec3, f64)> {
         self.physics().and_then(|d| d.trunk_capsule())
+    }
+
+    /// The last push as an arrow `(tail, head)` in the world, metres, for
+    /// [`PUSH_SHOWN_S`] after it: ending at the trunk, 1 m long per m/s of
+    /// the push, pointing the way it pushed; `None` otherwise.
+    #[must_use]
+    pub fn push_arrow(&self) -> Option<(DVec3, DVec3)> {
+        let driver = self.physics()?;
+        let push = driver.pushes().last()?;
+        let since = driver.run_time_s() - push.at_s;
+        if !(0.0..PUSH_SHOWN_S).contains(&since) {
+            return None;
+        }
+        let (a, b, _) = driver.trunk_capsule()?;
+        let head = (a + b) / 2.0;
+        let dv = DVec3::new(push.dv_mps[0], 0.0, push.dv_mps[1]);
+        Some((head - dv * PUSH_ARROW_M_PER_MPS, head))
     }
 
     /// The boxes on the physics creature's ground, each `(lowest corner,

@@ -75,7 +75,18 @@ pub struct PhysicsReadout {
     pub table2: Vec<Table2Entry>,
     /// Where the creature is and the path it steers along.
     pub route: RouteReadout,
+    /// The desired heading, radians about +y (0 = +z): what a push
+    /// "forward" pushes along.
+    pub heading_rad: f64,
+    /// The run's last push and its recovery, if it was pushed.
+    pub last_push: Option<crate::metrics::PushEntry>,
+    /// Seconds of the run, across put-backs (a push's `at_s` clock).
+    pub run_time_s: f64,
 }
+
+/// Seconds after a push at which its recovery is judged
+/// (`gaitlab_physics::engine::push::RECOVERY_S`).
+pub const PUSH_RECOVERY_S: f64 = gaitlab_physics::engine::push::RECOVERY_S;
 
 /// One tunable gain of a physics controller.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -307,6 +318,9 @@ impl AnyDriver {
             },
             table2: catalog::table2(&summary, &gait, &legs),
             route: self.physics_route()?,
+            heading_rad: driver.heading(),
+            last_push: crate::metrics::push_entries(driver).pop(),
+            run_time_s: driver.run_time_s(),
             gait,
         })
     }

@@ -64,6 +64,9 @@ impl Overlays {
     pub fn add_to(&self, scene: &mut Scene, driver: &AnyDriver, view: &ViewOptions) {
         if driver.kind() == DriverKind::Physics {
             scene.add_physics_overlay(driver.trunk_capsule(), driver.obstacle_boxes());
+            if let Some((tail, head)) = driver.push_arrow() {
+                scene.add_push_arrow(tail, head);
+            }
         }
         if driver.kind() == DriverKind::Poda && view.targets {
             scene.add_gait_overlay(

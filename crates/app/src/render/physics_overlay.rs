@@ -1,8 +1,8 @@
 //! What the physics engine adds to the view (Raibert & Hodgins 1991,
 //! Figure 1): the trunk drawn as its equivalent-inertia body — a capsule along
 //! the long axis of the uniform box with the trunk's mass and principal
-//! moments (Table 3 gives masses and inertias, not shapes) — and the boxes on
-//! the ground as wireframes.
+//! moments (Table 3 gives masses and inertias, not shapes) — the boxes on
+//! the ground as wireframes, and the last push as an arrow into the trunk.
 
 use glam::{DVec3, Vec3};
 
@@ -12,6 +12,8 @@ use super::scene::{Capsule, Scene, Segment};
 pub const TRUNK_COLOR: [f32; 4] = [0.55, 0.58, 0.66, 1.0];
 /// Obstacle edges.
 pub const OBSTACLE_COLOR: [f32; 4] = [0.85, 0.45, 0.20, 0.95];
+/// A push's arrow.
+pub const PUSH_COLOR: [f32; 4] = [0.80, 0.20, 0.75, 1.0];
 
 fn f32_point(p: DVec3) -> Vec3 {
     Vec3::new(p.x as f32, p.y as f32, p.z as f32)
@@ -64,6 +66,32 @@ impl Scene {
             }
         }
     }
+
+    /// Adds a push's arrow from `tail` to `head` (world, metres): a shaft and
+    /// two barbs at the head. Non-finite or zero-length input is skipped.
+    pub fn add_push_arrow(&mut self, tail: DVec3, head: DVec3) {
+        let along = head - tail;
+        if !(tail.is_finite() && head.is_finite()) || along.length() < 1e-6 {
+            return;
+        }
+        let frame = self.frame_mut();
+        frame.segments.push(Segment::new(
+            f32_point(tail),
+            f32_point(head),
+            4.0,
+            PUSH_COLOR,
+        ));
+        let back = -along.normalize() * (0.25 * along.length()).min(0.15);
+        let side = DVec3::Y.cross(along).normalize_or(DVec3::X) * back.length() * 0.6;
+        for barb in [back + side, back - side] {
+            frame.segments.push(Segment::new(
+                f32_point(head),
+                f32_point(head + barb),
+                4.0,
+                PUSH_COLOR,
+            ));
+        }
+    }
 }
 
 #[cfg(test)]
@@ -94,6 +122,28 @@ mod tests {
         assert!(
             (bounds.max - DVec3::new(1.1, 0.1, 0.1)).length() < 1e-12,
             "{bounds:?}"
+        );
+    }
+
+    #[test]
+    fn a_push_is_a_shaft_and_two_barbs_ending_at_the_head() {
+        let mut scene = Scene::new();
+        let before = scene.segments().len();
+        let head = DVec3::new(0.0, 0.6, 2.0);
+        scene.add_push_arrow(head - DVec3::new(0.3, 0.0, 0.0), head);
+        let added = &scene.segments()[before..];
+        assert_eq!(added.len(), 3);
+        // The shaft ends at the head; both barbs start there and point back.
+        let h = f32_point(head);
+        let at_head = |p: [f32; 3]| (Vec3::from(p) - h).length() < 1e-6;
+        assert!(at_head(added[0].b) && added[1..].iter().all(|s| at_head(s.a)));
+        assert!(added[1..].iter().all(|s| s.b[0] < h.x));
+        scene.add_push_arrow(head, head);
+        scene.add_push_arrow(DVec3::splat(f64::NAN), head);
+        assert_eq!(
+            scene.segments().len(),
+            before + 3,
+            "nothing for a point or NaN"
         );
     }
 }

@@ -53,6 +53,13 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     let mut scale = running_scale;
     let mut new_scale = None;
     let mut place_box = false;
+    let mut push = None;
+    let push_view = PushView {
+        heading_rad: readout.heading_rad,
+        steerable: readout.route.steerable,
+        last_push: readout.last_push.clone(),
+        run_time_s: readout.run_time_s,
+    };
     let mut chosen = None;
     let mut edits: Vec<(&str, f64)> = Vec::new();
     let mut gain_edits: Vec<(&'static str, f64)> = Vec::new();
@@ -140,6 +147,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
             {
                 place_box = true;
             }
+            push = push_row(ui, &push_view);
             egui::CollapsingHeader::new("Gains").show(ui, |ui| {
                 ui.label("Up to 1000× the default: too much and the simulation blows up, and the creature is put back.");
                 let rows = widgets::controller_rows(ui, lab, gains.iter().map(|g| g.name));
@@ -274,6 +282,11 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
     if place_box && let Err(error) = lab.place_obstacle(3.0) {
         lab.report_error(error);
     }
+    if let Some(dv) = push
+        && let Err(error) = lab.push(dv)
+    {
+        lab.report_error(error);
+    }
     if let Some(l) = new_scale
         && let Err(error) = lab.set_physics_scale(l)
     {
@@ -284,6 +297,77 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
             lab.report_error(error);
         }
     }
+}
+
+/// What the push row reads from the readout.
+struct PushView {
+    heading_rad: f64,
+    steerable: bool,
+    last_push: Option<gaitlab_engine::metrics::PushEntry>,
+    run_time_s: f64,
+}
+
+/// How hard the panel's buttons push, m/s of trunk velocity (issue 42's
+/// pushes; `run --push` takes any).
+const PUSH_MPS: f64 = 0.3;
+
+/// The push buttons (forward, back and, for a creature that can turn,
+/// sideways, relative to its heading) and the last push's verdict; the
+/// push asked for, world `[x, z]` m/s.
+fn push_row(ui: &mut egui::Ui, view: &PushView) -> Option<[f64; 2]> {
+    let (sin, cos) = (view.heading_rad.sin(), view.heading_rad.cos());
+    let world = |along: f64, across: f64| {
+        [
+            PUSH_MPS * (along * sin + across * cos),
+            PUSH_MPS * (along * cos - across * sin),
+        ]
+    };
+    let mut asked = None;
+    ui.horizontal_wrapped(|ui| {
+        ui.label(format!("Push the trunk {PUSH_MPS} m/s:"))
+            .on_hover_text(
+                "A lab experiment (the paper pushes nothing): the whole creature's velocity \
+             changes at once by the push. It recovered if it has not fallen 5 s later and \
+             runs within 10 % of the desired speed (docs/physics.md, \"Pushes\")",
+            );
+        let mut directions = vec![("forward", 1.0, 0.0), ("back", -1.0, 0.0)];
+        if view.steerable {
+            directions.push(("sideways", 0.0, 1.0));
+        }
+        for (name, along, across) in directions {
+            if ui
+                .button(format!("Push {name}"))
+                .on_hover_text(format!(
+                    "Push the trunk {PUSH_MPS} m/s {name}, relative to its heading"
+                ))
+                .clicked()
+            {
+                asked = Some(world(along, across));
+            }
+        }
+    });
+    if let Some(p) = &view.last_push {
+        let since = view.run_time_s - p.at_s;
+        let verdict = match p.recovered {
+            Some(true) => format!(
+                "recovered: {:.2} of {:.2} m/s 5 s on",
+                p.speed_after_mps.unwrap_or(f64::NAN),
+                p.desired_mps
+            ),
+            Some(false) if p.fell => "fell".to_owned(),
+            Some(false) => format!(
+                "did not recover its speed: {:.2} of {:.2} m/s 5 s on",
+                p.speed_after_mps.unwrap_or(f64::NAN),
+                p.desired_mps
+            ),
+            None => format!(
+                "judged in {:.1} s",
+                (gaitlab_engine::readout::PUSH_RECOVERY_S - since).max(0.0)
+            ),
+        };
+        ui.label(format!("Last push at t = {:.1} s: {verdict}", p.at_s));
+    }
+    asked
 }
 
 /// The desired-speed slider's band, m/s (the table takes ±15 m/s; the
