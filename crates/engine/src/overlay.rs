@@ -37,7 +37,7 @@ pub struct ProbeReadout {
 pub const PUSH_SHOWN_S: f64 = 1.0;
 
 /// The drawn push's length per m/s of velocity change, metres.
-pub const PUSH_ARROW_M_PER_MPS: f64 = 1.0;
+pub const PUSH_ARROW_M_PER_MPS: f64 = 2.0;
 
 impl AnyDriver {
     /// PODA's foot targets this frame, each with whether its leg supports.
@@ -84,8 +84,9 @@ impl AnyDriver {
     }
 
     /// The last push as an arrow `(tail, head)` in the world, metres, for
-    /// [`PUSH_SHOWN_S`] after it: ending at the trunk, 1 m long per m/s of
-    /// the push, pointing the way it pushed; `None` otherwise.
+    /// [`PUSH_SHOWN_S`] after it: ending over the trunk's middle, clear of
+    /// its body, [`PUSH_ARROW_M_PER_MPS`] long per m/s of the push,
+    /// pointing the way it pushed; `None` otherwise.
     #[must_use]
     pub fn push_arrow(&self) -> Option<(DVec3, DVec3)> {
         let driver = self.physics()?;
@@ -94,8 +95,8 @@ impl AnyDriver {
         if !(0.0..PUSH_SHOWN_S).contains(&since) {
             return None;
         }
-        let (a, b, _) = driver.trunk_capsule()?;
-        let head = (a + b) / 2.0;
+        let (a, b, radius) = driver.trunk_capsule()?;
+        let head = (a + b) / 2.0 + DVec3::Y * (2.0 * radius);
         let dv = DVec3::new(push.dv_mps[0], 0.0, push.dv_mps[1]);
         Some((head - dv * PUSH_ARROW_M_PER_MPS, head))
     }
@@ -153,6 +154,34 @@ mod tests {
             Ok(driver) => driver,
             Err(error) => panic!("{error}"),
         }
+    }
+
+    #[test]
+    fn a_push_is_drawn_over_the_trunk_for_a_second() {
+        use crate::EngineCommand;
+        let mut physics = driver("raibert-quadruped");
+        physics.step(1.0 / 60.0);
+        assert!(physics.push_arrow().is_none(), "no push yet");
+        physics
+            .apply(EngineCommand::Push([0.0, 0.3]))
+            .expect("pushed");
+        let (tail, head) = physics.push_arrow().expect("drawn");
+        let (a, b, radius) = physics.trunk_capsule().expect("trunk");
+        let over = (a + b) / 2.0 + glam::DVec3::Y * (2.0 * radius);
+        assert!((head - over).length() < 1e-12, "{head} over {over}");
+        let along = head - tail;
+        assert!(
+            (along - glam::DVec3::new(0.0, 0.0, 0.3 * super::PUSH_ARROW_M_PER_MPS)).length()
+                < 1e-12
+        );
+        for _ in 0..70 {
+            physics.step(1.0 / 60.0);
+        }
+        assert!(
+            physics.push_arrow().is_none(),
+            "gone after {} s",
+            super::PUSH_SHOWN_S
+        );
     }
 
     #[test]

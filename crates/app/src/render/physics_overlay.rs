@@ -2,7 +2,7 @@
 //! Figure 1): the trunk drawn as its equivalent-inertia body — a capsule along
 //! the long axis of the uniform box with the trunk's mass and principal
 //! moments (Table 3 gives masses and inertias, not shapes) — the boxes on
-//! the ground as wireframes, and the last push as an arrow into the trunk.
+//! the ground as wireframes, and the last push as an arrow over the trunk.
 
 use glam::{DVec3, Vec3};
 
