@@ -611,6 +611,12 @@ impl PhysicsRunMetrics {
                 stance_duration_s: t,
             })
             .collect();
+        let pushes = push_entries(driver);
+        // Every push's verdict; none while one has none, or without a push.
+        let verdicts: Option<Vec<bool>> = pushes.iter().map(|p| p.recovered).collect();
+        let recovered = verdicts
+            .filter(|v| !v.is_empty())
+            .map(|v| v.iter().all(|&r| r));
         Self {
             preset: preset.to_owned(),
             engine: "physics",
@@ -645,15 +651,8 @@ impl PhysicsRunMetrics {
                 alone: t.alone,
             })
             .collect(),
-            pushes: push_entries(driver),
-            recovered: driver
-                .pushes()
-                .iter()
-                .map(gaitlab_physics::engine::push::Push::recovered)
-                .try_fold(None, |all: Option<bool>, r| {
-                    r.map(|r| Some(all.unwrap_or(true) && r))
-                })
-                .flatten(),
+            pushes,
+            recovered,
             put_backs: driver
                 .put_backs()
                 .iter()

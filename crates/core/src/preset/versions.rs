@@ -28,6 +28,7 @@
 use serde::Deserialize;
 use serde::de::IgnoredAny;
 
+use super::physics::PhysicsModel;
 use super::schema::{Format, Preset};
 use super::thesis::V1_THESIS;
 use crate::ik::TransposeAlpha;
@@ -118,7 +119,7 @@ pub(super) fn write_in_old_defaults(preset: &mut Preset, json: &str) {
         thesis.start_ramp_s = start_ramp_s;
     }
     if let Some(physics) = preset.scenario.physics.as_mut()
-        && physics.model.name() == "quadruped"
+        && physics.model == PhysicsModel::Quadruped
     {
         let given = physics.controller.contains_key(V1_TROT_LIFTOFF.0)
             || physics
