@@ -20,7 +20,7 @@ pub use gaitlab_physics::Species;
 /// default first: what a gait menu lists.
 #[must_use]
 pub fn physics_gaits(species: Species) -> &'static [&'static str] {
-    gaitlab_physics::control::gait_controller::gait_names(species)
+    gaitlab_physics::control::gaits::controller::gait_names(species)
 }
 
 /// The named PODA gaits for a creature of `leg_count` legs (Girard &
@@ -36,7 +36,7 @@ pub fn poda_gaits(leg_count: usize) -> Vec<&'static str> {
 /// the model does not have.
 #[must_use]
 pub fn tested_speeds_mps(species: Species, gait: &str) -> Option<(f64, f64)> {
-    gaitlab_physics::control::tested_speeds::tested_speeds_mps(species, gait)
+    gaitlab_physics::control::gaits::table::tested_speeds_mps(species, gait)
 }
 
 /// The lowest and highest dynamic scale L (Table 1) `gait` of `species`
@@ -45,7 +45,7 @@ pub fn tested_speeds_mps(species: Species, gait: &str) -> Option<(f64, f64)> {
 /// have.
 #[must_use]
 pub fn tested_scales(species: Species, gait: &str) -> Option<(f64, f64)> {
-    gaitlab_physics::control::tested_speeds::tested_scales(species, gait)
+    gaitlab_physics::control::gaits::table::tested_scales(species, gait)
 }
 
 /// Every row of Raibert & Hodgins 1991's Table 2 (the animation column) for

@@ -19,7 +19,7 @@
 //! - [`world`]: [`actuator`](world::actuator)s, [`ground`](world::ground)
 //!   contact and the fixed-step [`Sim`] loop with its blow-up guard.
 //! - [`control`]: the paper's control parts and, composed from them, a
-//!   [`Controller`] per gait ([`gait_controller`](control::gait_controller)).
+//!   [`Controller`] per gait ([`gait_controller`](control::gaits::controller)).
 //! - [`engine`]: the [`PhysicsDriver`] that runs a preset's creature
 //!   ([`preset`](engine::preset)) for the app and the CLI, with the Table-2
 //!   figures of [`metrics`](engine::metrics) and [`table2`](engine::table2),

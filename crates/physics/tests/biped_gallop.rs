@@ -4,7 +4,7 @@
 //! the together-swing style, and the controller scales with L (Table 1).
 //! Run with `--nocapture` to see the Table-2-like figures.
 
-use gaitlab_physics::control::biped_gallop::{
+use gaitlab_physics::control::gaits::biped_gallop::{
     BipedGallop, BipedGallopParams, GallopPhase, GallopStyle,
 };
 use gaitlab_physics::creatures::biped;

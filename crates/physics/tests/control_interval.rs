@@ -5,8 +5,8 @@
 //! the fresh state every step.
 
 use gaitlab_core::portable::Portable;
-use gaitlab_physics::control::biped_run::{BipedRun, BipedRunParams};
-use gaitlab_physics::control::hopper_params::HopperParams;
+use gaitlab_physics::control::gaits::biped_run::{BipedRun, BipedRunParams};
+use gaitlab_physics::control::gaits::hopper_params::HopperParams;
 use gaitlab_physics::creatures::biped;
 use gaitlab_physics::world::ground::GroundParams;
 use gaitlab_physics::world::sim::{ControlInput, Controller, Drive};

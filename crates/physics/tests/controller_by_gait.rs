@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 
 use gaitlab_core::preset::load_bundled;
 use gaitlab_core::preset::physics::PhysicsParams;
-use gaitlab_physics::control::make_controller::make_controller;
+use gaitlab_physics::control::gaits::make::make_controller;
 use gaitlab_physics::engine::preset::creature_from_preset;
 use gaitlab_physics::world::sim::Controller;
 

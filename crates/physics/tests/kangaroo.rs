@@ -7,7 +7,7 @@
 //! once; the controller ramps its commanded speed up to it. Speeds and
 //! Table-2 figures are measured from 3 s after the ramp ends.
 
-use gaitlab_physics::control::kangaroo_hop::{
+use gaitlab_physics::control::gaits::kangaroo_hop::{
     KangarooHop, KangarooHopParams, kangaroo_ground, kangaroo_start,
 };
 use gaitlab_physics::creatures::kangaroo;

@@ -5,7 +5,7 @@
 
 use gaitlab_core::preset::load_bundled;
 use gaitlab_core::preset::physics::LabAdditions;
-use gaitlab_physics::control::make_controller::make_controller;
+use gaitlab_physics::control::gaits::make::make_controller;
 use gaitlab_physics::engine::preset::creature_from_preset;
 
 /// The additions `gait` of bundled `preset` runs with under `spec`.

@@ -14,7 +14,7 @@ use common::{assert_table2_within, bundled, driver_with, paper_only_run, run, sp
 use gaitlab_core::Creature;
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::physics::PhysicsParams;
-use gaitlab_physics::control::quadruped_bound::{FRONT, PAIRS, REAR};
+use gaitlab_physics::control::gaits::bound::{FRONT, PAIRS, REAR};
 use gaitlab_physics::engine::metrics::GaitSummary;
 use gaitlab_physics::engine::pair_timing::pair_timing;
 

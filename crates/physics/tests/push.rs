@@ -7,7 +7,7 @@ mod common;
 
 use common::{bundled, driver_with};
 use gaitlab_core::driver::Driver;
-use gaitlab_physics::control::attitude::com_velocity;
+use gaitlab_physics::control::laws::attitude::com_velocity;
 use gaitlab_physics::dynamics::kinematics::kinematics;
 use glam::DVec3;
 

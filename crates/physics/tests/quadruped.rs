@@ -6,7 +6,7 @@
 //! Tests marked `ignore` state acceptance targets the controller does not
 //! meet yet; run them with `cargo test -p gaitlab-physics -- --ignored`.
 
-use gaitlab_physics::control::quadruped_run::{
+use gaitlab_physics::control::gaits::trot::{
     QuadrupedRun, QuadrupedRunParams, quadruped_ground, quadruped_start,
 };
 use gaitlab_physics::creatures::quadruped;
@@ -130,7 +130,7 @@ fn table2_trot_side_by_side() {
 #[test]
 fn the_trot_takes_the_hop_height_as_its_flight() {
     use gaitlab_core::driver::Driver;
-    use gaitlab_physics::control::hop_height::flight_for_height;
+    use gaitlab_physics::control::laws::hop_height::flight_for_height;
     let preset = gaitlab_core::preset::load_bundled("raibert-quadruped")
         .expect("bundled")
         .expect("valid");

@@ -7,10 +7,10 @@
 //! meet yet; run them with `cargo test -p gaitlab-physics -- --ignored`.
 
 use gaitlab_core::driver::Driver;
-use gaitlab_physics::control::quadruped_bound::{
+use gaitlab_physics::control::gaits::bound::{
     BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
 };
-use gaitlab_physics::control::quadruped_run::quadruped_ground;
+use gaitlab_physics::control::gaits::trot::quadruped_ground;
 use gaitlab_physics::creatures::quadruped;
 use gaitlab_physics::engine::driver::PhysicsDriver;
 use gaitlab_physics::engine::metrics::{GaitRecorder, GaitSummary};

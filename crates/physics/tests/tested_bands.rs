@@ -6,7 +6,7 @@
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::load_bundled;
 use gaitlab_physics::PhysicsDriver;
-use gaitlab_physics::control::tested_speeds::{tested_scales, tested_speeds_mps};
+use gaitlab_physics::control::gaits::table::{tested_scales, tested_speeds_mps};
 
 #[test]
 fn every_gait_holds_at_the_top_of_its_tested_scale_band() {

@@ -10,8 +10,8 @@
 
 use glam::DVec3;
 
-use crate::control::gait_controller::{GaitController, start_state};
-use crate::control::phase::Phase;
+use crate::control::gaits::controller::{GaitController, start_state};
+use crate::control::laws::phase::Phase;
 use crate::engine::metrics::GaitRecorder;
 use crate::world::sim::Sim;
 

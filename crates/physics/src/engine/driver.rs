@@ -11,9 +11,9 @@ use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
 
 use crate::control::additions::Additions;
-use crate::control::gait_controller::{GaitController, gait_names, start_state};
-use crate::control::kangaroo_hop::kangaroo_ground;
-use crate::control::make_controller::make_controller;
+use crate::control::gaits::controller::{GaitController, gait_names, start_state};
+use crate::control::gaits::kangaroo_hop::kangaroo_ground;
+use crate::control::gaits::make::make_controller;
 use crate::creatures::Species;
 use crate::dynamics::model::Joint as BodyJoint;
 use crate::engine::consistency;
@@ -478,7 +478,7 @@ impl PhysicsDriver {
         }
         if self.pushes.len() < MAX_PUSHES {
             let desired = self.params.speed_mps * self.params.scale.sqrt();
-            let forward = crate::control::attitude::heading_forward(self.heading());
+            let forward = crate::control::laws::attitude::heading_forward(self.heading());
             self.pushes
                 .push(Push::new(self.run_time_s(), dv_mps, desired, forward));
         }

@@ -8,7 +8,7 @@
 
 use glam::{DQuat, DVec3};
 
-use crate::control::gait_controller::{GaitController, start_state};
+use crate::control::gaits::controller::{GaitController, start_state};
 use crate::dynamics::kinematics::kinematics;
 use crate::world::sim::Sim;
 

@@ -11,7 +11,7 @@
 
 use glam::DVec3;
 
-use crate::control::attitude::{attitude_error, heading_forward};
+use crate::control::laws::attitude::{attitude_error, heading_forward};
 use crate::world::sim::Sim;
 
 /// The start and the end of a support the paper sets apart when it reads the

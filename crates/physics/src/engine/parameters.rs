@@ -1,9 +1,9 @@
 //! The running gait controller's parameter table (Raibert & Hodgins 1991,
 //! eqs. 1–5, Figure 4, Table 2): each name the controller takes, with its
 //! label, unit, the paper's reference and its origin
-//! ([`parameter_origins`](crate::control::parameter_origins)).
+//! ([`parameter_origins`](crate::control::gaits::origins)).
 
-use crate::control::parameter_origins::{ControllerParam, table_for_names};
+use crate::control::gaits::origins::{ControllerParam, table_for_names};
 use crate::engine::driver::PhysicsDriver;
 
 impl PhysicsDriver {

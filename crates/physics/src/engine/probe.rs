@@ -69,7 +69,7 @@ pub fn phase_index(phase_name: &str) -> usize {
 pub fn probe(sim: &Sim, phase_name: &str) -> PhysicsProbe {
     let c = &sim.creature;
     let d = &sim.data;
-    let err = crate::control::attitude::attitude_error(c, d, 0.0, 0.0);
+    let err = crate::control::laws::attitude::attitude_error(c, d, 0.0, 0.0);
     let trunk = d.world[c.trunk];
     let leg_length_m = c.legs.first().map_or(0.0, |leg| {
         let hip = trunk.rot * leg.hip_in_trunk + trunk.pos;
@@ -85,6 +85,6 @@ pub fn probe(sim: &Sim, phase_name: &str) -> PhysicsProbe {
         leg_length_m,
         ground_force_bw: force / weight,
         phase_index: phase_index(name),
-        speed_mps: crate::control::attitude::com_velocity(c, d).z,
+        speed_mps: crate::control::laws::attitude::com_velocity(c, d).z,
     }
 }

@@ -17,7 +17,7 @@ use std::fmt::{self, Write};
 use gaitlab_core::driver::Driver;
 use glam::DVec3;
 
-use crate::control::attitude::{attitude_error, com_state, trunk_rate};
+use crate::control::laws::attitude::{attitude_error, com_state, trunk_rate};
 use crate::dynamics::model::GRAVITY_MPS2;
 use crate::engine::driver::PhysicsDriver;
 use crate::engine::probe;

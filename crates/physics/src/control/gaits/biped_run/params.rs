@@ -1,0 +1,61 @@
+//! Parameters of biped running (Raibert & Hodgins 1991, Figure 4, eqs. 1–4),
+//! at scale 1: gains, spring and thrust settings, and the lab's additions
+//! this controller has.
+
+use crate::control::gaits::hopper_params::HopperParams;
+
+/// Parameters of biped running; lengths are leg-spring coordinates
+/// (metres of extension, 0 = the leg at full length).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BipedRunParams {
+    /// Desired forward speed ẋ_d (m/s).
+    pub speed_mps: f64,
+    /// Desired heading (rad about +y; 0 = +z).
+    pub heading: f64,
+    /// Desired hop height: apex of the hip above its lift-off height (m).
+    pub hop_height_m: f64,
+    /// The hopper's spring, thrust, placement and servo parameters.
+    pub hopper: HopperParams,
+    /// The lab's integral speed trim on (`lab_additions.speed_trim`; not
+    /// in the paper), with gain `hopper.speed_integral_gain`.
+    pub speed_trim: bool,
+    /// Keep eq. 4's posture servo on in Unloading: the lab's addition
+    /// (`lab_additions.unloading_posture`); Figure 4 zeroes the active hip's
+    /// torque there.
+    pub unloading_posture: bool,
+}
+
+impl Default for BipedRunParams {
+    fn default() -> Self {
+        Self {
+            speed_mps: 1.5,
+            heading: 0.0,
+            hop_height_m: 0.10,
+            hopper: HopperParams::default(),
+            speed_trim: false,
+            unloading_posture: true,
+        }
+    }
+}
+
+impl BipedRunParams {
+    /// The defaults before the lab's additions were optional (files without
+    /// `lab_additions` run with these): eq. 3's gain 0.05 s, held to the
+    /// desired speed by the speed trim at gain 0.3, posture servo on in
+    /// Unloading. (With eq. 3's gain now 0.12 s, a trim at 0.3 makes the
+    /// biped blow up at 2.5 m/s within a minute; its default is 0.1.)
+    #[must_use]
+    pub fn before_lab_additions() -> Self {
+        let d = Self::default();
+        Self {
+            hopper: HopperParams {
+                placement_gain_s: 0.05,
+                speed_integral_gain: 0.3,
+                ..d.hopper
+            },
+            speed_trim: true,
+            unloading_posture: true,
+            ..d
+        }
+    }
+}

@@ -1,0 +1,158 @@
+//! The kangaroo's hop cycle (Raibert & Hodgins 1991, Figure 4 and
+//! "Kangaroo control"): the states' events, eq. 2's thrust as a step of the
+//! ankle spring's rest at the bottom of the stance, and what each touchdown
+//! and lift-off measures (stance time, stride, apex, the jump's stages).
+
+use glam::DVec3;
+
+use super::{JumpStage, KangarooHop};
+use crate::control::additions::speed_trim::along_z;
+use crate::control::laws::phase::{Phase, StanceEvents};
+use crate::dynamics::model::GRAVITY_MPS2;
+use crate::world::sim::ControlInput;
+
+impl KangarooHop {
+    pub(super) fn advance_phase(&mut self, input: &ControlInput<'_>, com: DVec3, com_v: DVec3) {
+        let l = input.creature.scale;
+        let Some(leg) = input.creature.legs.first() else {
+            return;
+        };
+        let Some(contact) = input.contacts.first() else {
+            return;
+        };
+        let q = input.data.q[leg.spring];
+        let qd = input.data.qd[leg.spring];
+        let t = input.time;
+        match self.phase {
+            Phase::Flight => {
+                self.apex_com_y = self.apex_com_y.max(com.y);
+                let airborne = t - self.flight_start;
+                if contact.touching && airborne > 0.03 * l.sqrt() && com_v.y < 0.0 {
+                    self.phase = Phase::Loading;
+                    self.touchdown_time = t;
+                    self.touch_down(contact.position.z, t, com.z, l);
+                    return;
+                }
+            }
+            stance => {
+                self.phase = stance.after(StanceEvents {
+                    shortened: qd < 0.0 && q < self.ankle_rest - 0.02,
+                    lengthening: qd >= 0.0,
+                    extended: q >= self.ankle_rest - 0.05,
+                });
+                // Eq. 2's thrust, once, at the bottom of the stance.
+                if stance == Phase::Compression && self.phase == Phase::Thrust {
+                    self.thrust(input, com, com_v);
+                }
+            }
+        }
+        if self.phase != Phase::Flight
+            && !contact.touching
+            && t - self.touchdown_time > 0.02 * l.sqrt()
+        {
+            self.lift_off(t, com, l);
+        }
+    }
+
+    pub(super) fn touch_down(&mut self, toe_z: f64, t: f64, com_z: f64, l: f64) {
+        let p = self.params;
+        // Integral speed correction from the stride just finished.
+        if self.jump == JumpStage::None
+            && let Some(mean) = self.trim.mean_since(t, along_z(com_z), DVec3::Z, 0.0)
+        {
+            let limit = p.speed_integral_max_mps * l.sqrt();
+            let error = self.speed_command_mps - mean;
+            self.trim
+                .correct(p.speed_trim, p.speed_integral_gain, error, limit);
+        }
+        self.trim.mark(t, along_z(com_z));
+        if self.touchdown_toe != 0.0 {
+            let stride = toe_z - self.touchdown_toe;
+            if stride > 0.0 {
+                self.stride_m = 0.5 * self.stride_m + 0.5 * stride;
+            }
+        }
+        self.touchdown_toe = toe_z;
+        // Hop-height learning from the apex just flown (eq. 2's losses).
+        if self.jump == JumpStage::None
+            && self.target_apex_y.is_finite()
+            && self.apex_com_y.is_finite()
+        {
+            let err = self.target_apex_y - self.apex_com_y;
+            self.apex_correction_m =
+                (self.apex_correction_m + p.hop_gain * err).clamp(-0.1 * l, 0.2 * l);
+        }
+        self.jump = match self.jump {
+            JumpStage::Airborne => JumpStage::Landing,
+            JumpStage::Landing => JumpStage::None,
+            s => s,
+        };
+        if self.jump_pending
+            && let Some(at) = p.jump_at_m
+        {
+            // Jump now if the next ordinary stride would land short of the
+            // obstacle's far side but past its near face minus a margin.
+            let next = toe_z + self.stride_m;
+            if next > (at - 0.25 * l) * 1.0 && toe_z < at {
+                self.jump = JumpStage::Takeoff;
+                self.jump_pending = false;
+            }
+        }
+    }
+
+    pub(super) fn lift_off(&mut self, t: f64, com: DVec3, l: f64) {
+        let measured = t - self.touchdown_time;
+        if self.jump == JumpStage::None {
+            self.stance_s = measured.clamp(0.05 * l.sqrt(), 0.3 * l.sqrt());
+        }
+        self.liftoff_com_y = com.y;
+        self.apex_com_y = f64::NEG_INFINITY;
+        self.flight_start = t;
+        self.phase = Phase::Flight;
+        self.ankle_rest = self.params.ankle_rest_rad;
+        if self.jump == JumpStage::Takeoff {
+            self.jump = JumpStage::Airborne;
+        }
+    }
+
+    /// Eq. 2 at the bottom of the stance: step the ankle rest so the
+    /// predicted apex meets the target.
+    pub(super) fn thrust(&mut self, input: &ControlInput<'_>, com: DVec3, com_v: DVec3) {
+        let l = input.creature.scale;
+        let Some(leg) = input.creature.legs.first() else {
+            return;
+        };
+        let p = self.params;
+        let m = input.creature.model.total_mass();
+        let g = GRAVITY_MPS2;
+        let (k, _) = self.ankle_gains(l);
+        let q = input.data.q[leg.spring];
+        let strain = 0.5 * k * (q - self.ankle_rest).powi(2);
+        let predicted = (strain + m * g * com.y + 0.5 * m * com_v.y * com_v.y) / (m * g);
+        let base = if self.liftoff_com_y.is_finite() {
+            self.liftoff_com_y
+        } else {
+            com.y
+        };
+        let mut target = base + p.hop_rise_m * l;
+        if self.jump == JumpStage::Takeoff
+            && let Some(at) = p.jump_at_m
+        {
+            // Long enough to carry the body past the obstacle, and high
+            // enough for the tucked toe to clear it.
+            let v = com_v.z.max(0.5 * l.sqrt());
+            let far = at + p.obstacle_depth_m * l + 0.3 * l;
+            let flight = ((far - com.z) / v - 0.5 * self.stance_s).max(0.1 * l.sqrt());
+            let rise_time = 0.5 * flight;
+            let by_time = 0.5 * g * rise_time * rise_time;
+            let by_height = (p.obstacle_height_m + p.jump_clearance_m) * l + 0.1 * l;
+            target = base + by_time.max(by_height);
+        }
+        self.target_apex_y = target;
+        let wanted = (target + self.apex_correction_m - predicted) * m * g;
+        let stored = (q - self.ankle_rest).powi(2) + 2.0 * wanted / k;
+        let rest = q + stored.max(0.0).sqrt();
+        let r0 = p.ankle_rest_rad;
+        self.ankle_rest = rest.clamp(r0 - 0.5 * p.max_thrust_rad, r0 + p.max_thrust_rad);
+    }
+}
