@@ -20,7 +20,7 @@ pub use gaitlab_physics::Species;
 /// default first: what a gait menu lists.
 #[must_use]
 pub fn physics_gaits(species: Species) -> &'static [&'static str] {
-    gaitlab_physics::control::gaits::controller::gait_names(species)
+    gaitlab_physics::control::gaits::table::gait_names(species)
 }
 
 /// The named PODA gaits for a creature of `leg_count` legs (Girard &

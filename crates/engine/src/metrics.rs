@@ -624,7 +624,7 @@ impl PhysicsRunMetrics {
             sim_seconds: sim.time,
             wall_ms: timing.wall_ms,
             gait: driver.gait().to_owned(),
-            gaits_available: gaitlab_physics::control::gaits::controller::gait_names(
+            gaits_available: gaitlab_physics::control::gaits::table::gait_names(
                 sim.creature.species,
             ),
             scale: driver.params().scale,

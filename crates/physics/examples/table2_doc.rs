@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::load_bundled;
 use gaitlab_physics::PhysicsDriver;
-use gaitlab_physics::control::gaits::controller::gait_names;
+use gaitlab_physics::control::gaits::table::gait_names;
 use gaitlab_physics::engine::table2::{compare, paper_speed_mps};
 
 const BEGIN: &str = "<!-- table2_doc:begin -->";

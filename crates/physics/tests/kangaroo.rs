@@ -7,8 +7,10 @@
 //! once; the controller ramps its commanded speed up to it. Speeds and
 //! Table-2 figures are measured from 3 s after the ramp ends.
 
+use gaitlab_physics::control::additions::Additions;
+use gaitlab_physics::control::gaits::kangaroo_hop;
 use gaitlab_physics::control::gaits::kangaroo_hop::{
-    KangarooHop, KangarooHopParams, kangaroo_ground, kangaroo_start,
+    KangarooHop, KangarooHopParams, kangaroo_ground,
 };
 use gaitlab_physics::creatures::kangaroo;
 use gaitlab_physics::engine::metrics::{GaitRecorder, GaitSummary};
@@ -42,7 +44,7 @@ fn run(speed: f64, l: f64, secs: f64) -> Run {
         kangaroo_ground().scaled(l),
         options,
     );
-    kangaroo_start(&mut sim, speed.min(START_MPS));
+    kangaroo_hop::start::start(&mut sim, speed.min(START_MPS), Additions::NONE);
     let mut ctl = KangarooHop::new(KangarooHopParams {
         speed_mps: speed,
         ..Default::default()
@@ -220,7 +222,7 @@ fn jumps_over_an_obstacle() {
         height_m: params.obstacle_height_m,
     };
     sim.terrain.obstacles.push(box_);
-    kangaroo_start(&mut sim, 2.0);
+    kangaroo_hop::start::start(&mut sim, 2.0, Additions::NONE);
     let mut ctl = KangarooHop::new(params);
     let mut rec = GaitRecorder::new(1, 2.0, 0.0, 1.0);
     let mut min_clearance = f64::INFINITY;
@@ -248,7 +250,7 @@ fn changes_speed_while_running() {
         kangaroo_ground(),
         SimOptions::default(),
     );
-    kangaroo_start(&mut sim, START_MPS);
+    kangaroo_hop::start::start(&mut sim, START_MPS, Additions::NONE);
     let mut ctl = KangarooHop::new(KangarooHopParams {
         speed_mps: START_MPS,
         ..Default::default()

@@ -20,7 +20,7 @@ use gaitlab_core::driver::Driver;
 use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::{Creature as PresetCreature, ObstacleSpec, PhysicsParams, load_bundled};
 use gaitlab_physics::PhysicsDriver;
-use gaitlab_physics::control::gaits::controller::gait_names;
+use gaitlab_physics::control::gaits::table::gait_names;
 use gaitlab_testkit::prop_config as config;
 use proptest::prelude::*;
 

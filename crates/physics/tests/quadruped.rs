@@ -6,9 +6,9 @@
 //! Tests marked `ignore` state acceptance targets the controller does not
 //! meet yet; run them with `cargo test -p gaitlab-physics -- --ignored`.
 
-use gaitlab_physics::control::gaits::trot::{
-    QuadrupedRun, QuadrupedRunParams, quadruped_ground, quadruped_start,
-};
+use gaitlab_physics::control::additions::Additions;
+use gaitlab_physics::control::gaits::trot;
+use gaitlab_physics::control::gaits::trot::{QuadrupedRun, QuadrupedRunParams, quadruped_ground};
 use gaitlab_physics::creatures::quadruped;
 use gaitlab_physics::engine::metrics::{GaitRecorder, GaitSummary};
 use gaitlab_physics::{Sim, SimOptions};
@@ -17,7 +17,7 @@ use gaitlab_physics::{Sim, SimOptions};
 fn run(speed: f64, seconds: f64) -> (GaitSummary, Option<String>) {
     let creature = quadruped(1.0).expect("quadruped builds");
     let mut sim = Sim::new(creature, quadruped_ground(1.0), SimOptions::default());
-    quadruped_start(&mut sim, speed);
+    trot::start::start(&mut sim, speed, Additions::NONE);
     let params = QuadrupedRunParams {
         speed_mps: speed,
         ..Default::default()

@@ -7,9 +7,9 @@
 //! meet yet; run them with `cargo test -p gaitlab-physics -- --ignored`.
 
 use gaitlab_core::driver::Driver;
-use gaitlab_physics::control::gaits::bound::{
-    BoundStyle, QuadrupedBound, QuadrupedBoundParams, bound_start,
-};
+use gaitlab_physics::control::additions::Additions;
+use gaitlab_physics::control::gaits::bound;
+use gaitlab_physics::control::gaits::bound::{BoundStyle, QuadrupedBound, QuadrupedBoundParams};
 use gaitlab_physics::control::gaits::trot::quadruped_ground;
 use gaitlab_physics::creatures::quadruped;
 use gaitlab_physics::engine::driver::PhysicsDriver;
@@ -23,7 +23,7 @@ const LEG_NAMES: [&str; 4] = ["front-left", "front-right", "rear-left", "rear-ri
 fn run(style: BoundStyle, speed: f64, seconds: f64) -> GaitSummary {
     let creature = quadruped(1.0).expect("quadruped builds");
     let mut sim = Sim::new(creature, quadruped_ground(1.0), SimOptions::default());
-    bound_start(&mut sim, speed);
+    bound::start::start(&mut sim, speed, Additions::NONE);
     let params = QuadrupedBoundParams {
         speed_mps: speed,
         style,

@@ -10,7 +10,10 @@
 
 use glam::DVec3;
 
-use crate::control::gaits::controller::{GaitController, start_state};
+use crate::control::additions::Additions;
+use crate::control::gaits::controller::GaitController;
+use crate::control::gaits::kangaroo_hop::KangarooHop;
+use crate::control::gaits::kangaroo_hop::start as hop_start;
 use crate::control::laws::phase::Phase;
 use crate::engine::metrics::GaitRecorder;
 use crate::world::sim::Sim;
@@ -41,9 +44,7 @@ pub fn on_cycle(
     controller: &GaitController,
     speed_mps: f64,
 ) -> Option<Result<(Sim, GaitController), String>> {
-    let GaitController::Kangaroo(hop) = controller else {
-        return None;
-    };
+    let hop = controller.get::<KangarooHop>()?;
     let root_l = sim.creature.scale.sqrt();
     let mut run = sim.clone();
     run.terrain.obstacles.clear();
@@ -51,8 +52,11 @@ pub fn on_cycle(
     run.steps = 0;
     let mut settling = hop.for_settling();
     // The gait's own start for a hop with the ramp on (at most 2 m/s).
-    let ramped = GaitController::Kangaroo(Box::new(settling.clone()));
-    start_state(&mut run, &ramped, speed_mps);
+    let ramped = Additions {
+        speed_ramp: true,
+        ..controller.additions()
+    };
+    hop_start::start(&mut run, speed_mps, ramped);
     crate::dynamics::kinematics::kinematics(&run.creature.model, &mut run.data);
     let legs = run.creature.legs.len();
     let mut recorder = GaitRecorder::new(legs, speed_mps * root_l, 0.0, 0.0);
@@ -109,5 +113,5 @@ pub fn on_cycle(
     start.time = 0.0;
     let mut resumed = hop.clone();
     resumed.resume_from(&settling, run.time, advanced);
-    Some(Ok((start, GaitController::Kangaroo(resumed))))
+    Some(Ok((start, controller.with_inner(Box::new(resumed)))))
 }

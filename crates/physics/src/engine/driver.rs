@@ -11,9 +11,11 @@ use gaitlab_core::{Effector, Joint, JointKind, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
 
 use crate::control::additions::Additions;
-use crate::control::gaits::controller::{GaitController, gait_names, start_state};
+use crate::control::gaits::controller::GaitController;
+use crate::control::gaits::kangaroo_hop::KangarooHop;
 use crate::control::gaits::kangaroo_hop::kangaroo_ground;
 use crate::control::gaits::make::make_controller;
+use crate::control::gaits::table::gait_names;
 use crate::creatures::Species;
 use crate::dynamics::model::Joint as BodyJoint;
 use crate::engine::consistency;
@@ -192,7 +194,7 @@ impl PhysicsDriver {
             *v = params.speed_mps * l.sqrt();
         }
         sim.data.q.copy_from_slice(&start_q);
-        start_state(&mut sim, &controller, params.speed_mps);
+        controller.start(&mut sim, params.speed_mps);
         crate::dynamics::kinematics::kinematics(&sim.creature.model, &mut sim.data);
         consistency::check_start(&sim.creature, &sim.data, &sim.terrain)?;
         let mut controller = controller;
@@ -419,6 +421,13 @@ impl PhysicsDriver {
     #[must_use]
     pub fn start_note(&self) -> Option<&str> {
         self.start_note.as_deref()
+    }
+
+    /// The controller running now (after a gait change, the new one's once
+    /// it has taken over).
+    #[must_use]
+    pub fn controller(&self) -> &GaitController {
+        &self.controller
     }
 
     /// The running gait's virtual legs ([`GaitController::virtual_legs`]).
@@ -650,7 +659,7 @@ impl PhysicsDriver {
                 "obstacle: {distance_m} m ahead is not in [1, 20] m"
             ));
         }
-        let GaitController::Kangaroo(kangaroo) = &mut self.controller else {
+        let Some(kangaroo) = self.controller.get_mut::<KangarooHop>() else {
             return Err(format!(
                 "obstacle: the {} has no jump (the paper adds jump states to the kangaroo's hop only)",
                 self.gait
@@ -706,29 +715,28 @@ impl PhysicsDriver {
         let next = make_controller(&self.sim.creature, gait, &params)?;
         self.additions = next.additions();
         let to_start = params.switch_to_start.iter().any(|g| g == gait);
-        match (&mut self.controller, next) {
+        if gait == self.running_gait {
             // The running gait runs on, and a switch still waiting is dropped.
-            _ if gait == self.running_gait => self.pending = None,
+            self.pending = None;
+        } else if to_start {
             // The lab's entry at the gait's own start, now.
-            (_, mut next) if to_start => {
-                let heading = self.steering.heading;
-                next.set_heading(heading);
-                enter_at_start(&mut self.sim, &next, params.speed_mps, heading);
-                self.controller = next;
-                self.running_gait = gait.to_owned();
-                self.pending = None;
-            }
+            let mut next = next;
+            let heading = self.steering.heading;
+            next.set_heading(heading);
+            enter_at_start(&mut self.sim, &next, params.speed_mps, heading);
+            self.controller = next;
+            self.running_gait = gait.to_owned();
+            self.pending = None;
+        } else if self.controller.adopt(&next) {
             // Bound and gallop are one controller in two styles, each with
             // its own parameters.
-            (GaitController::QuadrupedBound(running), GaitController::QuadrupedBound(fresh)) => {
-                running.set_params(fresh.params);
-                self.running_gait = gait.to_owned();
-                self.pending = None;
-            }
+            self.running_gait = gait.to_owned();
+            self.pending = None;
+        } else {
             // Another state machine takes over at the next flight, when no
             // foot is loaded and the body is falling toward a landing — the
             // state every controller starts from.
-            (_, next) => self.pending = Some(next),
+            self.pending = Some(next);
         }
         self.params = params;
         self.gait = gait.to_owned();

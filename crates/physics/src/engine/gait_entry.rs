@@ -8,7 +8,7 @@
 
 use glam::{DQuat, DVec3};
 
-use crate::control::gaits::controller::{GaitController, start_state};
+use crate::control::gaits::controller::GaitController;
 use crate::dynamics::kinematics::kinematics;
 use crate::world::sim::Sim;
 
@@ -17,7 +17,7 @@ use crate::world::sim::Sim;
 /// +y; 0 = +z). Time, terrain and the clock run on.
 pub fn enter_at_start(sim: &mut Sim, next: &GaitController, speed_mps: f64, heading: f64) {
     let here = sim.data.base_position;
-    start_state(sim, next, speed_mps);
+    next.start(sim, speed_mps);
     let data = &mut sim.data;
     // The start's base velocity is in the base's own coordinates, so turning
     // the base turns its motion with it.

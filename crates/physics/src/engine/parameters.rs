@@ -3,7 +3,7 @@
 //! label, unit, the paper's reference and its origin
 //! ([`parameter_origins`](crate::control::gaits::origins)).
 
-use crate::control::gaits::origins::{ControllerParam, table_for_names};
+use crate::control::gaits::origins::ControllerParam;
 use crate::engine::driver::PhysicsDriver;
 
 impl PhysicsDriver {
@@ -13,6 +13,6 @@ impl PhysicsDriver {
     /// one's once it has taken over).
     #[must_use]
     pub fn controller_parameters(&self) -> &'static [ControllerParam] {
-        table_for_names(self.parameter_names())
+        self.controller().parameter_origins()
     }
 }

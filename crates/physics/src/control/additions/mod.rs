@@ -49,7 +49,7 @@ pub struct Offered {
 /// has none (it holds its speed by eq. 3 alone) and asks for none.
 impl Offered {
     /// No addition: the controller runs the paper's laws only.
-    const NONE: Self = Self {
+    pub const NONE: Self = Self {
         speed_trim: None,
         unloading_posture: None,
         speed_ramp: None,

@@ -7,9 +7,11 @@
 pub mod biped_gallop;
 pub mod biped_run;
 pub mod bound;
+pub mod builder;
 pub mod commands;
 pub mod controller;
 pub mod gains;
+pub mod gait;
 pub mod hopper_params;
 pub mod kangaroo_hop;
 pub mod make;

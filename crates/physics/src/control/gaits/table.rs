@@ -1,49 +1,211 @@
-//! The desired speeds each gait of the bundled presets is tested at (the
-//! issue's three speeds per gait; docs/physics.md, "Gaits: a minute at several speeds",
+//! The gait table: one row per (species, gait) of Raibert & Hodgins 1991's
+//! models ("Gaits"), each with its controller's builder, the state it starts
+//! from, its virtual legs, the speeds and dynamic scales it is tested at and
+//! the lab's additions it offers. Adding a gait is a folder in
+//! [`crate::control::gaits`] and a row in [`GAITS`].
+//!
+//! The tested speeds are those the speed sweep runs each gait at
+//! (docs/physics.md, "Gaits: a minute at several speeds",
 //! `tools/physics_speed_sweep.py`): 60 s at each, with the presets' own lab
-//! additions, no fall and the mean speed within 10 %; and the dynamic scales L
-//! (Table 1) each holds at the middle of those speeds, by the same test
-//! (`tools/physics_band_sweep.py`). The app draws both ranges as bands under
-//! their sliders and warns outside the speeds (issue 21 item 3).
+//! additions, no fall and the mean speed within 10 %. The tested scales are
+//! the dynamic scales L (Table 1) each holds at the middle of those speeds by
+//! the same test (`tools/physics_band_sweep.py`, of L = 0.25, 0.5, 1, 2, 4).
+//! The app draws both ranges as bands under their sliders and warns outside
+//! them. The quadruped's gallop runs 11–12 % slow at 2 and 4: scaled by Table
+//! 1 the motion is the same but for rounding, and the gallop does not yet
+//! survive a perturbation that small (docs/physics.md, "Switching into the
+//! bound").
 
+use std::sync::OnceLock;
+
+use crate::control::additions::Offered;
+use crate::control::gaits::gait::{Build, Start};
+use crate::control::gaits::{biped_gallop, biped_run, bound, kangaroo_hop, trot};
 use crate::creatures::Species;
 
-/// The lowest and highest desired speed (m/s at scale 1) the sweep runs
-/// `gait` of `species` at; `None` for a gait the model does not have.
-#[must_use]
-pub fn tested_speeds_mps(species: Species, gait: &str) -> Option<(f64, f64)> {
-    match (species, gait) {
-        (Species::Biped, "run") => Some((1.0, 2.5)),
-        (Species::Biped, "gallop" | "gallop_alternate") => Some((1.0, 2.0)),
-        (Species::Quadruped, "trot") => Some((1.0, 2.3)),
-        (Species::Quadruped, "bound" | "gallop") => Some((1.5, 2.8)),
-        (Species::Kangaroo, "hop") => Some((2.0, 5.0)),
-        _ => None,
-    }
+/// One (species, gait) row of the table.
+#[derive(Debug)]
+pub struct GaitRow {
+    /// The model.
+    pub species: Species,
+    /// The gait's name, as presets and links spell it.
+    pub gait: &'static str,
+    /// Builds its controller.
+    pub build: Build,
+    /// Its own start; `None`: the creature starts from the preset's rest pose.
+    pub start: Option<Start>,
+    /// The virtual legs whose legs it means to act together, as indices
+    /// into the creature's legs, the leg meant to land first first: none for
+    /// one-legged running and hopping.
+    pub virtual_legs: &'static [[usize; 2]],
+    /// The lowest and highest desired speed it is tested at (m/s at scale 1).
+    pub tested_speeds_mps: (f64, f64),
+    /// The lowest and highest dynamic scale L it is tested at.
+    pub tested_scales: (f64, f64),
+    /// The lab's additions it offers, each with its default.
+    pub offers: Offered,
 }
 
-/// The dynamic scales L the band sweep finds a gait holding at the middle
-/// of its tested speeds, 60 s, no fall, the mean speed within 10 % (of L =
-/// 0.25, 0.5, 1, 2, 4); `None` for a gait the model does not have. Most
-/// gaits hold at all five. The quadruped's gallop runs 11–12 % slow at 2
-/// and 4: scaled by Table 1 the motion is the same but for rounding, and
-/// the gallop does not yet survive a perturbation that small
-/// (docs/physics.md, "Switching into the bound"). The pitching bound fell
-/// at 0.25 and 0.5 until its gains were tuned with the paper's friction
-/// (2026-12-06) and holds all five since.
+/// Every gait of every model, each model's default gait first.
+pub static GAITS: &[GaitRow] = &[
+    GaitRow {
+        species: Species::Biped,
+        gait: "run",
+        build: biped_run::build::build,
+        start: None,
+        virtual_legs: &[],
+        tested_speeds_mps: (1.0, 2.5),
+        tested_scales: (0.25, 4.0),
+        offers: Offered::BIPED_RUN,
+    },
+    GaitRow {
+        species: Species::Biped,
+        gait: "gallop",
+        build: biped_gallop::build::together_swing,
+        start: None,
+        virtual_legs: &[[0, 1]],
+        tested_speeds_mps: (1.0, 2.0),
+        tested_scales: (0.25, 4.0),
+        offers: Offered::BIPED_GALLOP,
+    },
+    GaitRow {
+        species: Species::Biped,
+        gait: "gallop_alternate",
+        build: biped_gallop::build::alternate_swing,
+        start: None,
+        virtual_legs: &[[0, 1]],
+        tested_speeds_mps: (1.0, 2.0),
+        tested_scales: (0.25, 4.0),
+        offers: Offered::BIPED_GALLOP,
+    },
+    GaitRow {
+        species: Species::Quadruped,
+        gait: "trot",
+        build: trot::build::build,
+        start: Some(trot::start::start),
+        virtual_legs: &trot::TROT_PAIRS,
+        tested_speeds_mps: (1.0, 2.3),
+        tested_scales: (0.25, 4.0),
+        offers: Offered::NONE,
+    },
+    GaitRow {
+        species: Species::Quadruped,
+        gait: "bound",
+        build: bound::build::bound,
+        start: Some(bound::start::start),
+        virtual_legs: &bound::PAIRS,
+        tested_speeds_mps: (1.5, 2.8),
+        tested_scales: (0.25, 4.0),
+        offers: Offered::BOUND,
+    },
+    GaitRow {
+        species: Species::Quadruped,
+        gait: "gallop",
+        build: bound::build::gallop,
+        start: Some(bound::start::start),
+        virtual_legs: &bound::PAIRS,
+        tested_speeds_mps: (1.5, 2.8),
+        tested_scales: (0.25, 1.0),
+        offers: Offered::BOUND,
+    },
+    GaitRow {
+        species: Species::Kangaroo,
+        gait: "hop",
+        build: kangaroo_hop::build::build,
+        start: Some(kangaroo_hop::start::start),
+        virtual_legs: &[],
+        tested_speeds_mps: (2.0, 5.0),
+        tested_scales: (0.25, 4.0),
+        offers: Offered::KANGAROO_HOP,
+    },
+];
+
+/// The row of `gait` of `species`; `None` for a gait the model does not have.
+#[must_use]
+pub fn row(species: Species, gait: &str) -> Option<&'static GaitRow> {
+    GAITS
+        .iter()
+        .find(|r| r.species == species && r.gait == gait)
+}
+
+/// The gaits of `species` in table order, its default first (listed from
+/// the table once; a menu asks every frame).
+#[must_use]
+pub fn gait_names(species: Species) -> &'static [&'static str] {
+    static NAMES: OnceLock<[Vec<&'static str>; 3]> = OnceLock::new();
+    let names = NAMES.get_or_init(|| {
+        [Species::Biped, Species::Quadruped, Species::Kangaroo].map(|s| {
+            GAITS
+                .iter()
+                .filter(|r| r.species == s)
+                .map(|r| r.gait)
+                .collect()
+        })
+    });
+    let i = match species {
+        Species::Biped => 0,
+        Species::Quadruped => 1,
+        Species::Kangaroo => 2,
+    };
+    &names[i]
+}
+
+/// The lowest and highest desired speed (m/s at scale 1) `gait` of
+/// `species` is tested at; `None` for a gait the model does not have.
+#[must_use]
+pub fn tested_speeds_mps(species: Species, gait: &str) -> Option<(f64, f64)> {
+    row(species, gait).map(|r| r.tested_speeds_mps)
+}
+
+/// The dynamic scales L `gait` of `species` is tested at; `None` for a
+/// gait the model does not have.
 #[must_use]
 pub fn tested_scales(species: Species, gait: &str) -> Option<(f64, f64)> {
-    tested_speeds_mps(species, gait)?;
-    Some(match (species, gait) {
-        (Species::Quadruped, "gallop") => (0.25, 1.0),
-        _ => (0.25, 4.0),
-    })
+    row(species, gait).map(|r| r.tested_scales)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::control::gaits::controller::gait_names;
+
+    /// Each row is one gait of one model, with ranges that make sense and
+    /// virtual legs of legs the model has; the defaults lead each model's list.
+    #[test]
+    fn each_row_is_one_gait_of_one_model() {
+        let mut seen = std::collections::HashSet::new();
+        for r in GAITS {
+            assert!(
+                seen.insert(format!("{:?} {}", r.species, r.gait)),
+                "{} twice",
+                r.gait
+            );
+            let (low, high) = r.tested_speeds_mps;
+            assert!(0.0 < low && low < high, "{}: speeds", r.gait);
+            let (small, large) = r.tested_scales;
+            assert!(
+                0.0 < small && small <= 1.0 && 1.0 <= large,
+                "{}: scales",
+                r.gait
+            );
+            let legs = match r.species {
+                Species::Biped => 2,
+                Species::Quadruped => 4,
+                Species::Kangaroo => 1,
+            };
+            for pair in r.virtual_legs {
+                assert!(
+                    pair[0] != pair[1] && pair.iter().all(|&i| i < legs),
+                    "{}",
+                    r.gait
+                );
+            }
+            assert_eq!(row(r.species, r.gait).map(|found| found.gait), Some(r.gait));
+        }
+        assert_eq!(gait_names(Species::Biped)[0], "run");
+        assert_eq!(gait_names(Species::Quadruped)[0], "trot");
+        assert_eq!(gait_names(Species::Kangaroo), &["hop"]);
+        assert!(row(Species::Kangaroo, "trot").is_none());
+    }
 
     #[test]
     fn every_gait_of_every_model_has_a_tested_range() {

@@ -36,6 +36,8 @@ use crate::world::sim::{ControlInput, Controller, Drive};
 pub use crate::control::gaits::biped_gallop::params::{BipedGallopParams, GallopStyle};
 pub use crate::control::gaits::biped_gallop::phase::GallopPhase;
 
+pub mod build;
+pub mod origins;
 pub mod params;
 pub mod phase;
 mod stride;

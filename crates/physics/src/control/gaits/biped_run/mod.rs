@@ -4,6 +4,8 @@
 //! (eq. 1–2), speed by foot placement (eq. 3), trunk attitude by the active
 //! hip in stance (eq. 4).
 
+pub mod build;
+pub mod origins;
 pub mod params;
 
 use glam::DVec3;

@@ -46,12 +46,14 @@ use crate::world::sim::{ControlInput, Controller, Drive};
 pub use crate::control::gaits::bound::params::{
     BoundStyle, FRONT, PAIRS, QuadrupedBoundParams, REAR,
 };
-pub use crate::control::gaits::start::bound_start;
 
+pub mod build;
 mod gallop_legs;
+pub mod origins;
 mod pair_cycle;
 mod pairs;
 pub mod params;
+pub mod start;
 
 use gallop_legs::stance_rest;
 use pairs::PairState;

@@ -11,7 +11,7 @@ use super::{JumpStage, KangarooHop};
 impl KangarooHop {
     /// A copy of this controller for bringing the hop up to speed out of
     /// sight: the lab's speed ramp on (from the start at no more than
-    /// [`crate::control::gaits::controller::KANGAROO_START_MPS`]), no jump.
+    /// [`crate::control::gaits::kangaroo_hop::start::KANGAROO_START_MPS`]), no jump.
     #[must_use]
     pub fn for_settling(&self) -> Self {
         let mut params = self.params;

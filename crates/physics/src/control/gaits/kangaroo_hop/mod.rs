@@ -45,14 +45,16 @@ use crate::control::laws::scale::Scale;
 use crate::world::sim::{ControlInput, Controller, Drive};
 
 mod ankle;
+pub mod build;
 mod cycle_start;
 pub mod leg;
+pub mod origins;
 pub mod params;
+pub mod start;
 mod stride;
 mod tail;
 
 pub use crate::control::gaits::kangaroo_hop::params::KangarooHopParams;
-pub use crate::control::gaits::start::kangaroo_start;
 pub use crate::control::laws::ground::kangaroo_ground;
 
 /// The extra states of a jump over an obstacle.
@@ -169,22 +171,6 @@ impl KangarooHop {
             self.stride_m = self.params.speed_mps * 0.35 * l;
             self.speed_command_mps = speed;
         }
-    }
-
-    /// Move the commanded speed toward the desired one, rate-limited.
-    fn ramp_speed(&mut self, dt: f64, l: f64) {
-        let target = self.params.speed_mps * l.sqrt();
-        let step = if self.params.speed_ramp {
-            self.params.speed_ramp_mps2.max(0.0) * dt
-        } else {
-            f64::INFINITY
-        };
-        let cmd = if self.speed_command_mps.is_finite() {
-            self.speed_command_mps
-        } else {
-            target
-        };
-        self.speed_command_mps = cmd + (target - cmd).clamp(-step, step);
     }
 }
 

@@ -156,3 +156,21 @@ impl KangarooHop {
         self.ankle_rest = rest.clamp(r0 - 0.5 * p.max_thrust_rad, r0 + p.max_thrust_rad);
     }
 }
+
+impl KangarooHop {
+    /// Move the commanded speed toward the desired one, rate-limited.
+    pub(super) fn ramp_speed(&mut self, dt: f64, l: f64) {
+        let target = self.params.speed_mps * l.sqrt();
+        let step = if self.params.speed_ramp {
+            self.params.speed_ramp_mps2.max(0.0) * dt
+        } else {
+            f64::INFINITY
+        };
+        let cmd = if self.speed_command_mps.is_finite() {
+            self.speed_command_mps
+        } else {
+            target
+        };
+        self.speed_command_mps = cmd + (target - cmd).clamp(-step, step);
+    }
+}

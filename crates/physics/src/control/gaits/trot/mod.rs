@@ -32,10 +32,12 @@ use crate::world::sim::{ControlInput, Controller, Drive};
 /// front-right + rear-left.
 pub const TROT_PAIRS: [[usize; 2]; 2] = [[0, 3], [1, 2]];
 
+pub mod build;
 mod cycle;
+pub mod origins;
 pub mod params;
+pub mod start;
 
-pub use crate::control::gaits::start::quadruped_start;
 pub use crate::control::gaits::trot::params::{GaitTuning, QuadrupedRunParams};
 pub use crate::control::laws::ground::quadruped_ground;
 

@@ -1,0 +1,39 @@
+//! The biped run's controller built from a preset's physics section (its
+//! row of the gait table): the preset's speed and hop height, its controller
+//! parameters by name and the lab's additions it runs with.
+
+use gaitlab_core::preset::PhysicsParams;
+
+use crate::control::additions::Additions;
+use crate::control::gaits::biped_run::BipedRun;
+use crate::control::gaits::biped_run::params::BipedRunParams;
+use crate::control::gaits::builder::{Misfit, biped_legs, with_parameters};
+use crate::control::gaits::gait::Gait;
+use crate::creatures::PhysicalCreature;
+
+/// The run's controller; a file from before the additions were optional
+/// runs with the controller's earlier defaults.
+///
+/// # Errors
+/// Legs that are not the biped's; a parameter the run lacks.
+pub fn build(
+    creature: &PhysicalCreature,
+    params: &PhysicsParams,
+    additions: Additions,
+) -> Result<Box<dyn Gait>, Misfit> {
+    biped_legs(creature)?;
+    let d = if additions.legacy {
+        BipedRunParams::before_lab_additions()
+    } else {
+        BipedRunParams::default()
+    };
+    let p = BipedRunParams {
+        speed_mps: params.speed_mps,
+        hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
+        ..d
+    };
+    let mut p = with_parameters(p, params, "run")?;
+    p.unloading_posture = additions.unloading_posture;
+    p.speed_trim = additions.speed_trim;
+    Ok(Box::new(BipedRun::new(p, creature)))
+}

@@ -1,0 +1,58 @@
+//! The bound's and the gallop's controller built from a preset's physics
+//! section (their rows of the gait table): one state machine in two styles,
+//! with the preset's speed and hop height, its controller parameters by
+//! name and the speed trim if it runs with it.
+
+use gaitlab_core::preset::PhysicsParams;
+
+use crate::control::additions::Additions;
+use crate::control::gaits::bound::QuadrupedBound;
+use crate::control::gaits::bound::params::{BoundStyle, QuadrupedBoundParams};
+use crate::control::gaits::builder::{Misfit, quadruped_legs, with_parameters};
+use crate::control::gaits::gait::Gait;
+use crate::control::laws::hop_height::flight_for_height;
+use crate::creatures::PhysicalCreature;
+
+/// The bound.
+///
+/// # Errors
+/// Legs that are not the quadruped's; a parameter the bound lacks.
+pub fn bound(
+    creature: &PhysicalCreature,
+    params: &PhysicsParams,
+    additions: Additions,
+) -> Result<Box<dyn Gait>, Misfit> {
+    build(creature, params, additions, BoundStyle::Bound)
+}
+
+/// The gallop.
+///
+/// # Errors
+/// Legs that are not the quadruped's; a parameter the gallop lacks.
+pub fn gallop(
+    creature: &PhysicalCreature,
+    params: &PhysicsParams,
+    additions: Additions,
+) -> Result<Box<dyn Gait>, Misfit> {
+    build(creature, params, additions, BoundStyle::Gallop)
+}
+
+fn build(
+    creature: &PhysicalCreature,
+    params: &PhysicsParams,
+    additions: Additions,
+    style: BoundStyle,
+) -> Result<Box<dyn Gait>, Misfit> {
+    quadruped_legs(creature)?;
+    let p = QuadrupedBoundParams {
+        speed_mps: params.speed_mps,
+        style,
+        ..QuadrupedBoundParams::default()
+    };
+    let mut p = with_parameters(p, params, style.name())?;
+    p.speed_trim = additions.speed_trim;
+    if let Some(h) = params.hop_height_m {
+        p.stride_flight_s = flight_for_height(h);
+    }
+    Ok(Box::new(QuadrupedBound::new(p, creature)))
+}
