@@ -30,8 +30,8 @@ fn gallop(style: GallopStyle, speed: f64, secs: f64, l: f64) -> Run {
     );
     sim.data.base_position.y = 0.9 * l;
     sim.data.base_velocity.linear.z = speed * l.sqrt();
+    sim.commands.speed_mps = speed;
     let params = BipedGallopParams {
-        speed_mps: speed,
         style,
         ..BipedGallopParams::default()
     };

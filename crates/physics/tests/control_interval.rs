@@ -65,8 +65,8 @@ fn the_biped_runs_with_control_every_two_ms() {
     let mut sim = sim(5);
     sim.data.base_velocity.linear.z = 2.5;
     let d = BipedRunParams::default();
+    sim.commands.speed_mps = 2.5;
     let params = BipedRunParams {
-        speed_mps: 2.5,
         hopper: HopperParams {
             yaw_kv: 40.0,
             ..d.hopper

@@ -45,10 +45,8 @@ fn run(speed: f64, l: f64, secs: f64) -> Run {
         options,
     );
     kangaroo_hop::start::start(&mut sim, speed.min(START_MPS), Additions::NONE);
-    let mut ctl = KangarooHop::new(KangarooHopParams {
-        speed_mps: speed,
-        ..Default::default()
-    });
+    sim.commands.speed_mps = speed;
+    let mut ctl = KangarooHop::new(KangarooHopParams::default());
     let settle = settle_s(speed) * l.sqrt();
     let mut rec = GaitRecorder::new(1, speed * l.sqrt(), 0.0, settle);
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
@@ -207,7 +205,6 @@ fn dynamic_scaling_matches() {
 fn jumps_over_an_obstacle() {
     use gaitlab_physics::world::ground::Obstacle;
     let params = KangarooHopParams {
-        speed_mps: 2.0,
         jump_at_m: Some(5.0),
         ..Default::default()
     };
@@ -223,6 +220,7 @@ fn jumps_over_an_obstacle() {
     };
     sim.terrain.obstacles.push(box_);
     kangaroo_hop::start::start(&mut sim, 2.0, Additions::NONE);
+    sim.commands.speed_mps = 2.0;
     let mut ctl = KangarooHop::new(params);
     let mut rec = GaitRecorder::new(1, 2.0, 0.0, 1.0);
     let mut min_clearance = f64::INFINITY;
@@ -240,9 +238,9 @@ fn jumps_over_an_obstacle() {
     assert!(!rec.summary().fell);
 }
 
-/// The desired speed changed while running (`set_speed`): up to 5 m/s, then
-/// back down to 2 m/s; the commanded speed ramps both ways and the mean speed
-/// settles on each. Also checks `phase_name` and `set_hop_height` are live.
+/// The desired speed changed while running (the speed command): up to 5
+/// m/s, then back down to 2 m/s; the commanded speed ramps both ways and the
+/// mean speed settles on each. Also checks `phase_name` is live.
 #[test]
 fn changes_speed_while_running() {
     let mut sim = Sim::new(
@@ -251,12 +249,9 @@ fn changes_speed_while_running() {
         SimOptions::default(),
     );
     kangaroo_hop::start::start(&mut sim, START_MPS, Additions::NONE);
-    let mut ctl = KangarooHop::new(KangarooHopParams {
-        speed_mps: START_MPS,
-        ..Default::default()
-    });
-    ctl.set_speed(5.0);
-    ctl.set_hop_height(0.07);
+    let mut ctl = KangarooHop::new(KangarooHopParams::default());
+    sim.commands.speed_mps = 5.0;
+    sim.commands.hop_height_m = Some(0.07);
     let mean_speed = |sim: &mut Sim, ctl: &mut KangarooHop, from: f64, to: f64| {
         while sim.time < from {
             sim.step(ctl).expect("no blow-up");
@@ -275,7 +270,7 @@ fn changes_speed_while_running() {
     };
     let fast = mean_speed(&mut sim, &mut ctl, settle_s(5.0), settle_s(5.0) + 5.0);
     assert!(!ctl.phase_name().is_empty());
-    ctl.set_speed(2.0);
+    sim.commands.speed_mps = 2.0;
     let t = sim.time;
     let slow = mean_speed(
         &mut sim,

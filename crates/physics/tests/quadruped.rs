@@ -18,11 +18,8 @@ fn run(speed: f64, seconds: f64) -> (GaitSummary, Option<String>) {
     let creature = quadruped(1.0).expect("quadruped builds");
     let mut sim = Sim::new(creature, quadruped_ground(1.0), SimOptions::default());
     trot::start::start(&mut sim, speed, Additions::NONE);
-    let params = QuadrupedRunParams {
-        speed_mps: speed,
-        ..Default::default()
-    };
-    let mut ctl = QuadrupedRun::new(params, &sim.creature);
+    sim.commands.speed_mps = speed;
+    let mut ctl = QuadrupedRun::new(QuadrupedRunParams::default(), &sim.creature);
     let mut rec = GaitRecorder::new(4, speed, 0.0, 3.0);
     while sim.time < seconds {
         if let Err(e) = sim.step(&mut ctl) {

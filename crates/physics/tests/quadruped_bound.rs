@@ -24,8 +24,8 @@ fn run(style: BoundStyle, speed: f64, seconds: f64) -> GaitSummary {
     let creature = quadruped(1.0).expect("quadruped builds");
     let mut sim = Sim::new(creature, quadruped_ground(1.0), SimOptions::default());
     bound::start::start(&mut sim, speed, Additions::NONE);
+    sim.commands.speed_mps = speed;
     let params = QuadrupedBoundParams {
-        speed_mps: speed,
         style,
         ..Default::default()
     };

@@ -26,6 +26,7 @@ use crate::engine::preset::creature_from_preset;
 use crate::engine::probe::{self, PhysicsProbe};
 use crate::engine::push::Push;
 use crate::engine::steering::Steering;
+use crate::world::commands::Commands;
 use crate::world::ground::{GroundParams, Obstacle};
 use crate::world::sim::{Controller, Sim, SimOptions};
 
@@ -180,6 +181,7 @@ impl PhysicsDriver {
         }
         let ground = ground.scaled(l);
         let mut sim = Sim::new(creature, ground, options);
+        sim.commands = starting_commands(&params);
         for o in &params.obstacles {
             sim.terrain.obstacles.push(Obstacle {
                 min_xz: [-10.0 * l, o.at_m * l],
@@ -538,7 +540,7 @@ impl PhysicsDriver {
     pub fn set_speed(&mut self, speed_mps: f64) -> Result<(), PresetError> {
         check_speed_mps("speed_mps", speed_mps)?;
         self.params.speed_mps = speed_mps;
-        self.controller.set_speed(speed_mps);
+        self.sim.commands.speed_mps = speed_mps;
         self.recorder.speed_desired_mps = speed_mps * self.params.scale.sqrt();
         Ok(())
     }
@@ -551,16 +553,16 @@ impl PhysicsDriver {
     pub fn set_hop_height(&mut self, height_m: f64) -> Result<(), PresetError> {
         check_hop_height_m("hop_height_m", height_m)?;
         self.params.hop_height_m = Some(height_m);
-        self.controller.set_hop_height(height_m);
+        self.sim.commands.hop_height_m = Some(height_m);
         Ok(())
     }
 
     /// The hop height the controller regulates now (m at scale 1): the
-    /// biped's and kangaroo's apex rise, the trot's and bound's flight as the
-    /// apex it reaches (eq. 2).
+    /// command's, else the gait's own — the biped's and kangaroo's apex
+    /// rise, the trot's and bound's flight as the apex it reaches (eq. 2).
     #[must_use]
     pub fn hop_height_m(&self) -> Option<f64> {
-        self.controller.hop_height_m()
+        (self.sim.commands.hop_height_m).or_else(|| self.controller.hop_height_m())
     }
 
     /// The creature as a MuJoCo model (see [`crate::engine::mjcf`]): its springs and
@@ -720,9 +722,7 @@ impl PhysicsDriver {
             self.pending = None;
         } else if to_start {
             // The lab's entry at the gait's own start, now.
-            let mut next = next;
             let heading = self.steering.heading;
-            next.set_heading(heading);
             enter_at_start(&mut self.sim, &next, params.speed_mps, heading);
             self.controller = next;
             self.running_gait = gait.to_owned();
@@ -770,10 +770,7 @@ impl PhysicsDriver {
         let (model, data) = (&self.sim.creature.model, &self.sim.data);
         let com = || crate::dynamics::energy::center_of_mass(model, data);
         if let Some(heading) = self.steering.steer(com, &self.params, dt) {
-            self.controller.set_heading(heading);
-            if let Some(next) = self.pending.as_mut() {
-                next.set_heading(heading);
-            }
+            self.sim.commands.heading_rad = heading;
         }
     }
 
@@ -818,13 +815,13 @@ impl PhysicsDriver {
         // kangaroo's one gait: the stored controller is the gait's.
         if let Some(c) = &self.start_controller {
             self.controller = c.clone();
-            self.controller.set_speed(self.params.speed_mps);
         } else if let Ok(c) = make_controller(&self.sim.creature, &self.gait, &self.params) {
             self.controller = c;
         }
         self.pending = None;
         self.running_gait.clone_from(&self.gait);
         self.steering = Steering::default();
+        self.sim.commands = starting_commands(&self.params);
         self.fell_at = None;
         self.message = Some(why);
         self.resets += 1;
@@ -910,5 +907,15 @@ impl Driver for PhysicsDriver {
 
     fn effector_positions(&self) -> &[DVec3] {
         &self.effectors
+    }
+}
+
+/// The commands a run starts with: the preset's speed and hop height, the
+/// heading straight ahead (+z) where the steering starts.
+fn starting_commands(params: &PhysicsParams) -> Commands {
+    Commands {
+        speed_mps: params.speed_mps,
+        heading_rad: Steering::default().heading,
+        hop_height_m: params.hop_height_m,
     }
 }

@@ -4,9 +4,11 @@
 //!
 //! [`actuator`]s (the spring-damper of eq. 1, the servo of eq. 5, joint
 //! stops); [`ground`] contact (springs, the kangaroo's paw pad, terrain); the
+//! [`commands`] a person gives (speed, heading, hop height); the
 //! [`sim`] loop `kinematics → contacts → control → actuators → dynamics →
 //! integrate`, ending each step in the blow-up guard.
 
 pub mod actuator;
+pub mod commands;
 pub mod ground;
 pub mod sim;

@@ -12,6 +12,7 @@ use crate::creatures::PhysicalCreature;
 use crate::dynamics::data::Data;
 use crate::dynamics::spatial::Force;
 use crate::world::actuator::{SpringDamper, Stops};
+use crate::world::commands::{Commands, ScaledCommands};
 use crate::world::ground::{FootContact, GroundParams, Terrain, contact_forces};
 
 /// One joint's actuator: a spring-damper / servo (eq. 1, eq. 5) plus a
@@ -80,6 +81,8 @@ pub struct ControlInput<'a> {
     pub time: f64,
     /// Time since the last control call (s).
     pub dt: f64,
+    /// The commands, at the creature's scale.
+    pub commands: ScaledCommands,
 }
 
 /// A running controller: sets actuator set points from the state.
@@ -105,16 +108,8 @@ pub trait Controller {
         None
     }
 
-    /// Change the desired forward speed (m/s at scale 1) while running.
-    fn set_speed(&mut self, _speed_mps: f64) {}
-
-    /// Change the desired heading (rad about +y; 0 = +z) while running.
-    fn set_heading(&mut self, _heading: f64) {}
-
-    /// Change the desired hop height (m at scale 1) while running.
-    fn set_hop_height(&mut self, _height_m: f64) {}
-
-    /// The hop height it regulates (m at scale 1), if it regulates one.
+    /// The hop height the gait regulates when no command gives one (m at
+    /// scale 1), if it regulates one.
     fn hop_height_m(&self) -> Option<f64> {
         None
     }
@@ -245,6 +240,9 @@ pub struct Sim {
     pub time: f64,
     /// Steps taken.
     pub steps: u64,
+    /// What a person asks of the running creature, at scale 1; the
+    /// controller reads them each control interval.
+    pub commands: Commands,
     accumulator: f64,
 }
 
@@ -265,6 +263,7 @@ impl Sim {
             options,
             time: 0.0,
             steps: 0,
+            commands: Commands::default(),
             accumulator: 0.0,
         }
     }
@@ -293,6 +292,7 @@ impl Sim {
             contacts: &self.contacts,
             time: self.time,
             dt: dt * every as f64,
+            commands: self.commands.at_scale(self.creature.scale),
         };
         if self.steps.is_multiple_of(every) {
             controller.control(&input, &mut self.drives);

@@ -70,24 +70,23 @@ impl SpeedTrim {
 
 impl SpeedTrim {
     /// [`SpeedTrim::stride`] for a creature at `heading` (rad) wanting
-    /// `speed_mps` at scale 1 (× `velocity_scale`, Table 1's √L), the
-    /// correction capped at half the desired speed (at least 0.25 m/s at
-    /// scale 1), measured at the centre of mass `com` (world, m).
+    /// `desired_mps` (at its scale), the correction capped at half the
+    /// desired speed and at least 0.25 m/s × `velocity_scale` (Table 1's
+    /// √L), measured at the centre of mass `com` (world, m).
     #[allow(clippy::too_many_arguments)]
     pub fn stride_at_heading(
         &mut self,
         on: bool,
         gain: f64,
-        speed_mps: f64,
+        desired_mps: f64,
         velocity_scale: f64,
         time: f64,
         com: DVec3,
         heading: f64,
     ) {
-        let v = velocity_scale;
-        let cap = 0.5 * speed_mps.abs().max(0.5) * v;
+        let cap = 0.5 * desired_mps.abs().max(0.5 * velocity_scale);
         let along = crate::control::laws::attitude::heading_forward(heading);
-        self.stride(on, gain, speed_mps * v, cap, time, com, along, 0.0);
+        self.stride(on, gain, desired_mps, cap, time, com, along, 0.0);
     }
 }
 

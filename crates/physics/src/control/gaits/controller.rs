@@ -139,18 +139,6 @@ impl Controller for GaitController {
         self.inner.leg_phase_name(leg)
     }
 
-    fn set_speed(&mut self, speed_mps: f64) {
-        self.inner.set_speed(speed_mps);
-    }
-
-    fn set_heading(&mut self, heading: f64) {
-        self.inner.set_heading(heading);
-    }
-
-    fn set_hop_height(&mut self, height_m: f64) {
-        self.inner.set_hop_height(height_m);
-    }
-
     fn hop_height_m(&self) -> Option<f64> {
         self.inner.hop_height_m()
     }

@@ -8,7 +8,6 @@ pub mod biped_gallop;
 pub mod biped_run;
 pub mod bound;
 pub mod builder;
-pub mod commands;
 pub mod controller;
 pub mod gains;
 pub mod gait;

@@ -43,12 +43,7 @@ fn build(
 ) -> Result<Box<dyn Gait>, Misfit> {
     biped_legs(creature)?;
     let d = BipedGallopParams::default();
-    let p = BipedGallopParams {
-        speed_mps: params.speed_mps,
-        hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
-        style,
-        ..d
-    };
+    let p = BipedGallopParams { style, ..d };
     let gait = match style {
         GallopStyle::TogetherSwing => "gallop",
         GallopStyle::AlternateSwing => "gallop_alternate",

@@ -135,7 +135,10 @@ impl BipedGallop {
 
 impl Controller for BipedGallop {
     crate::family_gains!(biped BipedGallopParams);
-    crate::steering_commands!(hop_height_m);
+
+    fn hop_height_m(&self) -> Option<f64> {
+        Some(self.params.hop_height_m)
+    }
 
     fn phase_name(&self) -> &'static str {
         self.phase.name()
@@ -157,9 +160,9 @@ impl Controller for BipedGallop {
         let trunk_rot = data.world[creature.trunk].rot;
         let trunk_pos = data.world[creature.trunk].pos;
         let velocity = com_velocity(creature, data);
-        let forward = heading_forward(p.heading);
+        let forward = heading_forward(input.commands.heading_rad);
         let s = self.plan.scale;
-        let desired = forward * (p.speed_mps * s.velocity() + self.trim.bias_mps);
+        let desired = forward * (input.commands.speed_mps + self.trim.bias_mps);
         let spring = LegSpring::new(
             p.hopper.leg_stiffness,
             p.hopper.leg_damping,
@@ -251,7 +254,7 @@ impl Controller for BipedGallop {
         let data = input.data;
         let trunk_rot = data.world[creature.trunk].rot;
         let max = p.hopper.max_hip_torque * s.torque();
-        let err = attitude_error(creature, data, p.heading, self.pitch_d);
+        let err = attitude_error(creature, data, input.commands.heading_rad, self.pitch_d);
         let rate = trunk_rate(creature, data);
         let (pkp, pkv) = s.torsional_gains(p.hopper.posture_kp, p.hopper.posture_kv);
         let posture = trunk_torque(err, rate, pkp, pkv);

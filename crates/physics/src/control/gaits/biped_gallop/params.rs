@@ -31,16 +31,13 @@ impl GallopStyle {
 /// paper's size (L = 1) and scaled by the creature's L.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BipedGallopParams {
-    /// Desired forward speed ẋ_d (m/s).
-    pub speed_mps: f64,
-    /// Desired heading (rad about +y; 0 = +z).
-    pub heading: f64,
     /// How the legs swing forward.
     pub style: GallopStyle,
     /// The leading leg (0 or 1): it lands second, ahead of the trailing leg,
     /// and leaves the ground last.
     pub lead_leg: usize,
-    /// Desired hop height: apex of the trunk in flight above the height of
+    /// The gallop's own hop height, regulated when no command gives one:
+    /// apex of the trunk in flight above the height of
     /// a hip over a vertical leg at landing length (m).
     pub hop_height_m: f64,
     /// The hopper's spring, thrust, placement and servo parameters.
@@ -74,8 +71,6 @@ pub struct BipedGallopParams {
 impl Default for BipedGallopParams {
     fn default() -> Self {
         Self {
-            speed_mps: 1.5,
-            heading: 0.0,
             style: GallopStyle::TogetherSwing,
             lead_leg: 0,
             hop_height_m: 0.12,

@@ -96,8 +96,9 @@ impl BipedGallop {
 
     /// The trunk's pitch about the heading's lateral axis (rad).
     pub(super) fn pitch(&self, input: &ControlInput<'_>) -> f64 {
-        let err = attitude_error(input.creature, input.data, self.params.heading, 0.0);
-        let lateral = DVec3::Y.cross(heading_forward(self.params.heading));
+        let heading = input.commands.heading_rad;
+        let err = attitude_error(input.creature, input.data, heading, 0.0);
+        let lateral = DVec3::Y.cross(heading_forward(heading));
         err.dot(lateral)
     }
 
@@ -108,13 +109,15 @@ impl BipedGallop {
         let l = self.plan.scale.l;
         if self.apex_height.is_finite() {
             let landing_height = self.plan.leg_m[self.trail()] + p.hopper.landing_rest_m * l;
-            let error = (landing_height + p.hop_height_m * l) - self.apex_height;
+            let hop = input.commands.hop_height_m.unwrap_or(p.hop_height_m * l);
+            let error = (landing_height + hop) - self.apex_height;
             self.thrust = (self.thrust + p.hopper.hop_gain * error).clamp(0.0, 0.12 * l);
         }
         let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
         let (on, gain) = (p.speed_trim, p.hopper.speed_integral_gain);
         let v = self.plan.scale.velocity();
-        (self.trim).stride_at_heading(on, gain, p.speed_mps, v, input.time, com, p.heading);
+        let c = input.commands;
+        (self.trim).stride_at_heading(on, gain, c.speed_mps, v, input.time, com, c.heading_rad);
         self.apex_height = f64::NEG_INFINITY;
         self.descending = false;
     }

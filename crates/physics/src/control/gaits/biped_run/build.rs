@@ -27,12 +27,7 @@ pub fn build(
     } else {
         BipedRunParams::default()
     };
-    let p = BipedRunParams {
-        speed_mps: params.speed_mps,
-        hop_height_m: params.hop_height_m.unwrap_or(d.hop_height_m),
-        ..d
-    };
-    let mut p = with_parameters(p, params, "run")?;
+    let mut p = with_parameters(d, params, "run")?;
     p.unloading_posture = additions.unloading_posture;
     p.speed_trim = additions.speed_trim;
     Ok(Box::new(BipedRun::new(p, creature)))

@@ -106,7 +106,8 @@ impl BipedRun {
             // Lift-off: the legs swap, the hop's apex adjusts the thrust (eq. 2).
             self.stance_s = (input.time - self.touchdown_time).clamp(0.05 * t, 0.5 * t);
             if self.apex_height.is_finite() {
-                let error = p.hop_height_m * l - (self.apex_height - self.liftoff_height);
+                let target = input.commands.hop_height_m.unwrap_or(p.hop_height_m * l);
+                let error = target - (self.apex_height - self.liftoff_height);
                 self.thrust = (self.thrust + p.hopper.hop_gain * error).clamp(0.0, 0.12 * l);
             }
             self.liftoff_height = trunk_y;
@@ -114,7 +115,8 @@ impl BipedRun {
             let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
             let (on, gain) = (p.speed_trim, p.hopper.speed_integral_gain);
             let v = self.plan.scale.velocity();
-            (self.trim).stride_at_heading(on, gain, p.speed_mps, v, input.time, com, p.heading);
+            let c = input.commands;
+            (self.trim).stride_at_heading(on, gain, c.speed_mps, v, input.time, com, c.heading_rad);
             self.apex_height = f64::NEG_INFINITY;
             self.active = 1 - self.active;
             self.phase = Phase::Flight;
@@ -125,7 +127,10 @@ impl BipedRun {
 
 impl Controller for BipedRun {
     crate::family_gains!(biped BipedRunParams);
-    crate::steering_commands!(hop_height_m);
+
+    fn hop_height_m(&self) -> Option<f64> {
+        Some(self.params.hop_height_m)
+    }
 
     fn phase_name(&self) -> &'static str {
         self.phase.name()
@@ -161,8 +166,8 @@ impl Controller for BipedRun {
         let data = input.data;
         let trunk_rot = data.world[creature.trunk].rot;
         let (com, velocity) = com_state(creature, data);
-        let desired =
-            heading_forward(p.heading) * (p.speed_mps * s.velocity() + self.trim.bias_mps);
+        let c = input.commands;
+        let desired = heading_forward(c.heading_rad) * (c.speed_mps + self.trim.bias_mps);
         let spring = LegSpring::new(
             p.hopper.leg_stiffness,
             p.hopper.leg_damping,
@@ -243,7 +248,7 @@ impl BipedRun {
         let active = &creature.legs[self.active];
         let trunk_rot = data.world[creature.trunk].rot;
         let max = p.hopper.max_hip_torque * s.torque();
-        let err = attitude_error(creature, data, p.heading, 0.0);
+        let err = attitude_error(creature, data, input.commands.heading_rad, 0.0);
         let rate = trunk_rate(creature, data);
         let (pkp, pkv) = s.torsional_gains(p.hopper.posture_kp, p.hopper.posture_kv);
         let torque = trunk_torque(err, rate, pkp, pkv);

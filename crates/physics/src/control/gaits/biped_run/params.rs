@@ -8,11 +8,8 @@ use crate::control::gaits::hopper_params::HopperParams;
 /// (metres of extension, 0 = the leg at full length).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BipedRunParams {
-    /// Desired forward speed ẋ_d (m/s).
-    pub speed_mps: f64,
-    /// Desired heading (rad about +y; 0 = +z).
-    pub heading: f64,
-    /// Desired hop height: apex of the hip above its lift-off height (m).
+    /// The run's own hop height, regulated when no command gives one: apex
+    /// of the hip above its lift-off height (m).
     pub hop_height_m: f64,
     /// The hopper's spring, thrust, placement and servo parameters.
     pub hopper: HopperParams,
@@ -28,8 +25,6 @@ pub struct BipedRunParams {
 impl Default for BipedRunParams {
     fn default() -> Self {
         Self {
-            speed_mps: 1.5,
-            heading: 0.0,
             hop_height_m: 0.10,
             hopper: HopperParams::default(),
             speed_trim: false,

@@ -10,7 +10,6 @@ use crate::control::gaits::bound::QuadrupedBound;
 use crate::control::gaits::bound::params::{BoundStyle, QuadrupedBoundParams};
 use crate::control::gaits::builder::{Misfit, quadruped_legs, with_parameters};
 use crate::control::gaits::gait::Gait;
-use crate::control::laws::hop_height::flight_for_height;
 use crate::creatures::PhysicalCreature;
 
 /// The bound.
@@ -45,14 +44,10 @@ fn build(
 ) -> Result<Box<dyn Gait>, Misfit> {
     quadruped_legs(creature)?;
     let p = QuadrupedBoundParams {
-        speed_mps: params.speed_mps,
         style,
         ..QuadrupedBoundParams::default()
     };
     let mut p = with_parameters(p, params, style.name())?;
     p.speed_trim = additions.speed_trim;
-    if let Some(h) = params.hop_height_m {
-        p.stride_flight_s = flight_for_height(h);
-    }
     Ok(Box::new(QuadrupedBound::new(p, creature)))
 }

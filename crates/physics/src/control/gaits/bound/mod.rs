@@ -35,7 +35,7 @@ use crate::control::additions::speed_trim::SpeedTrim;
 use crate::control::laws::attitude::{com_velocity, heading_forward};
 use crate::control::laws::body_plan::BodyPlan;
 use crate::control::laws::hip_servo::{HipServo, release};
-use crate::control::laws::hop_height::{flight_for_height, height_for_flight};
+use crate::control::laws::hop_height::height_for_flight;
 use crate::control::laws::leg_spring::LegSpring;
 use crate::control::laws::pair_posture::PairPosture;
 use crate::control::laws::phase::Phase;
@@ -115,7 +115,6 @@ impl QuadrupedBound {
 
 impl Controller for QuadrupedBound {
     crate::family_gains!(quadruped QuadrupedBoundParams);
-    crate::steering_commands!();
 
     fn phase_name(&self) -> &'static str {
         self.phase().name()
@@ -126,14 +125,8 @@ impl Controller for QuadrupedBound {
         Some(self.pair_phase(pair).name())
     }
 
-    /// The bound regulates the flight in each stride: a hop height asks for
-    /// the flight whose apex it is (eq. 2, [`crate::control::laws::hop_height`]).
-    fn set_hop_height(&mut self, height_m: f64) {
-        if height_m.is_finite() {
-            self.params.stride_flight_s = flight_for_height(height_m);
-        }
-    }
-
+    /// The bound regulates the flight in each stride: its own is that of
+    /// this apex height (eq. 2, [`crate::control::laws::hop_height`]).
     fn hop_height_m(&self) -> Option<f64> {
         Some(height_for_flight(self.params.stride_flight_s))
     }
@@ -147,7 +140,7 @@ impl Controller for QuadrupedBound {
         let s = self.plan.scale;
         let l = s.length();
         let p = self.params;
-        let fwd = heading_forward(p.heading);
+        let fwd = heading_forward(input.commands.heading_rad);
         let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
         self.advance(input, com.dot(fwd));
 
@@ -166,7 +159,7 @@ impl Controller for QuadrupedBound {
         // its torques every step ([`Controller::servo`]).
         let gains = |kp: f64, kv: f64| s.torsional_gains(kp, kv);
         let mut posture = PairPosture {
-            heading: p.heading,
+            heading: input.commands.heading_rad,
             pitch_d: p.pitch_bias,
             gains: [
                 gains(p.pitch_kp, p.pitch_kv),
@@ -181,7 +174,7 @@ impl Controller for QuadrupedBound {
         };
 
         let velocity = com_velocity(creature, data);
-        let desired = fwd * (p.speed_mps * s.velocity() + self.speed_trim.bias_mps);
+        let desired = fwd * (input.commands.speed_mps + self.speed_trim.bias_mps);
         let max = p.max_hip_torque * s.torque();
         let (kp, kv) = gains(p.swing_kp, p.swing_kv);
         let servo = HipServo {

@@ -9,6 +9,7 @@ use super::gallop_legs::{BOUNCE_S, LegSense, spring_events};
 use super::{FRONT, PAIRS, QuadrupedBound, REAR};
 use crate::control::additions::speed_trim::along_z;
 use crate::control::gaits::bound::params::{BoundStyle, QuadrupedBoundParams};
+use crate::control::laws::hop_height::flight_for_height;
 use crate::control::laws::phase::Phase;
 use crate::world::sim::ControlInput;
 
@@ -151,12 +152,14 @@ impl QuadrupedBound {
                         // Eq. 2's energy per stride: one thrust for both pairs,
                         // regulated on the stride's total flight.
                         if self.stride_start.is_some() {
-                            let error = p.stride_flight_s * l.sqrt() - self.stride_flight_s;
+                            let target = (input.commands.hop_height_m)
+                                .map_or(p.stride_flight_s * l.sqrt(), flight_for_height);
+                            let error = target - self.stride_flight_s;
                             self.thrust = (self.thrust + p.flight_gain * l.sqrt() * error)
                                 .clamp(p.min_thrust_m * l, p.max_thrust_m * l);
                         }
                         self.stride_flight_s = 0.0;
-                        let vd = p.speed_mps * l.sqrt();
+                        let vd = input.commands.speed_mps;
                         self.speed_trim.stride(
                             p.speed_trim,
                             p.speed_integral_gain,

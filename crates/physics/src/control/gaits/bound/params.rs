@@ -36,10 +36,6 @@ impl BoundStyle {
 pub struct QuadrupedBoundParams {
     /// Bound or gallop.
     pub style: BoundStyle,
-    /// Desired forward speed ẋ_d (m/s).
-    pub speed_mps: f64,
-    /// Desired heading (rad about +y; 0 = +z).
-    pub heading: f64,
     /// Leg spring stiffness k of eq. 1, per leg (N/m).
     pub leg_stiffness: f64,
     /// How far the telescoping leg can shorten from full length (m).
@@ -142,8 +138,6 @@ impl Default for QuadrupedBoundParams {
     fn default() -> Self {
         Self {
             style: BoundStyle::Bound,
-            speed_mps: 2.8,
-            heading: 0.0,
             leg_stiffness: 6_660.0,
             leg_travel_m: 0.36,
             leg_damping: 9.6,

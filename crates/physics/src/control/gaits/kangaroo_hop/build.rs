@@ -35,8 +35,6 @@ pub fn build(
     let d = KangarooHopParams::default();
     let obstacle = params.obstacles.first();
     let p = KangarooHopParams {
-        speed_mps: params.speed_mps,
-        hop_rise_m: params.hop_height_m.unwrap_or(d.hop_rise_m),
         jump_at_m: obstacle.map(|o| o.at_m),
         obstacle_height_m: obstacle.map_or(d.obstacle_height_m, |o| o.height_m),
         obstacle_depth_m: obstacle.map_or(d.obstacle_depth_m, |o| o.depth_m),

@@ -143,33 +143,21 @@ impl KangarooHop {
         }
     }
 
-    /// Set the desired forward speed (m/s at scale 1); the commanded speed
-    /// ramps to it.
-    pub fn set_speed(&mut self, mps: f64) {
-        if mps.is_finite() {
-            self.params.speed_mps = mps;
-        }
-    }
-
-    /// Set the desired rise of the centre of mass from lift-off to apex (m at scale 1).
-    pub fn set_hop_height(&mut self, m: f64) {
-        if m.is_finite() {
-            self.params.hop_rise_m = m.max(0.0);
-        }
-    }
-
     /// Ask for a jump over an obstacle whose near face is at `at_m` (m).
     pub fn jump_at(&mut self, at_m: f64) {
         self.params.jump_at_m = Some(at_m);
         self.jump_pending = true;
     }
 
-    fn start(&mut self, l: f64, speed: f64) {
+    /// At the first control call: the stance-time and stride guesses for
+    /// the desired speed `desired_mps` and the speed command from the body's
+    /// own `speed_mps` (both m/s at the creature's scale).
+    fn start(&mut self, l: f64, desired_mps: f64, speed_mps: f64) {
         if !self.started {
             self.started = true;
             self.stance_s = self.params.stance_guess_s * l.sqrt();
-            self.stride_m = self.params.speed_mps * 0.35 * l;
-            self.speed_command_mps = speed;
+            self.stride_m = desired_mps * 0.35 * l.sqrt();
+            self.speed_command_mps = speed_mps;
         }
     }
 }
@@ -181,14 +169,6 @@ impl Controller for KangarooHop {
 
     fn phase_name(&self) -> &'static str {
         KangarooHop::phase_name(self)
-    }
-
-    fn set_speed(&mut self, speed_mps: f64) {
-        KangarooHop::set_speed(self, speed_mps);
-    }
-
-    fn set_hop_height(&mut self, height_m: f64) {
-        KangarooHop::set_hop_height(self, height_m);
     }
 
     fn hop_height_m(&self) -> Option<f64> {
@@ -231,8 +211,8 @@ impl Controller for KangarooHop {
         let ankle = leg.spring;
         let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
         let com_v = com_velocity(creature, data);
-        self.start(l, com_v.z);
-        self.ramp_speed(input.dt, l);
+        self.start(l, input.commands.speed_mps, com_v.z);
+        self.ramp_speed(input.dt, input.commands.speed_mps);
         self.advance_phase(input, com, com_v);
         let p = self.params;
         let s = Scale::new(l);

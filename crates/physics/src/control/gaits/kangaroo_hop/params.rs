@@ -5,9 +5,6 @@
 /// them by the creature's L).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct KangarooHopParams {
-    /// Desired forward speed ẋ_d (m/s); may be changed while running. The
-    /// controller's commanded speed moves toward it at `speed_ramp_mps2`.
-    pub speed_mps: f64,
     /// Largest rate of change of the commanded speed (m/s²): a fast gait is
     /// reached by accelerating through the slower ones.
     pub speed_ramp_mps2: f64,
@@ -23,7 +20,8 @@ pub struct KangarooHopParams {
     pub speed_integral_gain: f64,
     /// Largest integral speed correction (m/s).
     pub speed_integral_max_mps: f64,
-    /// Desired rise of the centre of mass from lift-off to apex (m).
+    /// The hop's own rise of the centre of mass from lift-off to apex,
+    /// regulated when no command gives one (m).
     pub hop_rise_m: f64,
     /// Integral gain of the apex correction (m of target per m of error per hop).
     pub hop_gain: f64,
@@ -111,7 +109,6 @@ pub struct KangarooHopParams {
 impl Default for KangarooHopParams {
     fn default() -> Self {
         Self {
-            speed_mps: 5.0,
             speed_ramp_mps2: 0.25,
             speed_ramp: true,
             speed_trim: false,

@@ -134,7 +134,7 @@ impl KangarooHop {
         } else {
             com.y
         };
-        let mut target = base + p.hop_rise_m * l;
+        let mut target = base + input.commands.hop_height_m.unwrap_or(p.hop_rise_m * l);
         if self.jump == JumpStage::Takeoff
             && let Some(at) = p.jump_at_m
         {
@@ -158,9 +158,9 @@ impl KangarooHop {
 }
 
 impl KangarooHop {
-    /// Move the commanded speed toward the desired one, rate-limited.
-    pub(super) fn ramp_speed(&mut self, dt: f64, l: f64) {
-        let target = self.params.speed_mps * l.sqrt();
+    /// Move the commanded speed toward the desired `target` (m/s, at the
+    /// creature's scale), rate-limited when the lab's ramp is on.
+    pub(super) fn ramp_speed(&mut self, dt: f64, target: f64) {
         let step = if self.params.speed_ramp {
             self.params.speed_ramp_mps2.max(0.0) * dt
         } else {

@@ -10,7 +10,6 @@ use crate::control::gaits::gait::Gait;
 use crate::control::gaits::trot::QuadrupedRun;
 use crate::control::gaits::trot::params::QuadrupedRunParams;
 use crate::creatures::PhysicalCreature;
-use crate::world::sim::Controller;
 
 /// The trot's controller.
 ///
@@ -22,13 +21,6 @@ pub fn build(
     _additions: Additions,
 ) -> Result<Box<dyn Gait>, Misfit> {
     quadruped_legs(creature)?;
-    let p = QuadrupedRunParams {
-        speed_mps: params.speed_mps,
-        ..QuadrupedRunParams::default()
-    };
-    let mut c = QuadrupedRun::new(with_parameters(p, params, "trot")?, creature);
-    if let Some(h) = params.hop_height_m {
-        c.set_hop_height(h);
-    }
-    Ok(Box::new(c))
+    let p = with_parameters(QuadrupedRunParams::default(), params, "trot")?;
+    Ok(Box::new(QuadrupedRun::new(p, creature)))
 }

@@ -7,6 +7,7 @@
 
 use super::{QuadrupedRun, TROT_PAIRS};
 use crate::control::additions::speed_trim::along_z;
+use crate::control::laws::hop_height::flight_for_height;
 use crate::control::laws::leg_spring::LegSpring;
 use crate::control::laws::phase::{Phase, StanceEvents};
 use crate::world::sim::{ControlInput, Drive};
@@ -34,7 +35,9 @@ impl QuadrupedRun {
         {
             let flight = input.time - self.liftoff_time;
             self.flight_s[p] = flight;
-            let error = t.flight_s[p] * time_s - flight;
+            let target =
+                (input.commands.hop_height_m).map_or(t.flight_s[p] * time_s, flight_for_height);
+            let error = target - flight;
             self.thrust[p] = (self.thrust[p] + self.params.flight_gain * time_s * error)
                 .clamp(0.0, self.params.max_thrust_m * l);
             self.liftoff_pair = None;
@@ -114,7 +117,7 @@ impl QuadrupedRun {
             self.liftoff_time = input.time;
             self.liftoff_pair = Some(self.active);
             // Integral speed correction from the step's mean speed.
-            let vd = self.params.speed_mps * self.plan.scale.velocity();
+            let vd = input.commands.speed_mps;
             self.trim.stride(
                 true,
                 t.speed_gain,

@@ -20,7 +20,7 @@ use crate::control::additions::speed_trim::SpeedTrim;
 use crate::control::laws::attitude::{com_velocity, heading_forward};
 use crate::control::laws::body_plan::BodyPlan;
 use crate::control::laws::hip_servo::{HipServo, release};
-use crate::control::laws::hop_height::{flight_for_height, height_for_flight};
+use crate::control::laws::hop_height::height_for_flight;
 use crate::control::laws::pair_posture::PairPosture;
 use crate::control::laws::phase::Phase;
 use crate::control::laws::placement::{aim_frame, foot_displacement, hip_angles, hip_at_touchdown};
@@ -126,7 +126,6 @@ impl QuadrupedRun {
 
 impl Controller for QuadrupedRun {
     crate::family_gains!(quadruped params.trot = QuadrupedRunParams::default().trot);
-    crate::steering_commands!();
 
     fn phase_name(&self) -> &'static str {
         self.phase().name()
@@ -136,14 +135,8 @@ impl Controller for QuadrupedRun {
         self.leg_phase.get(leg).map(|p| p.name())
     }
 
-    /// The trot regulates each pair's flight time: a hop height asks for
-    /// the flight whose apex it is (eq. 2, [`crate::control::laws::hop_height`]).
-    fn set_hop_height(&mut self, height_m: f64) {
-        if height_m.is_finite() {
-            self.params.trot.flight_s = [flight_for_height(height_m); 2];
-        }
-    }
-
+    /// The trot regulates each pair's flight time: its own hop height is
+    /// the apex of its mean flight (eq. 2, [`crate::control::laws::hop_height`]).
     fn hop_height_m(&self) -> Option<f64> {
         let f = self.params.trot.flight_s;
         Some(height_for_flight((f[0] + f[1]) / 2.0))
@@ -172,7 +165,7 @@ impl Controller for QuadrupedRun {
             .sum::<f64>()
             < 0.0;
         let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
-        let fwd = heading_forward(self.params.heading);
+        let fwd = heading_forward(input.commands.heading_rad);
         self.advance_phase(input, drives, descending, com.dot(fwd));
         let pair = TROT_PAIRS[self.active];
         let idle = TROT_PAIRS[1 - self.active];
@@ -182,7 +175,7 @@ impl Controller for QuadrupedRun {
         self.set_springs(input, drives, descending);
         // Foot placement (eq. 3) for the active pair's legs in the air.
         let velocity = com_velocity(creature, data);
-        let desired = fwd * (p.speed_mps * s.velocity() + self.trim.bias_mps);
+        let desired = fwd * (input.commands.speed_mps + self.trim.bias_mps);
         let max = p.max_hip_torque * s.torque();
         let (kp, kv) = s.torsional_gains(p.swing_kp, p.swing_kv);
         let servo = HipServo {
@@ -207,7 +200,7 @@ impl Controller for QuadrupedRun {
         let gains = |kp: f64, kv: f64| s.torsional_gains(kp, kv);
         let servoing = |ph: Phase| matches!(ph, Phase::Compression | Phase::Thrust);
         let mut posture = PairPosture {
-            heading: p.heading,
+            heading: input.commands.heading_rad,
             pitch_d: t.pitch_d + swing,
             gains: [
                 gains(t.pitch_kp, t.pitch_kv),

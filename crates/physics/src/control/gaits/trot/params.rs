@@ -66,10 +66,6 @@ pub struct GaitTuning {
 /// them by the creature's L), editable while running.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct QuadrupedRunParams {
-    /// Desired forward speed ẋ_d (m/s).
-    pub speed_mps: f64,
-    /// Desired heading (rad about +y; 0 = +z).
-    pub heading: f64,
     /// Tuning of the trot.
     pub trot: GaitTuning,
     /// Thrust change per second of flight-duration error (m/s), eq. 2's
@@ -118,8 +114,6 @@ impl Default for QuadrupedRunParams {
             unison_liftoff: 1.0,
         };
         Self {
-            speed_mps: 2.3,
-            heading: 0.0,
             trot,
             flight_gain: 0.05,
             max_thrust_m: 0.10,
