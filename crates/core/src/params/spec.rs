@@ -64,8 +64,9 @@ pub enum Domain {
         /// The names accepted.
         options: &'static [&'static str],
     },
-    /// A list, vector or object, checked by the preset's rules for it
-    /// (`shape` says what it holds).
+    /// A list, vector or object, or a name whose choices another crate
+    /// owns (the physics gaits: the engine's gait table), checked by the
+    /// preset's rules for it (`shape` says what it holds).
     Structured {
         /// What the value holds, in words (`[x, y, z] m`, `list of [along, height]`).
         shape: &'static str,

@@ -273,8 +273,9 @@ pub struct PhysicsParams {
     /// Neck joint.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub neck: Option<String>,
-    /// Gait name (biped: run, gallop, gallop_alternate; quadruped: trot,
-    /// bound, gallop; kangaroo: hop). Default: the model's first.
+    /// Gait name, one of the model's in the physics engine's gait table
+    /// (the page's gait menu; an unknown name is an error that lists the
+    /// model's). Default: the model's first.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub gait: Option<String>,
     /// Desired forward speed at scale 1 (m/s). Default 1.5.

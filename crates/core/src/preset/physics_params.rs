@@ -52,10 +52,10 @@ pub const PHYSICS_PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "scenario.physics.gait",
         command: Some("gait"),
-        label: "Gait (biped: run, gallop, gallop_alternate; quadruped: trot, bound, gallop; kangaroo: hop)",
+        label: "Gait (one of the model's: the gait menu; an unknown name's error lists them)",
         unit: "",
-        domain: Domain::Choice {
-            options: &["run", "gallop", "gallop_alternate", "trot", "bound", "hop"],
+        domain: Domain::Structured {
+            shape: "a gait name of the model (the physics engine's gait table)",
         },
         live: true,
         reference: "Raibert & Hodgins 1991, Table 2",

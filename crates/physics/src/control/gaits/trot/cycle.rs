@@ -5,7 +5,7 @@
 //! when both feet have left the ground; each flight regulates that pair's
 //! thrust (eq. 2 on the Table-2 flight time).
 
-use super::{QuadrupedRun, TROT_PAIRS};
+use super::QuadrupedRun;
 use crate::control::additions::speed_trim::along_z;
 use crate::control::laws::hop_height::flight_for_height;
 use crate::control::laws::leg_spring::LegSpring;
@@ -25,7 +25,7 @@ impl QuadrupedRun {
         let t = self.tuning();
         let l = self.plan.scale.length();
         let time_s = self.plan.scale.time();
-        let pair = TROT_PAIRS[self.active];
+        let pair = self.pairs[self.active];
         let landing = t.landing_rest_m * l;
         let unison = t.unison_liftoff > 0.5;
         // Flight time of the pair that lifted off last ends at the first touch
@@ -147,7 +147,7 @@ impl QuadrupedRun {
         let s = self.plan.scale;
         let l = s.length();
         let t = self.tuning();
-        let pair = TROT_PAIRS[self.active];
+        let pair = self.pairs[self.active];
         let trunk_rot = input.data.world[creature.trunk].rot;
         let spring = LegSpring::new(t.leg_stiffness, t.leg_damping, t.leg_travel_m);
         let landing = t.landing_rest_m * l;

@@ -47,7 +47,11 @@ pub use crate::control::laws::ground::quadruped_ground;
 pub struct QuadrupedRun {
     /// Parameters (editable while running).
     pub params: QuadrupedRunParams,
-    /// The active (supporting or landing) pair, 0 or 1 of [`TROT_PAIRS`].
+    /// The two virtual legs, pairs of leg indices, the first to land first:
+    /// the trot's diagonals ([`TROT_PAIRS`]) unless made
+    /// [`with_pairs`](QuadrupedRun::with_pairs).
+    pub pairs: [[usize; 2]; 2],
+    /// The active (supporting or landing) pair, 0 or 1 of `pairs`.
     pub active: usize,
     /// Each leg's state; the idle pair's legs stay in [`Phase::Flight`].
     pub leg_phase: [Phase; 4],
@@ -86,6 +90,7 @@ impl QuadrupedRun {
         let t = params.trot;
         Self {
             params,
+            pairs: TROT_PAIRS,
             active: 0,
             leg_phase: [Phase::Flight; 4],
             stance_s: [t.stance_s * scale.sqrt(); 2],
@@ -105,6 +110,14 @@ impl QuadrupedRun {
         }
     }
 
+    /// The same controller on other virtual legs (`pairs`, two pairs of leg
+    /// indices, the first to land first): the pace's lateral pairs.
+    #[must_use]
+    pub fn with_pairs(mut self, pairs: [[usize; 2]; 2]) -> Self {
+        self.pairs = pairs;
+        self
+    }
+
     /// The state of the active virtual leg (Figure 4): flight until a leg
     /// of the active pair lands, then the state of its first leg in stance.
     #[must_use]
@@ -112,7 +125,7 @@ impl QuadrupedRun {
         if !self.in_stance {
             return Phase::Flight;
         }
-        let pair = TROT_PAIRS[self.active];
+        let pair = self.pairs[self.active];
         pair.iter()
             .map(|&i| self.leg_phase[i])
             .find(|&p| p != Phase::Flight)
@@ -155,7 +168,7 @@ impl Controller for QuadrupedRun {
         let trunk_pos = data.world[trunk].pos;
         // The frame the positioning legs are aimed in (eq. 3's kinematic transformation).
         let aim = aim_frame(trunk_rot, self.params.swing_roll_follow);
-        let pair = TROT_PAIRS[self.active];
+        let pair = self.pairs[self.active];
         let descending = pair
             .iter()
             .map(|&i| {
@@ -167,8 +180,8 @@ impl Controller for QuadrupedRun {
         let com = crate::dynamics::energy::center_of_mass(&creature.model, data);
         let fwd = heading_forward(input.commands.heading_rad);
         self.advance_phase(input, drives, descending, com.dot(fwd));
-        let pair = TROT_PAIRS[self.active];
-        let idle = TROT_PAIRS[1 - self.active];
+        let pair = self.pairs[self.active];
+        let idle = self.pairs[1 - self.active];
         let p = self.params;
         let t = self.tuning();
         let landing = t.landing_rest_m * l;
@@ -263,6 +276,6 @@ impl Controller for QuadrupedRun {
     }
 
     fn servo(&mut self, input: &ControlInput<'_>, drives: &mut [Drive]) {
-        self.posture.apply(input, &TROT_PAIRS, drives);
+        self.posture.apply(input, &self.pairs, drives);
     }
 }
