@@ -26,6 +26,7 @@ GAITS = [
     ("raibert-quadruped", "trot", [1.0, 1.9, 2.3]),
     ("raibert-quadruped", "bound", [1.5, 2.3, 2.8]),
     ("raibert-quadruped", "gallop", [1.5, 2.3, 2.8]),
+    ("raibert-quadruped", "pace", [1.3, 1.6, 2.0]),
     ("raibert-kangaroo", "hop", [2.0, 3.5, 5.0]),
 ]
 

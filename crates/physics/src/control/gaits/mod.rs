@@ -15,6 +15,7 @@ pub mod hopper_params;
 pub mod kangaroo_hop;
 pub mod make;
 pub mod origins;
+pub mod pace;
 pub mod parameters;
 pub mod start;
 pub mod table;

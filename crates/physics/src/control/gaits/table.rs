@@ -20,7 +20,7 @@ use std::sync::OnceLock;
 
 use crate::control::additions::Offered;
 use crate::control::gaits::gait::{Build, Start};
-use crate::control::gaits::{biped_gallop, biped_run, bound, kangaroo_hop, trot};
+use crate::control::gaits::{biped_gallop, biped_run, bound, kangaroo_hop, pace, trot};
 use crate::creatures::Species;
 
 /// One (species, gait) row of the table.
@@ -107,6 +107,16 @@ pub static GAITS: &[GaitRow] = &[
         tested_speeds_mps: (1.5, 2.8),
         tested_scales: (0.25, 1.0),
         offers: Offered::BOUND,
+    },
+    GaitRow {
+        species: Species::Quadruped,
+        gait: "pace",
+        build: pace::build::build,
+        start: Some(trot::start::start),
+        virtual_legs: &pace::PACE_PAIRS,
+        tested_speeds_mps: (1.3, 2.0),
+        tested_scales: (0.25, 4.0),
+        offers: Offered::NONE,
     },
     GaitRow {
         species: Species::Kangaroo,

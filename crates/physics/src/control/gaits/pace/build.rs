@@ -1,0 +1,28 @@
+//! The pace's controller built from a preset's physics section (its row of
+//! the gait table): the trot's state machine on the lateral pairs, with the
+//! pace's own parameters and the preset's by name.
+
+use gaitlab_core::preset::PhysicsParams;
+
+use crate::control::additions::Additions;
+use crate::control::gaits::builder::{Misfit, quadruped_legs, with_parameters};
+use crate::control::gaits::gait::Gait;
+use crate::control::gaits::pace::{PACE_PAIRS, pace_params};
+use crate::control::gaits::trot::QuadrupedRun;
+use crate::creatures::PhysicalCreature;
+
+/// The pace's controller.
+///
+/// # Errors
+/// Legs that are not the quadruped's; a parameter the pace lacks.
+pub fn build(
+    creature: &PhysicalCreature,
+    params: &PhysicsParams,
+    _additions: Additions,
+) -> Result<Box<dyn Gait>, Misfit> {
+    quadruped_legs(creature)?;
+    let p = with_parameters(pace_params(), params, "pace")?;
+    Ok(Box::new(
+        QuadrupedRun::new(p, creature).with_pairs(PACE_PAIRS),
+    ))
+}
