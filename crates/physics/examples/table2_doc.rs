@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::load_bundled;
 use gaitlab_physics::PhysicsDriver;
-use gaitlab_physics::control::gaits::table::gait_names;
+use gaitlab_physics::control::gaits::table::{gait_names, tested_speeds_mps};
 use gaitlab_physics::engine::table2::{compare, paper_speed_mps};
 
 const BEGIN: &str = "<!-- table2_doc:begin -->";
@@ -25,7 +25,11 @@ fn tables() -> Result<String, Box<dyn std::error::Error>> {
         for gait in gait_names(species) {
             let mut params = preset.scenario.physics.clone().ok_or("no physics")?;
             params.gait = Some((*gait).to_owned());
-            let speed = paper_speed_mps(gait).unwrap_or(params.speed_mps);
+            // The paper's speed; for a gait it does not tabulate, the
+            // preset's, moved into the gait's tested speeds.
+            let tested = tested_speeds_mps(species, gait).unwrap_or((0.0, f64::INFINITY));
+            let speed =
+                paper_speed_mps(gait).unwrap_or_else(|| params.speed_mps.clamp(tested.0, tested.1));
             params.speed_mps = speed;
             let mut driver = PhysicsDriver::with_params(&preset, params)?;
             driver.reset_after_fall = false;
