@@ -90,6 +90,23 @@ impl SpeedTrim {
     }
 }
 
+impl SpeedTrim {
+    /// [`SpeedTrim::stride_at_heading`] closing the stride `input` sees:
+    /// its time and centre of mass, the commanded speed and heading.
+    pub fn stride_at_input(
+        &mut self,
+        on: bool,
+        gain: f64,
+        velocity_scale: f64,
+        input: &crate::world::sim::ControlInput<'_>,
+    ) {
+        let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
+        let c = input.commands;
+        let (speed, heading) = (c.speed_mps, c.heading_rad);
+        self.stride_at_heading(on, gain, speed, velocity_scale, input.time, com, heading);
+    }
+}
+
 /// A position along one axis as a point, for [`SpeedTrim`] with
 /// `along = DVec3::Z` (the same bits as the scalar difference).
 #[must_use]

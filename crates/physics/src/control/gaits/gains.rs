@@ -79,7 +79,8 @@ macro_rules! tunable_gains {
 
 /// A family's tunable gains over its gaits' parameters: `biped P` — the run's
 /// and both gallops' leg spring, eq. 4's posture servo, eq. 3's gain and the
-/// swing servo, in `P`'s `hopper`; `quadruped …` — the trot's, bound's and
+/// swing servo, in `P`'s `hopper`, and the gait's own hop height, `P`'s
+/// `hop_height_m`; `quadruped …` — the trot's, bound's and
 /// gallop's leg spring, eq. 3's gain and eq. 4's pitch and roll servos, over
 /// the parameters `tunable_gains!` is given.
 #[macro_export]
@@ -90,6 +91,10 @@ macro_rules! family_gains {
             leg_stiffness => "N/m", leg_damping => "N·s/m", posture_kp => "N·m/rad",
             posture_kv => "N·m·s/rad", placement_gain_s => "s", swing_kp => "N·m/rad",
             swing_kv => "N·m·s/rad");
+
+        fn hop_height_m(&self) -> Option<f64> {
+            Some(self.params.hop_height_m)
+        }
     };
     (quadruped $($params:tt)*) => {
         $crate::tunable_gains!($($params)*;

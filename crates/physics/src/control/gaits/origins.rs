@@ -56,6 +56,68 @@ pub(crate) const fn row(
     }
 }
 
+/// `placement_gain_s`, eq. 3's gain, with the gait's own reason `why`.
+pub(crate) const fn placement_gain_s_row(why: &'static str) -> ControllerParam {
+    row(
+        "placement_gain_s",
+        "Foot placement gain k_ẋ (eq. 3)",
+        "s",
+        EQ3,
+        Origin::Open,
+        why,
+    )
+}
+
+/// `yaw_kp`, the lab's yaw servo in stance, with the gait's own reason `why`.
+pub(crate) const fn yaw_kp_row(why: &'static str) -> ControllerParam {
+    row(
+        "yaw_kp",
+        "Trunk yaw stiffness in stance",
+        TORSION,
+        LAB,
+        Origin::Lab,
+        why,
+    )
+}
+
+/// `flight_gain`, the lab's flight-time integrator, with the gait's own
+/// reason `why`.
+pub(crate) const fn flight_gain_row(why: &'static str) -> ControllerParam {
+    row(
+        "flight_gain",
+        "Flight-time integrator (thrust change per s of error)",
+        "m/s",
+        LAB,
+        Origin::Lab,
+        why,
+    )
+}
+
+/// `pitch_kp`, eq. 4's pitch stiffness, with the gait's own reason `why`.
+pub(crate) const fn pitch_kp_row(why: &'static str) -> ControllerParam {
+    row(
+        "pitch_kp",
+        "Pitch stiffness k_p (eq. 4)",
+        TORSION,
+        EQ4,
+        Origin::Open,
+        why,
+    )
+}
+
+/// `posture_force_ratio`, the lab's cap on eq. 4's foot force, with the
+/// gait's own reason `why`.
+pub(crate) const fn posture_force_ratio_row(why: &'static str) -> ControllerParam {
+    row(
+        "posture_force_ratio",
+        "Largest posture foot force, as a fraction of the spring's",
+        "",
+        LAB,
+        Origin::Lab,
+        why,
+    )
+}
+
 /// `a` then `b` as one array of `N = A + B` rows.
 pub(crate) const fn concat<const A: usize, const B: usize, const N: usize>(
     a: &[ControllerParam; A],

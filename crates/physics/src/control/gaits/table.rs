@@ -22,6 +22,7 @@ use crate::control::additions::Offered;
 use crate::control::gaits::gait::{Build, Start};
 use crate::control::gaits::{biped_gallop, biped_run, bound, kangaroo_hop, pace, trot};
 use crate::creatures::Species;
+use crate::creatures::Species::{Biped, Kangaroo, Quadruped};
 
 /// One (species, gait) row of the table.
 #[derive(Debug)]
@@ -46,88 +47,46 @@ pub struct GaitRow {
     pub offers: Offered,
 }
 
-/// Every gait of every model, each model's default gait first.
+impl GaitRow {
+    /// A row from its columns, in the table's order.
+    #[allow(clippy::too_many_arguments)]
+    const fn new(
+        species: Species,
+        gait: &'static str,
+        build: Build,
+        start: Option<Start>,
+        virtual_legs: &'static [[usize; 2]],
+        tested_speeds_mps: (f64, f64),
+        tested_scales: (f64, f64),
+        offers: Offered,
+    ) -> Self {
+        Self {
+            species,
+            gait,
+            build,
+            start,
+            virtual_legs,
+            tested_speeds_mps,
+            tested_scales,
+            offers,
+        }
+    }
+}
+
+/// Every gait of every model, each model's default gait first. Columns:
+/// species, gait, builder, own start (`None`: the preset's rest pose),
+/// virtual legs, tested speeds (m/s at scale 1), tested scales L, the lab's
+/// additions offered.
+#[rustfmt::skip]
 pub static GAITS: &[GaitRow] = &[
-    GaitRow {
-        species: Species::Biped,
-        gait: "run",
-        build: biped_run::build::build,
-        start: None,
-        virtual_legs: &[],
-        tested_speeds_mps: (1.0, 2.5),
-        tested_scales: (0.25, 4.0),
-        offers: Offered::BIPED_RUN,
-    },
-    GaitRow {
-        species: Species::Biped,
-        gait: "gallop",
-        build: biped_gallop::build::together_swing,
-        start: None,
-        virtual_legs: &[[0, 1]],
-        tested_speeds_mps: (1.0, 2.0),
-        tested_scales: (0.25, 4.0),
-        offers: Offered::BIPED_GALLOP,
-    },
-    GaitRow {
-        species: Species::Biped,
-        gait: "gallop_alternate",
-        build: biped_gallop::build::alternate_swing,
-        start: None,
-        virtual_legs: &[[0, 1]],
-        tested_speeds_mps: (1.0, 2.0),
-        tested_scales: (0.25, 4.0),
-        offers: Offered::BIPED_GALLOP,
-    },
-    GaitRow {
-        species: Species::Quadruped,
-        gait: "trot",
-        build: trot::build::build,
-        start: Some(trot::start::start),
-        virtual_legs: &trot::TROT_PAIRS,
-        tested_speeds_mps: (1.0, 2.3),
-        tested_scales: (0.25, 4.0),
-        offers: Offered::NONE,
-    },
-    GaitRow {
-        species: Species::Quadruped,
-        gait: "bound",
-        build: bound::build::bound,
-        start: Some(bound::start::start),
-        virtual_legs: &bound::PAIRS,
-        tested_speeds_mps: (1.5, 2.8),
-        tested_scales: (0.25, 4.0),
-        offers: Offered::BOUND,
-    },
-    GaitRow {
-        species: Species::Quadruped,
-        gait: "gallop",
-        build: bound::build::gallop,
-        start: Some(bound::start::start),
-        virtual_legs: &bound::PAIRS,
-        tested_speeds_mps: (1.5, 2.8),
-        tested_scales: (0.25, 1.0),
-        offers: Offered::BOUND,
-    },
-    GaitRow {
-        species: Species::Quadruped,
-        gait: "pace",
-        build: pace::build::build,
-        start: Some(trot::start::start),
-        virtual_legs: &pace::PACE_PAIRS,
-        tested_speeds_mps: (1.3, 2.0),
-        tested_scales: (0.25, 4.0),
-        offers: Offered::NONE,
-    },
-    GaitRow {
-        species: Species::Kangaroo,
-        gait: "hop",
-        build: kangaroo_hop::build::build,
-        start: Some(kangaroo_hop::start::start),
-        virtual_legs: &[],
-        tested_speeds_mps: (2.0, 5.0),
-        tested_scales: (0.25, 4.0),
-        offers: Offered::KANGAROO_HOP,
-    },
+    GaitRow::new(Biped, "run", biped_run::build::build, None, &[], (1.0, 2.5), (0.25, 4.0), Offered::BIPED_RUN),
+    GaitRow::new(Biped, "gallop", biped_gallop::build::build::<false>, None, &[[0, 1]], (1.0, 2.0), (0.25, 4.0), Offered::BIPED_GALLOP),
+    GaitRow::new(Biped, "gallop_alternate", biped_gallop::build::build::<true>, None, &[[0, 1]], (1.0, 2.0), (0.25, 4.0), Offered::BIPED_GALLOP),
+    GaitRow::new(Quadruped, "trot", trot::build::build, Some(trot::start::start), &trot::TROT_PAIRS, (1.0, 2.3), (0.25, 4.0), Offered::NONE),
+    GaitRow::new(Quadruped, "bound", bound::build::build::<false>, Some(bound::start::start), &bound::PAIRS, (1.5, 2.8), (0.25, 4.0), Offered::BOUND),
+    GaitRow::new(Quadruped, "gallop", bound::build::build::<true>, Some(bound::start::start), &bound::PAIRS, (1.5, 2.8), (0.25, 1.0), Offered::BOUND),
+    GaitRow::new(Quadruped, "pace", pace::build::build, Some(trot::start::start), &pace::PACE_PAIRS, (1.3, 2.0), (0.25, 4.0), Offered::NONE),
+    GaitRow::new(Kangaroo, "hop", kangaroo_hop::build::build, Some(kangaroo_hop::start::start), &[], (2.0, 5.0), (0.25, 4.0), Offered::KANGAROO_HOP),
 ];
 
 /// The row of `gait` of `species`; `None` for a gait the model does not have.

@@ -136,10 +136,6 @@ impl BipedGallop {
 impl Controller for BipedGallop {
     crate::family_gains!(biped BipedGallopParams);
 
-    fn hop_height_m(&self) -> Option<f64> {
-        Some(self.params.hop_height_m)
-    }
-
     fn phase_name(&self) -> &'static str {
         self.phase.name()
     }

@@ -113,11 +113,8 @@ impl BipedGallop {
             let error = (landing_height + hop) - self.apex_height;
             self.thrust = (self.thrust + p.hopper.hop_gain * error).clamp(0.0, 0.12 * l);
         }
-        let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
         let (on, gain) = (p.speed_trim, p.hopper.speed_integral_gain);
-        let v = self.plan.scale.velocity();
-        let c = input.commands;
-        (self.trim).stride_at_heading(on, gain, c.speed_mps, v, input.time, com, c.heading_rad);
+        (self.trim).stride_at_input(on, gain, self.plan.scale.velocity(), input);
         self.apex_height = f64::NEG_INFINITY;
         self.descending = false;
     }

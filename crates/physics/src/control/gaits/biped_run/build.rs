@@ -1,6 +1,6 @@
 //! The biped run's controller built from a preset's physics section (its
-//! row of the gait table): the preset's speed and hop height, its controller
-//! parameters by name and the lab's additions it runs with.
+//! row of the gait table): its controller parameters by name and the lab's
+//! additions it runs with.
 
 use gaitlab_core::preset::PhysicsParams;
 

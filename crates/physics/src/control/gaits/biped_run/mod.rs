@@ -112,11 +112,8 @@ impl BipedRun {
             }
             self.liftoff_height = trunk_y;
             // Speed over the last step against the desired speed.
-            let com = crate::dynamics::energy::center_of_mass(&input.creature.model, input.data);
             let (on, gain) = (p.speed_trim, p.hopper.speed_integral_gain);
-            let v = self.plan.scale.velocity();
-            let c = input.commands;
-            (self.trim).stride_at_heading(on, gain, c.speed_mps, v, input.time, com, c.heading_rad);
+            (self.trim).stride_at_input(on, gain, self.plan.scale.velocity(), input);
             self.apex_height = f64::NEG_INFINITY;
             self.active = 1 - self.active;
             self.phase = Phase::Flight;
@@ -127,10 +124,6 @@ impl BipedRun {
 
 impl Controller for BipedRun {
     crate::family_gains!(biped BipedRunParams);
-
-    fn hop_height_m(&self) -> Option<f64> {
-        Some(self.params.hop_height_m)
-    }
 
     fn phase_name(&self) -> &'static str {
         self.phase.name()

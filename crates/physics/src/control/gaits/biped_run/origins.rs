@@ -6,8 +6,9 @@ use gaitlab_core::params::Origin;
 use crate::control::gaits::biped_run::BipedRun;
 use crate::control::gaits::gait::Gait;
 use crate::control::gaits::origins::{
-    ControllerParam, EQ1, EQ2_THRUST, EQ3, EQ4, EQ5, EQ5_SWING, FIG4_FLIGHT, LAB, LEG_TRAVEL_M,
-    MAX_HIP_TORQUE, SPEED_INTEGRAL_GAIN, TORSION, TORSION_DAMPING, row,
+    ControllerParam, EQ1, EQ2_THRUST, EQ4, EQ5, EQ5_SWING, FIG4_FLIGHT, LAB, LEG_TRAVEL_M,
+    MAX_HIP_TORQUE, SPEED_INTEGRAL_GAIN, TORSION, TORSION_DAMPING, placement_gain_s_row, row,
+    yaw_kp_row,
 };
 
 /// The one-legged hopper's rows the biped run and both biped gallops share
@@ -62,12 +63,7 @@ pub(crate) const HOPPER: [ControllerParam; 20] = [
         Origin::Lab,
         "The paper predicts the hop by eq. 2; correcting the thrust from each apex is the lab's",
     ),
-    row(
-        "placement_gain_s",
-        "Foot placement gain k_ẋ (eq. 3)",
-        "s",
-        EQ3,
-        Origin::Open,
+    placement_gain_s_row(
         "eq. 3's gain; the paper prints none: 0.12 s leaves 4–6 % (inside its 10 %)",
     ),
     SPEED_INTEGRAL_GAIN,
@@ -103,12 +99,7 @@ pub(crate) const HOPPER: [ControllerParam; 20] = [
         Origin::Open,
         "eq. 4's k_v through the active hip; the paper prints no value",
     ),
-    row(
-        "yaw_kp",
-        "Trunk yaw stiffness in stance",
-        TORSION,
-        LAB,
-        Origin::Lab,
+    yaw_kp_row(
         "A yaw servo toward the heading through the hips' yaw joints; eq. 4 servoes pitch and roll",
     ),
     row(

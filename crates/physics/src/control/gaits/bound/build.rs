@@ -1,7 +1,7 @@
 //! The bound's and the gallop's controller built from a preset's physics
 //! section (their rows of the gait table): one state machine in two styles,
-//! with the preset's speed and hop height, its controller parameters by
-//! name and the speed trim if it runs with it.
+//! with its controller parameters by name and the speed trim if it runs
+//! with it.
 
 use gaitlab_core::preset::PhysicsParams;
 
@@ -12,36 +12,20 @@ use crate::control::gaits::builder::{Misfit, quadruped_legs, with_parameters};
 use crate::control::gaits::gait::Gait;
 use crate::creatures::PhysicalCreature;
 
-/// The bound.
+/// The gallop when `GALLOP`, else the bound.
 ///
 /// # Errors
-/// Legs that are not the quadruped's; a parameter the bound lacks.
-pub fn bound(
+/// Legs that are not the quadruped's; a parameter the gait lacks.
+pub fn build<const GALLOP: bool>(
     creature: &PhysicalCreature,
     params: &PhysicsParams,
     additions: Additions,
 ) -> Result<Box<dyn Gait>, Misfit> {
-    build(creature, params, additions, BoundStyle::Bound)
-}
-
-/// The gallop.
-///
-/// # Errors
-/// Legs that are not the quadruped's; a parameter the gallop lacks.
-pub fn gallop(
-    creature: &PhysicalCreature,
-    params: &PhysicsParams,
-    additions: Additions,
-) -> Result<Box<dyn Gait>, Misfit> {
-    build(creature, params, additions, BoundStyle::Gallop)
-}
-
-fn build(
-    creature: &PhysicalCreature,
-    params: &PhysicsParams,
-    additions: Additions,
-    style: BoundStyle,
-) -> Result<Box<dyn Gait>, Misfit> {
+    let style = if GALLOP {
+        BoundStyle::Gallop
+    } else {
+        BoundStyle::Bound
+    };
     quadruped_legs(creature)?;
     let p = QuadrupedBoundParams {
         style,

@@ -8,8 +8,8 @@ use crate::control::gaits::gait::Gait;
 use crate::control::gaits::origins::{
     ControllerParam, EQ4, FIG4_FLIGHT, GALLOP, LAB, LAB_TRIM, LEG_DAMPING, LEG_STIFFNESS,
     LEG_TRAVEL_M, MAX_HIP_TORQUE, MAX_THRUST_M, PITCH_KV, PLACEMENT_GAIN_S, ROLL_KP, ROLL_KV,
-    SPEED_INTEGRAL_GAIN, STANDING, SWING_KP, SWING_KV, SWING_ROLL_FOLLOW, THRUST_M, TORSION,
-    YAW_KV, row,
+    SPEED_INTEGRAL_GAIN, STANDING, SWING_KP, SWING_KV, SWING_ROLL_FOLLOW, THRUST_M, YAW_KV,
+    flight_gain_row, pitch_kp_row, posture_force_ratio_row, row, yaw_kp_row,
 };
 
 /// [`QuadrupedBoundParams`](crate::control::gaits::bound::params::QuadrupedBoundParams)' parameters (bound and gallop), in
@@ -68,12 +68,7 @@ pub const ORIGINS: &[ControllerParam] = &[
         Origin::Paper,
         "Table 2's animated bound flies 0.22 + 0.03 = 0.25 s a stride (the bundled bound's)",
     ),
-    row(
-        "flight_gain",
-        "Flight-time integrator (thrust change per s of error)",
-        "m/s",
-        LAB,
-        Origin::Lab,
+    flight_gain_row(
         "An integrator on the stride's flight-time error; the paper does not say how it sets eq. 2",
     ),
     row(
@@ -158,32 +153,17 @@ pub const ORIGINS: &[ControllerParam] = &[
         Origin::Open,
         "eq. 4's ϕ_d for the bound; the paper prints none (0: level)",
     ),
-    row(
-        "pitch_kp",
-        "Pitch stiffness k_p (eq. 4)",
-        TORSION,
-        EQ4,
-        Origin::Open,
+    pitch_kp_row(
         "eq. 4's k_p, weak so the bound's pitching stays the gait's own; no value printed",
     ),
     PITCH_KV,
     ROLL_KP,
     ROLL_KV,
-    row(
-        "yaw_kp",
-        "Trunk yaw stiffness in stance",
-        TORSION,
-        LAB,
-        Origin::Lab,
+    yaw_kp_row(
         "A yaw servo toward the heading by fore–aft foot forces; eq. 4 servoes pitch and roll",
     ),
     YAW_KV,
-    row(
-        "posture_force_ratio",
-        "Largest posture foot force, as a fraction of the spring's",
-        "",
-        LAB,
-        Origin::Lab,
+    posture_force_ratio_row(
         "Caps eq. 4's torques at a friction-safe force; the paper's feet never slip",
     ),
     row(

@@ -1,7 +1,6 @@
 //! The kangaroo hop's controller built from a preset's physics section (its
-//! row of the gait table): the preset's speed, hop height and first
-//! obstacle (the jump), its controller parameters by name and the lab's
-//! additions it runs with.
+//! row of the gait table): the preset's first obstacle (the jump), its
+//! controller parameters by name and the lab's additions it runs with.
 
 use gaitlab_core::preset::PhysicsParams;
 

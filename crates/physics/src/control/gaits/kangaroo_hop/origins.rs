@@ -6,8 +6,8 @@ use gaitlab_core::params::Origin;
 use crate::control::gaits::gait::Gait;
 use crate::control::gaits::kangaroo_hop::KangarooHop;
 use crate::control::gaits::origins::{
-    ACTUATORS, ControllerParam, EQ1, EQ3, EQ4, EQ5, JUMP, KANGAROO, LAB, LAB_RAMP, LAB_TAIL,
-    LAB_TRIM, SPEED_INTEGRAL_GAIN, TORSION, TORSION_DAMPING, row,
+    ACTUATORS, ControllerParam, EQ1, EQ4, EQ5, JUMP, KANGAROO, LAB, LAB_RAMP, LAB_TAIL, LAB_TRIM,
+    SPEED_INTEGRAL_GAIN, TORSION, TORSION_DAMPING, placement_gain_s_row, row,
 };
 
 /// [`KangarooHopParams`](crate::control::gaits::kangaroo_hop::params::KangarooHopParams)' parameters, in [`NamedParameters::NAMES`](crate::control::gaits::parameters::NamedParameters::NAMES) order.
@@ -69,12 +69,7 @@ pub const ORIGINS: &[ControllerParam] = &[
         Origin::Lab,
         "A bound the lab puts on eq. 2's thrust step; the paper states none",
     ),
-    row(
-        "placement_gain_s",
-        "Foot placement gain k_ẋ (eq. 3)",
-        "s",
-        EQ3,
-        Origin::Open,
+    placement_gain_s_row(
         "eq. 3's gain; the paper prints none (the bundled kangaroo's 0.06 s is the tuner's)",
     ),
     row(

@@ -1,14 +1,14 @@
 //! The pace's controller built from a preset's physics section (its row of
 //! the gait table): the trot's state machine on the lateral pairs, with the
-//! pace's own parameters and the preset's by name.
+//! pace's own parameters and the preset's by name over them.
 
 use gaitlab_core::preset::PhysicsParams;
 
 use crate::control::additions::Additions;
-use crate::control::gaits::builder::{Misfit, quadruped_legs, with_parameters};
+use crate::control::gaits::builder::Misfit;
 use crate::control::gaits::gait::Gait;
 use crate::control::gaits::pace::{PACE_PAIRS, pace_params};
-use crate::control::gaits::trot::QuadrupedRun;
+use crate::control::gaits::trot::build::on_pairs;
 use crate::creatures::PhysicalCreature;
 
 /// The pace's controller.
@@ -20,9 +20,5 @@ pub fn build(
     params: &PhysicsParams,
     _additions: Additions,
 ) -> Result<Box<dyn Gait>, Misfit> {
-    quadruped_legs(creature)?;
-    let p = with_parameters(pace_params(), params, "pace")?;
-    Ok(Box::new(
-        QuadrupedRun::new(p, creature).with_pairs(PACE_PAIRS),
-    ))
+    on_pairs(creature, params, "pace", pace_params(), PACE_PAIRS)
 }

@@ -1,14 +1,15 @@
 //! The trot's controller built from a preset's physics section (its row of
-//! the gait table): the preset's speed and hop height and its controller
-//! parameters by name. The trot offers none of the lab's additions.
+//! the gait table): its controller parameters by name over the trot's own.
+//! The trot offers none of the lab's additions. [`on_pairs`] builds the same
+//! state machine on other virtual legs (the pace's).
 
 use gaitlab_core::preset::PhysicsParams;
 
 use crate::control::additions::Additions;
 use crate::control::gaits::builder::{Misfit, quadruped_legs, with_parameters};
 use crate::control::gaits::gait::Gait;
-use crate::control::gaits::trot::QuadrupedRun;
 use crate::control::gaits::trot::params::QuadrupedRunParams;
+use crate::control::gaits::trot::{QuadrupedRun, TROT_PAIRS};
 use crate::creatures::PhysicalCreature;
 
 /// The trot's controller.
@@ -20,7 +21,23 @@ pub fn build(
     params: &PhysicsParams,
     _additions: Additions,
 ) -> Result<Box<dyn Gait>, Misfit> {
+    let own = QuadrupedRunParams::default();
+    on_pairs(creature, params, "trot", own, TROT_PAIRS)
+}
+
+/// The trot's state machine on the virtual legs `pairs`, for `gait`: its
+/// `own` parameters with the preset's by name over them.
+///
+/// # Errors
+/// Legs that are not the quadruped's; a parameter the gait lacks.
+pub fn on_pairs(
+    creature: &PhysicalCreature,
+    params: &PhysicsParams,
+    gait: &str,
+    own: QuadrupedRunParams,
+    pairs: [[usize; 2]; 2],
+) -> Result<Box<dyn Gait>, Misfit> {
     quadruped_legs(creature)?;
-    let p = with_parameters(QuadrupedRunParams::default(), params, "trot")?;
-    Ok(Box::new(QuadrupedRun::new(p, creature)))
+    let p = with_parameters(own, params, gait)?;
+    Ok(Box::new(QuadrupedRun::new(p, creature).with_pairs(pairs)))
 }

@@ -7,7 +7,8 @@ use crate::control::gaits::gait::Gait;
 use crate::control::gaits::origins::{
     ControllerParam, EQ4, FIG4_FLIGHT, LAB, LEG_DAMPING, LEG_STIFFNESS, LEG_TRAVEL_M,
     MAX_HIP_TORQUE, MAX_THRUST_M, PITCH_KV, PLACEMENT_GAIN_S, ROLL_KP, ROLL_KV, STANDING, SWING_KP,
-    SWING_KV, SWING_ROLL_FOLLOW, THRUST_M, TORSION, YAW_KV, row,
+    SWING_KV, SWING_ROLL_FOLLOW, THRUST_M, YAW_KV, flight_gain_row, pitch_kp_row,
+    posture_force_ratio_row, row, yaw_kp_row,
 };
 use crate::control::gaits::trot::QuadrupedRun;
 
@@ -67,14 +68,7 @@ pub const ORIGINS: &[ControllerParam] = &[
         "eq. 3 uses the last measured stance; before one, Table 2's animated trot stance, 0.09 s",
     ),
     PLACEMENT_GAIN_S,
-    row(
-        "pitch_kp",
-        "Pitch stiffness k_p (eq. 4)",
-        TORSION,
-        EQ4,
-        Origin::Open,
-        "eq. 4's k_p; the paper prints no value",
-    ),
+    pitch_kp_row("eq. 4's k_p; the paper prints no value"),
     PITCH_KV,
     ROLL_KP,
     ROLL_KV,
@@ -102,29 +96,14 @@ pub const ORIGINS: &[ControllerParam] = &[
         Origin::Lab,
         "A term added to eq. 4's ϕ_d (0 by default); the paper's ϕ_d is one angle",
     ),
-    row(
-        "posture_force_ratio",
-        "Largest posture foot force, as a fraction of the spring's",
-        "",
-        LAB,
-        Origin::Lab,
+    posture_force_ratio_row(
         "Caps eq. 4's torques at a friction-safe force (∞: none); the paper's feet never slip",
     ),
-    row(
-        "flight_gain",
-        "Flight-time integrator (thrust change per s of error)",
-        "m/s",
-        LAB,
-        Origin::Lab,
+    flight_gain_row(
         "An integrator on each flight's time error; the paper does not say how it sets eq. 2",
     ),
     MAX_THRUST_M,
-    row(
-        "yaw_kp",
-        "Trunk yaw stiffness in stance",
-        TORSION,
-        LAB,
-        Origin::Lab,
+    yaw_kp_row(
         "A yaw servo toward the heading through the stance hips; eq. 4 servoes pitch and roll",
     ),
     YAW_KV,
