@@ -592,6 +592,77 @@ fn the_panel_pushes_forward_draws_the_push_and_judges_it() {
     );
 }
 
+/// A drag that starts on the trunk pushes the creature the way it was
+/// dragged, by its length, instead of turning the camera; a drag elsewhere
+/// turns the camera and pushes nothing.
+#[test]
+fn dragging_the_trunk_pushes_it_and_leaves_the_camera() {
+    let mut harness = poda_harness("raibert-quadruped", 1400.0);
+    harness.run_steps(30);
+    let lab = harness.state_mut();
+    lab.set_paused(false);
+    for _ in 0..60 {
+        lab.advance(1.0 / 60.0);
+    }
+    lab.set_paused(true);
+    harness.run_steps(30);
+    let state: serde_json::Value =
+        serde_json::from_str(&harness.state().state_json()).expect("state JSON");
+    let at = &state["layout"]["trunk_pt"];
+    let trunk = egui::pos2(
+        at[0].as_f64().expect("trunk x") as f32,
+        at[1].as_f64().expect("trunk y") as f32,
+    );
+    let pushes = |harness: &Harness<'static, Lab>| {
+        harness
+            .state()
+            .driver()
+            .physics()
+            .map(|d| d.pushes().to_vec())
+            .expect("physics")
+    };
+    // A drag elsewhere in the view turns the camera and pushes nothing.
+    let before = harness.state().camera();
+    let elsewhere = trunk + egui::vec2(0.0, 150.0);
+    harness.drag_at(elsewhere);
+    harness.hover_at(elsewhere + egui::vec2(40.0, 0.0));
+    harness.hover_at(elsewhere + egui::vec2(80.0, 0.0));
+    harness.drop_at(elsewhere + egui::vec2(80.0, 0.0));
+    harness.run_steps(2);
+    assert!(pushes(&harness).is_empty());
+    let camera = harness.state().camera();
+    assert!((camera.yaw - before.yaw).abs() > 0.3, "the camera turned");
+    // Re-read the trunk: the camera turned.
+    let state: serde_json::Value =
+        serde_json::from_str(&harness.state().state_json()).expect("state JSON");
+    let at = &state["layout"]["trunk_pt"];
+    let trunk = egui::pos2(
+        at[0].as_f64().expect("trunk x") as f32,
+        at[1].as_f64().expect("trunk y") as f32,
+    );
+    // 100 points straight up the screen: 0.3 m/s away from the camera.
+    harness.drag_at(trunk + egui::vec2(2.0, 2.0));
+    harness.hover_at(trunk + egui::vec2(2.0, -40.0));
+    harness.hover_at(trunk + egui::vec2(2.0, -98.0));
+    harness.run_steps(1);
+    harness.drop_at(trunk + egui::vec2(2.0, -98.0));
+    harness.run_steps(2);
+    let got = pushes(&harness);
+    assert_eq!(got.len(), 1, "{got:?}");
+    let [x, z] = got[0].dv_mps;
+    assert!((x.hypot(z) - 0.3).abs() < 0.01, "{x} {z}");
+    let away = camera.forward();
+    let away = glam::DVec2::new(f64::from(away.x), f64::from(away.z)).normalize();
+    assert!((x * away.x + z * away.y) > 0.29, "along the view: {x} {z}");
+    // The camera did not turn (it may follow the creature).
+    let after = harness.state().camera();
+    assert_eq!(
+        (after.yaw, after.pitch, after.distance),
+        (camera.yaw, camera.pitch, camera.distance),
+        "the camera did not turn"
+    );
+}
+
 #[test]
 fn the_physics_plots_each_hold_one_unit_and_open_on_a_phone() {
     // Wide: four plots, one unit each, their axes labelled.

@@ -101,6 +101,17 @@ impl AnyDriver {
         Some((head - dv * PUSH_ARROW_M_PER_MPS, head))
     }
 
+    /// Where a drag grabs the physics creature to push it: the middle of
+    /// its trunk in the world (metres), and whether it can be pushed
+    /// sideways (a planar creature, the kangaroo, moves forward and up
+    /// only); `None` for an engine without a trunk.
+    #[must_use]
+    pub fn push_grab(&self) -> Option<(DVec3, bool)> {
+        let driver = self.physics()?;
+        let (a, b, _) = driver.trunk_capsule()?;
+        Some(((a + b) / 2.0, driver.sim().creature.model.free_base()))
+    }
+
     /// The boxes on the physics creature's ground, each `(lowest corner,
     /// highest corner)` in the world, metres.
     pub fn obstacle_boxes(&self) -> impl Iterator<Item = (DVec3, DVec3)> + '_ {

@@ -124,6 +124,9 @@ pub struct LayoutState {
     pub controls_open: bool,
     /// The controls button's rectangle, points.
     pub controls_button_pt: [f32; 4],
+    /// The physics creature's trunk on screen, points `[x, y]`: a drag
+    /// from there pushes it (`null`: no physics creature in the view).
+    pub trunk_pt: Option<[f32; 2]>,
     /// Whether the phone layout's plots drawer is open.
     pub plots_open: bool,
     /// Whether the help window is open.
@@ -383,6 +386,7 @@ impl State {
                 narrow: lab.layout.narrow,
                 controls_open: lab.layout.controls_open,
                 controls_button_pt: lab.layout.controls_button_pt,
+                trunk_pt: lab.layout.trunk_pt,
                 plots_open: lab.layout.plots_open,
                 help_open: lab.layout.help_open,
                 lesson_note_open: lab.layout.lesson_note_open,

@@ -34,6 +34,9 @@ pub struct Layout {
     pub dark_mode: bool,
     /// The 3-D view's rectangle on the canvas, physical pixels `[x, y, w, h]`.
     pub view_rect_px: [f32; 4],
+    /// The physics creature's trunk on screen, points `[x, y]`: where a drag
+    /// grabs it to push it (`None`: no physics creature in the single view).
+    pub trunk_pt: Option<[f32; 2]>,
 }
 
 impl Default for Layout {
@@ -52,6 +55,7 @@ impl Default for Layout {
             controls_button_pt: [0.0; 4],
             dark_mode: true,
             view_rect_px: [0.0; 4],
+            trunk_pt: None,
         }
     }
 }

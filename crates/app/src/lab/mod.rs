@@ -69,6 +69,8 @@ pub struct Lab {
     pub(crate) video: VideoStatus,
     /// The layout as last drawn.
     pub(crate) layout: Layout,
+    /// A drag on the physics creature's trunk, pushing it.
+    pub(crate) push_drag: crate::render::push_drag::PushDrag,
     /// The side-by-side IK comparison, when one runs (it replaces the single view).
     pub(crate) compare: Option<crate::compare::Comparison>,
     /// The history scrubber's stored poses and keyframes.
@@ -105,6 +107,7 @@ impl Lab {
             outbox: Outbox::default(),
             video: VideoStatus::default(),
             layout: Layout::default(),
+            push_drag: crate::render::push_drag::PushDrag::default(),
             compare: None,
             rewind: rewind::Rewind::default(),
             editor: crate::editor::PresetEditor::default(),
@@ -144,6 +147,12 @@ impl Lab {
     #[must_use]
     pub fn driver(&self) -> &AnyDriver {
         &self.stage.driver
+    }
+
+    /// The 3-D view's camera as last moved.
+    #[must_use]
+    pub fn camera(&self) -> crate::render::Camera {
+        self.camera
     }
 
     /// The single view.

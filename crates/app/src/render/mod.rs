@@ -12,12 +12,14 @@
 //!   once at start-up turns the wgpu path on.
 //! - [`mesh`]: the unit capsule mesh every solid is instanced from.
 //! - [`gait_overlay`]: PODA footprints, planned footholds and the body path on the ground.
+//! - [`push_drag`]: a drag on the physics creature's trunk pushes it.
 
 pub mod camera;
 pub mod gait_overlay;
 pub mod gpu;
 pub mod mesh;
 pub mod physics_overlay;
+pub mod push_drag;
 pub mod scene;
 pub mod support_overlay;
 pub mod viewport;

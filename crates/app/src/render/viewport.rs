@@ -10,6 +10,7 @@ use glam::{Mat4, Vec3, Vec4};
 
 use super::camera::Camera;
 use super::gpu::{self, SceneCallback, ViewStyle};
+use super::push_drag::PushDrag;
 use super::scene::{GROUND_Y, Scene, SceneFrame};
 use crate::view::ViewOptions;
 
@@ -31,9 +32,56 @@ pub fn show(
     view: &ViewOptions,
 ) -> egui::Response {
     let (rect, response) = allocate(ui);
-    steer(ui, &response, aspect(rect), scene, camera, view);
+    steer(ui, &response, aspect(rect), scene, camera, view, true);
     draw(ui, rect, response.id.value(), scene, camera, view);
     response
+}
+
+/// [`show`] with the physics creature's trunk at `trunk` (world metres, and
+/// whether it can be pushed sideways) to grab and push ([`PushDrag`]): a
+/// drag that starts on it pushes instead of turning the camera. Returns the
+/// view and the push a released drag asks for, world `[x, z]` m/s.
+pub fn show_pushable(
+    ui: &mut egui::Ui,
+    scene: &Scene,
+    camera: &mut Camera,
+    view: &ViewOptions,
+    grab: &mut PushDrag,
+    trunk: Option<(Vec3, bool)>,
+) -> (egui::Response, Option<[f64; 2]>) {
+    let (rect, response) = allocate(ui);
+    let sideways = trunk.is_some_and(|(_, sideways)| sideways);
+    let on_screen = trunk.and_then(|(p, _)| screen_point(camera, rect, p));
+    let pushed = grab.update(&response, on_screen, camera, sideways);
+    let held = grab.is_held() || pushed.is_some();
+    steer(ui, &response, aspect(rect), scene, camera, view, !held);
+    draw(ui, rect, response.id.value(), scene, camera, view);
+    if grab.is_held() {
+        let pointer = ui.input(|i| i.pointer.latest_pos());
+        let color = color32(super::physics_overlay::PUSH_COLOR);
+        grab.paint(
+            &ui.painter().with_clip_rect(rect),
+            pointer,
+            camera,
+            sideways,
+            color,
+        );
+        ui.ctx().set_cursor_icon(egui::CursorIcon::Grabbing);
+    } else if on_screen.is_some_and(|at| {
+        response
+            .hover_pos()
+            .is_some_and(|p| p.distance(at) <= super::push_drag::GRAB_RADIUS_PT)
+    }) {
+        ui.ctx().set_cursor_icon(egui::CursorIcon::Grab);
+    }
+    (response, pushed)
+}
+
+/// Where the world point `p` (metres) is on screen in a view `rect` seen
+/// through `camera`; `None` behind the near plane.
+#[must_use]
+pub fn screen_point(camera: &Camera, rect: Rect, p: Vec3) -> Option<Pos2> {
+    Projector::new(rect, camera).point(p).map(|(at, _)| at)
 }
 
 /// Shows several scenes through one shared camera, side by side: 2 panes split
@@ -50,7 +98,7 @@ pub fn show_split(
     let (rect, response) = allocate(ui);
     if let Some((first, _, _)) = panes.first() {
         let pane = split_rects(rect, panes.len())[0];
-        steer(ui, &response, aspect(pane), first, camera, view);
+        steer(ui, &response, aspect(pane), first, camera, view, true);
     }
     for (i, ((scene, label, colour), pane)) in
         panes.iter().zip(split_rects(rect, panes.len())).enumerate()
@@ -146,8 +194,9 @@ fn aspect(rect: Rect) -> f32 {
     rect.width() / rect.height().max(1.0)
 }
 
-/// Gestures, framing (first sight, double click, new preset: for a view of
-/// width / height `aspect`) and follow mode for the camera.
+/// Gestures (when `gestures`: not while a drag pushes the trunk), framing
+/// (first sight, double click, new preset: for a view of width / height
+/// `aspect`) and follow mode for the camera.
 fn steer(
     ui: &egui::Ui,
     response: &egui::Response,
@@ -155,15 +204,16 @@ fn steer(
     scene: &Scene,
     camera: &mut Camera,
     view: &ViewOptions,
+    gestures: bool,
 ) {
     camera.perspective = view.perspective;
-    if camera.handle_input(response) {
+    if gestures && camera.handle_input(response) {
         ui.ctx().request_repaint();
     }
     if let Some(bounds) = scene.bounds() {
         camera.keep_outside(&bounds);
     }
-    if response.dragged() {
+    if gestures && response.dragged() {
         ui.ctx().set_cursor_icon(egui::CursorIcon::Grabbing);
     }
     if !camera.framed

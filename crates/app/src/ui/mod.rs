@@ -99,6 +99,7 @@ impl Lab {
             self.recording_indicator(ui);
             let rect = match &self.compare {
                 Some(compare) => {
+                    self.layout.trunk_pt = None;
                     let labels: Vec<String> = compare
                         .views()
                         .iter()
@@ -131,13 +132,25 @@ impl Lab {
                     }
                 }
                 None => {
-                    viewport::show(
+                    let grab = self.stage.driver.push_grab();
+                    let trunk = grab.map(|(p, sideways)| (p.as_vec3(), sideways));
+                    let (response, pushed) = viewport::show_pushable(
                         ui,
                         &self.stage.scene,
                         &mut self.camera,
                         &self.session.settings.view,
-                    )
-                    .rect
+                        &mut self.push_drag,
+                        trunk,
+                    );
+                    self.layout.trunk_pt = trunk
+                        .and_then(|(p, _)| viewport::screen_point(&self.camera, response.rect, p))
+                        .map(|at| [at.x, at.y]);
+                    if let Some(dv) = pushed
+                        && let Err(error) = self.push(dv)
+                    {
+                        self.report_error(error);
+                    }
+                    response.rect
                 }
             };
             let ppp = ui.ctx().pixels_per_point();

@@ -328,7 +328,8 @@ fn push_row(ui: &mut egui::Ui, view: &PushView) -> Option<[f64; 2]> {
             .on_hover_text(
                 "A lab experiment (the paper pushes nothing): the whole creature's velocity \
              changes at once by the push. It recovered if it has not fallen 5 s later and \
-             runs within 10 % of the desired speed (docs/physics.md, \"Pushes\")",
+             runs within 10 % of the desired speed (docs/physics.md, \"Pushes\"). Or drag \
+             the trunk in the view: the push follows the drag, 0.3 m/s per 100 points",
             );
         let mut directions = vec![("forward", 1.0, 0.0), ("back", -1.0, 0.0)];
         if view.steerable {
