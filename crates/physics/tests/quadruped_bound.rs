@@ -89,7 +89,7 @@ fn driver_routes_bound_and_gallop_to_the_pair_controller() {
         assert_eq!(d.gait(), g);
         d.step(1.0 / 60.0);
     }
-    assert!(d.set_gait("pace").is_err());
+    assert!(d.set_gait("amble").is_err());
 }
 
 #[test]

@@ -15,6 +15,7 @@ use crate::control::gaits::controller::GaitController;
 use crate::control::gaits::kangaroo_hop::KangarooHop;
 use crate::control::gaits::kangaroo_hop::start as hop_start;
 use crate::control::laws::phase::Phase;
+use crate::control::laws::scale::Scale;
 use crate::engine::metrics::GaitRecorder;
 use crate::world::sim::Sim;
 
@@ -45,7 +46,7 @@ pub fn on_cycle(
     speed_mps: f64,
 ) -> Option<Result<(Sim, GaitController), String>> {
     let hop = controller.get::<KangarooHop>()?;
-    let root_l = sim.creature.scale.sqrt();
+    let root_l = Scale::new(sim.creature.scale).time();
     let mut run = sim.clone();
     run.terrain.obstacles.clear();
     run.time = 0.0;

@@ -16,6 +16,7 @@ use crate::control::gaits::kangaroo_hop::KangarooHop;
 use crate::control::gaits::kangaroo_hop::kangaroo_ground;
 use crate::control::gaits::make::make_controller;
 use crate::control::gaits::table::gait_names;
+use crate::control::laws::scale::Scale;
 use crate::creatures::Species;
 use crate::dynamics::model::Joint as BodyJoint;
 use crate::engine::consistency;
@@ -164,7 +165,7 @@ impl PhysicsDriver {
         let start_q: Vec<f64> = skeleton.rest_values();
         let start_root = preset.root_position * l;
         let options = SimOptions {
-            dt: params.dt_s * l.sqrt(),
+            dt: params.dt_s * Scale::new(l).time(),
             control_every: params.control_every,
             ..SimOptions::default()
         };
@@ -191,9 +192,10 @@ impl PhysicsDriver {
         }
         if sim.creature.model.free_base() {
             sim.data.base_position = start_root;
-            sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, params.speed_mps * l.sqrt());
+            sim.data.base_velocity.linear =
+                DVec3::new(0.0, 0.0, params.speed_mps * Scale::new(l).velocity());
         } else if let Some(v) = sim.data.qd.first_mut() {
-            *v = params.speed_mps * l.sqrt();
+            *v = params.speed_mps * Scale::new(l).velocity();
         }
         sim.data.q.copy_from_slice(&start_q);
         controller.start(&mut sim, params.speed_mps);
@@ -230,7 +232,12 @@ impl PhysicsDriver {
             skeleton,
             start_root,
 
-            recorder: GaitRecorder::new(legs, params.speed_mps * l.sqrt(), 0.0, 3.0 * l.sqrt()),
+            recorder: GaitRecorder::new(
+                legs,
+                params.speed_mps * Scale::new(l).velocity(),
+                0.0,
+                3.0 * Scale::new(l).time(),
+            ),
             additions: controller.additions(),
             params,
             running_gait: gait.clone(),
@@ -392,7 +399,7 @@ impl PhysicsDriver {
         let legs = self.sim.creature.legs.len();
         self.recorder = GaitRecorder::new(
             legs,
-            self.params.speed_mps * self.params.scale.sqrt(),
+            self.params.speed_mps * Scale::new(self.params.scale).velocity(),
             0.0,
             self.sim.time,
         );
@@ -488,7 +495,7 @@ impl PhysicsDriver {
             *v += dv_mps[1];
         }
         if self.pushes.len() < MAX_PUSHES {
-            let desired = self.params.speed_mps * self.params.scale.sqrt();
+            let desired = self.params.speed_mps * Scale::new(self.params.scale).velocity();
             let forward = crate::control::laws::attitude::heading_forward(self.heading());
             self.pushes
                 .push(Push::new(self.run_time_s(), dv_mps, desired, forward));
@@ -541,7 +548,7 @@ impl PhysicsDriver {
         check_speed_mps("speed_mps", speed_mps)?;
         self.params.speed_mps = speed_mps;
         self.sim.commands.speed_mps = speed_mps;
-        self.recorder.speed_desired_mps = speed_mps * self.params.scale.sqrt();
+        self.recorder.speed_desired_mps = speed_mps * Scale::new(self.params.scale).velocity();
         Ok(())
     }
 
@@ -807,9 +814,9 @@ impl PhysicsDriver {
         let legs = self.sim.creature.legs.len();
         self.recorder = GaitRecorder::new(
             legs,
-            self.params.speed_mps * self.params.scale.sqrt(),
+            self.params.speed_mps * Scale::new(self.params.scale).velocity(),
             0.0,
-            3.0 * self.params.scale.sqrt(),
+            3.0 * Scale::new(self.params.scale).time(),
         );
         // Only the kangaroo's hop starts on its cycle, and it is the
         // kangaroo's one gait: the stored controller is the gait's.
@@ -866,7 +873,7 @@ impl PhysicsDriver {
             (true, None) => self.fell_at = Some(self.sim.time),
             (true, Some(t))
                 if self.reset_after_fall
-                    && self.sim.time - t > FALL_RESET_S * self.params.scale.sqrt() =>
+                    && self.sim.time - t > FALL_RESET_S * Scale::new(self.params.scale).time() =>
             {
                 self.put_back(format!(
                     "the creature fell at t = {t:.2} s and was put back at the start"

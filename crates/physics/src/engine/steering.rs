@@ -9,6 +9,8 @@ use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::PhysicsParams;
 use glam::DVec3;
 
+use crate::control::laws::scale::Scale;
+
 /// How fast the desired heading turns (rad/s at scale 1, ×1/√L).
 pub const TURN_RATE_RAD_S: f64 = 0.5;
 
@@ -49,7 +51,7 @@ impl Steering {
         let error = (self.heading_goal - self.heading + std::f64::consts::PI)
             .rem_euclid(std::f64::consts::TAU)
             - std::f64::consts::PI;
-        let step = TURN_RATE_RAD_S / l.sqrt() * dt;
+        let step = TURN_RATE_RAD_S / Scale::new(l).time() * dt;
         if error.abs() > 1e-12 {
             self.heading += error.clamp(-step, step);
             Some(self.heading)

@@ -18,6 +18,7 @@ use gaitlab_core::driver::Driver;
 use glam::DVec3;
 
 use crate::control::laws::attitude::{attitude_error, com_state, trunk_rate};
+use crate::control::laws::scale::Scale;
 use crate::dynamics::model::GRAVITY_MPS2;
 use crate::engine::driver::PhysicsDriver;
 use crate::engine::probe;
@@ -103,7 +104,8 @@ impl TraceRow {
         self.time_s = sim.time;
         self.state = driver.phase_name();
         self.state_index = probe::phase_index(self.state);
-        self.speed_desired_mps = driver.params().speed_mps * driver.params().scale.sqrt();
+        self.speed_desired_mps =
+            driver.params().speed_mps * Scale::new(driver.params().scale).velocity();
         self.heading_deg = driver.heading().to_degrees();
         self.trunk_m = trunk_frame.pos;
         self.trunk_velocity_mps = data.point_velocity_world(trunk, DVec3::ZERO);

@@ -6,6 +6,8 @@
 //! its commands. Given at scale 1, they are scaled by Table 1 in one place,
 //! [`Commands::at_scale`], when the loop hands them to the controller.
 
+use crate::control::laws::scale::Scale;
+
 /// The commands, at dynamic scale 1 as people give them.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Commands {
@@ -33,10 +35,11 @@ impl Commands {
     /// ×√L, lengths ×L, angles unchanged).
     #[must_use]
     pub fn at_scale(&self, l: f64) -> ScaledCommands {
+        let s = Scale::new(l);
         ScaledCommands {
-            speed_mps: self.speed_mps * l.sqrt(),
+            speed_mps: self.speed_mps * s.velocity(),
             heading_rad: self.heading_rad,
-            hop_height_m: self.hop_height_m.map(|h| h * l),
+            hop_height_m: self.hop_height_m.map(|h| h * s.length()),
         }
     }
 }

@@ -7,6 +7,7 @@
 
 use glam::{DQuat, DVec3};
 
+use crate::control::laws::scale::Scale;
 use crate::world::sim::Sim;
 
 /// Put `sim` in level flight: the trunk at `height_m` (m, scaled) moving
@@ -27,7 +28,7 @@ pub fn level_flight(
     sim.data.base_orientation = DQuat::IDENTITY;
     sim.data.base_position = DVec3::new(0.0, height_m, 0.0);
     sim.data.base_velocity.angular = DVec3::ZERO;
-    sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, speed_mps * l.sqrt());
+    sim.data.base_velocity.linear = DVec3::new(0.0, 0.0, speed_mps * Scale::new(l).velocity());
     for c in &mut sim.contacts {
         c.touching = false;
     }

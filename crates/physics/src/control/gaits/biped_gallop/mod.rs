@@ -30,6 +30,7 @@ use crate::control::laws::leg_spring::LegSpring;
 use crate::control::laws::phase::Phase;
 use crate::control::laws::placement::{foot_displacement, hip_angles};
 use crate::control::laws::posture::{through_hip, trunk_torque};
+use crate::control::laws::scale::Scale;
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
 
@@ -91,7 +92,7 @@ impl BipedGallop {
         let scale = creature.scale;
         let leg = |rest: f64| GallopLeg {
             phase: Phase::Flight,
-            stance_s: 0.2 * scale.sqrt(),
+            stance_s: 0.2 * Scale::new(scale).time(),
             touchdown_s: f64::NEG_INFINITY,
             hold: [0.0; 2],
             rest: rest * scale,

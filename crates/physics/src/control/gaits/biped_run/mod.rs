@@ -18,6 +18,7 @@ use crate::control::laws::leg_spring::{LegSpring, toward};
 use crate::control::laws::phase::{Phase, StanceEvents};
 use crate::control::laws::placement::{foot_displacement, hip_angles};
 use crate::control::laws::posture::{through_hip, trunk_torque};
+use crate::control::laws::scale::Scale;
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
 
@@ -58,7 +59,7 @@ impl BipedRun {
             params,
             phase: Phase::Flight,
             active: 0,
-            stance_s: 0.18 * scale.sqrt(),
+            stance_s: 0.18 * Scale::new(scale).time(),
             touchdown_time: 0.0,
             liftoff_height: 0.0,
             apex_height: f64::NEG_INFINITY,

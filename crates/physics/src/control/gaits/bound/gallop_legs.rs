@@ -11,6 +11,7 @@
 //! legs' unison").
 
 use crate::control::laws::phase::{Phase, StanceEvents};
+use crate::control::laws::scale::Scale;
 
 /// One leg's own stance within its pair (the gallop with a lag).
 #[derive(Clone, Copy, Debug, Default)]
@@ -55,7 +56,7 @@ pub(super) fn spring_events(
     l: f64,
 ) -> StanceEvents {
     StanceEvents {
-        shortened: (qd_mps < 0.0 && q_m < -0.002 * l) || since_s > 0.015 * l.sqrt(),
+        shortened: (qd_mps < 0.0 && q_m < -0.002 * l) || since_s > 0.015 * Scale::new(l).time(),
         lengthening: qd_mps >= 0.0,
         extended: q_m >= extended_m,
     }
@@ -75,7 +76,9 @@ impl LegCycle {
             }
             (_, Phase::Flight) => Phase::Flight,
             // A foot bouncing off at impact is still landing.
-            (_, Phase::Loading) if !sense.touching && since > BOUNCE_S * l.sqrt() => Phase::Flight,
+            (_, Phase::Loading) if !sense.touching && since > BOUNCE_S * Scale::new(l).time() => {
+                Phase::Flight
+            }
             (_, Phase::Loading) if !sense.touching => Phase::Loading,
             (_, _) if !sense.touching => Phase::Flight,
             (_, stance) => stance.after(spring_events(

@@ -58,20 +58,22 @@ impl QuadrupedBound {
     /// its lift-off (negative: overlap with the other pair's stance).
     pub(super) fn regulate_pair(&mut self, k: usize, flight: f64) {
         let p = self.params;
-        let l = self.plan.scale.l;
+        let scale = self.plan.scale;
+        let l = scale.l;
         let target = if k == FRONT {
             p.gathered_flight_s
         } else {
             p.extended_flight_s
-        } * l.sqrt();
+        } * scale.time();
         let max = p.max_thrust_m * l;
-        self.trim[k] =
-            (self.trim[k] + p.pair_flight_gain * l.sqrt() * (target - flight)).clamp(-max, max);
+        self.trim[k] = (self.trim[k] + p.pair_flight_gain * scale.velocity() * (target - flight))
+            .clamp(-max, max);
     }
 
     /// Advance both pairs' state machines on the contact and spring events.
     pub(super) fn advance(&mut self, input: &ControlInput<'_>, com_forward: f64) {
-        let l = self.plan.scale.l;
+        let scale = self.plan.scale;
+        let l = scale.l;
         let p = self.params;
         let any_touch = input.contacts.iter().any(|c| c.touching);
         // Flights (every foot off) and the thrust regulation on the stride's
@@ -147,15 +149,15 @@ impl QuadrupedBound {
                     // rear bounce sooner than `min_stride_s` is the same stride.
                     let stride_done = self
                         .stride_start
-                        .is_none_or(|(t0, _)| time - t0 >= p.min_stride_s * l.sqrt());
+                        .is_none_or(|(t0, _)| time - t0 >= p.min_stride_s * scale.time());
                     if k == REAR && stride_done {
                         // Eq. 2's energy per stride: one thrust for both pairs,
                         // regulated on the stride's total flight.
                         if self.stride_start.is_some() {
                             let target = (input.commands.hop_height_m)
-                                .map_or(p.stride_flight_s * l.sqrt(), flight_for_height);
+                                .map_or(p.stride_flight_s * scale.time(), flight_for_height);
                             let error = target - self.stride_flight_s;
-                            self.thrust = (self.thrust + p.flight_gain * l.sqrt() * error)
+                            self.thrust = (self.thrust + p.flight_gain * scale.velocity() * error)
                                 .clamp(p.min_thrust_m * l, p.max_thrust_m * l);
                         }
                         self.stride_flight_s = 0.0;
@@ -164,7 +166,7 @@ impl QuadrupedBound {
                             p.speed_trim,
                             p.speed_integral_gain,
                             vd,
-                            p.speed_bias_cap * vd.abs().max(0.5 * l.sqrt()),
+                            p.speed_bias_cap * vd.abs().max(0.5 * scale.velocity()),
                             time,
                             along_z(com_forward),
                             DVec3::Z,
@@ -175,7 +177,7 @@ impl QuadrupedBound {
                     continue;
                 }
                 // A foot bouncing off at impact is still landing.
-                Phase::Loading if !any && time - pair.touchdown_s > BOUNCE_S * l.sqrt() => {
+                Phase::Loading if !any && time - pair.touchdown_s > BOUNCE_S * scale.time() => {
                     pair.phase = Phase::Flight;
                     pair.liftoff_s = time;
                 }
@@ -193,7 +195,8 @@ impl QuadrupedBound {
             {
                 pair.phase = Phase::Flight;
                 pair.liftoff_s = time;
-                pair.stance_s = (time - pair.touchdown_s).clamp(0.04 * l.sqrt(), 0.3 * l.sqrt());
+                pair.stance_s =
+                    (time - pair.touchdown_s).clamp(0.04 * scale.time(), 0.3 * scale.time());
                 // The other pair landed during this stance: no flight.
                 if other.phase != Phase::Flight && other.touchdown_s > pair.touchdown_s {
                     events[k] = Some((k, other.touchdown_s - time));

@@ -7,6 +7,7 @@
 use super::gallop_legs::LegCycle;
 use crate::control::gaits::bound::params::QuadrupedBoundParams;
 use crate::control::laws::phase::Phase;
+use crate::control::laws::scale::Scale;
 
 /// One pair's state machine (Figure 4).
 #[derive(Clone, Copy, Debug)]
@@ -35,7 +36,7 @@ impl PairState {
             armed: false,
             touchdown_s: 0.0,
             liftoff_s: f64::NEG_INFINITY,
-            stance_s: params.stance_s * scale.sqrt(),
+            stance_s: params.stance_s * Scale::new(scale).time(),
             rest: [params.landing_rest_m * scale; 2],
             touched: [false; 2],
             legs: [LegCycle::default(); 2],

@@ -155,8 +155,8 @@ impl KangarooHop {
     fn start(&mut self, l: f64, desired_mps: f64, speed_mps: f64) {
         if !self.started {
             self.started = true;
-            self.stance_s = self.params.stance_guess_s * l.sqrt();
-            self.stride_m = desired_mps * 0.35 * l.sqrt();
+            self.stance_s = self.params.stance_guess_s * Scale::new(l).time();
+            self.stride_m = desired_mps * 0.35 * Scale::new(l).time();
             self.speed_command_mps = speed_mps;
         }
     }
@@ -239,8 +239,8 @@ impl Controller for KangarooHop {
             let speed = com_v.z;
             let desired = self.speed_command_mps + self.trim.bias_mps;
             let x_fh =
-                speed * self.stance_s / 2.0 + p.placement_gain_s * l.sqrt() * (speed - desired);
-            let rising = (com_v.y / l.sqrt()).clamp(0.0, 1.0);
+                speed * self.stance_s / 2.0 + p.placement_gain_s * s.time() * (speed - desired);
+            let rising = (com_v.y / s.velocity()).clamp(0.0, 1.0);
             let r0 = (p.landing_leg_m - p.flight_retract_m * rising) * l;
             let mut toe = if self.jump == JumpStage::Airborne
                 && p.jump_at_m

@@ -7,6 +7,7 @@ use glam::DVec2;
 use crate::control::additions::Additions;
 use crate::control::gaits::kangaroo_hop::leg::{leg_geometry, leg_ik};
 use crate::control::gaits::kangaroo_hop::params::KangarooHopParams;
+use crate::control::laws::scale::Scale;
 use crate::dynamics::data::Data;
 use crate::world::sim::Sim;
 
@@ -52,7 +53,7 @@ pub fn start(sim: &mut Sim, speed_mps: f64, additions: Additions) {
     data.q[6] = p.tail_mean_rad;
     // Trunk height: the toe 1 cm (×L) above the ground.
     data.q[1] = -(leg.hip_in_trunk.y + toe.y) + 0.01 * l;
-    data.qd[0] = speed_mps * l.sqrt();
-    data.qd[1] = -0.5 * l.sqrt();
+    data.qd[0] = speed_mps * Scale::new(l).velocity();
+    data.qd[1] = -0.5 * Scale::new(l).velocity();
     crate::dynamics::kinematics::kinematics(&creature.model, data);
 }

@@ -8,6 +8,7 @@ use glam::DVec3;
 use super::{JumpStage, KangarooHop};
 use crate::control::additions::speed_trim::along_z;
 use crate::control::laws::phase::{Phase, StanceEvents};
+use crate::control::laws::scale::Scale;
 use crate::dynamics::model::GRAVITY_MPS2;
 use crate::world::sim::ControlInput;
 
@@ -27,7 +28,7 @@ impl KangarooHop {
             Phase::Flight => {
                 self.apex_com_y = self.apex_com_y.max(com.y);
                 let airborne = t - self.flight_start;
-                if contact.touching && airborne > 0.03 * l.sqrt() && com_v.y < 0.0 {
+                if contact.touching && airborne > 0.03 * Scale::new(l).time() && com_v.y < 0.0 {
                     self.phase = Phase::Loading;
                     self.touchdown_time = t;
                     self.touch_down(contact.position.z, t, com.z, l);
@@ -48,7 +49,7 @@ impl KangarooHop {
         }
         if self.phase != Phase::Flight
             && !contact.touching
-            && t - self.touchdown_time > 0.02 * l.sqrt()
+            && t - self.touchdown_time > 0.02 * Scale::new(l).time()
         {
             self.lift_off(t, com, l);
         }
@@ -60,7 +61,7 @@ impl KangarooHop {
         if self.jump == JumpStage::None
             && let Some(mean) = self.trim.mean_since(t, along_z(com_z), DVec3::Z, 0.0)
         {
-            let limit = p.speed_integral_max_mps * l.sqrt();
+            let limit = p.speed_integral_max_mps * Scale::new(l).velocity();
             let error = self.speed_command_mps - mean;
             self.trim
                 .correct(p.speed_trim, p.speed_integral_gain, error, limit);
@@ -103,7 +104,7 @@ impl KangarooHop {
     pub(super) fn lift_off(&mut self, t: f64, com: DVec3, l: f64) {
         let measured = t - self.touchdown_time;
         if self.jump == JumpStage::None {
-            self.stance_s = measured.clamp(0.05 * l.sqrt(), 0.3 * l.sqrt());
+            self.stance_s = measured.clamp(0.05 * Scale::new(l).time(), 0.3 * Scale::new(l).time());
         }
         self.liftoff_com_y = com.y;
         self.apex_com_y = f64::NEG_INFINITY;
@@ -140,9 +141,9 @@ impl KangarooHop {
         {
             // Long enough to carry the body past the obstacle, and high
             // enough for the tucked toe to clear it.
-            let v = com_v.z.max(0.5 * l.sqrt());
+            let v = com_v.z.max(0.5 * Scale::new(l).velocity());
             let far = at + p.obstacle_depth_m * l + 0.3 * l;
-            let flight = ((far - com.z) / v - 0.5 * self.stance_s).max(0.1 * l.sqrt());
+            let flight = ((far - com.z) / v - 0.5 * self.stance_s).max(0.1 * Scale::new(l).time());
             let rise_time = 0.5 * flight;
             let by_time = 0.5 * g * rise_time * rise_time;
             let by_height = (p.obstacle_height_m + p.jump_clearance_m) * l + 0.1 * l;

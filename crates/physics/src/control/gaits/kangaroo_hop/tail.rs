@@ -36,7 +36,7 @@ impl KangarooHop {
             // pitch error and rate (the paper only steps it).
             let assist = if p.tail_feedback {
                 p.tail_pitch_gain * (pitch - p.pitch_rad)
-                    + p.tail_rate_gain_s * l.sqrt() * pitch_rate
+                    + p.tail_rate_gain_s * Scale::new(l).time() * pitch_rate
             } else {
                 0.0
             };

@@ -24,6 +24,7 @@ use crate::control::laws::hop_height::height_for_flight;
 use crate::control::laws::pair_posture::PairPosture;
 use crate::control::laws::phase::Phase;
 use crate::control::laws::placement::{aim_frame, foot_displacement, hip_angles, hip_at_touchdown};
+use crate::control::laws::scale::Scale;
 use crate::creatures::PhysicalCreature;
 use crate::world::sim::{ControlInput, Controller, Drive};
 
@@ -93,7 +94,7 @@ impl QuadrupedRun {
             pairs: TROT_PAIRS,
             active: 0,
             leg_phase: [Phase::Flight; 4],
-            stance_s: [t.stance_s * scale.sqrt(); 2],
+            stance_s: [t.stance_s * Scale::new(scale).time(); 2],
             thrust: [t.thrust_m * scale; 2],
             flight_s: [0.0; 2],
             in_stance: false,
