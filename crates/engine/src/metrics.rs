@@ -495,6 +495,21 @@ pub fn push_entries(driver: &PhysicsDriver) -> Vec<PushEntry> {
         .collect()
 }
 
+/// One gait change as it took effect (`run --switch`, `run --json`'s
+/// `gait_changes`; `gaitlab_physics::engine::gait_change`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct GaitChangeEntry {
+    /// Seconds into the whole run the new gait's controller took over.
+    pub at_s: f64,
+    /// The gait that ran before.
+    pub from: &'static str,
+    /// The gait that runs since.
+    pub to: &'static str,
+    /// `take_over` (the paper's, at a flight) or `own_start` (the lab's
+    /// `switch_to_start`).
+    pub entry: &'static str,
+}
+
 /// DESIGN.md's `always` and `physics` keys plus Table 2's extras.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PhysicsRunMetrics {
@@ -523,6 +538,10 @@ pub struct PhysicsRunMetrics {
     pub put_backs: Vec<PutBackEntry>,
     /// Every push of the run (`--push`), in order, with its recovery.
     pub pushes: Vec<PushEntry>,
+    /// Every gait change that took effect, in order, with when (left out
+    /// without one).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub gait_changes: Vec<GaitChangeEntry>,
     /// Whether the creature recovered from every push: none without a
     /// push or while one has no verdict yet.
     pub recovered: Option<bool>,
@@ -652,6 +671,16 @@ impl PhysicsRunMetrics {
             })
             .collect(),
             pushes,
+            gait_changes: driver
+                .gait_changes()
+                .iter()
+                .map(|c| GaitChangeEntry {
+                    at_s: c.at_s,
+                    from: c.from,
+                    to: c.to,
+                    entry: c.entry.name(),
+                })
+                .collect(),
             recovered,
             put_backs: driver
                 .put_backs()

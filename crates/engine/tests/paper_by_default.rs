@@ -19,8 +19,14 @@ fn driver(json: &Value) -> (Creature, AnyDriver) {
     (creature, driver)
 }
 
-/// Each gait the physics creatures offer, to switch to and list again.
-const PHYSICS_GAITS: &[&str] = &["run", "gallop", "gallop_alternate", "trot", "bound", "hop"];
+/// Each gait the physics creatures offer (the gait table's), to switch to
+/// and list again.
+fn physics_gaits() -> impl Iterator<Item = &'static str> {
+    use gaitlab_engine::catalog::{Species, physics_gaits};
+    [Species::Biped, Species::Quadruped, Species::Kangaroo]
+        .into_iter()
+        .flat_map(|s| physics_gaits(s).iter().copied())
+}
 
 #[test]
 fn every_bundled_preset_runs_the_paper_alone_on_request() {
@@ -30,7 +36,7 @@ fn every_bundled_preset_runs_the_paper_alone_on_request() {
         let (creature, mut driver) = driver(&preset);
         assert_eq!(names(&driver), Vec::<&str>::new(), "{name}");
         if creature.scenario.physics.is_some() {
-            for gait in PHYSICS_GAITS {
+            for gait in physics_gaits() {
                 if switch_gait(&mut driver, gait).is_ok() {
                     assert_eq!(names(&driver), Vec::<&str>::new(), "{name} {gait}");
                 }

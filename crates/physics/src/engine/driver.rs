@@ -21,6 +21,7 @@ use crate::creatures::Species;
 use crate::dynamics::model::Joint as BodyJoint;
 use crate::engine::consistency;
 use crate::engine::cycle_start::on_cycle;
+use crate::engine::gait_change::{Entry, GaitChange, MAX_GAIT_CHANGES};
 use crate::engine::gait_entry::enter_at_start;
 use crate::engine::metrics::{GaitRecorder, GaitSummary};
 use crate::engine::preset::creature_from_preset;
@@ -29,7 +30,7 @@ use crate::engine::push::Push;
 use crate::engine::steering::Steering;
 use crate::world::commands::Commands;
 use crate::world::ground::{GroundParams, Obstacle};
-use crate::world::sim::{Controller, Sim, SimOptions};
+use crate::world::sim::{ControlInput, Controller, Sim, SimOptions};
 
 /// Seconds after a fall before the creature is put back at the start.
 pub const FALL_RESET_S: f64 = 1.5;
@@ -96,6 +97,9 @@ pub struct PhysicsDriver {
     attempt_start_s: f64,
     /// The pushes of the run, in order ([`PhysicsDriver::push`]).
     pushes: Vec<Push>,
+    /// The gait changes that took effect, in order (the first
+    /// [`MAX_GAIT_CHANGES`]).
+    gait_changes: Vec<GaitChange>,
 }
 
 fn scaled_skeleton(skeleton: &Skeleton, l: f64) -> Result<Skeleton, PresetError> {
@@ -256,6 +260,7 @@ impl PhysicsDriver {
             put_backs: Vec::new(),
             attempt_start_s: 0.0,
             pushes: Vec::new(),
+            gait_changes: Vec::new(),
         };
         driver.update_pose();
         Ok(driver)
@@ -731,18 +736,18 @@ impl PhysicsDriver {
             // The lab's entry at the gait's own start, now.
             let heading = self.steering.heading;
             enter_at_start(&mut self.sim, &next, params.speed_mps, heading);
+            self.record_change(next.gait(), Entry::OwnStart);
             self.controller = next;
-            self.running_gait = gait.to_owned();
-            self.pending = None;
-        } else if self.controller.adopt(&next) {
-            // Bound and gallop are one controller in two styles, each with
-            // its own parameters.
             self.running_gait = gait.to_owned();
             self.pending = None;
         } else {
             // Another state machine takes over at the next flight, when no
             // foot is loaded and the body is falling toward a landing — the
-            // state every controller starts from.
+            // state every controller starts from — and takes over from the
+            // state it finds. Bound and gallop too: the other style's
+            // controller, with its own gains, starts from the running one's
+            // measured stance (handed its thrust, tuned on the other style's
+            // springs, it tumbled).
             self.pending = Some(next);
         }
         self.params = params;
@@ -781,19 +786,56 @@ impl PhysicsDriver {
         }
     }
 
-    /// Hand over to a pending controller once the creature is in flight and falling.
+    /// Hand over to a pending controller once the creature is in flight and
+    /// falling, in a flight the new gait can start in; it takes over from
+    /// the state it finds and what the running gait measured.
     fn take_over(&mut self) {
         if self.pending.is_none() || self.sim.contacts.iter().any(|c| c.touching) {
             return;
         }
-        let trunk = self.sim.creature.trunk;
-        let vy = self.sim.data.point_velocity_world(trunk, DVec3::ZERO).y;
+        let sim = &self.sim;
+        let vy = (sim.data)
+            .point_velocity_world(sim.creature.trunk, DVec3::ZERO)
+            .y;
+        let input = ControlInput {
+            creature: &sim.creature,
+            data: &sim.data,
+            contacts: &sim.contacts,
+            time: sim.time,
+            dt: sim.options.dt,
+            commands: sim.commands.at_scale(sim.creature.scale),
+        };
         if vy < 0.0
-            && let Some(next) = self.pending.take()
+            && let Some(next) = self.pending.as_mut()
+            && next.can_take_over(&input)
         {
-            self.controller = next;
-            self.running_gait.clone_from(&self.gait);
+            next.take_over_from(&input, &self.controller.handover());
+            if let Some(next) = self.pending.take() {
+                self.record_change(next.gait(), Entry::TakeOver);
+                self.controller = next;
+                self.running_gait.clone_from(&self.gait);
+            }
         }
+    }
+
+    /// Note that `to` now runs, entered by `entry`.
+    fn record_change(&mut self, to: &'static str, entry: Entry) {
+        if self.gait_changes.len() < MAX_GAIT_CHANGES {
+            self.gait_changes.push(GaitChange {
+                at_s: self.run_time_s(),
+                from: self.controller.gait(),
+                to,
+                entry,
+            });
+        }
+    }
+
+    /// The gait changes that took effect, in order: when each new gait's
+    /// controller took over (a switch asked for waits for a flight it can
+    /// start in), from which gait, and how it was entered.
+    #[must_use]
+    pub fn gait_changes(&self) -> &[GaitChange] {
+        &self.gait_changes
     }
 
     /// Take `steps` integration steps with nothing recorded — the work a
@@ -902,6 +944,7 @@ impl Driver for PhysicsDriver {
         self.put_backs.clear();
         self.attempt_start_s = 0.0;
         self.pushes.clear();
+        self.gait_changes.clear();
     }
 
     fn skeleton(&self) -> &Skeleton {

@@ -13,6 +13,7 @@
 pub mod consistency;
 pub mod cycle_start;
 pub mod driver;
+pub mod gait_change;
 pub mod gait_entry;
 pub mod metrics;
 pub mod mjcf;

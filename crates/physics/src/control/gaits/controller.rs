@@ -6,7 +6,7 @@
 use std::fmt;
 
 use crate::control::additions::Additions;
-use crate::control::gaits::gait::Gait;
+use crate::control::gaits::gait::{Gait, Handover};
 use crate::control::gaits::origins::ControllerParam;
 use crate::control::gaits::table::GaitRow;
 use crate::world::sim::{ControlInput, Controller, Drive, Gain, Sim};
@@ -102,15 +102,23 @@ impl GaitController {
         self.inner.as_any_mut().downcast_mut()
     }
 
-    /// Take `fresh`'s parameters when it is this state machine in another
-    /// style ([`Gait::adopt`]); on `true` this controller is now `fresh`'s gait.
-    pub fn adopt(&mut self, fresh: &GaitController) -> bool {
-        let adopted = self.inner.adopt(fresh.inner.as_ref());
-        if adopted {
-            self.row = fresh.row;
-            self.additions = fresh.additions;
-        }
-        adopted
+    /// What it hands a gait taking over from it ([`Gait::handover`]).
+    #[must_use]
+    pub fn handover(&self) -> Handover {
+        self.inner.handover()
+    }
+
+    /// Whether, waiting to take over, it can start in the flight `input`
+    /// sees ([`Gait::can_take_over`]).
+    #[must_use]
+    pub fn can_take_over(&self, input: &ControlInput<'_>) -> bool {
+        self.inner.can_take_over(input)
+    }
+
+    /// Start from the state `input` sees and what the running gait handed
+    /// over ([`Gait::take_over_from`]).
+    pub fn take_over_from(&mut self, input: &ControlInput<'_>, found: &Handover) {
+        self.inner.take_over_from(input, found);
     }
 
     /// Put `sim` in this gait's own start at `speed_mps` (m/s at scale 1)

@@ -13,7 +13,7 @@ use crate::control::additions::Additions;
 use crate::control::gaits::builder::Misfit;
 use crate::control::gaits::origins::ControllerParam;
 use crate::creatures::PhysicalCreature;
-use crate::world::sim::{Controller, Sim};
+use crate::world::sim::{ControlInput, Controller, Sim};
 
 /// Builds a gait's state machine from a preset's physics section and the
 /// lab's additions resolved for it.
@@ -32,13 +32,33 @@ pub trait Gait: Controller + GaitBox + fmt::Debug + Send + Sync {
     /// order.
     fn origins(&self) -> &'static [ControllerParam];
 
-    /// Take `fresh`'s parameters and run on with its own state, when `fresh`
-    /// is the same state machine in another style (the bound and the
-    /// gallop); `false` for any other, which then takes over at the next
-    /// flight instead.
-    fn adopt(&mut self, _fresh: &dyn Gait) -> bool {
-        false
+    /// What it hands a gait taking over from it (the paper's take-over at
+    /// the next flight). Default: nothing measured.
+    fn handover(&self) -> Handover {
+        Handover::default()
     }
+
+    /// Whether, waiting to take over, it can start in the flight `input`
+    /// sees (the driver asks only in a flight with the trunk falling).
+    /// Default: any such flight.
+    fn can_take_over(&self, _input: &ControlInput<'_>) -> bool {
+        true
+    }
+
+    /// Start from the state `input` sees and what the running gait
+    /// measured (`found`), instead of from this gait's own start. Default:
+    /// as built.
+    fn take_over_from(&mut self, _input: &ControlInput<'_>, _found: &Handover) {}
+}
+
+/// What a running gait hands the gait taking over from it at the next
+/// flight (Raibert & Hodgins 1991, "Gaits": the quadruped "changes gait").
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Handover {
+    /// The support period it measured last (s, at the creature's scale):
+    /// eq. 3's "the duration of the next support period is predicted to be
+    /// the same as the measured duration of the previous support period".
+    pub stance_s: Option<f64>,
 }
 
 /// What every [`Gait`] gets for being `Clone` and `'static`: a boxed copy

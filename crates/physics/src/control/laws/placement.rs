@@ -101,15 +101,29 @@ pub fn hip_at_touchdown(
         - (reach * reach - displacement.length_squared())
             .max(0.0)
             .sqrt();
-    let g = crate::dynamics::model::GRAVITY_MPS2;
     let t_rem = if drop > 0.0 {
-        (hip_v.y + (hip_v.y * hip_v.y + 2.0 * g * drop).sqrt()) / g
+        fall_time_s(drop, hip_v.y)
     } else {
         0.0
     }
     .min(lookahead_s);
     let ahead = DVec3::new(hip_v.x, 0.0, hip_v.z) * t_rem;
     DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead
+}
+
+/// How long a point moving up at `vy_mps` takes to fall `drop_m` (m,
+/// ≥ 0) below where it is, under gravity alone (s): the flight ahead.
+#[must_use]
+pub fn fall_time_s(drop_m: f64, vy_mps: f64) -> f64 {
+    let g = crate::dynamics::model::GRAVITY_MPS2;
+    (vy_mps + (vy_mps * vy_mps + 2.0 * g * drop_m).sqrt()) / g
+}
+
+/// How long a point `height_m` above the ground, moving up at `vy_mps`,
+/// takes to fall to `land_m` (s; 0 once it is there or below, falling).
+#[must_use]
+pub fn time_to_fall(height_m: f64, vy_mps: f64, land_m: f64) -> f64 {
+    fall_time_s((height_m - land_m).max(0.0), vy_mps).max(0.0)
 }
 
 #[cfg(test)]

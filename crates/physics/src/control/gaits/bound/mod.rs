@@ -54,6 +54,7 @@ mod pair_cycle;
 mod pairs;
 pub mod params;
 pub mod start;
+pub mod take_over;
 
 use gallop_legs::stance_rest;
 use pairs::PairState;

@@ -3,8 +3,6 @@
 
 use gaitlab_core::params::Origin;
 
-use crate::control::gaits::bound::QuadrupedBound;
-use crate::control::gaits::gait::Gait;
 use crate::control::gaits::origins::{
     ControllerParam, EQ4, FIG4_FLIGHT, GALLOP, LAB, LAB_TRIM, LEG_DAMPING, LEG_STIFFNESS,
     LEG_TRAVEL_M, MAX_HIP_TORQUE, MAX_THRUST_M, PITCH_KV, PLACEMENT_GAIN_S, ROLL_KP, ROLL_KV,
@@ -203,21 +201,3 @@ pub const ORIGINS: &[ControllerParam] = &[
         "Separates a pair's stances in time (single, double, single support); no value printed",
     ),
 ];
-
-impl Gait for QuadrupedBound {
-    fn origins(&self) -> &'static [ControllerParam] {
-        ORIGINS
-    }
-
-    /// The bound and the gallop are this one state machine in two styles:
-    /// the running one takes the other's parameters and runs on.
-    fn adopt(&mut self, fresh: &dyn Gait) -> bool {
-        match fresh.as_any().downcast_ref::<QuadrupedBound>() {
-            Some(fresh) => {
-                self.set_params(fresh.params);
-                true
-            }
-            None => false,
-        }
-    }
-}

@@ -8,7 +8,7 @@ use glam::DVec3;
 use super::gallop_legs::{BOUNCE_S, LegSense, spring_events};
 use super::{FRONT, PAIRS, QuadrupedBound, REAR};
 use crate::control::additions::speed_trim::along_z;
-use crate::control::gaits::bound::params::{BoundStyle, QuadrupedBoundParams};
+use crate::control::gaits::bound::params::BoundStyle;
 use crate::control::laws::hop_height::flight_for_height;
 use crate::control::laws::phase::Phase;
 use crate::world::sim::ControlInput;
@@ -18,12 +18,6 @@ impl QuadrupedBound {
     #[must_use]
     pub fn style(&self) -> BoundStyle {
         self.params.style
-    }
-
-    /// Change between bound and gallop while running: the other style's
-    /// parameters (its style and its own gains) with the running state.
-    pub fn set_params(&mut self, params: QuadrupedBoundParams) {
-        self.params = params;
     }
 
     /// The state of the pair `pair` (0 front, 1 rear).

@@ -38,6 +38,7 @@ mod cycle;
 pub mod origins;
 pub mod params;
 pub mod start;
+pub mod take_over;
 
 pub use crate::control::gaits::trot::params::{GaitTuning, QuadrupedRunParams};
 pub use crate::control::laws::ground::quadruped_ground;

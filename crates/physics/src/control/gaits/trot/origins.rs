@@ -3,14 +3,12 @@
 
 use gaitlab_core::params::Origin;
 
-use crate::control::gaits::gait::Gait;
 use crate::control::gaits::origins::{
     ControllerParam, EQ4, FIG4_FLIGHT, LAB, LEG_DAMPING, LEG_STIFFNESS, LEG_TRAVEL_M,
     MAX_HIP_TORQUE, MAX_THRUST_M, PITCH_KV, PLACEMENT_GAIN_S, ROLL_KP, ROLL_KV, STANDING, SWING_KP,
     SWING_KV, SWING_ROLL_FOLLOW, THRUST_M, YAW_KV, flight_gain_row, pitch_kp_row,
     posture_force_ratio_row, row, yaw_kp_row,
 };
-use crate::control::gaits::trot::QuadrupedRun;
 
 /// [`QuadrupedRunParams`](crate::control::gaits::trot::params::QuadrupedRunParams)' parameters (the trot), in
 /// [`NamedParameters::NAMES`](crate::control::gaits::parameters::NamedParameters::NAMES) order.
@@ -120,9 +118,3 @@ pub const ORIGINS: &[ControllerParam] = &[
         "\"The members of each pair strike the ground in unison and leave the ground in unison\"",
     ),
 ];
-
-impl Gait for QuadrupedRun {
-    fn origins(&self) -> &'static [ControllerParam] {
-        ORIGINS
-    }
-}

@@ -1,0 +1,82 @@
+//! Gait changes by the paper's take-over at the next flight (Raibert &
+//! Hodgins 1991, "Gaits"; issue 42 item 3), by the paper's laws alone and
+//! without the lab's entry at a gait's own start: the new gait's controller
+//! takes over from the state it finds in a flight it can start in, and the
+//! quadruped runs on in it.
+
+use gaitlab_core::Creature;
+use gaitlab_core::driver::Driver;
+use gaitlab_core::preset::{bundled_json, paper_alone};
+use gaitlab_physics::PhysicsDriver;
+use gaitlab_physics::engine::gait_change::Entry;
+use serde_json::Value;
+
+/// The bundled quadruped, paper alone (every lab addition off, no
+/// `switch_to_start`), `from` at `speed` m/s.
+fn quadruped(from: &str, speed: f64) -> PhysicsDriver {
+    let json = bundled_json("raibert-quadruped").expect("bundled");
+    let mut preset: Value = serde_json::from_str(json).expect("json");
+    paper_alone(&mut preset).expect("paper alone");
+    let creature = Creature::from_json(&preset.to_string()).expect("preset");
+    let mut params = creature.scenario.physics.clone().expect("physics");
+    assert!(
+        params.switch_to_start.is_empty(),
+        "paper alone: no own-start entry"
+    );
+    params.gait = Some(from.to_owned());
+    params.speed_mps = speed;
+    let mut driver = PhysicsDriver::with_params(&creature, params).expect("driver");
+    driver.reset_after_fall = false;
+    driver
+}
+
+/// `from` for `at_s`, then `to` asked for, on to `seconds`: whether it ran
+/// without a fall or a put-back, and when the take-over happened.
+fn switch(from: &str, to: &str, speed: f64, at_s: f64, seconds: f64) -> (bool, Option<f64>) {
+    let mut driver = quadruped(from, speed);
+    while driver.sim().time < at_s {
+        driver.step(1.0 / 60.0);
+    }
+    driver.set_gait(to).expect("a gait of the quadruped");
+    while driver.sim().time < seconds {
+        driver.step(1.0 / 60.0);
+    }
+    let changes = driver.gait_changes();
+    let took = changes
+        .iter()
+        .find(|c| c.to == to && c.entry == Entry::TakeOver && c.from == from)
+        .map(|c| c.at_s);
+    assert_eq!(driver.running_gait(), to);
+    (!driver.summary().fell && driver.resets() == 0, took)
+}
+
+/// The issue's example, which blew up at 13.96 s before the take-over
+/// started from the state it finds: trot to bound at 2.3 m/s at 10 s.
+#[test]
+fn the_trot_hands_over_to_the_bound_at_the_next_flight_and_it_bounds_on() {
+    let (held, took) = switch("trot", "bound", 2.3, 10.0, 30.0);
+    let took = took.expect("the bound took over");
+    assert!((10.0..10.5).contains(&took), "took over at {took} s");
+    assert!(held, "the bound fell after taking over at {took} s");
+}
+
+/// Out of the gallop into the trot: the trot waits for a flight long
+/// enough for its landing pair (the gallop's short extended flight is
+/// not), then runs on.
+#[test]
+fn the_gallop_hands_over_to_the_trot_in_a_flight_long_enough() {
+    let (held, took) = switch("gallop", "trot", 1.5, 7.0, 27.0);
+    let took = took.expect("the trot took over");
+    assert!((7.0..8.0).contains(&took), "took over at {took} s");
+    assert!(held, "the trot fell after taking over at {took} s");
+}
+
+/// Bound and gallop change by the same take-over, each style's controller
+/// with its own gains.
+#[test]
+fn the_bound_hands_over_to_the_gallop_by_the_same_take_over() {
+    let (held, took) = switch("bound", "gallop", 1.5, 10.0, 30.0);
+    let took = took.expect("the gallop took over");
+    assert!((10.0..10.5).contains(&took), "took over at {took} s");
+    assert!(held, "the gallop fell after taking over at {took} s");
+}
