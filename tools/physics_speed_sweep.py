@@ -30,7 +30,8 @@ GAITS = [
     ("raibert-kangaroo", "hop", [2.0, 3.5, 5.0]),
 ]
 
-NAMES = ["speed_trim", "unloading_posture", "speed_ramp", "tail_feedback"]
+NAMES = ["speed_trim", "unloading_posture", "speed_ramp", "tail_feedback",
+         "hop_integrator"]
 
 # None: the preset's own `lab_additions`, as bundled.
 WAYS = {

@@ -70,9 +70,13 @@ fn runs_a_minute_at_three_speeds_within_ten_percent_with_the_lab_additions() {
     let on = LabAdditions {
         speed_trim: Some(true),
         unloading_posture: Some(true),
+        hop_integrator: Some(true),
         ..LabAdditions::default()
     };
-    a_minute_within_ten_percent(Some(on), &["speed_trim", "unloading_posture"]);
+    a_minute_within_ten_percent(
+        Some(on),
+        &["speed_trim", "unloading_posture", "hop_integrator"],
+    );
 }
 
 #[test]

@@ -24,11 +24,16 @@ fn each_gait_runs_its_own_additions_by_the_file_s_choice() {
     // A file made before they were optional: every addition the gait has.
     assert_eq!(
         names("raibert-biped", "run", None),
-        ["speed_trim", "unloading_posture"]
+        ["speed_trim", "unloading_posture", "hop_integrator"]
     );
     assert_eq!(
         names("raibert-kangaroo", "hop", None),
-        ["speed_trim", "speed_ramp", "tail_feedback"]
+        [
+            "speed_trim",
+            "speed_ramp",
+            "tail_feedback",
+            "hop_integrator"
+        ]
     );
     assert!(names("raibert-quadruped", "trot", None).is_empty());
     // `{}`: each controller's defaults.
@@ -48,7 +53,7 @@ fn each_gait_runs_its_own_additions_by_the_file_s_choice() {
     );
     assert_eq!(
         names("raibert-kangaroo", "hop", default),
-        ["speed_ramp", "tail_feedback"]
+        ["speed_ramp", "tail_feedback", "hop_integrator"]
     );
     // Named ones win; a gait without the addition ignores it.
     let asked = Some(LabAdditions {
@@ -62,6 +67,7 @@ fn each_gait_runs_its_own_additions_by_the_file_s_choice() {
         speed_trim: Some(false),
         speed_ramp: Some(false),
         tail_feedback: Some(false),
+        hop_integrator: Some(false),
         ..LabAdditions::default()
     });
     assert!(names("raibert-kangaroo", "hop", off).is_empty());

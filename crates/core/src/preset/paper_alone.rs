@@ -51,6 +51,10 @@ const PHYSICS_OFF: &[(&str, ValueOf)] = &[
         "scenario.physics.lab_additions.tail_feedback",
         ValueOf::Bool(false),
     ),
+    (
+        "scenario.physics.lab_additions.hop_integrator",
+        ValueOf::Bool(false),
+    ),
     ("scenario.physics.switch_to_start", ValueOf::Empty),
 ];
 

@@ -255,4 +255,15 @@ pub const PHYSICS_PARAMS: &[ParamSpec] = &[
         origin: Origin::Lab,
         why: "the paper only steps the tail",
     },
+    ParamSpec {
+        key: "scenario.physics.lab_additions.hop_integrator",
+        command: None,
+        label: "Thrust corrected from each measured apex (biped run, kangaroo)",
+        unit: "",
+        domain: Domain::Bool,
+        live: false,
+        reference: "Raibert & Hodgins 1991, eq. 2",
+        origin: Origin::Lab,
+        why: "the paper sets the thrust by eq. 2's predicted apex alone",
+    },
 ];

@@ -155,6 +155,7 @@ fn paper_by_default(preset: &mut Preset) {
             &mut additions.unloading_posture,
             &mut additions.speed_ramp,
             &mut additions.tail_feedback,
+            &mut additions.hop_integrator,
         ] {
             named.get_or_insert(false);
         }

@@ -23,6 +23,9 @@ pub struct Additions {
     pub speed_ramp: bool,
     /// The kangaroo's tail rest following the trunk's pitch.
     pub tail_feedback: bool,
+    /// The thrust corrected from each measured apex (the biped run, the
+    /// kangaroo), where eq. 2's prediction alone sets it.
+    pub hop_integrator: bool,
     /// The file predates the additions being optional: every addition on
     /// and the controllers' earlier defaults, so it runs as it was made.
     pub legacy: bool,
@@ -42,6 +45,8 @@ pub struct Offered {
     pub speed_ramp: Option<bool>,
     /// [`Additions::tail_feedback`].
     pub tail_feedback: Option<bool>,
+    /// [`Additions::hop_integrator`].
+    pub hop_integrator: Option<bool>,
 }
 
 /// Each controller's offer, in one table: which of the lab's additions it
@@ -54,14 +59,17 @@ impl Offered {
         unloading_posture: None,
         speed_ramp: None,
         tail_feedback: None,
+        hop_integrator: None,
     };
 
-    /// The biped run: the speed trim (off: eq. 3 alone holds the speed) and
+    /// The biped run: the speed trim (off: eq. 3 alone holds the speed),
     /// Unloading's posture servo (on for a file that does not say, as files
-    /// of 2026-12-02 ran).
+    /// of 2026-12-02 ran) and the hop integrator (off: eq. 2 sets the
+    /// thrust).
     pub const BIPED_RUN: Self = Self {
         speed_trim: Some(false),
         unloading_posture: Some(true),
+        hop_integrator: Some(false),
         ..Self::NONE
     };
 
@@ -81,11 +89,14 @@ impl Offered {
     };
 
     /// The kangaroo hop: the speed trim (off), the speed ramp and the tail
-    /// feedback (on: without them it falls at 3.5 and 5 m/s).
+    /// feedback (on: without them it falls at 3.5 and 5 m/s), the hop
+    /// integrator (on: by eq. 2's prediction alone it runs 11 % slow at
+    /// 2 m/s and 16 % slow at 5 m/s, docs/physics.md "Eq. 2 as written").
     pub const KANGAROO_HOP: Self = Self {
         speed_trim: Some(false),
         speed_ramp: Some(true),
         tail_feedback: Some(true),
+        hop_integrator: Some(true),
         ..Self::NONE
     };
 }
@@ -97,6 +108,7 @@ impl Additions {
         unloading_posture: false,
         speed_ramp: false,
         tail_feedback: false,
+        hop_integrator: false,
         legacy: false,
     };
 
@@ -116,6 +128,7 @@ impl Additions {
             unloading_posture: pick(offered.unloading_posture, |a| a.unloading_posture),
             speed_ramp: pick(offered.speed_ramp, |a| a.speed_ramp),
             tail_feedback: pick(offered.tail_feedback, |a| a.tail_feedback),
+            hop_integrator: pick(offered.hop_integrator, |a| a.hop_integrator),
             legacy: spec.is_none(),
         }
     }
@@ -128,6 +141,7 @@ impl Additions {
             (self.unloading_posture, "unloading_posture"),
             (self.speed_ramp, "speed_ramp"),
             (self.tail_feedback, "tail_feedback"),
+            (self.hop_integrator, "hop_integrator"),
         ];
         on.into_iter().filter(|&(on, _)| on).map(|(_, name)| name)
     }

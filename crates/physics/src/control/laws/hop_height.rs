@@ -2,7 +2,10 @@
 //! eq. 2): a body that leaves the ground rising and lands at the height it
 //! left reaches `h = g·t²/8` above lift-off in a flight of `t` seconds. The
 //! gaits that regulate their flight time (the trot, the bound) take the hop
-//! height a user asks for through this.
+//! height a user asks for through this. Eq. 2 itself — the apex the energy
+//! in the springs, the elevation and the vertical speed predict — and the
+//! thrust that makes that prediction the target are [`predicted_apex_m`]
+//! and [`thrust_for_apex`]: what every creature's thrust is by default.
 
 use crate::dynamics::model::GRAVITY_MPS2;
 
@@ -18,6 +21,62 @@ pub fn height_for_flight(flight_s: f64) -> f64 {
     GRAVITY_MPS2 * flight_s * flight_s / 8.0
 }
 
+/// Eq. 2: the altitude (m) a body of `mass_kg` hops to from its centre of
+/// mass at `com_height_m` rising at `com_vy_mps`, with `strain_j` (J) stored
+/// in its leg springs — `h = (PE_strain + PE_elevation + KE)/Mg`, the leg
+/// taken as massless and the spring as lossless, as the paper does.
+#[must_use]
+pub fn predicted_apex_m(strain_j: f64, mass_kg: f64, com_height_m: f64, com_vy_mps: f64) -> f64 {
+    let weight = mass_kg * GRAVITY_MPS2;
+    (strain_j + weight * com_height_m + 0.5 * mass_kg * com_vy_mps * com_vy_mps) / weight
+}
+
+/// One supporting leg's spring for eq. 2: its constant k (N/m, or N·m/rad
+/// for the kangaroo's ankle) and how far it is compressed below its rest
+/// (m or rad, positive when it pushes).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Compressed {
+    /// Spring constant k of eq. 1.
+    pub stiffness: f64,
+    /// `x_r − x`: the rest beyond the spring's length.
+    pub compression: f64,
+}
+
+impl Compressed {
+    /// The strain energy `k·(x_r − x)²/2` (J).
+    #[must_use]
+    pub fn strain_j(self) -> f64 {
+        0.5 * self.stiffness * self.compression * self.compression
+    }
+}
+
+/// Eq. 2 solved for the thrust: the step Δ of every supporting spring's
+/// rest (m or rad) that makes the predicted apex `target_m`. With
+/// `E = Mg·(target − y) − M·ẏ²/2` to store, `Σ k_i (c_i + Δ)²/2 = E` is a
+/// quadratic in Δ; its larger root. Where no step stores that little (the
+/// body already rises past the target), the step that stores least — the
+/// springs let go as far as they can. `springs` empty: no step (0).
+#[must_use]
+pub fn thrust_for_apex(
+    springs: &[Compressed],
+    mass_kg: f64,
+    com_height_m: f64,
+    com_vy_mps: f64,
+    target_m: f64,
+) -> f64 {
+    let k: f64 = springs.iter().map(|s| s.stiffness).sum();
+    if !(k > 0.0) {
+        return 0.0;
+    }
+    let kc: f64 = springs.iter().map(|s| s.stiffness * s.compression).sum();
+    let strain: f64 = springs.iter().map(|s| s.strain_j()).sum();
+    let wanted = mass_kg * GRAVITY_MPS2 * (target_m - com_height_m)
+        - 0.5 * mass_kg * com_vy_mps * com_vy_mps;
+    // k/2·Δ² + kc·Δ + (strain − wanted) = 0.
+    let disc = kc * kc - 2.0 * k * (strain - wanted);
+    (-kc + disc.max(0.0).sqrt()) / k
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -30,5 +89,46 @@ mod tests {
         assert!((height_for_flight(t) - v * v / (2.0 * GRAVITY_MPS2)).abs() < 1e-15);
         assert!((flight_for_height(height_for_flight(t)) - t).abs() < 1e-15);
         assert_eq!(flight_for_height(-1.0), 0.0);
+    }
+
+    #[test]
+    fn the_thrust_stores_what_the_prediction_lacks() {
+        // Two springs, a body at 0.8 m falling at 0.1 m/s: the step found
+        // makes eq. 2 predict the target, within rounding.
+        let springs = [
+            Compressed {
+                stiffness: 6000.0,
+                compression: 0.02,
+            },
+            Compressed {
+                stiffness: 4000.0,
+                compression: 0.035,
+            },
+        ];
+        let (m, y, vy, target) = (12.0, 0.8, -0.1, 0.9);
+        let step = thrust_for_apex(&springs, m, y, vy, target);
+        let stored: f64 = springs
+            .iter()
+            .map(|s| {
+                Compressed {
+                    compression: s.compression + step,
+                    ..*s
+                }
+                .strain_j()
+            })
+            .sum();
+        assert!((predicted_apex_m(stored, m, y, vy) - target).abs() < 1e-12);
+        assert!(step > 0.0);
+        // One spring, energy checked by hand: 0.5·k·d² = Mg·Δh.
+        let one = [Compressed {
+            stiffness: 2.0 * 9.81 * 10.0,
+            compression: 0.0,
+        }];
+        assert!((thrust_for_apex(&one, 10.0, 0.0, 0.0, 0.25) - 0.5).abs() < 1e-12);
+        // Already rising past the target: the springs let go entirely.
+        let rising = thrust_for_apex(&springs, m, y, 3.0, target);
+        let kc = 6000.0 * 0.02 + 4000.0 * 0.035;
+        assert!((rising + kc / 10000.0).abs() < 1e-12);
+        assert_eq!(thrust_for_apex(&[], m, y, vy, target), 0.0);
     }
 }

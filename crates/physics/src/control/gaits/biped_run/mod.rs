@@ -14,6 +14,7 @@ use crate::control::additions::speed_trim::SpeedTrim;
 use crate::control::laws::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
 use crate::control::laws::body_plan::BodyPlan;
 use crate::control::laws::hip_servo::{set_hip, zero_hip};
+use crate::control::laws::hop_height::{Compressed, thrust_for_apex};
 use crate::control::laws::leg_spring::{LegSpring, toward};
 use crate::control::laws::phase::{Phase, StanceEvents};
 use crate::control::laws::placement::{foot_displacement, hip_angles};
@@ -37,6 +38,9 @@ pub struct BipedRun {
     pub stance_s: f64,
     touchdown_time: f64,
     liftoff_height: f64,
+    /// The centre of mass's height at the last lift-off, or at touchdown
+    /// before the first (m): eq. 2's apex target is measured from it.
+    liftoff_com_y: f64,
     apex_height: f64,
     thrust: f64,
     descending: bool,
@@ -62,6 +66,7 @@ impl BipedRun {
             stance_s: 0.18 * Scale::new(scale).time(),
             touchdown_time: 0.0,
             liftoff_height: 0.0,
+            liftoff_com_y: f64::NAN,
             apex_height: f64::NEG_INFINITY,
             thrust: params.hopper.thrust_m * scale,
             descending: true,
@@ -90,6 +95,9 @@ impl BipedRun {
                 if contact.touching && self.descending {
                     self.phase = Phase::Loading;
                     self.touchdown_time = input.time;
+                    if !self.liftoff_com_y.is_finite() {
+                        self.liftoff_com_y = com_state(input.creature, input.data).0.y;
+                    }
                 }
             }
             stance => {
@@ -99,6 +107,12 @@ impl BipedRun {
                     extended: q >= p.hopper.landing_rest_m * l + self.thrust - 0.01 * l
                         || q >= -0.005 * l,
                 });
+                // Eq. 2 at the bottom of the stance: the thrust whose
+                // predicted apex is the target (Figure 4, "extend leg").
+                if stance == Phase::Compression && self.phase == Phase::Thrust && !p.hop_integrator
+                {
+                    self.thrust = self.eq2_thrust(input, q);
+                }
             }
         }
         // Lift-off ends a stance only once the leg has thrust; a foot that
@@ -106,12 +120,13 @@ impl BipedRun {
         if matches!(self.phase, Phase::Thrust | Phase::Unloading) && !contact.touching {
             // Lift-off: the legs swap, the hop's apex adjusts the thrust (eq. 2).
             self.stance_s = (input.time - self.touchdown_time).clamp(0.05 * t, 0.5 * t);
-            if self.apex_height.is_finite() {
+            if p.hop_integrator && self.apex_height.is_finite() {
                 let target = input.commands.hop_height_m.unwrap_or(p.hop_height_m * l);
                 let error = target - (self.apex_height - self.liftoff_height);
                 self.thrust = (self.thrust + p.hopper.hop_gain * error).clamp(0.0, 0.12 * l);
             }
             self.liftoff_height = trunk_y;
+            self.liftoff_com_y = com_state(input.creature, input.data).0.y;
             // Speed over the last step against the desired speed.
             let (on, gain) = (p.speed_trim, p.hopper.speed_integral_gain);
             (self.trim).stride_at_input(on, gain, self.plan.scale.velocity(), input);
@@ -120,6 +135,27 @@ impl BipedRun {
             self.phase = Phase::Flight;
             self.descending = false;
         }
+    }
+
+    /// Eq. 2 for the active leg at spring length `q` (m): the extension of
+    /// its rest beyond the landing rest that makes the predicted apex the
+    /// target, between none and the leg's full length (a rest past the stop
+    /// would push the leg's light bodies against it, not the body up).
+    fn eq2_thrust(&self, input: &ControlInput<'_>, q: f64) -> f64 {
+        let p = &self.params;
+        let s = self.plan.scale;
+        let l = s.length();
+        let (com, v) = com_state(input.creature, input.data);
+        let rest = self.rest[self.active];
+        let leg = [Compressed {
+            stiffness: p.hopper.leg_stiffness * s.stiffness(),
+            compression: rest - q,
+        }];
+        let rise = input.commands.hop_height_m.unwrap_or(p.hop_height_m * l);
+        let mass = input.creature.model.total_mass();
+        let step = thrust_for_apex(&leg, mass, com.y, v.y, self.liftoff_com_y + rise);
+        let landing = p.hopper.landing_rest_m * l;
+        (rest + step - landing).clamp(0.0, (-landing).max(0.0))
     }
 }
 

@@ -45,7 +45,7 @@ pub(crate) const HOPPER: [ControllerParam; 20] = [
         "m",
         EQ2_THRUST,
         Origin::Open,
-        "Figure 4's leg extension injects eq. 2's energy; no length printed: 3 cm to start",
+        "The hop integrator's first thrust (eq. 2 sets each thrust without it); none printed: 3 cm",
     ),
     row(
         "idle_rest_m",
@@ -61,7 +61,7 @@ pub(crate) const HOPPER: [ControllerParam; 20] = [
         "",
         LAB,
         Origin::Lab,
-        "The paper predicts the hop by eq. 2; correcting the thrust from each apex is the lab's",
+        "lab_additions.hop_integrator (off): the paper sets the thrust by eq. 2's prediction alone",
     ),
     placement_gain_s_row(
         "eq. 3's gain; the paper prints none: 0.12 s leaves 4–6 % (inside its 10 %)",

@@ -43,5 +43,6 @@ pub fn build(
     p.speed_trim = additions.speed_trim;
     p.speed_ramp = additions.speed_ramp;
     p.tail_feedback = additions.tail_feedback;
+    p.hop_integrator = additions.hop_integrator;
     Ok(Box::new(KangarooHop::new(p)))
 }

@@ -35,7 +35,7 @@ pub const ORIGINS: &[ControllerParam] = &[
         "",
         LAB,
         Origin::Lab,
-        "Learns eq. 2's losses from each measured apex; the paper uses eq. 2's prediction alone",
+        "lab_additions.hop_integrator: learns eq. 2's losses from each apex; the paper uses eq. 2's prediction alone",
     ),
     row(
         "ankle_stiffness",

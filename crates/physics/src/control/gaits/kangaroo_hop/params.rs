@@ -80,6 +80,10 @@ pub struct KangarooHopParams {
     /// frequency to the hop): the rest follows pitch error and rate with
     /// `tail_pitch_gain` and `tail_rate_gain_s`.
     pub tail_feedback: bool,
+    /// The lab's hop integrator on (`lab_additions.hop_integrator`; not in
+    /// the paper): each measured apex corrects eq. 2's target by
+    /// `hop_gain`, learning the losses eq. 2 leaves out.
+    pub hop_integrator: bool,
     /// Pitch-rate feedback added to the tail-base rest angle (s).
     pub tail_rate_gain_s: f64,
     /// Stiffness of the two distal tail joints (N·m/rad).
@@ -140,6 +144,7 @@ impl Default for KangarooHopParams {
             tail_step_rad: 0.15,
             tail_pitch_gain: 4.0,
             tail_feedback: true,
+            hop_integrator: true,
             tail_rate_gain_s: 0.3,
             tail_tip_stiffness: 4.0,
             tail_tip_damping: 0.05,

@@ -7,6 +7,7 @@ use glam::DVec3;
 
 use super::{JumpStage, KangarooHop};
 use crate::control::additions::speed_trim::along_z;
+use crate::control::laws::hop_height::{Compressed, thrust_for_apex};
 use crate::control::laws::phase::{Phase, StanceEvents};
 use crate::control::laws::scale::Scale;
 use crate::dynamics::model::GRAVITY_MPS2;
@@ -75,7 +76,8 @@ impl KangarooHop {
         }
         self.touchdown_toe = toe_z;
         // Hop-height learning from the apex just flown (eq. 2's losses).
-        if self.jump == JumpStage::None
+        if p.hop_integrator
+            && self.jump == JumpStage::None
             && self.target_apex_y.is_finite()
             && self.apex_com_y.is_finite()
         {
@@ -128,8 +130,6 @@ impl KangarooHop {
         let g = GRAVITY_MPS2;
         let (k, _) = self.ankle_gains(l);
         let q = input.data.q[leg.spring];
-        let strain = 0.5 * k * (q - self.ankle_rest).powi(2);
-        let predicted = (strain + m * g * com.y + 0.5 * m * com_v.y * com_v.y) / (m * g);
         let base = if self.liftoff_com_y.is_finite() {
             self.liftoff_com_y
         } else {
@@ -150,9 +150,16 @@ impl KangarooHop {
             target = base + by_time.max(by_height);
         }
         self.target_apex_y = target;
-        let wanted = (target + self.apex_correction_m - predicted) * m * g;
-        let stored = (q - self.ankle_rest).powi(2) + 2.0 * wanted / k;
-        let rest = q + stored.max(0.0).sqrt();
+        let learned = if p.hop_integrator {
+            self.apex_correction_m
+        } else {
+            0.0
+        };
+        let ankle = [Compressed {
+            stiffness: k,
+            compression: self.ankle_rest - q,
+        }];
+        let rest = self.ankle_rest + thrust_for_apex(&ankle, m, com.y, com_v.y, target + learned);
         let r0 = p.ankle_rest_rad;
         self.ankle_rest = rest.clamp(r0 - 0.5 * p.max_thrust_rad, r0 + p.max_thrust_rad);
     }
