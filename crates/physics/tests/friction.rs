@@ -9,7 +9,7 @@
 
 mod common;
 
-use common::{bundled, paper_only_run, run};
+use common::{KEPT, bundled, paper_only_run, run};
 use gaitlab_physics::engine::metrics::{GaitSummary, paper_friction_bounds};
 
 fn within_the_papers(s: &GaitSummary, legs: usize, what: &str) {
@@ -39,7 +39,7 @@ fn the_trots_virtual_legs_hold_on_the_papers_friction_and_leg_by_leg_do_not() {
                 .or_default()
                 .insert("unison_liftoff".to_owned(), 0.0);
         },
-        &[],
+        KEPT,
     );
     assert!(
         apart.friction_needed_mid > 3.0 && apart.friction_needed_edges > 3.0,

@@ -35,7 +35,7 @@ fn each_gait_runs_its_own_additions_by_the_file_s_choice() {
             "hop_integrator"
         ]
     );
-    assert!(names("raibert-quadruped", "trot", None).is_empty());
+    assert_eq!(names("raibert-quadruped", "trot", None), ["hop_integrator"]);
     // `{}`: each controller's defaults.
     assert_eq!(
         names("raibert-biped", "run", default),
@@ -62,7 +62,14 @@ fn each_gait_runs_its_own_additions_by_the_file_s_choice() {
         ..LabAdditions::default()
     });
     assert_eq!(names("raibert-biped", "run", asked), ["speed_trim"]);
-    assert!(names("raibert-quadruped", "trot", asked).is_empty());
+    assert_eq!(
+        names("raibert-quadruped", "trot", asked),
+        ["hop_integrator"]
+    );
+    assert_eq!(
+        names("raibert-quadruped", "pace", asked),
+        ["hop_integrator"]
+    );
     let off = Some(LabAdditions {
         speed_trim: Some(false),
         speed_ramp: Some(false),

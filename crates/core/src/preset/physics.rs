@@ -373,9 +373,10 @@ pub struct LabAdditions {
     /// trunk's pitch error and rate, where the paper only steps it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tail_feedback: Option<bool>,
-    /// The hop-height integrator: the thrust (the biped's leg extension, the
-    /// kangaroo's apex target) corrected from each measured apex, where the
-    /// paper sets the thrust by eq. 2's prediction alone.
+    /// The hop-height integrator: the thrust (the biped run's leg extension,
+    /// the kangaroo's apex target, the trot's and pace's pairs') corrected
+    /// from each measured apex or flight, where the paper sets the thrust by
+    /// eq. 2's prediction alone.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hop_integrator: Option<bool>,
 }

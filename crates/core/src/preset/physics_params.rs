@@ -258,7 +258,7 @@ pub const PHYSICS_PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "scenario.physics.lab_additions.hop_integrator",
         command: None,
-        label: "Thrust corrected from each measured apex (biped run, kangaroo)",
+        label: "Thrust corrected from each measured apex or flight (biped run, kangaroo, trot, pace)",
         unit: "",
         domain: Domain::Bool,
         live: false,

@@ -9,16 +9,33 @@ use gaitlab_core::preset::physics::PhysicsParams;
 use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::engine::metrics::GaitSummary;
 
+/// The additions a gait keeps by default where the paper's law alone misses
+/// (docs/physics.md, "Eq. 2 as written"): the hop integrator of the trot,
+/// the pace and the kangaroo.
+pub const KEPT: &[&str] = &["hop_integrator"];
+
 /// `preset`'s `gait` (its own when `None`) at `speed` (m/s) for `seconds`
 /// of simulated time, asserting it runs with none of the lab's additions
-/// and does not fall; its summary and leg names.
+/// but those in [`KEPT`] and does not fall; its summary and leg names.
 pub fn paper_only_run(
     preset: &Creature,
     gait: Option<&str>,
     speed: f64,
     seconds: f64,
 ) -> (GaitSummary, Vec<String>) {
-    run(preset, gait, speed, seconds, |_| {}, &[])
+    run_where(
+        preset,
+        gait,
+        speed,
+        seconds,
+        |_| {},
+        |got| {
+            assert!(
+                got.iter().all(|name| KEPT.contains(name)),
+                "the lab's additions: {got:?}"
+            );
+        },
+    )
 }
 
 /// `preset`'s `gait` (its own when `None`) at `speed` (m/s) for `seconds`
@@ -34,6 +51,20 @@ pub fn run(
     edit: impl FnOnce(&mut PhysicsParams),
     additions: &[&str],
 ) -> (GaitSummary, Vec<String>) {
+    run_where(preset, gait, speed, seconds, edit, |got| {
+        assert_eq!(got, additions, "the lab's additions");
+    })
+}
+
+/// [`run`], the additions the driver runs with checked by `check`.
+fn run_where(
+    preset: &Creature,
+    gait: Option<&str>,
+    speed: f64,
+    seconds: f64,
+    edit: impl FnOnce(&mut PhysicsParams),
+    check: impl FnOnce(&[&str]),
+) -> (GaitSummary, Vec<String>) {
     let mut driver = driver_with(preset, |params| {
         if let Some(gait) = gait {
             params.gait = Some(gait.to_owned());
@@ -41,11 +72,7 @@ pub fn run(
         params.speed_mps = speed;
         edit(params);
     });
-    assert_eq!(
-        driver.lab_additions().collect::<Vec<_>>(),
-        additions,
-        "the lab's additions"
-    );
+    check(&driver.lab_additions().collect::<Vec<_>>());
     while driver.time() < seconds && driver.resets() == 0 {
         driver.step(1.0 / 60.0);
     }

@@ -82,10 +82,10 @@ pub static GAITS: &[GaitRow] = &[
     GaitRow::new(Biped, "run", biped_run::build::build, None, &[], (1.0, 2.5), (0.25, 4.0), Offered::BIPED_RUN),
     GaitRow::new(Biped, "gallop", biped_gallop::build::build::<false>, None, &[[0, 1]], (1.0, 2.0), (0.25, 4.0), Offered::BIPED_GALLOP),
     GaitRow::new(Biped, "gallop_alternate", biped_gallop::build::build::<true>, None, &[[0, 1]], (1.0, 2.0), (0.25, 4.0), Offered::BIPED_GALLOP),
-    GaitRow::new(Quadruped, "trot", trot::build::build, Some(trot::start::start), &trot::TROT_PAIRS, (1.0, 2.3), (0.25, 4.0), Offered::NONE),
+    GaitRow::new(Quadruped, "trot", trot::build::build, Some(trot::start::start), &trot::TROT_PAIRS, (1.0, 2.3), (0.25, 4.0), Offered::TROT),
     GaitRow::new(Quadruped, "bound", bound::build::build::<false>, Some(bound::start::start), &bound::PAIRS, (1.5, 2.8), (0.25, 4.0), Offered::BOUND),
     GaitRow::new(Quadruped, "gallop", bound::build::build::<true>, Some(bound::start::start), &bound::PAIRS, (1.5, 2.8), (0.25, 1.0), Offered::BOUND),
-    GaitRow::new(Quadruped, "pace", pace::build::build, Some(trot::start::start), &pace::PACE_PAIRS, (1.3, 2.0), (0.25, 4.0), Offered::NONE),
+    GaitRow::new(Quadruped, "pace", pace::build::build, Some(trot::start::start), &pace::PACE_PAIRS, (1.3, 2.0), (0.25, 4.0), Offered::TROT),
     GaitRow::new(Kangaroo, "hop", kangaroo_hop::build::build, Some(kangaroo_hop::start::start), &[], (2.0, 5.0), (0.25, 4.0), Offered::KANGAROO_HOP),
 ];
 

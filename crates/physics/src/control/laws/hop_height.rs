@@ -65,7 +65,7 @@ pub fn thrust_for_apex(
     target_m: f64,
 ) -> f64 {
     let k: f64 = springs.iter().map(|s| s.stiffness).sum();
-    if !(k > 0.0) {
+    if k.is_nan() || k <= 0.0 {
         return 0.0;
     }
     let kc: f64 = springs.iter().map(|s| s.stiffness * s.compression).sum();

@@ -60,7 +60,6 @@ impl BipedRunParams {
             speed_trim: true,
             unloading_posture: true,
             hop_integrator: true,
-            ..d
         }
     }
 }

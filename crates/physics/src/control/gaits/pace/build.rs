@@ -18,7 +18,14 @@ use crate::creatures::PhysicalCreature;
 pub fn build(
     creature: &PhysicalCreature,
     params: &PhysicsParams,
-    _additions: Additions,
+    additions: Additions,
 ) -> Result<Box<dyn Gait>, Misfit> {
-    on_pairs(creature, params, "pace", pace_params(), PACE_PAIRS)
+    on_pairs(
+        creature,
+        params,
+        "pace",
+        pace_params(),
+        PACE_PAIRS,
+        additions,
+    )
 }

@@ -1,6 +1,6 @@
 //! The trot's controller built from a preset's physics section (its row of
 //! the gait table): its controller parameters by name over the trot's own.
-//! The trot offers none of the lab's additions. [`on_pairs`] builds the same
+//! The trot offers the lab's hop integrator. [`on_pairs`] builds the same
 //! state machine on other virtual legs (the pace's).
 
 use gaitlab_core::preset::PhysicsParams;
@@ -19,14 +19,15 @@ use crate::creatures::PhysicalCreature;
 pub fn build(
     creature: &PhysicalCreature,
     params: &PhysicsParams,
-    _additions: Additions,
+    additions: Additions,
 ) -> Result<Box<dyn Gait>, Misfit> {
     let own = QuadrupedRunParams::default();
-    on_pairs(creature, params, "trot", own, TROT_PAIRS)
+    on_pairs(creature, params, "trot", own, TROT_PAIRS, additions)
 }
 
 /// The trot's state machine on the virtual legs `pairs`, for `gait`: its
-/// `own` parameters with the preset's by name over them.
+/// `own` parameters with the preset's by name over them, and the hop
+/// integrator if `additions` has it.
 ///
 /// # Errors
 /// Legs that are not the quadruped's; a parameter the gait lacks.
@@ -36,8 +37,10 @@ pub fn on_pairs(
     gait: &str,
     own: QuadrupedRunParams,
     pairs: [[usize; 2]; 2],
+    additions: Additions,
 ) -> Result<Box<dyn Gait>, Misfit> {
     quadruped_legs(creature)?;
-    let p = with_parameters(own, params, gait)?;
+    let mut p = with_parameters(own, params, gait)?;
+    p.hop_integrator = additions.hop_integrator;
     Ok(Box::new(QuadrupedRun::new(p, creature).with_pairs(pairs)))
 }

@@ -2,12 +2,16 @@
 //! each leg of the active diagonal pair lands, compresses and thrusts on
 //! its own spring's events; the pair unloads as one virtual leg when its
 //! legs are near full length on average (`unison_liftoff`), and lifts off
-//! when both feet have left the ground; each flight regulates that pair's
-//! thrust (eq. 2 on the Table-2 flight time).
+//! when both feet have left the ground. Eq. 2 sets the pair's thrust at the
+//! virtual leg's bottom, or — the lab's hop integrator — each flight
+//! corrects it from the Table-2 flight time.
 
 use super::QuadrupedRun;
 use crate::control::additions::speed_trim::along_z;
-use crate::control::laws::hop_height::flight_for_height;
+use crate::control::laws::attitude::com_state;
+use crate::control::laws::hop_height::{
+    Compressed, flight_for_height, height_for_flight, thrust_for_apex,
+};
 use crate::control::laws::leg_spring::LegSpring;
 use crate::control::laws::phase::{Phase, StanceEvents};
 use crate::world::sim::{ControlInput, Drive};
@@ -38,8 +42,10 @@ impl QuadrupedRun {
             let target =
                 (input.commands.hop_height_m).map_or(t.flight_s[p] * time_s, flight_for_height);
             let error = target - flight;
-            self.thrust[p] = (self.thrust[p] + self.params.flight_gain * time_s * error)
-                .clamp(0.0, self.params.max_thrust_m * l);
+            if self.params.hop_integrator {
+                self.thrust[p] = (self.thrust[p] + self.params.flight_gain * time_s * error)
+                    .clamp(0.0, self.params.max_thrust_m * l);
+            }
             self.liftoff_pair = None;
         }
         for &i in &pair {
@@ -66,6 +72,10 @@ impl QuadrupedRun {
                         if !self.in_stance {
                             self.in_stance = true;
                             self.touchdown_time = input.time;
+                            self.eq2_set = false;
+                            if !self.liftoff_com_y.is_finite() {
+                                self.liftoff_com_y = com_state(input.creature, input.data).0.y;
+                            }
                         }
                     }
                 }
@@ -84,6 +94,17 @@ impl QuadrupedRun {
                     *phase != Phase::Loading || input.time - self.leg_touchdown[i] > 0.01 * time_s;
                 *phase = Phase::Flight;
             }
+        }
+        // Eq. 2 at the virtual leg's bottom: the first of its legs to turn
+        // from Compression to Thrust sets the pair's thrust.
+        if !self.params.hop_integrator
+            && !self.eq2_set
+            && pair
+                .iter()
+                .any(|&i| !self.done[i] && self.leg_phase[i] == Phase::Thrust)
+        {
+            self.eq2_set = true;
+            self.thrust[self.active] = self.eq2_thrust(input);
         }
         // The pair is one virtual leg ("Gaits": its members "strike the
         // ground in unison and leave the ground in unison"): it unloads
@@ -116,6 +137,7 @@ impl QuadrupedRun {
             self.stance_s[self.active] = measured.clamp(0.04 * time_s, 0.4 * time_s);
             self.liftoff_time = input.time;
             self.liftoff_pair = Some(self.active);
+            self.liftoff_com_y = com_state(input.creature, input.data).0.y;
             // Integral speed correction from the step's mean speed.
             let vd = input.commands.speed_mps;
             self.trim.stride(
@@ -133,6 +155,36 @@ impl QuadrupedRun {
             self.leg_phase = [Phase::Flight; 4];
             self.active = 1 - self.active;
         }
+    }
+
+    /// Eq. 2 for the active pair: the thrust added to its legs' stance rests
+    /// that makes the predicted apex the hop height above the last lift-off
+    /// — the commanded one, else the apex of the pair's Table-2 flight —
+    /// between none and the pair's `max_thrust_m`.
+    fn eq2_thrust(&self, input: &ControlInput<'_>) -> f64 {
+        let t = self.tuning();
+        let s = self.plan.scale;
+        let l = s.length();
+        let pair = self.pairs[self.active];
+        let (com, v) = com_state(input.creature, input.data);
+        let mut springs = [Compressed {
+            stiffness: 0.0,
+            compression: 0.0,
+        }; 2];
+        for (spring, &i) in springs.iter_mut().zip(&pair) {
+            if !self.done[i] && self.leg_phase[i] != Phase::Flight {
+                let q = input.data.q[input.creature.legs[i].spring];
+                *spring = Compressed {
+                    stiffness: t.leg_stiffness * s.stiffness(),
+                    compression: self.stance_rest[i] - q,
+                };
+            }
+        }
+        let rise = (input.commands.hop_height_m)
+            .unwrap_or_else(|| height_for_flight(t.flight_s[self.active] * s.time()));
+        let mass = input.creature.model.total_mass();
+        let step = thrust_for_apex(&springs, mass, com.y, v.y, self.liftoff_com_y + rise);
+        step.clamp(0.0, self.params.max_thrust_m * l)
     }
 
     /// The leg springs of eq. 1 with a programmable rest: the idle pair and

@@ -76,6 +76,11 @@ pub struct QuadrupedRun {
     posture: PairPosture,
     liftoff_time: f64,
     liftoff_pair: Option<usize>,
+    /// The centre of mass's height at the last lift-off, or at the first
+    /// touchdown before one (m): eq. 2's apex target is measured from it.
+    liftoff_com_y: f64,
+    /// Eq. 2 has set this stance's thrust.
+    eq2_set: bool,
     /// A per-step speed correction by the tuning's `speed_gain` (0 unless a
     /// preset sets it: the trot holds its speed by eq. 3 alone).
     pub trim: SpeedTrim,
@@ -107,6 +112,8 @@ impl QuadrupedRun {
             posture: PairPosture::default(),
             liftoff_time: 0.0,
             liftoff_pair: None,
+            liftoff_com_y: f64::NAN,
+            eq2_set: false,
             trim: SpeedTrim::default(),
             plan: BodyPlan::of(creature),
         }

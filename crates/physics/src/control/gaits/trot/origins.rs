@@ -98,7 +98,7 @@ pub const ORIGINS: &[ControllerParam] = &[
         "Caps eq. 4's torques at a friction-safe force (∞: none); the paper's feet never slip",
     ),
     flight_gain_row(
-        "An integrator on each flight's time error; the paper does not say how it sets eq. 2",
+        "lab_additions.hop_integrator (on): each flight's time error; eq. 2 alone without it",
     ),
     MAX_THRUST_M,
     yaw_kp_row(

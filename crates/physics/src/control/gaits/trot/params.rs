@@ -68,9 +68,14 @@ pub struct GaitTuning {
 pub struct QuadrupedRunParams {
     /// Tuning of the trot.
     pub trot: GaitTuning,
-    /// Thrust change per second of flight-duration error (m/s), eq. 2's
-    /// energy injection regulated hop by hop.
+    /// Thrust change per second of flight-duration error (m/s): the lab's
+    /// hop integrator, regulating eq. 2's energy injection hop by hop.
     pub flight_gain: f64,
+    /// The lab's hop integrator on (`lab_additions.hop_integrator`; not in
+    /// the paper): each pair's thrust corrected by `flight_gain` from each
+    /// flight's measured duration, where the paper sets it by eq. 2's
+    /// prediction at the virtual leg's bottom.
+    pub hop_integrator: bool,
     /// Largest thrust (m).
     pub max_thrust_m: f64,
     /// Trunk yaw servo towards the heading in stance (N·m/rad).
@@ -116,6 +121,7 @@ impl Default for QuadrupedRunParams {
         Self {
             trot,
             flight_gain: 0.05,
+            hop_integrator: true,
             max_thrust_m: 0.10,
             yaw_kp: 300.0,
             yaw_kv: 30.0,
