@@ -413,9 +413,12 @@ fn the_physics_panel_names_the_lab_additions_and_has_every_creatures_inputs() {
         ("raibert-biped", "Lab's additions: none"),
         (
             "raibert-kangaroo",
-            "Lab's additions (not in the paper): speed ramp",
+            "Lab's additions (not in the paper): speed ramp, hop integrator",
         ),
-        ("raibert-quadruped", "Lab's additions: none"),
+        (
+            "raibert-quadruped",
+            "Lab's additions (not in the paper): hop integrator",
+        ),
     ] {
         let mut harness = poda_harness(preset, 1400.0);
         harness.run();

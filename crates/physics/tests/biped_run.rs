@@ -24,6 +24,7 @@ fn run_with(speed: f64, seconds: f64, additions: Option<LabAdditions>) -> Physic
     params.speed_mps = speed;
     if let Some(a) = additions {
         params.lab_additions = Some(a);
+        params.lab_additions_by_gait.clear();
     }
     let mut driver = PhysicsDriver::with_params(&preset, params).expect("driver");
     driver.reset_after_fall = false;

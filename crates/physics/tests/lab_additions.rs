@@ -14,6 +14,7 @@ fn names(preset: &str, gait: &str, spec: Option<LabAdditions>) -> Vec<&'static s
     let creature = creature_from_preset(&preset).expect("creature");
     let mut params = preset.scenario.physics.clone().expect("physics");
     params.lab_additions = spec;
+    params.lab_additions_by_gait.clear();
     let controller = make_controller(&creature, gait, &params).expect("controller");
     controller.additions().names().collect()
 }
@@ -39,17 +40,23 @@ fn each_gait_runs_its_own_additions_by_the_file_s_choice() {
     // `{}`: each controller's defaults.
     assert_eq!(
         names("raibert-biped", "run", default),
-        ["unloading_posture"]
+        ["unloading_posture", "hop_integrator"]
     );
-    assert_eq!(names("raibert-biped", "gallop", default), ["speed_trim"]);
+    assert_eq!(
+        names("raibert-biped", "gallop", default),
+        ["speed_trim", "hop_integrator"]
+    );
     assert_eq!(
         names("raibert-biped", "gallop_alternate", default),
-        ["speed_trim"]
+        ["speed_trim", "hop_integrator"]
     );
-    assert_eq!(names("raibert-quadruped", "bound", default), ["speed_trim"]);
+    assert_eq!(
+        names("raibert-quadruped", "bound", default),
+        ["speed_trim", "hop_integrator"]
+    );
     assert_eq!(
         names("raibert-quadruped", "gallop", default),
-        ["speed_trim"]
+        ["speed_trim", "hop_integrator"]
     );
     assert_eq!(
         names("raibert-kangaroo", "hop", default),
@@ -61,7 +68,10 @@ fn each_gait_runs_its_own_additions_by_the_file_s_choice() {
         unloading_posture: Some(false),
         ..LabAdditions::default()
     });
-    assert_eq!(names("raibert-biped", "run", asked), ["speed_trim"]);
+    assert_eq!(
+        names("raibert-biped", "run", asked),
+        ["speed_trim", "hop_integrator"]
+    );
     assert_eq!(
         names("raibert-quadruped", "trot", asked),
         ["hop_integrator"]
@@ -79,4 +89,46 @@ fn each_gait_runs_its_own_additions_by_the_file_s_choice() {
     });
     assert!(names("raibert-kangaroo", "hop", off).is_empty());
     assert!(names("raibert-biped", "gallop", off).is_empty());
+}
+
+/// `lab_additions_by_gait` names an addition for one gait over the file's
+/// choice: the bundled biped runs by eq. 2 alone (its run's hop integrator
+/// off) while its gallops keep theirs; a gait the model lacks is refused by
+/// name.
+#[test]
+fn one_gait_s_choice_goes_over_the_file_s() {
+    let preset = load_bundled("raibert-biped")
+        .expect("bundled")
+        .expect("valid");
+    let creature = creature_from_preset(&preset).expect("creature");
+    let params = preset.scenario.physics.clone().expect("physics");
+    let on = |gait: &str, params: &gaitlab_core::preset::PhysicsParams| {
+        let controller = make_controller(&creature, gait, params).expect("controller");
+        controller.additions().names().collect::<Vec<_>>()
+    };
+    assert!(on("run", &params).is_empty());
+    assert_eq!(on("gallop", &params), ["hop_integrator"]);
+    let mut other = params.clone();
+    other.lab_additions_by_gait.clear();
+    assert_eq!(on("run", &other), ["hop_integrator"]);
+    other.lab_additions_by_gait.insert(
+        "gallop".to_owned(),
+        LabAdditions {
+            hop_integrator: Some(false),
+            ..LabAdditions::default()
+        },
+    );
+    assert!(on("gallop", &other).is_empty());
+    other
+        .lab_additions_by_gait
+        .insert("amble".to_owned(), LabAdditions::default());
+    let Err(error) = make_controller(&creature, "run", &other) else {
+        panic!("an unknown gait is refused")
+    };
+    assert!(
+        error
+            .to_string()
+            .starts_with("scenario.physics.lab_additions_by_gait.amble: "),
+        "{error}"
+    );
 }

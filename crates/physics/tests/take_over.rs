@@ -12,9 +12,10 @@ use gaitlab_physics::engine::gait_change::Entry;
 use serde_json::Value;
 
 /// The bundled quadruped, paper alone (every lab addition off, no
-/// `switch_to_start`) but for the hop integrator the trot keeps by default
-/// (by eq. 2 alone its flights are 40–60 % of Table 2's: docs/physics.md,
-/// "Eq. 2 as written"), `from` at `speed` m/s.
+/// `switch_to_start`) but for the hop integrator its gaits keep by default
+/// (by eq. 2 alone the trot's flights are 40–60 % of Table 2's, the bound
+/// falls at 2.8 m/s: docs/physics.md, "Eq. 2 as written"), `from` at
+/// `speed` m/s.
 fn quadruped(from: &str, speed: f64) -> PhysicsDriver {
     let json = bundled_json("raibert-quadruped").expect("bundled");
     let mut preset: Value = serde_json::from_str(json).expect("json");

@@ -12,6 +12,7 @@ use gaitlab_core::portable::Portable;
 use gaitlab_core::preset::physics::{ObstacleSpec, PhysicsParams};
 use gaitlab_core::{Creature, PresetError};
 use gaitlab_physics::PhysicsDriver;
+use gaitlab_physics::control::gaits::parameters::REPLACED_BY_HOP_HEIGHT;
 use gaitlab_physics::creatures::Species;
 use gaitlab_physics::engine::metrics::GaitSummary;
 
@@ -215,7 +216,9 @@ impl Problem {
             let reached = PhysicsDriver::with_params(&self.preset, params)
                 .ok()
                 .and_then(|d| d.parameter(name));
-            if reached != Some(probe) {
+            let commanded = self.params.hop_height_m.is_some()
+                && REPLACED_BY_HOP_HEIGHT.contains(&name.as_str());
+            if reached != Some(probe) || commanded {
                 return Err(PresetError::new(
                     &field,
                     format!(

@@ -171,13 +171,16 @@ fn the_steps_term_counts_the_speed_steps_that_felled_the_creature() {
 #[test]
 fn the_switch_term_counts_the_switches_that_felled_the_creature() {
     let cost = start_cost;
-    let mut taken_over = pitching_bound(2.3);
+    // At 2.3 m/s the bound takes over from the trot and runs on since the
+    // take-over starts from the state it finds (2026-12-06); at 2.8 m/s it
+    // still falls after it.
+    let mut taken_over = pitching_bound(2.8);
     if let Some(physics) = taken_over.scenario.physics.as_mut() {
         physics.switch_to_start.clear();
     }
     let mut switched = problem_of(&taken_over, "bound", 20.0, "fall=1,switch=2");
     // Without a gait to begin in the term has no runs.
-    assert_eq!(cost(&switched), (1, 0.0), "the bound holds 2.3 m/s");
+    assert_eq!(cost(&switched), (1, 0.0), "the bound holds 2.8 m/s");
     assert!(
         switched
             .set_switch_from("bound")

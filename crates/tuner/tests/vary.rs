@@ -12,10 +12,16 @@ use gaitlab_tuner::{Objective, Problem};
 
 const SECONDS: f64 = 5.0;
 
+/// The bundled biped with its run's hop integrator on (`thrust_m` is the
+/// integrator's first thrust; by eq. 2 alone it is unused) and, if given,
+/// that first thrust.
 fn biped(thrust_m: Option<f64>) -> Creature {
     let Some(Ok(mut creature)) = load_bundled("raibert-biped") else {
         panic!("raibert-biped is bundled")
     };
+    if let Some(physics) = creature.scenario.physics.as_mut() {
+        physics.lab_additions_by_gait.clear();
+    }
     if let (Some(physics), Some(t)) = (creature.scenario.physics.as_mut(), thrust_m) {
         physics
             .controller_by_gait

@@ -56,6 +56,10 @@ const PHYSICS_OFF: &[(&str, ValueOf)] = &[
         ValueOf::Bool(false),
     ),
     ("scenario.physics.switch_to_start", ValueOf::Empty),
+    (
+        "scenario.physics.lab_additions_by_gait",
+        ValueOf::EmptyObject,
+    ),
 ];
 
 /// A JSON value in a const table.
@@ -65,6 +69,7 @@ enum ValueOf {
     Int(i64),
     Text(&'static str),
     Empty,
+    EmptyObject,
 }
 
 impl ValueOf {
@@ -74,6 +79,7 @@ impl ValueOf {
             Self::Int(i) => Value::from(i),
             Self::Text(t) => Value::from(t),
             Self::Empty => Value::Array(Vec::new()),
+            Self::EmptyObject => Value::Object(serde_json::Map::new()),
         }
     }
 }

@@ -328,6 +328,12 @@ pub struct PhysicsParams {
     /// paper's laws only where the gait holds its speed with them.
     #[serde(default)]
     pub lab_additions: Option<LabAdditions>,
+    /// One gait's own choice of the lab's additions, by gait name, over
+    /// `lab_additions` when that gait runs (`{"run": {"hop_integrator":
+    /// false}}`): an addition every gait has can be off for one of them.
+    /// Default: none.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub lab_additions_by_gait: BTreeMap<String, LabAdditions>,
     /// The state the run starts from. Default `gait` (as every file made
     /// before 2026-12-04 started).
     #[serde(default, skip_serializing_if = "is_gait_start")]
@@ -373,12 +379,27 @@ pub struct LabAdditions {
     /// trunk's pitch error and rate, where the paper only steps it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tail_feedback: Option<bool>,
-    /// The hop-height integrator: the thrust (the biped run's leg extension,
-    /// the kangaroo's apex target, the trot's and pace's pairs') corrected
-    /// from each measured apex or flight, where the paper sets the thrust by
-    /// eq. 2's prediction alone.
+    /// The hop-height integrator: the thrust (the biped's leg extension, the
+    /// kangaroo's apex target, the quadruped's pairs') corrected from each
+    /// measured apex or flight, where the paper sets the thrust by eq. 2's
+    /// prediction alone.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hop_integrator: Option<bool>,
+}
+
+impl LabAdditions {
+    /// These choices over `base`: each one named here wins, the rest are
+    /// `base`'s (a gait's `lab_additions_by_gait` over `lab_additions`).
+    #[must_use]
+    pub fn over(self, base: Self) -> Self {
+        Self {
+            speed_trim: self.speed_trim.or(base.speed_trim),
+            unloading_posture: self.unloading_posture.or(base.unloading_posture),
+            speed_ramp: self.speed_ramp.or(base.speed_ramp),
+            tail_feedback: self.tail_feedback.or(base.tail_feedback),
+            hop_integrator: self.hop_integrator.or(base.hop_integrator),
+        }
+    }
 }
 
 /// The ground's linear springs and dampers (`scenario.physics.ground`), at
@@ -594,14 +615,25 @@ impl PhysicsParams {
         }
         for (gait, values) in &self.controller_by_gait {
             let p = format!("{prefix}.controller_by_gait.{gait}");
-            let word = gait.chars().all(|c| c.is_ascii_lowercase() || c == '_');
-            if gait.is_empty() || gait.len() > 32 || !word {
+            if !is_gait_word(gait) {
                 return Err(PresetError::new(
                     p,
                     "must be a gait's name (lower-case letters and _)",
                 ));
             }
             check_controller(&p, values)?;
+        }
+        if self.lab_additions_by_gait.len() > MAX_GAITS {
+            return Err(PresetError::new(
+                at("lab_additions_by_gait"),
+                format!("at most {MAX_GAITS} gaits"),
+            ));
+        }
+        if let Some(gait) = self.lab_additions_by_gait.keys().find(|g| !is_gait_word(g)) {
+            return Err(PresetError::new(
+                format!("{prefix}.lab_additions_by_gait.{gait}"),
+                "must be a gait's name (lower-case letters and _)",
+            ));
         }
         if self.obstacles.len() > MAX_OBSTACLES {
             return Err(PresetError::new(
@@ -622,4 +654,9 @@ impl PhysicsParams {
         }
         Ok(())
     }
+}
+
+/// A gait's name as a preset may key it: 1–32 lower-case letters and `_`.
+fn is_gait_word(gait: &str) -> bool {
+    !gait.is_empty() && gait.len() <= 32 && gait.chars().all(|c| c.is_ascii_lowercase() || c == '_')
 }

@@ -212,6 +212,19 @@ pub const PHYSICS_PARAMS: &[ParamSpec] = &[
         why: "the paper's gait change takes over at the next flight; a start is the lab's stand-in",
     },
     ParamSpec {
+        key: "scenario.physics.lab_additions_by_gait",
+        command: None,
+        label: "The lab's additions for one gait only",
+        unit: "",
+        domain: Domain::Structured {
+            shape: "{GAIT: {ADDITION: bool}}",
+        },
+        live: false,
+        reference: "docs/physics.md",
+        origin: Origin::Lab,
+        why: "as lab_additions, for the gait named",
+    },
+    ParamSpec {
         key: "scenario.physics.lab_additions.speed_trim",
         command: None,
         label: "Integral speed trim on eq. 3's desired speed",
@@ -258,7 +271,7 @@ pub const PHYSICS_PARAMS: &[ParamSpec] = &[
     ParamSpec {
         key: "scenario.physics.lab_additions.hop_integrator",
         command: None,
-        label: "Thrust corrected from each measured apex or flight (biped run, kangaroo, trot, pace)",
+        label: "Thrust corrected from each measured apex or flight (every gait)",
         unit: "",
         domain: Domain::Bool,
         live: false,

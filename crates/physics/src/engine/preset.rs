@@ -284,6 +284,7 @@ pub fn to_preset(creature: &PhysicalCreature, meta: &PresetMeta) -> Preset {
         ground: None,
         controller: std::collections::BTreeMap::new(),
         controller_by_gait: std::collections::BTreeMap::new(),
+        lab_additions_by_gait: std::collections::BTreeMap::new(),
         obstacles: Vec::new(),
         waypoints: Vec::new(),
         lab_additions: Some(gaitlab_core::preset::physics::LabAdditions::default()),

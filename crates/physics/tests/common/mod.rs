@@ -10,8 +10,8 @@ use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::engine::metrics::GaitSummary;
 
 /// The additions a gait keeps by default where the paper's law alone misses
-/// (docs/physics.md, "Eq. 2 as written"): the hop integrator of the trot,
-/// the pace and the kangaroo.
+/// (docs/physics.md, "Eq. 2 as written"): the hop integrator of every gait
+/// but the biped run.
 pub const KEPT: &[&str] = &["hop_integrator"];
 
 /// `preset`'s `gait` (its own when `None`) at `speed` (m/s) for `seconds`

@@ -23,9 +23,8 @@ pub struct Additions {
     pub speed_ramp: bool,
     /// The kangaroo's tail rest following the trunk's pitch.
     pub tail_feedback: bool,
-    /// The thrust corrected from each measured apex or flight (the biped
-    /// run, the kangaroo, the trot, the pace), where eq. 2's prediction
-    /// alone sets it.
+    /// The thrust corrected from each measured apex or flight (every gait),
+    /// where eq. 2's prediction alone sets it.
     pub hop_integrator: bool,
     /// The file predates the additions being optional: every addition on
     /// and the controllers' earlier defaults, so it runs as it was made.
@@ -66,27 +65,32 @@ impl Offered {
 
     /// The biped run: the speed trim (off: eq. 3 alone holds the speed),
     /// Unloading's posture servo (on for a file that does not say, as files
-    /// of 2026-12-02 ran) and the hop integrator (off: eq. 2 sets the
-    /// thrust).
+    /// of 2026-12-02 ran) and the hop integrator (on for a file that does
+    /// not say, as every file ran until 2026-12-06; the bundled biped turns
+    /// it off: eq. 2 alone holds its speeds).
     pub const BIPED_RUN: Self = Self {
         speed_trim: Some(false),
         unloading_posture: Some(true),
-        hop_integrator: Some(false),
+        hop_integrator: Some(true),
         ..Self::NONE
     };
 
     /// The biped gallops: the speed trim, on (with the controller's own
     /// gains they miss the desired speed by 25–46 % without it; the bundled
-    /// biped carries gallop gains that need none and turns it off).
+    /// biped carries gallop gains that need none and turns it off); the hop
+    /// integrator, on (by eq. 2 alone the gallop blows up at 2 m/s).
     pub const BIPED_GALLOP: Self = Self {
         speed_trim: Some(true),
+        hop_integrator: Some(true),
         ..Self::NONE
     };
 
     /// The quadruped bound and gallop: the speed trim, on (without it the
-    /// skip bound and gallop run 38–54 % slow).
+    /// skip bound and gallop run 38–54 % slow); the hop integrator, on (by
+    /// eq. 2 alone the bound falls at 2.8 m/s, the gallop runs 44–65 % slow).
     pub const BOUND: Self = Self {
         speed_trim: Some(true),
+        hop_integrator: Some(true),
         ..Self::NONE
     };
 

@@ -12,11 +12,12 @@ use crate::control::gaits::controller::GaitController;
 use crate::control::gaits::table::{gait_names, row};
 use crate::creatures::PhysicalCreature;
 
-/// Whether every gait `controller_by_gait` and `switch_to_start` name is
-/// one of the model's.
+/// Whether every gait `controller_by_gait`, `lab_additions_by_gait` and
+/// `switch_to_start` name is one of the model's.
 ///
 /// # Errors
-/// `scenario.physics.controller_by_gait.NAME` or
+/// `scenario.physics.controller_by_gait.NAME`,
+/// `scenario.physics.lab_additions_by_gait.NAME` or
 /// `scenario.physics.switch_to_start[I]` for a gait the model lacks.
 fn known_gaits(creature: &PhysicalCreature, params: &PhysicsParams) -> Result<(), PresetError> {
     let names = gait_names(creature.species);
@@ -25,7 +26,12 @@ fn known_gaits(creature: &PhysicalCreature, params: &PhysicsParams) -> Result<()
         .controller_by_gait
         .keys()
         .find(|g| unknown(g))
-        .map(|g| format!("scenario.physics.controller_by_gait.{g}"));
+        .map(|g| format!("scenario.physics.controller_by_gait.{g}"))
+        .or_else(|| {
+            (params.lab_additions_by_gait.keys())
+                .find(|g| unknown(g))
+                .map(|g| format!("scenario.physics.lab_additions_by_gait.{g}"))
+        });
     let to_start = || {
         params
             .switch_to_start
@@ -66,7 +72,11 @@ pub fn make_controller(
             ),
         ));
     };
-    let additions = Additions::resolve(params.lab_additions.as_ref(), row.offers);
+    let spec = match params.lab_additions_by_gait.get(gait) {
+        Some(own) => Some(own.over(params.lab_additions.unwrap_or_default())),
+        None => params.lab_additions,
+    };
+    let additions = Additions::resolve(spec.as_ref(), row.offers);
     let inner = (row.build)(creature, params, additions).map_err(|e| match e {
         Misfit::Legs(needs) => PresetError::new("scenario.physics.legs", needs),
         Misfit::Preset(e) => e,

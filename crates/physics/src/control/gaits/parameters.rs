@@ -12,6 +12,19 @@ use crate::control::gaits::bound::params::QuadrupedBoundParams;
 use crate::control::gaits::kangaroo_hop::params::KangarooHopParams;
 use crate::control::gaits::trot::params::QuadrupedRunParams;
 
+/// The parameters a hop height command (`scenario.physics.hop_height_m`)
+/// takes the place of: the trot's and pace's flights, the bound's and
+/// gallop's stride and pair flights, the kangaroo's rise. With a hop height
+/// given, a value written for one of them changes nothing.
+pub const REPLACED_BY_HOP_HEIGHT: &[&str] = &[
+    "flight0_s",
+    "flight1_s",
+    "stride_flight_s",
+    "gathered_flight_s",
+    "extended_flight_s",
+    "hop_rise_m",
+];
+
 /// A gait controller's parameters, readable and settable by name.
 pub trait NamedParameters: Copy {
     /// Every name [`NamedParameters::slot`] takes.

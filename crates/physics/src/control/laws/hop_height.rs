@@ -46,13 +46,14 @@ impl Compressed {
     /// The strain energy `k·(x_r − x)²/2` (J).
     #[must_use]
     pub fn strain_j(self) -> f64 {
-        0.5 * self.stiffness * self.compression * self.compression
+        0.5 * self.stiffness * (self.compression * self.compression)
     }
 }
 
 /// Eq. 2 solved for the thrust: the step Δ of every supporting spring's
-/// rest (m or rad) that makes the predicted apex `target_m`. With
-/// `E = Mg·(target − y) − M·ẏ²/2` to store, `Σ k_i (c_i + Δ)²/2 = E` is a
+/// rest (m or rad) that makes the predicted apex `target_m`. What the
+/// springs must store beyond what they hold, `Mg·(target − predicted)`,
+/// gives `Σ k_i (c_i + Δ)²/2 = Σ k_i c_i²/2 + Mg·(target − predicted)`, a
 /// quadratic in Δ; its larger root. Where no step stores that little (the
 /// body already rises past the target), the step that stores least — the
 /// springs let go as far as they can. `springs` empty: no step (0).
@@ -68,13 +69,69 @@ pub fn thrust_for_apex(
     if k.is_nan() || k <= 0.0 {
         return 0.0;
     }
-    let kc: f64 = springs.iter().map(|s| s.stiffness * s.compression).sum();
+    // The stiffness-weighted compression now and after the step.
+    let mean = springs
+        .iter()
+        .map(|s| s.stiffness * s.compression)
+        .sum::<f64>()
+        / k;
+    let after = compression_for_apex(
+        springs,
+        k,
+        mean,
+        mass_kg,
+        com_height_m,
+        com_vy_mps,
+        target_m,
+    );
+    after - mean
+}
+
+/// Eq. 2 for one spring of length `length` (m or rad) compressed as
+/// `spring`: the rest that makes the predicted apex `target_m` —
+/// [`thrust_for_apex`]'s solve as the rest itself.
+#[must_use]
+pub fn rest_for_apex(
+    length: f64,
+    spring: Compressed,
+    mass_kg: f64,
+    com_height_m: f64,
+    com_vy_mps: f64,
+    target_m: f64,
+) -> f64 {
+    let one = [spring];
+    let k = spring.stiffness;
+    length
+        + compression_for_apex(
+            &one,
+            k,
+            spring.compression,
+            mass_kg,
+            com_height_m,
+            com_vy_mps,
+            target_m,
+        )
+}
+
+/// The stiffness-weighted compression (`mean` now, `k` the springs' total)
+/// after the step whose predicted apex is `target_m`: with `Δ` the step,
+/// `k·mean·Δ + k·Δ²/2` must be `Mg·(target − predicted)`, so the mean after
+/// is `√(mean² + 2·Mg·(target − predicted)/k)`; 0 (the springs let go)
+/// where no step stores that little.
+fn compression_for_apex(
+    springs: &[Compressed],
+    k: f64,
+    mean: f64,
+    mass_kg: f64,
+    com_height_m: f64,
+    com_vy_mps: f64,
+    target_m: f64,
+) -> f64 {
     let strain: f64 = springs.iter().map(|s| s.strain_j()).sum();
-    let wanted = mass_kg * GRAVITY_MPS2 * (target_m - com_height_m)
-        - 0.5 * mass_kg * com_vy_mps * com_vy_mps;
-    // k/2·Δ² + kc·Δ + (strain − wanted) = 0.
-    let disc = kc * kc - 2.0 * k * (strain - wanted);
-    (-kc + disc.max(0.0).sqrt()) / k
+    let predicted = predicted_apex_m(strain, mass_kg, com_height_m, com_vy_mps);
+    let wanted = (target_m - predicted) * mass_kg * GRAVITY_MPS2;
+    let stored = mean * mean + 2.0 * wanted / k;
+    stored.max(0.0).sqrt()
 }
 
 #[cfg(test)]

@@ -33,5 +33,6 @@ pub fn build<const ALTERNATE: bool>(
     };
     let mut p = with_parameters(p, params, gait)?;
     p.speed_trim = additions.speed_trim;
+    p.hop_integrator = additions.hop_integrator;
     Ok(Box::new(BipedGallop::new(p, creature)))
 }

@@ -75,6 +75,9 @@ pub struct BipedGallop {
     descending: bool,
     /// Trunk pitch at the stride's last lift-off (rad).
     liftoff_pitch: f64,
+    /// The centre of mass's height at the stride's last lift-off (m): eq.
+    /// 2's apex target is measured from it.
+    liftoff_com_y: f64,
     /// Desired trunk pitch in stance (rad), eq. 4's ϕ_d: set against the
     /// pitch the legs' swing in flight produces.
     pitch_d: f64,
@@ -109,6 +112,7 @@ impl BipedGallop {
             thrust: params.hopper.thrust_m * scale,
             descending: true,
             liftoff_pitch: f64::NAN,
+            liftoff_com_y: f64::NAN,
             pitch_d: 0.0,
             trim: SpeedTrim::default(),
             plan: BodyPlan::of(creature),

@@ -46,6 +46,11 @@ pub struct BipedGallopParams {
     /// in the paper), with gain `hopper.speed_integral_gain`: removes the
     /// steady error eq. 3 alone leaves.
     pub speed_trim: bool,
+    /// The lab's hop integrator on (`lab_additions.hop_integrator`; not in
+    /// the paper): the thrust corrected by `hopper.hop_gain` from each
+    /// flight's measured apex, where the paper sets it by eq. 2's
+    /// prediction at the leading leg's bottom.
+    pub hop_integrator: bool,
     /// Extra forward placement of the trailing foot beyond its neutral point (m).
     pub trail_offset_m: f64,
     /// Extra forward placement of the leading foot beyond its neutral point (m).
@@ -86,6 +91,7 @@ impl Default for BipedGallopParams {
                 ..HopperParams::default()
             },
             speed_trim: true,
+            hop_integrator: true,
             trail_offset_m: 0.0,
             lead_offset_m: 0.0,
             lead_retract_m: 0.08,

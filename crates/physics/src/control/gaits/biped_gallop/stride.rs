@@ -7,7 +7,8 @@
 use glam::DVec3;
 
 use super::{BipedGallop, GallopPhase, GallopStyle};
-use crate::control::laws::attitude::{attitude_error, heading_forward};
+use crate::control::laws::attitude::{attitude_error, com_state, heading_forward};
+use crate::control::laws::hop_height::{Compressed, thrust_for_apex};
 use crate::control::laws::phase::{Phase, StanceEvents};
 use crate::world::sim::ControlInput;
 
@@ -53,6 +54,7 @@ impl BipedGallop {
                 state.touchdown_s = input.time;
                 state.landed_rest = state.rest.min(p.hopper.landing_rest_m * l);
             }
+            let bottom = i == lead && self.legs[i].phase == Phase::Compression;
             let state = &mut self.legs[i];
             let since_touchdown = input.time - state.touchdown_s;
             state.phase = state.phase.after(StanceEvents {
@@ -65,6 +67,12 @@ impl BipedGallop {
                 lengthening: qd >= 0.0 && since_touchdown >= 0.03 * self.plan.scale.time(),
                 extended: q >= state.landed_rest + self.thrust - 0.01 * l || q >= -0.005 * l,
             });
+            // Eq. 2 at the leading leg's bottom: the thrust whose predicted
+            // apex is the target (Figure 4, "extend leg").
+            if bottom && !p.hop_integrator && self.legs[i].phase == Phase::Thrust {
+                self.thrust = self.eq2_thrust(input, i, q);
+            }
+            let state = &mut self.legs[i];
             // The trailing leg hands the load over: it shortens once the
             // leading leg rebounds, so it leaves the ground first.
             if i == trail
@@ -83,6 +91,7 @@ impl BipedGallop {
                 if !other_down {
                     self.start_flight(input);
                     self.liftoff_pitch = pitch;
+                    self.liftoff_com_y = com_state(input.creature, input.data).0.y;
                 }
             }
         }
@@ -107,7 +116,7 @@ impl BipedGallop {
     pub(super) fn start_flight(&mut self, input: &ControlInput<'_>) {
         let p = self.params;
         let l = self.plan.scale.l;
-        if self.apex_height.is_finite() {
+        if p.hop_integrator && self.apex_height.is_finite() {
             let landing_height = self.plan.leg_m[self.trail()] + p.hopper.landing_rest_m * l;
             let hop = input.commands.hop_height_m.unwrap_or(p.hop_height_m * l);
             let error = (landing_height + hop) - self.apex_height;
@@ -117,6 +126,34 @@ impl BipedGallop {
         (self.trim).stride_at_input(on, gain, self.plan.scale.velocity(), input);
         self.apex_height = f64::NEG_INFINITY;
         self.descending = false;
+    }
+
+    /// Eq. 2 for leg `i` at spring length `q` (m): the extension of its rest
+    /// beyond its landed rest that makes the predicted apex the hop height
+    /// above the stride's last lift-off (before the first, the trunk
+    /// `hop_height_m` above a hip over a vertical leg at landing length),
+    /// between none and the leg's full length.
+    fn eq2_thrust(&self, input: &ControlInput<'_>, i: usize, q: f64) -> f64 {
+        let p = &self.params;
+        let s = self.plan.scale;
+        let l = s.length();
+        let (com, v) = com_state(input.creature, input.data);
+        let hop = input.commands.hop_height_m.unwrap_or(p.hop_height_m * l);
+        let target = if self.liftoff_com_y.is_finite() {
+            self.liftoff_com_y + hop
+        } else {
+            let trunk_y = input.data.world[input.creature.trunk].pos.y;
+            let landing_height = self.plan.leg_m[self.trail()] + p.hopper.landing_rest_m * l;
+            com.y + (landing_height + hop - trunk_y)
+        };
+        let state = &self.legs[i];
+        let leg = [Compressed {
+            stiffness: p.hopper.leg_stiffness * s.stiffness(),
+            compression: state.rest - q,
+        }];
+        let mass = input.creature.model.total_mass();
+        let step = thrust_for_apex(&leg, mass, com.y, v.y, target);
+        (state.rest + step - state.landed_rest).clamp(0.0, (-state.landed_rest).max(0.0))
     }
 
     /// Whether airborne leg `i` holds its lift-off angles rather than

@@ -12,7 +12,8 @@ pub struct BipedRunParams {
     /// target rise of the centre of mass above the last lift-off — the
     /// prediction takes the leg as massless and lossless, and the hop
     /// reaches less (0.14 m asked: a 0.31 s flight, 0.12 m) — or, with the
-    /// hop integrator, the hip's measured rise.
+    /// hop integrator, the hip's measured rise (0.10 m; see
+    /// [`BipedRunParams::with_hop_integrator`]).
     pub hop_height_m: f64,
     /// The hopper's spring, thrust, placement and servo parameters.
     pub hopper: HopperParams,
@@ -32,7 +33,7 @@ pub struct BipedRunParams {
 impl Default for BipedRunParams {
     fn default() -> Self {
         Self {
-            hop_height_m: 0.14,
+            hop_height_m: Self::EQ2_HOP_HEIGHT_M,
             hopper: HopperParams::default(),
             speed_trim: false,
             unloading_posture: true,
@@ -42,6 +43,30 @@ impl Default for BipedRunParams {
 }
 
 impl BipedRunParams {
+    /// The hop height eq. 2 is asked for (m): it takes the leg as massless
+    /// and lossless, and the hop reaches less.
+    pub const EQ2_HOP_HEIGHT_M: f64 = 0.14;
+
+    /// The hop height the hop integrator holds, measured (m), as every
+    /// file ran with it until 2026-12-06.
+    pub const MEASURED_HOP_HEIGHT_M: f64 = 0.10;
+
+    /// These parameters with the lab's hop integrator `on` or off, and the
+    /// hop height that goes with each.
+    #[must_use]
+    pub fn with_hop_integrator(self, on: bool) -> Self {
+        let hop_height_m = if on {
+            Self::MEASURED_HOP_HEIGHT_M
+        } else {
+            Self::EQ2_HOP_HEIGHT_M
+        };
+        Self {
+            hop_integrator: on,
+            hop_height_m,
+            ..self
+        }
+    }
+
     /// The defaults before the lab's additions were optional (files without
     /// `lab_additions` run with these): eq. 3's gain 0.05 s, held to the
     /// desired speed by the speed trim at gain 0.3, posture servo on in
@@ -56,7 +81,7 @@ impl BipedRunParams {
                 speed_integral_gain: 0.3,
                 ..d.hopper
             },
-            hop_height_m: 0.10,
+            hop_height_m: Self::MEASURED_HOP_HEIGHT_M,
             speed_trim: true,
             unloading_posture: true,
             hop_integrator: true,

@@ -33,5 +33,6 @@ pub fn build<const GALLOP: bool>(
     };
     let mut p = with_parameters(p, params, style.name())?;
     p.speed_trim = additions.speed_trim;
+    p.hop_integrator = additions.hop_integrator;
     Ok(Box::new(QuadrupedBound::new(p, creature)))
 }

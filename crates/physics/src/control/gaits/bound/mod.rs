@@ -81,6 +81,13 @@ pub struct QuadrupedBound {
     stride_flight_s: f64,
     /// Time and forward position of the centre of mass at the last rear touchdown.
     stride_start: Option<(f64, f64)>,
+    /// Each pair's thrust as eq. 2 set it at the pair's last bottom (m;
+    /// NaN before one), without the hop integrator.
+    eq2_thrust: [f64; 2],
+    /// The centre of mass's height at the last lift-off of a pair, or at
+    /// the first touchdown before one (m): eq. 2's apex target is measured
+    /// from it.
+    liftoff_com_y: f64,
     hip_target: [[f64; 2]; 4],
     /// Eq. 4's servo as the last control call set it.
     posture: PairPosture,
@@ -107,6 +114,8 @@ impl QuadrupedBound {
             flight_start: None,
             stride_flight_s: 0.0,
             stride_start: None,
+            eq2_thrust: [f64::NAN; 2],
+            liftoff_com_y: f64::NAN,
             hip_target: [[0.0; 2]; 4],
             posture: PairPosture::default(),
             plan: BodyPlan::of(creature),

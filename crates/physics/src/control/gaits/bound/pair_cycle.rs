@@ -9,7 +9,10 @@ use super::gallop_legs::{BOUNCE_S, LegSense, spring_events};
 use super::{FRONT, PAIRS, QuadrupedBound, REAR};
 use crate::control::additions::speed_trim::along_z;
 use crate::control::gaits::bound::params::BoundStyle;
-use crate::control::laws::hop_height::flight_for_height;
+use crate::control::laws::attitude::com_state;
+use crate::control::laws::hop_height::{
+    Compressed, flight_for_height, height_for_flight, thrust_for_apex,
+};
 use crate::control::laws::phase::Phase;
 use crate::world::sim::ControlInput;
 
@@ -39,6 +42,9 @@ impl QuadrupedBound {
 
     pub(super) fn pair_thrust(&self, pair: usize) -> f64 {
         let l = self.plan.scale.length();
+        if !self.params.hop_integrator && self.eq2_thrust[pair].is_finite() {
+            return self.eq2_thrust[pair];
+        }
         let extra = if pair == REAR {
             self.params.rear_extra_thrust_m * l
         } else {
@@ -52,6 +58,9 @@ impl QuadrupedBound {
     /// its lift-off (negative: overlap with the other pair's stance).
     pub(super) fn regulate_pair(&mut self, k: usize, flight: f64) {
         let p = self.params;
+        if !p.hop_integrator {
+            return;
+        }
         let scale = self.plan.scale;
         let l = scale.l;
         let target = if k == FRONT {
@@ -62,6 +71,41 @@ impl QuadrupedBound {
         let max = p.max_thrust_m * l;
         self.trim[k] = (self.trim[k] + p.pair_flight_gain * scale.velocity() * (target - flight))
             .clamp(-max, max);
+    }
+
+    /// Eq. 2 for pair `k` with feet `touching`: the step of its legs' rests
+    /// that makes the predicted apex the height of the flight that follows
+    /// its lift-off (gathered after the front pair, extended after the
+    /// rear; none for an overlap) above the last lift-off, between the
+    /// bound's smallest and largest thrust.
+    fn pair_eq2(&self, input: &ControlInput<'_>, k: usize, touching: [bool; 2]) -> f64 {
+        let p = &self.params;
+        let s = self.plan.scale;
+        let l = s.length();
+        let (com, v) = com_state(input.creature, input.data);
+        let mut springs = [Compressed {
+            stiffness: 0.0,
+            compression: 0.0,
+        }; 2];
+        for (side, spring) in springs.iter_mut().enumerate() {
+            if touching[side] {
+                let q = input.data.q[input.creature.legs[PAIRS[k][side]].spring];
+                *spring = Compressed {
+                    stiffness: p.leg_stiffness * s.stiffness(),
+                    compression: self.pairs[k].rest[side] - q,
+                };
+            }
+        }
+        let flight = if k == FRONT {
+            p.gathered_flight_s
+        } else {
+            p.extended_flight_s
+        } * s.time();
+        let rise =
+            (input.commands.hop_height_m).unwrap_or_else(|| height_for_flight(flight.max(0.0)));
+        let mass = input.creature.model.total_mass();
+        let step = thrust_for_apex(&springs, mass, com.y, v.y, self.liftoff_com_y + rise);
+        step.clamp(p.min_thrust_m * l, p.max_thrust_m * l)
     }
 
     /// Advance both pairs' state machines on the contact and spring events.
@@ -124,6 +168,10 @@ impl QuadrupedBound {
             }
             match pair.phase {
                 Phase::Flight if any => {
+                    if !self.liftoff_com_y.is_finite() {
+                        self.liftoff_com_y = com_state(input.creature, input.data).0.y;
+                    }
+                    let pair = &mut self.pairs[k];
                     pair.phase = Phase::Loading;
                     pair.touchdown_s = time;
                     pair.armed = false;
@@ -147,7 +195,7 @@ impl QuadrupedBound {
                     if k == REAR && stride_done {
                         // Eq. 2's energy per stride: one thrust for both pairs,
                         // regulated on the stride's total flight.
-                        if self.stride_start.is_some() {
+                        if p.hop_integrator && self.stride_start.is_some() {
                             let target = (input.commands.hop_height_m)
                                 .map_or(p.stride_flight_s * scale.time(), flight_for_height);
                             let error = target - self.stride_flight_s;
@@ -180,13 +228,23 @@ impl QuadrupedBound {
                     let extended = p.thrust_end * thrusts[k] - 0.005 * l;
                     let since = time - pair.touchdown_s;
                     pair.phase = stance.after(spring_events(q, qd, since, extended, l));
+                    // Eq. 2 at the pair's bottom (Figure 4, "extend leg").
+                    if !p.hop_integrator
+                        && stance == Phase::Compression
+                        && pair.phase == Phase::Thrust
+                    {
+                        self.eq2_thrust[k] = self.pair_eq2(input, k, touching);
+                    }
                 }
             }
+            let pair = &mut self.pairs[k];
             if matches!(
                 pair.phase,
                 Phase::Compression | Phase::Thrust | Phase::Unloading
             ) && !any
             {
+                self.liftoff_com_y = com_state(input.creature, input.data).0.y;
+                let pair = &mut self.pairs[k];
                 pair.phase = Phase::Flight;
                 pair.liftoff_s = time;
                 pair.stance_s =

@@ -82,6 +82,11 @@ pub struct QuadrupedBoundParams {
     /// The lab's integral speed trim on (`lab_additions.speed_trim`; not
     /// in the paper), with gain `speed_integral_gain`.
     pub speed_trim: bool,
+    /// The lab's hop integrator on (`lab_additions.hop_integrator`; not in
+    /// the paper): the common thrust corrected by `flight_gain` from each
+    /// stride's flight and each pair's trim by `pair_flight_gain`, where the
+    /// paper sets each pair's thrust by eq. 2's prediction at its bottom.
+    pub hop_integrator: bool,
     /// Change of the speed bias per stride per m/s of the stride's mean
     /// speed error (dimensionless): removes eq. 3's steady speed error.
     pub speed_integral_gain: f64,
@@ -158,6 +163,7 @@ impl Default for QuadrupedBoundParams {
             stance_s: 0.09,
             placement_gain_s: 0.138,
             speed_trim: true,
+            hop_integrator: true,
             speed_integral_gain: 0.11,
             speed_bias_cap: 1.0,
             min_stride_s: 0.12,

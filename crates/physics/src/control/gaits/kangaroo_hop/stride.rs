@@ -7,7 +7,7 @@ use glam::DVec3;
 
 use super::{JumpStage, KangarooHop};
 use crate::control::additions::speed_trim::along_z;
-use crate::control::laws::hop_height::{Compressed, thrust_for_apex};
+use crate::control::laws::hop_height::{Compressed, rest_for_apex};
 use crate::control::laws::phase::{Phase, StanceEvents};
 use crate::control::laws::scale::Scale;
 use crate::dynamics::model::GRAVITY_MPS2;
@@ -155,11 +155,11 @@ impl KangarooHop {
         } else {
             0.0
         };
-        let ankle = [Compressed {
+        let ankle = Compressed {
             stiffness: k,
             compression: self.ankle_rest - q,
-        }];
-        let rest = self.ankle_rest + thrust_for_apex(&ankle, m, com.y, com_v.y, target + learned);
+        };
+        let rest = rest_for_apex(q, ankle, m, com.y, com_v.y, target + learned);
         let r0 = p.ankle_rest_rad;
         self.ankle_rest = rest.clamp(r0 - 0.5 * p.max_thrust_rad, r0 + p.max_thrust_rad);
     }
