@@ -407,18 +407,15 @@ fn the_gait_panel_says_while_legs_take_a_switch_on() {
 fn the_physics_panel_names_the_lab_additions_and_has_every_creatures_inputs() {
     // The bundled biped runs by the paper's laws alone; the kangaroo keeps
     // its speed ramp (for changes of speed) and starts on its cycle; the
-    // trot uses none of the named additions, and the quadruped enters its
-    // gaits at their own start.
+    // trot sets its thrust by eq. 2 alone and uses none of the named
+    // additions, and the quadruped enters its gaits at their own start.
     for (preset, want) in [
         ("raibert-biped", "Lab's additions: none"),
         (
             "raibert-kangaroo",
             "Lab's additions (not in the paper): speed ramp, hop integrator",
         ),
-        (
-            "raibert-quadruped",
-            "Lab's additions (not in the paper): hop integrator",
-        ),
+        ("raibert-quadruped", "Lab's additions: none"),
     ] {
         let mut harness = poda_harness(preset, 1400.0);
         harness.run();
@@ -609,13 +606,7 @@ fn dragging_the_trunk_pushes_it_and_leaves_the_camera() {
     }
     lab.set_paused(true);
     harness.run_steps(30);
-    let state: serde_json::Value =
-        serde_json::from_str(&harness.state().state_json()).expect("state JSON");
-    let at = &state["layout"]["trunk_pt"];
-    let trunk = egui::pos2(
-        at[0].as_f64().expect("trunk x") as f32,
-        at[1].as_f64().expect("trunk y") as f32,
-    );
+    let trunk = trunk_point(&harness);
     let pushes = |harness: &Harness<'static, Lab>| {
         harness
             .state()
@@ -636,13 +627,7 @@ fn dragging_the_trunk_pushes_it_and_leaves_the_camera() {
     let camera = harness.state().camera();
     assert!((camera.yaw - before.yaw).abs() > 0.3, "the camera turned");
     // Re-read the trunk: the camera turned.
-    let state: serde_json::Value =
-        serde_json::from_str(&harness.state().state_json()).expect("state JSON");
-    let at = &state["layout"]["trunk_pt"];
-    let trunk = egui::pos2(
-        at[0].as_f64().expect("trunk x") as f32,
-        at[1].as_f64().expect("trunk y") as f32,
-    );
+    let trunk = trunk_point(&harness);
     // 100 points straight up the screen: 0.3 m/s away from the camera.
     harness.drag_at(trunk + egui::vec2(2.0, 2.0));
     harness.hover_at(trunk + egui::vec2(2.0, -40.0));
@@ -857,6 +842,15 @@ fn no_small_targets(harness: &Harness<'static, Lab>, what: &str) -> u64 {
         "{what}"
     );
     checked["touch_targets_checked"].as_u64().unwrap_or(0)
+}
+
+/// Where the trunk is drawn on the screen (`state().layout.trunk_pt`).
+fn trunk_point(harness: &Harness<'static, Lab>) -> egui::Pos2 {
+    let at = &layout(harness)["trunk_pt"];
+    egui::pos2(
+        at[0].as_f64().expect("trunk x") as f32,
+        at[1].as_f64().expect("trunk y") as f32,
+    )
 }
 
 /// `state().layout` of the harness's lab.

@@ -43,8 +43,12 @@ fn controller_parameters_change_the_motion_and_unknown_ones_are_refused() {
         d.pose().clone()
     };
     let mut plain = driver("raibert-quadruped", "controller", json!({})).expect("valid");
-    let mut changed =
-        driver("raibert-quadruped", "controller", json!({"thrust_m": 0.0})).expect("valid");
+    let mut changed = driver(
+        "raibert-quadruped",
+        "controller",
+        json!({"eq2_hop_m": 0.05}),
+    )
+    .expect("valid");
     assert_ne!(run(&mut plain), run(&mut changed));
     let error = driver(
         "raibert-quadruped",

@@ -94,9 +94,11 @@ impl Offered {
         ..Self::NONE
     };
 
-    /// The trot and the pace: the hop integrator (on: by eq. 2's prediction
-    /// alone the trot's flights are 0.07–0.12 s where Table 2 has 0.18 s, and
-    /// the pace runs at half its speed, docs/physics.md "Eq. 2 as written").
+    /// The trot and the pace: the hop integrator (on for a file that does
+    /// not say, as every file ran until 2026-12-06: by eq. 2's prediction
+    /// alone the pace runs 49 % slow at 2 m/s; the bundled quadruped turns it
+    /// off for the trot, which holds its speeds and Table 2 by eq. 2 alone,
+    /// docs/physics.md "Eq. 2 as written").
     pub const TROT: Self = Self {
         hop_integrator: Some(true),
         ..Self::NONE

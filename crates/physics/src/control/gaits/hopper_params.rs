@@ -4,6 +4,11 @@
 //! (eq. 3), the posture servo (eq. 4) and the hip servos (eq. 5), at scale 1.
 //! Each gait keeps its commands and its own parameters beside these.
 
+use crate::control::laws::attitude::com_state;
+use crate::control::laws::hop_height::{Compressed, thrust_for_apex};
+use crate::control::laws::scale::Scale;
+use crate::world::sim::ControlInput;
+
 /// A biped hopper's parameters; lengths are leg-spring coordinates (metres
 /// of extension, 0 = the leg at full length). The defaults are the run's.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -80,6 +85,31 @@ impl Default for HopperParams {
             max_yaw_torque: 30.0,
             leg_rate_mps: 1.0,
         }
+    }
+}
+
+impl HopperParams {
+    /// Eq. 2 for one hopper leg ([`thrust_for_apex`]): the leg standing at
+    /// rest `rest` and length `q` (m of extension, at scale `s`), the thrust
+    /// beyond `landing` (m of extension) whose predicted apex is `target_m`,
+    /// between none and the leg's full length.
+    #[must_use]
+    pub fn eq2_thrust(
+        &self,
+        input: &ControlInput<'_>,
+        s: Scale,
+        (rest, q): (f64, f64),
+        landing: f64,
+        target_m: f64,
+    ) -> f64 {
+        let (com, v) = com_state(input.creature, input.data);
+        let leg = [Compressed {
+            stiffness: self.leg_stiffness * s.stiffness(),
+            compression: rest - q,
+        }];
+        let mass = input.creature.model.total_mass();
+        let step = thrust_for_apex(&leg, mass, com.y, v.y, target_m);
+        (rest + step - landing).clamp(0.0, (-landing).max(0.0))
     }
 }
 

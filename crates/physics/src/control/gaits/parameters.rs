@@ -13,12 +13,14 @@ use crate::control::gaits::kangaroo_hop::params::KangarooHopParams;
 use crate::control::gaits::trot::params::QuadrupedRunParams;
 
 /// The parameters a hop height command (`scenario.physics.hop_height_m`)
-/// takes the place of: the trot's and pace's flights, the bound's and
-/// gallop's stride and pair flights, the kangaroo's rise. With a hop height
-/// given, a value written for one of them changes nothing.
+/// takes the place of: the trot's and pace's flights and the height they ask
+/// eq. 2 for, the bound's and gallop's stride and pair flights, the
+/// kangaroo's rise. With a hop height given, a value written for one of
+/// them changes nothing.
 pub const REPLACED_BY_HOP_HEIGHT: &[&str] = &[
     "flight0_s",
     "flight1_s",
+    "eq2_hop_m",
     "stride_flight_s",
     "gathered_flight_s",
     "extended_flight_s",
@@ -109,6 +111,7 @@ impl NamedParameters for QuadrupedRunParams {
         "thrust_m",
         "flight0_s",
         "flight1_s",
+        "eq2_hop_m",
         "stance_s",
         "placement_gain_s",
         "pitch_kp",
@@ -142,6 +145,7 @@ impl NamedParameters for QuadrupedRunParams {
             "thrust_m" => &mut t.thrust_m,
             "flight0_s" => &mut t.flight_s[0],
             "flight1_s" => &mut t.flight_s[1],
+            "eq2_hop_m" => &mut t.eq2_hop_m,
             "stance_s" => &mut t.stance_s,
             "placement_gain_s" => &mut t.placement_gain_s,
             "pitch_kp" => &mut t.pitch_kp,

@@ -50,6 +50,27 @@ impl Compressed {
     }
 }
 
+/// A pair's springs for eq. 2 (a virtual leg, "Gaits"): leg `i`'s spring
+/// of `stiffness` compressed from `rests[i]` to its length
+/// `q[springs[i]]` where it `supports[i]`, none where it does not.
+#[must_use]
+pub fn pair_springs(
+    q: &[f64],
+    springs: [usize; 2],
+    rests: [f64; 2],
+    supports: [bool; 2],
+    stiffness: f64,
+) -> [Compressed; 2] {
+    std::array::from_fn(|i| Compressed {
+        stiffness: if supports[i] { stiffness } else { 0.0 },
+        compression: if supports[i] {
+            rests[i] - q[springs[i]]
+        } else {
+            0.0
+        },
+    })
+}
+
 /// Eq. 2 solved for the thrust: the step Δ of every supporting spring's
 /// rest (m or rad) that makes the predicted apex `target_m`. What the
 /// springs must store beyond what they hold, `Mg·(target − predicted)`,
@@ -85,6 +106,40 @@ pub fn thrust_for_apex(
         target_m,
     );
     after - mean
+}
+
+/// Eq. 2 for legs that are shortened before their springs have given back
+/// the step (the trot's and the pace's Unloading, "active leg spring
+/// approaches full length", read at the landing rest): the strain the
+/// prediction counts is what the springs return until they are
+/// `released_m` (m) short of their rest before the step, the rest being
+/// lost when Unloading shortens the leg. With `Δ` the step each spring
+/// returns `k_i·((c_i + Δ)² − (Δ + ε)²)/2`, linear in `Δ`, so
+/// `Δ·Σk_i(c_i − ε) = Mg·(target − predicted) + Σk_i·ε²/2`, `predicted`
+/// eq. 2's apex with the strain as it stands. No step when the springs are
+/// already at their release (nothing left to push with) or when the body
+/// already rises past the target (the springs let go).
+#[must_use]
+pub fn thrust_for_apex_released(
+    springs: &[Compressed],
+    released_m: f64,
+    mass_kg: f64,
+    com_height_m: f64,
+    com_vy_mps: f64,
+    target_m: f64,
+) -> f64 {
+    let k: f64 = springs.iter().map(|s| s.stiffness).sum();
+    let push: f64 = springs
+        .iter()
+        .map(|s| s.stiffness * (s.compression - released_m))
+        .sum();
+    if k.is_nan() || k <= 0.0 || push.is_nan() || push <= 0.0 {
+        return 0.0;
+    }
+    let strain: f64 = springs.iter().map(|s| s.strain_j()).sum();
+    let predicted = predicted_apex_m(strain, mass_kg, com_height_m, com_vy_mps);
+    let wanted = (target_m - predicted) * mass_kg * GRAVITY_MPS2;
+    ((wanted + 0.5 * k * released_m * released_m) / push).max(0.0)
 }
 
 /// Eq. 2 for one spring of length `length` (m or rad) compressed as
@@ -187,5 +242,46 @@ mod tests {
         let kc = 6000.0 * 0.02 + 4000.0 * 0.035;
         assert!((rising + kc / 10000.0).abs() < 1e-12);
         assert_eq!(thrust_for_apex(&[], m, y, vy, target), 0.0);
+    }
+
+    #[test]
+    fn a_released_spring_returns_what_the_target_asks() {
+        // Two springs released 0.01 m short of their rest before the step:
+        // what they give back from here to there, with the step, is what
+        // the target lacks beyond elevation and speed.
+        let springs = [
+            Compressed {
+                stiffness: 6000.0,
+                compression: 0.03,
+            },
+            Compressed {
+                stiffness: 4000.0,
+                compression: 0.045,
+            },
+        ];
+        let (m, y, vy, target, eps) = (12.0, 0.8, -0.1, 0.9, 0.01);
+        let step = thrust_for_apex_released(&springs, eps, m, y, vy, target);
+        let returned: f64 = springs
+            .iter()
+            .map(|s| 0.5 * s.stiffness * ((s.compression + step).powi(2) - (step + eps).powi(2)))
+            .sum();
+        assert!((predicted_apex_m(returned, m, y, vy) - target).abs() < 1e-12);
+        assert!(step > 0.0);
+        // Released at the rest itself: the solve of the whole strain.
+        let whole = thrust_for_apex_released(&springs, 0.0, m, y, vy, target);
+        let back: f64 = springs
+            .iter()
+            .map(|s| 0.5 * s.stiffness * ((s.compression + whole).powi(2) - whole * whole))
+            .sum();
+        assert!((predicted_apex_m(back, m, y, vy) - target).abs() < 1e-12);
+        // At the release already, or rising past the target: no step.
+        assert_eq!(
+            thrust_for_apex_released(&springs, 0.05, m, y, vy, target),
+            0.0
+        );
+        assert_eq!(
+            thrust_for_apex_released(&springs, eps, m, y, 3.0, target),
+            0.0
+        );
     }
 }

@@ -8,7 +8,6 @@ use glam::DVec3;
 
 use super::{BipedGallop, GallopPhase, GallopStyle};
 use crate::control::laws::attitude::{attitude_error, com_state, heading_forward};
-use crate::control::laws::hop_height::{Compressed, thrust_for_apex};
 use crate::control::laws::phase::{Phase, StanceEvents};
 use crate::world::sim::ControlInput;
 
@@ -137,23 +136,18 @@ impl BipedGallop {
         let p = &self.params;
         let s = self.plan.scale;
         let l = s.length();
-        let (com, v) = com_state(input.creature, input.data);
         let hop = input.commands.hop_height_m.unwrap_or(p.hop_height_m * l);
         let target = if self.liftoff_com_y.is_finite() {
             self.liftoff_com_y + hop
         } else {
+            let com_y = com_state(input.creature, input.data).0.y;
             let trunk_y = input.data.world[input.creature.trunk].pos.y;
             let landing_height = self.plan.leg_m[self.trail()] + p.hopper.landing_rest_m * l;
-            com.y + (landing_height + hop - trunk_y)
+            com_y + (landing_height + hop - trunk_y)
         };
         let state = &self.legs[i];
-        let leg = [Compressed {
-            stiffness: p.hopper.leg_stiffness * s.stiffness(),
-            compression: state.rest - q,
-        }];
-        let mass = input.creature.model.total_mass();
-        let step = thrust_for_apex(&leg, mass, com.y, v.y, target);
-        (state.rest + step - state.landed_rest).clamp(0.0, (-state.landed_rest).max(0.0))
+        p.hopper
+            .eq2_thrust(input, s, (state.rest, q), state.landed_rest, target)
     }
 
     /// Whether airborne leg `i` holds its lift-off angles rather than

@@ -14,7 +14,6 @@ use crate::control::additions::speed_trim::SpeedTrim;
 use crate::control::laws::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
 use crate::control::laws::body_plan::BodyPlan;
 use crate::control::laws::hip_servo::{set_hip, zero_hip};
-use crate::control::laws::hop_height::{Compressed, thrust_for_apex};
 use crate::control::laws::leg_spring::{LegSpring, toward};
 use crate::control::laws::phase::{Phase, StanceEvents};
 use crate::control::laws::placement::{foot_displacement, hip_angles};
@@ -145,17 +144,11 @@ impl BipedRun {
         let p = &self.params;
         let s = self.plan.scale;
         let l = s.length();
-        let (com, v) = com_state(input.creature, input.data);
-        let rest = self.rest[self.active];
-        let leg = [Compressed {
-            stiffness: p.hopper.leg_stiffness * s.stiffness(),
-            compression: rest - q,
-        }];
         let rise = input.commands.hop_height_m.unwrap_or(p.hop_height_m * l);
-        let mass = input.creature.model.total_mass();
-        let step = thrust_for_apex(&leg, mass, com.y, v.y, self.liftoff_com_y + rise);
+        let rest = self.rest[self.active];
         let landing = p.hopper.landing_rest_m * l;
-        (rest + step - landing).clamp(0.0, (-landing).max(0.0))
+        p.hopper
+            .eq2_thrust(input, s, (rest, q), landing, self.liftoff_com_y + rise)
     }
 }
 

@@ -11,7 +11,7 @@ use crate::control::additions::speed_trim::along_z;
 use crate::control::gaits::bound::params::BoundStyle;
 use crate::control::laws::attitude::com_state;
 use crate::control::laws::hop_height::{
-    Compressed, flight_for_height, height_for_flight, thrust_for_apex,
+    flight_for_height, height_for_flight, pair_springs, thrust_for_apex,
 };
 use crate::control::laws::phase::Phase;
 use crate::world::sim::ControlInput;
@@ -83,19 +83,13 @@ impl QuadrupedBound {
         let s = self.plan.scale;
         let l = s.length();
         let (com, v) = com_state(input.creature, input.data);
-        let mut springs = [Compressed {
-            stiffness: 0.0,
-            compression: 0.0,
-        }; 2];
-        for (side, spring) in springs.iter_mut().enumerate() {
-            if touching[side] {
-                let q = input.data.q[input.creature.legs[PAIRS[k][side]].spring];
-                *spring = Compressed {
-                    stiffness: p.leg_stiffness * s.stiffness(),
-                    compression: self.pairs[k].rest[side] - q,
-                };
-            }
-        }
+        let springs = pair_springs(
+            &input.data.q,
+            PAIRS[k].map(|i| input.creature.legs[i].spring),
+            self.pairs[k].rest,
+            touching,
+            p.leg_stiffness * s.stiffness(),
+        );
         let flight = if k == FRONT {
             p.gathered_flight_s
         } else {

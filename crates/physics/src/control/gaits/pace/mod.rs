@@ -38,6 +38,9 @@ pub fn pace_params() -> QuadrupedRunParams {
             roll_kv: 362.3,
             landing_rest_m: -0.007_3,
             stance_s: 0.035_46,
+            // Eq. 2 alone (the integrator off): 0.06 m asked runs 1.3 and
+            // 1.6 m/s within 10 % and 2.0 m/s 42 % slow (docs/physics.md).
+            eq2_hop_m: 0.06,
             ..d.trot
         },
         swing_kp: 884.0,

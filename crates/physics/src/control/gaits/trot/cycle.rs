@@ -9,9 +9,7 @@
 use super::QuadrupedRun;
 use crate::control::additions::speed_trim::along_z;
 use crate::control::laws::attitude::com_state;
-use crate::control::laws::hop_height::{
-    Compressed, flight_for_height, height_for_flight, thrust_for_apex,
-};
+use crate::control::laws::hop_height::{flight_for_height, pair_springs, thrust_for_apex_released};
 use crate::control::laws::leg_spring::LegSpring;
 use crate::control::laws::phase::{Phase, StanceEvents};
 use crate::world::sim::{ControlInput, Drive};
@@ -167,23 +165,26 @@ impl QuadrupedRun {
         let l = s.length();
         let pair = self.pairs[self.active];
         let (com, v) = com_state(input.creature, input.data);
-        let mut springs = [Compressed {
-            stiffness: 0.0,
-            compression: 0.0,
-        }; 2];
-        for (spring, &i) in springs.iter_mut().zip(&pair) {
-            if !self.done[i] && self.leg_phase[i] != Phase::Flight {
-                let q = input.data.q[input.creature.legs[i].spring];
-                *spring = Compressed {
-                    stiffness: t.leg_stiffness * s.stiffness(),
-                    compression: self.stance_rest[i] - q,
-                };
-            }
-        }
-        let rise = (input.commands.hop_height_m)
-            .unwrap_or_else(|| height_for_flight(t.flight_s[self.active] * s.time()));
+        let springs = pair_springs(
+            &input.data.q,
+            pair.map(|i| input.creature.legs[i].spring),
+            pair.map(|i| self.stance_rest[i]),
+            pair.map(|i| !self.done[i] && self.leg_phase[i] != Phase::Flight),
+            t.leg_stiffness * s.stiffness(),
+        );
+        let rise = (input.commands.hop_height_m).unwrap_or(t.eq2_hop_m * l);
         let mass = input.creature.model.total_mass();
-        let step = thrust_for_apex(&springs, mass, com.y, v.y, self.liftoff_com_y + rise);
+        // The pair unloads 0.005 L short of its stance rest (above): the
+        // strain eq. 2 counts is what the springs give back until then.
+        let released = 0.005 * l;
+        let step = thrust_for_apex_released(
+            &springs,
+            released,
+            mass,
+            com.y,
+            v.y,
+            self.liftoff_com_y + rise,
+        );
         step.clamp(0.0, self.params.max_thrust_m * l)
     }
 

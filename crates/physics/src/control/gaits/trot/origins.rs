@@ -58,6 +58,14 @@ pub const ORIGINS: &[ControllerParam] = &[
         "Table 2's animated trot flight, 0.18 s",
     ),
     row(
+        "eq2_hop_m",
+        "Hop height eq. 2 is asked for without a command",
+        "m",
+        "Raibert & Hodgins 1991 eq. 2, Table 2 (Quadruped Trot)",
+        Origin::Open,
+        "The paper gives no trot hop height: 0.11 m asked gives Table 2's 0.18 s flight at 2.3 m/s",
+    ),
+    row(
         "stance_s",
         "First guess of the stance time T_s (eq. 3)",
         "s",
@@ -98,7 +106,7 @@ pub const ORIGINS: &[ControllerParam] = &[
         "Caps eq. 4's torques at a friction-safe force (∞: none); the paper's feet never slip",
     ),
     flight_gain_row(
-        "lab_additions.hop_integrator (on): each flight's time error; eq. 2 alone without it",
+        "lab_additions.hop_integrator (on unless the file says; the bundled trot runs without): each flight's time error",
     ),
     MAX_THRUST_M,
     yaw_kp_row(

@@ -23,6 +23,13 @@ pub struct GaitTuning {
     /// Desired flight duration after the lift-off of pair 0 and of pair 1
     /// (s): the trot's flight.
     pub flight_s: [f64; 2],
+    /// The hop height eq. 2 is asked for when no command gives one (m of
+    /// the centre of mass's rise above the last lift-off): eq. 2 takes the
+    /// legs as massless and their springs as lossless, and the trot's
+    /// damped legs reach less (0.11 m asked: Table 2's 0.18 s flight at
+    /// 2.3 m/s, an apex of 0.04 m). Not used with the hop integrator,
+    /// which holds `flight_s`.
+    pub eq2_hop_m: f64,
     /// Initial guess of the stance duration T_s of eq. 3 (s).
     pub stance_s: f64,
     /// Foot placement gain k_ẋ of eq. 3 (s).
@@ -105,6 +112,7 @@ impl Default for QuadrupedRunParams {
             idle_rest_m: -0.30,
             thrust_m: 0.02,
             flight_s: [0.18, 0.18],
+            eq2_hop_m: 0.11,
             stance_s: 0.09,
             placement_gain_s: 0.12,
             pitch_kp: 1500.0,
