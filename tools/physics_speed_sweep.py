@@ -58,8 +58,11 @@ def main():
     failed_default = 0
     for way in ways:
         additions = WAYS[way]
+        # A way that names the additions names them for every gait: one
+        # gait's choice in the preset (`lab_additions_by_gait`) would win.
         chosen = [] if additions is None else [
-            "--set", f"scenario.physics.lab_additions={json.dumps(additions)}"]
+            "--set", f"scenario.physics.lab_additions={json.dumps(additions)}",
+            "--set", "scenario.physics.lab_additions_by_gait={}"]
         for preset, gait, speeds in GAITS:
             if args.preset and preset not in args.preset:
                 continue

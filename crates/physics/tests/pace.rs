@@ -21,16 +21,11 @@ fn run(gait: &str, speed: f64, seconds: f64) -> PhysicsDriver {
     params.speed_mps = speed;
     let mut driver = PhysicsDriver::with_params(&preset, params).expect("driver");
     driver.reset_after_fall = false;
-    // The trot by eq. 2 alone; the pace keeps the lab's hop integrator.
-    let kept: &[&str] = if gait == "pace" {
-        &["hop_integrator"]
-    } else {
-        &[]
-    };
+    // Both by eq. 2 alone (the bundled `lab_additions_by_gait`).
     assert_eq!(
-        driver.lab_additions().collect::<Vec<_>>(),
-        kept,
-        "the {gait}'s additions"
+        driver.lab_additions().count(),
+        0,
+        "the {gait} runs by the paper's laws alone"
     );
     while driver.sim().time < seconds {
         driver.step(1.0 / 60.0);
@@ -55,7 +50,7 @@ fn the_pace_runs_on_the_lateral_pairs_by_the_papers_laws() {
         s.friction_needed_edges
     );
     // Each lateral pair lands as one virtual leg: touchdowns within 10 ms
-    // on average (5.1 ms measured at 1.6 m/s; the trot's diagonals 12.8).
+    // on average (8.0 ms measured at 1.6 m/s, both by eq. 2).
     let timing = pair_timing(&s.stances, driver.virtual_legs());
     assert_eq!(timing.len(), 2);
     for t in &timing {
@@ -68,11 +63,12 @@ fn the_pace_runs_on_the_lateral_pairs_by_the_papers_laws() {
         );
     }
     // Supported on one side at a time, the body rocks: its roll swings at
-    // least twice as far as the trot's on its diagonals (25° and 7.5° at
-    // 1.6 m/s).
+    // least one and a half times as far as the trot's on its diagonals
+    // (17.4° and 10.0° at 1.6 m/s, both by eq. 2; 25° and 7.5° with the
+    // hop integrator's lower trot hops).
     let trot = run("trot", speed, 20.0).summary();
     assert!(
-        s.roll_magnitude_deg > 2.0 * trot.roll_magnitude_deg,
+        s.roll_magnitude_deg > 1.5 * trot.roll_magnitude_deg,
         "roll {:.1}°, the trot's {:.1}°",
         s.roll_magnitude_deg,
         trot.roll_magnitude_deg

@@ -95,10 +95,10 @@ impl Offered {
     };
 
     /// The trot and the pace: the hop integrator (on for a file that does
-    /// not say, as every file ran until 2026-12-06: by eq. 2's prediction
-    /// alone the pace runs 49 % slow at 2 m/s; the bundled quadruped turns it
-    /// off for the trot, which holds its speeds and Table 2 by eq. 2 alone,
-    /// docs/physics.md "Eq. 2 as written").
+    /// not say, as every file ran until 2026-12-06; the bundled quadruped
+    /// turns it off for both, which hold their speeds and Table 2 by eq. 2
+    /// alone — the pace with gains tuned for it, docs/physics.md "Eq. 2 as
+    /// written").
     pub const TROT: Self = Self {
         hop_integrator: Some(true),
         ..Self::NONE

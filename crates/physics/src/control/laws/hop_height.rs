@@ -108,38 +108,63 @@ pub fn thrust_for_apex(
     after - mean
 }
 
+/// Where the stance shortens a leg (Figure 4's Unloading, "active leg
+/// spring approaches full length") before its spring has given back the
+/// step Δ: the spring is still `of_step·Δ + beyond_m` short of the rest the
+/// step moved it to. The trot's pair unloads back at its stance rest
+/// (`of_step` 1), the bound's once it has extended `thrust_end` of the step
+/// past it (`of_step` 1 − `thrust_end`); 0 and 0 is a spring spent to its
+/// rest, as eq. 2 takes it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Release {
+    /// The share of the step still held at the release.
+    pub of_step: f64,
+    /// Compression beyond that (m or rad).
+    pub beyond_m: f64,
+}
+
 /// Eq. 2 for legs that are shortened before their springs have given back
-/// the step (the trot's and the pace's Unloading, "active leg spring
-/// approaches full length", read at the landing rest): the strain the
-/// prediction counts is what the springs return until they are
-/// `released_m` (m) short of their rest before the step, the rest being
-/// lost when Unloading shortens the leg. With `Δ` the step each spring
-/// returns `k_i·((c_i + Δ)² − (Δ + ε)²)/2`, linear in `Δ`, so
-/// `Δ·Σk_i(c_i − ε) = Mg·(target − predicted) + Σk_i·ε²/2`, `predicted`
-/// eq. 2's apex with the strain as it stands. No step when the springs are
-/// already at their release (nothing left to push with) or when the body
-/// already rises past the target (the springs let go).
+/// what they hold ([`Release`]): the strain the prediction counts is what
+/// the springs return until they are released, the rest being lost when
+/// Unloading shortens the leg. With `Δ` the step, `a` and `ε` the release,
+/// each spring returns `k_i·((c_i + Δ)² − (aΔ + ε)²)/2`, so
+/// `K(1 − a²)/2·Δ² + Σk_i(c_i − aε)·Δ = Mg·(target − predicted) + Kε²/2`,
+/// `predicted` eq. 2's apex with the strain as it stands, `K` the springs'
+/// total stiffness: its larger root. No step when the springs are already
+/// at their release (nothing left to push with) or when the body already
+/// rises past the target (the springs let go).
 #[must_use]
 pub fn thrust_for_apex_released(
     springs: &[Compressed],
-    released_m: f64,
+    release: Release,
     mass_kg: f64,
     com_height_m: f64,
     com_vy_mps: f64,
     target_m: f64,
 ) -> f64 {
+    let (a, eps) = (release.of_step, release.beyond_m);
     let k: f64 = springs.iter().map(|s| s.stiffness).sum();
     let push: f64 = springs
         .iter()
-        .map(|s| s.stiffness * (s.compression - released_m))
+        .map(|s| s.stiffness * (s.compression - a * eps))
         .sum();
     if k.is_nan() || k <= 0.0 || push.is_nan() || push <= 0.0 {
         return 0.0;
     }
     let strain: f64 = springs.iter().map(|s| s.strain_j()).sum();
     let predicted = predicted_apex_m(strain, mass_kg, com_height_m, com_vy_mps);
-    let wanted = (target_m - predicted) * mass_kg * GRAVITY_MPS2;
-    ((wanted + 0.5 * k * released_m * released_m) / push).max(0.0)
+    let wanted = (target_m - predicted) * mass_kg * GRAVITY_MPS2 + 0.5 * k * eps * eps;
+    let square = 0.5 * k * (1.0 - a * a);
+    let step = if square.abs() < 1e-12 * k {
+        wanted / push
+    } else {
+        let disc = push * push + 4.0 * square * wanted;
+        if disc < 0.0 {
+            return 0.0;
+        }
+        (disc.sqrt() - push) / (2.0 * square)
+    };
+    step.max(0.0)
 }
 
 /// Eq. 2 for one spring of length `length` (m or rad) compressed as
@@ -246,7 +271,7 @@ mod tests {
 
     #[test]
     fn a_released_spring_returns_what_the_target_asks() {
-        // Two springs released 0.01 m short of their rest before the step:
+        // Two springs released short of the rest the step moved them to:
         // what they give back from here to there, with the step, is what
         // the target lacks beyond elevation and speed.
         let springs = [
@@ -259,28 +284,48 @@ mod tests {
                 compression: 0.045,
             },
         ];
-        let (m, y, vy, target, eps) = (12.0, 0.8, -0.1, 0.9, 0.01);
-        let step = thrust_for_apex_released(&springs, eps, m, y, vy, target);
-        let returned: f64 = springs
-            .iter()
-            .map(|s| 0.5 * s.stiffness * ((s.compression + step).powi(2) - (step + eps).powi(2)))
-            .sum();
-        assert!((predicted_apex_m(returned, m, y, vy) - target).abs() < 1e-12);
-        assert!(step > 0.0);
-        // Released at the rest itself: the solve of the whole strain.
-        let whole = thrust_for_apex_released(&springs, 0.0, m, y, vy, target);
-        let back: f64 = springs
-            .iter()
-            .map(|s| 0.5 * s.stiffness * ((s.compression + whole).powi(2) - whole * whole))
-            .sum();
-        assert!((predicted_apex_m(back, m, y, vy) - target).abs() < 1e-12);
+        let (m, y, vy, target) = (12.0, 0.8, -0.1, 0.9);
+        for (a, eps) in [(1.0, 0.01), (0.33, 0.005), (0.0, 0.0)] {
+            let release = Release {
+                of_step: a,
+                beyond_m: eps,
+            };
+            let step = thrust_for_apex_released(&springs, release, m, y, vy, target);
+            let returned: f64 = springs
+                .iter()
+                .map(|s| {
+                    0.5 * s.stiffness * ((s.compression + step).powi(2) - (a * step + eps).powi(2))
+                })
+                .sum();
+            assert!(
+                (predicted_apex_m(returned, m, y, vy) - target).abs() < 1e-12,
+                "released at {a}·Δ + {eps}"
+            );
+            assert!(step > 0.0);
+        }
+        // Spent to the rest: the same step as the whole strain's solve.
+        let spent = Release {
+            of_step: 0.0,
+            beyond_m: 0.0,
+        };
+        let whole = thrust_for_apex(&springs, m, y, vy, target);
+        let same = thrust_for_apex_released(&springs, spent, m, y, vy, target);
+        assert!((whole - same).abs() < 1e-12, "{whole} against {same}");
         // At the release already, or rising past the target: no step.
+        let at = Release {
+            of_step: 1.0,
+            beyond_m: 0.05,
+        };
         assert_eq!(
-            thrust_for_apex_released(&springs, 0.05, m, y, vy, target),
+            thrust_for_apex_released(&springs, at, m, y, vy, target),
             0.0
         );
+        let trot = Release {
+            of_step: 1.0,
+            beyond_m: 0.01,
+        };
         assert_eq!(
-            thrust_for_apex_released(&springs, eps, m, y, 3.0, target),
+            thrust_for_apex_released(&springs, trot, m, y, 3.0, target),
             0.0
         );
     }

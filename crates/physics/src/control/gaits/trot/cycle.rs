@@ -9,7 +9,9 @@
 use super::QuadrupedRun;
 use crate::control::additions::speed_trim::along_z;
 use crate::control::laws::attitude::com_state;
-use crate::control::laws::hop_height::{flight_for_height, pair_springs, thrust_for_apex_released};
+use crate::control::laws::hop_height::{
+    Release, flight_for_height, pair_springs, thrust_for_apex_released,
+};
 use crate::control::laws::leg_spring::LegSpring;
 use crate::control::laws::phase::{Phase, StanceEvents};
 use crate::world::sim::{ControlInput, Drive};
@@ -170,13 +172,16 @@ impl QuadrupedRun {
             pair.map(|i| input.creature.legs[i].spring),
             pair.map(|i| self.stance_rest[i]),
             pair.map(|i| !self.done[i] && self.leg_phase[i] != Phase::Flight),
-            t.leg_stiffness * s.stiffness(),
+            t.leg_stiffness * s.stiffness() * self.lift_share[self.active],
         );
         let rise = (input.commands.hop_height_m).unwrap_or(t.eq2_hop_m * l);
         let mass = input.creature.model.total_mass();
         // The pair unloads 0.005 L short of its stance rest (above): the
         // strain eq. 2 counts is what the springs give back until then.
-        let released = 0.005 * l;
+        let released = Release {
+            of_step: 1.0,
+            beyond_m: 0.005 * l,
+        };
         let step = thrust_for_apex_released(
             &springs,
             released,

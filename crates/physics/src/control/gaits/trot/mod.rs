@@ -21,6 +21,7 @@ use crate::control::laws::attitude::{com_velocity, heading_forward};
 use crate::control::laws::body_plan::BodyPlan;
 use crate::control::laws::hip_servo::{HipServo, release};
 use crate::control::laws::hop_height::height_for_flight;
+use crate::control::laws::lift_share::lift_share;
 use crate::control::laws::pair_posture::PairPosture;
 use crate::control::laws::phase::Phase;
 use crate::control::laws::placement::{aim_frame, foot_displacement, hip_angles, hip_at_touchdown};
@@ -84,6 +85,10 @@ pub struct QuadrupedRun {
     /// A per-step speed correction by the tuning's `speed_gain` (0 unless a
     /// preset sets it: the trot holds its speed by eq. 3 alone).
     pub trim: SpeedTrim,
+    /// The share of each pair's spring work that lifts the centre of mass
+    /// ([`lift_share`]; 1 for the trot's diagonals): eq. 2 counts that
+    /// share of its springs' strain.
+    lift_share: [f64; 2],
     /// The creature's scale and leg lengths.
     plan: BodyPlan<4>,
 }
@@ -115,6 +120,7 @@ impl QuadrupedRun {
             liftoff_com_y: f64::NAN,
             eq2_set: false,
             trim: SpeedTrim::default(),
+            lift_share: TROT_PAIRS.map(|pair| lift_share(creature, pair)),
             plan: BodyPlan::of(creature),
         }
     }
@@ -122,8 +128,9 @@ impl QuadrupedRun {
     /// The same controller on other virtual legs (`pairs`, two pairs of leg
     /// indices, the first to land first): the pace's lateral pairs.
     #[must_use]
-    pub fn with_pairs(mut self, pairs: [[usize; 2]; 2]) -> Self {
+    pub fn with_pairs(mut self, pairs: [[usize; 2]; 2], creature: &PhysicalCreature) -> Self {
         self.pairs = pairs;
+        self.lift_share = pairs.map(|pair| lift_share(creature, pair));
         self
     }
 
