@@ -226,7 +226,8 @@ fn the_kangaroo_preset_from_before_its_start_on_the_cycle_runs_as_it_was_made() 
 /// its gallops carried gains of their own (`controller_by_gait.gallop`,
 /// `.gallop_alternate`) and turned the speed trim off, saved galloping: the
 /// file runs exactly as recorded then (the trim on, the controller's own
-/// gains), and the bundled biped now gallops by the paper's laws alone.
+/// gains), and the bundled biped now gallops by the paper's laws alone
+/// (eq. 2 too, since 2026-12-06).
 #[test]
 fn the_biped_preset_from_before_its_gallop_gains_runs_as_it_was_made() {
     let (all, got, want) = replay("raibert-biped_2026_12_03");
@@ -240,7 +241,7 @@ fn the_biped_preset_from_before_its_gallop_gains_runs_as_it_was_made() {
         "10",
         &["--gait", "gallop", "--speed", "1.5"],
     );
-    assert_eq!(now["lab_additions"], serde_json::json!(["hop_integrator"]));
+    assert_eq!(now["lab_additions"], serde_json::json!([]));
     assert_ne!(now["pitch_magnitude_deg"], want["pitch_magnitude_deg"]);
 }
 

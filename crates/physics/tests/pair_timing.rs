@@ -23,7 +23,7 @@ fn both_ways(name: &str, gait: &str, speed: f64, seconds: f64) -> Vec<(f64, f64,
         driver.step_observed(1.0 / 60.0, |d| {
             let sim = d.sim();
             for (i, c) in sim.contacts.iter().enumerate() {
-                if c.touching && !touching[i] && sim.time > settle_s {
+                if c.touching && !touching[i] {
                     touchdowns[i].push(sim.time);
                 }
                 touching[i] = c.touching;
@@ -37,8 +37,11 @@ fn both_ways(name: &str, gait: &str, speed: f64, seconds: f64) -> Vec<(f64, f64,
         .map(|t| {
             let [a, b] = t.legs;
             // Each first-leg touchdown's nearest second-leg touchdown.
+            // (First-leg touchdowns after settling; their partner may have
+            // landed just before it.)
             let gaps: Vec<f64> = touchdowns[a]
                 .iter()
+                .filter(|&&ta| ta > settle_s)
                 .filter_map(|&ta| {
                     touchdowns[b]
                         .iter()

@@ -78,7 +78,9 @@ impl Offered {
     /// The biped gallops: the speed trim, on (with the controller's own
     /// gains they miss the desired speed by 25–46 % without it; the bundled
     /// biped carries gallop gains that need none and turns it off); the hop
-    /// integrator, on (by eq. 2 alone the gallop blows up at 2 m/s).
+    /// integrator, on for a file that does not say (with the gains tuned
+    /// for it the gallop blows up at 2 m/s by eq. 2 alone; the bundled biped
+    /// carries gains tuned for eq. 2 and turns it off).
     pub const BIPED_GALLOP: Self = Self {
         speed_trim: Some(true),
         hop_integrator: Some(true),
