@@ -112,9 +112,10 @@ pub fn thrust_for_apex(
 /// spring approaches full length") before its spring has given back the
 /// step Δ: the spring is still `of_step·Δ + beyond_m` short of the rest the
 /// step moved it to. The trot's pair unloads back at its stance rest
-/// (`of_step` 1), the bound's once it has extended `thrust_end` of the step
-/// past it (`of_step` 1 − `thrust_end`); 0 and 0 is a spring spent to its
-/// rest, as eq. 2 takes it.
+/// (`of_step` 1); a leg unloading once it has extended a share of the
+/// step past that rest holds the rest of it (the bound's `thrust_end`,
+/// tried and not kept: docs/physics.md "The lift share"); 0 and 0 is a
+/// spring spent to its rest, as eq. 2 takes it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Release {
     /// The share of the step still held at the release.

@@ -38,8 +38,10 @@ pub fn pace_params() -> QuadrupedRunParams {
             roll_kv: 362.3,
             landing_rest_m: -0.007_3,
             stance_s: 0.035_46,
-            // Eq. 2 alone (the integrator off): 0.06 m asked runs 1.3 and
-            // 1.6 m/s within 10 % and 2.0 m/s 42 % slow (docs/physics.md).
+            // Eq. 2 alone (the integrator off) on these gains, tuned with
+            // the integrator: 0.06 m asked runs −51 / −42 / −9 % at 1.3 /
+            // 1.6 / 2.0 m/s; the bundled quadruped carries gains tuned for
+            // eq. 2 (docs/physics.md, "Eq. 2 as written").
             eq2_hop_m: 0.06,
             ..d.trot
         },

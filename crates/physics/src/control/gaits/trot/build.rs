@@ -42,7 +42,5 @@ pub fn on_pairs(
     quadruped_legs(creature)?;
     let mut p = with_parameters(own, params, gait)?;
     p.hop_integrator = additions.hop_integrator;
-    Ok(Box::new(
-        QuadrupedRun::new(p, creature).with_pairs(pairs, creature),
-    ))
+    Ok(Box::new(QuadrupedRun::on_pairs(p, creature, pairs)))
 }

@@ -52,7 +52,7 @@ pub struct QuadrupedRun {
     pub params: QuadrupedRunParams,
     /// The two virtual legs, pairs of leg indices, the first to land first:
     /// the trot's diagonals ([`TROT_PAIRS`]) unless made
-    /// [`with_pairs`](QuadrupedRun::with_pairs).
+    /// [`on_pairs`](QuadrupedRun::on_pairs).
     pub pairs: [[usize; 2]; 2],
     /// The active (supporting or landing) pair, 0 or 1 of `pairs`.
     pub active: usize,
@@ -98,11 +98,22 @@ impl QuadrupedRun {
     /// starting in flight with pair 0 about to land.
     #[must_use]
     pub fn new(params: QuadrupedRunParams, creature: &PhysicalCreature) -> Self {
+        Self::on_pairs(params, creature, TROT_PAIRS)
+    }
+
+    /// The same controller on other virtual legs (`pairs`, two pairs of leg
+    /// indices, the first to land first): the pace's lateral pairs.
+    #[must_use]
+    pub fn on_pairs(
+        params: QuadrupedRunParams,
+        creature: &PhysicalCreature,
+        pairs: [[usize; 2]; 2],
+    ) -> Self {
         let scale = creature.scale;
         let t = params.trot;
         Self {
             params,
-            pairs: TROT_PAIRS,
+            pairs,
             active: 0,
             leg_phase: [Phase::Flight; 4],
             stance_s: [t.stance_s * Scale::new(scale).time(); 2],
@@ -120,18 +131,9 @@ impl QuadrupedRun {
             liftoff_com_y: f64::NAN,
             eq2_set: false,
             trim: SpeedTrim::default(),
-            lift_share: TROT_PAIRS.map(|pair| lift_share(creature, pair)),
+            lift_share: pairs.map(|pair| lift_share(creature, pair)),
             plan: BodyPlan::of(creature),
         }
-    }
-
-    /// The same controller on other virtual legs (`pairs`, two pairs of leg
-    /// indices, the first to land first): the pace's lateral pairs.
-    #[must_use]
-    pub fn with_pairs(mut self, pairs: [[usize; 2]; 2], creature: &PhysicalCreature) -> Self {
-        self.pairs = pairs;
-        self.lift_share = pairs.map(|pair| lift_share(creature, pair));
-        self
     }
 
     /// The state of the active virtual leg (Figure 4): flight until a leg
