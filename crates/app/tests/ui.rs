@@ -556,9 +556,22 @@ fn the_panel_pushes_forward_draws_the_push_and_judges_it() {
         // The view eases toward the moved creature: a few frames to settle.
         harness.run_steps(30);
     };
+    let drawn = |lab: &Lab| {
+        lab.stage()
+            .scene()
+            .segments()
+            .iter()
+            .filter(|s| s.color == PUSH_COLOR)
+            .count()
+    };
     run_for(&mut harness, 2.0);
     harness.get_by_label("Push forward").click();
     harness.run_steps(2);
+    assert_eq!(
+        drawn(harness.state()),
+        5,
+        "the arrow at once, paused: a shaft and four barbs"
+    );
     run_for(&mut harness, 0.1);
     let pushes = harness
         .state()
@@ -569,19 +582,7 @@ fn the_panel_pushes_forward_draws_the_push_and_judges_it() {
     assert_eq!(pushes.len(), 1, "{pushes:?}");
     // Heading 0: forward is +z, 0.3 m/s.
     assert!((pushes[0].dv_mps[1] - 0.3).abs() < 1e-12 && pushes[0].dv_mps[0].abs() < 1e-12);
-    let drawn = |lab: &Lab| {
-        lab.stage()
-            .scene()
-            .segments()
-            .iter()
-            .filter(|s| s.color == PUSH_COLOR)
-            .count()
-    };
-    assert_eq!(
-        drawn(harness.state()),
-        3,
-        "the arrow: a shaft and two barbs"
-    );
+    assert_eq!(drawn(harness.state()), 5, "still drawn 0.1 s on");
     run_for(&mut harness, 6.0);
     assert_eq!(drawn(harness.state()), 0, "gone a second after");
     assert!(

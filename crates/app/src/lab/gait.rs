@@ -101,17 +101,18 @@ impl Lab {
     }
 
     /// Pushes the physics creature: its trunk's horizontal velocity changes
-    /// by `dv_mps` = `[x, z]` m/s at once ([`EngineCommand::Push`]).
+    /// by `dv_mps` = `[x, z]` m/s at once ([`EngineCommand::Push`]), and its
+    /// arrow is drawn.
     ///
     /// # Errors
     /// `push: …` when the engine is not physics, the creature is planar
     /// and the push sideways, or a speed is not finite within ±10 m/s;
     /// nothing changes.
     pub fn push(&mut self, dv_mps: [f64; 2]) -> Result<(), String> {
-        self.stage
-            .driver
-            .apply(EngineCommand::Push(dv_mps))
-            .map(drop)
+        self.stage.driver.apply(EngineCommand::Push(dv_mps))?;
+        // The arrow shows at once, paused or not.
+        self.refresh_scene();
+        Ok(())
     }
 
     /// Has the physics creature follow `waypoints` (`[x, z]`, m at scale 1)

@@ -68,7 +68,10 @@ impl Scene {
     }
 
     /// Adds a push's arrow from `tail` to `head` (world, metres): a shaft and
-    /// two barbs at the head. Non-finite or zero-length input is skipped.
+    /// four barbs at the head, two level and two upright, so the head reads
+    /// from any camera (a push away from the camera, its shaft
+    /// foreshortened, still shows an upright chevron). Non-finite or
+    /// zero-length input is skipped.
     pub fn add_push_arrow(&mut self, tail: DVec3, head: DVec3) {
         let along = head - tail;
         if !(tail.is_finite() && head.is_finite()) || along.length() < 1e-6 {
@@ -82,8 +85,10 @@ impl Scene {
             PUSH_COLOR,
         ));
         let back = -along.normalize() * (0.25 * along.length()).min(0.15);
-        let side = DVec3::Y.cross(along).normalize_or(DVec3::X) * back.length() * 0.6;
-        for barb in [back + side, back - side] {
+        let spread = back.length() * 0.6;
+        let side = DVec3::Y.cross(along).normalize_or(DVec3::X) * spread;
+        let up = along.cross(side).normalize_or(DVec3::Y) * spread;
+        for barb in [back + side, back - side, back + up, back - up] {
             frame.segments.push(Segment::new(
                 f32_point(head),
                 f32_point(head + barb),
@@ -126,23 +131,27 @@ mod tests {
     }
 
     #[test]
-    fn a_push_is_a_shaft_and_two_barbs_ending_at_the_head() {
+    fn a_push_is_a_shaft_and_four_barbs_ending_at_the_head() {
         let mut scene = Scene::new();
         let before = scene.segments().len();
         let head = DVec3::new(0.0, 0.6, 2.0);
         scene.add_push_arrow(head - DVec3::new(0.3, 0.0, 0.0), head);
         let added = &scene.segments()[before..];
-        assert_eq!(added.len(), 3);
-        // The shaft ends at the head; both barbs start there and point back.
+        assert_eq!(added.len(), 5);
+        // The shaft ends at the head; every barb starts there and points back.
         let h = f32_point(head);
         let at_head = |p: [f32; 3]| (Vec3::from(p) - h).length() < 1e-6;
         assert!(at_head(added[0].b) && added[1..].iter().all(|s| at_head(s.a)));
         assert!(added[1..].iter().all(|s| s.b[0] < h.x));
+        // Two barbs level (spread along z), two upright (spread along y).
+        let level = added[1..].iter().filter(|s| (s.b[1] - h.y).abs() < 1e-6);
+        let upright = added[1..].iter().filter(|s| (s.b[2] - h.z).abs() < 1e-6);
+        assert_eq!((level.count(), upright.count()), (2, 2));
         scene.add_push_arrow(head, head);
         scene.add_push_arrow(DVec3::splat(f64::NAN), head);
         assert_eq!(
             scene.segments().len(),
-            before + 3,
+            before + 5,
             "nothing for a point or NaN"
         );
     }
