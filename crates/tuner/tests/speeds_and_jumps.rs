@@ -35,12 +35,24 @@ fn pitching_bound(speed_mps: f64) -> Creature {
         physics.gait = Some("bound".to_owned());
         // The experiment's gains, bundled until 2026-12-06, when the bound
         // took gains tuned with the paper's friction (which hold a +10 %
-        // step at 2.3 m/s for 20 s; docs/physics.md).
+        // step at 2.3 m/s for 20 s; docs/physics.md), with the hop
+        // integrator and the rest of the bound's parameters it ran with
+        // until the bound went by eq. 2 alone (the night of 2026-12-06).
+        physics.lab_additions_by_gait.remove("bound");
         let own = physics
             .controller_by_gait
             .entry("bound".to_owned())
             .or_default();
+        own.clear();
         for (name, value) in [
+            ("gathered_flight_s", 0.22),
+            ("pair_flight_gain", -0.038_742_776_384_165_616),
+            ("speed_integral_gain", 0.03),
+            ("stance_s", 0.080_000_732_654_199_17),
+            ("stride_flight_s", 0.25),
+            ("sweep_s", 0.034_764_359_915_153_52),
+            ("landing_rest_m", -0.081_886_867_191_825_2),
+            ("swing_roll_follow", 0.0),
             ("leg_damping", 15.0),
             ("leg_stiffness", 5_655.202_882_667_869),
             ("pitch_kp", 105.396_779_337_337_18),
@@ -156,6 +168,11 @@ fn the_steps_term_counts_the_speed_steps_that_felled_the_creature() {
     assert_eq!(steady, (1, 0.0), "the bound holds 2.3 m/s");
     assert_eq!(stepped.0, 1 + SPEED_STEPS.len());
     assert!(stepped.1 >= 0.5, "the +10 % step felled it: {stepped:?}");
+    // The bundled bound, by eq. 2 alone with gains tuned with this term
+    // (docs/physics.md, "Eq. 2 as written"), holds both steps.
+    let bundled_bound = bundled("raibert-quadruped", 2.3);
+    let held = costed(&bundled_bound, "bound", 20.0, "steps=1");
+    assert_eq!(held, (1 + SPEED_STEPS.len(), 0.0), "the bundled bound");
 
     let biped = bundled("raibert-biped", 1.6);
     assert_eq!(costed(&biped, "run", 10.0, "steps=1"), (3, 0.0));
@@ -199,6 +216,17 @@ fn the_switch_term_counts_the_switches_that_felled_the_creature() {
     let (runs, felled) = cost(&switched);
     println!("bound switched into from the trot: {runs} runs, cost {felled}");
     assert_eq!((runs, felled), (2, 2.0), "the switch felled it");
+    // The bundled bound, tuned with this term, takes over from the trot at
+    // 2.8 m/s and runs on.
+    let mut bundled_bound = bundled("raibert-quadruped", 2.8);
+    if let Some(physics) = bundled_bound.scenario.physics.as_mut() {
+        physics.switch_to_start.clear();
+    }
+    let mut taken = problem_of(&bundled_bound, "bound", 20.0, "fall=1,switch=2");
+    if let Err(error) = taken.set_switch_from("trot") {
+        panic!("{error}");
+    }
+    assert_eq!(cost(&taken), (2, 0.0), "the bundled bound after the trot");
     // With a further speed, one switch run per speed.
     switched.also_at_mps = vec![2.0];
     assert_eq!(switched.runs_per_candidate(), 4);
