@@ -12,17 +12,13 @@ use gaitlab_physics::engine::gait_change::Entry;
 use serde_json::Value;
 
 /// The bundled quadruped, paper alone (every lab addition off, no
-/// `switch_to_start`) but for the hop integrator the gallop keeps by
-/// default (by eq. 2 alone it runs 44–65 % slow: docs/physics.md, "Eq. 2
-/// as written"; the trot and the bound by eq. 2 alone, as bundled), `from`
-/// at `speed` m/s.
+/// `switch_to_start`; every gait by eq. 2 alone, as bundled since the night
+/// of 2026-12-06: docs/physics.md, "Eq. 2 as written"), `from` at `speed`
+/// m/s.
 fn quadruped(from: &str, speed: f64) -> PhysicsDriver {
     let json = bundled_json("raibert-quadruped").expect("bundled");
     let mut preset: Value = serde_json::from_str(json).expect("json");
     paper_alone(&mut preset).expect("paper alone");
-    preset["scenario"]["physics"]["lab_additions"]["hop_integrator"] = Value::Bool(true);
-    preset["scenario"]["physics"]["lab_additions_by_gait"] =
-        serde_json::json!({"trot": {"hop_integrator": false}, "bound": {"hop_integrator": false}});
     let creature = Creature::from_json(&preset.to_string()).expect("preset");
     let mut params = creature.scenario.physics.clone().expect("physics");
     assert!(

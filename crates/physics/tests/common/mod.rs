@@ -10,9 +10,8 @@ use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::engine::metrics::GaitSummary;
 
 /// The additions a gait keeps by default where the paper's law alone misses
-/// (docs/physics.md, "Eq. 2 as written"): the hop integrator of the
-/// quadruped's gallop and the kangaroo (every other bundled gait runs by
-/// eq. 2 alone).
+/// (docs/physics.md, "Eq. 2 as written"): the kangaroo's hop integrator
+/// (every other bundled gait runs by eq. 2 alone).
 pub const KEPT: &[&str] = &["hop_integrator"];
 
 /// `preset`'s `gait` (its own when `None`) at `speed` (m/s) for `seconds`
