@@ -68,10 +68,10 @@ impl Scene {
     }
 
     /// Adds a push's arrow from `tail` to `head` (world, metres): a shaft and
-    /// four barbs at the head, two level and two upright, so the head reads
-    /// from any camera (a push away from the camera, its shaft
-    /// foreshortened, still shows an upright chevron). Non-finite or
-    /// zero-length input is skipped.
+    /// four barbs at the head, two level and two upright, so the head shows
+    /// from any camera (seen end-on, a push straight away from the camera,
+    /// it is a cross over the trunk). Non-finite or zero-length input is
+    /// skipped.
     pub fn add_push_arrow(&mut self, tail: DVec3, head: DVec3) {
         let along = head - tail;
         if !(tail.is_finite() && head.is_finite()) || along.length() < 1e-6 {
