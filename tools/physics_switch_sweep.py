@@ -8,9 +8,10 @@ controller takes over at the next flight from the state it finds. A cell is
 --json`'s `fell`), or the second of its first put-back (a blow-up) where
 it was put back. Prints a Markdown table and the number held.
 
-Usage: python3 tools/physics_switch_sweep.py [--set KEY=VALUE]
+Usage: python3 tools/physics_switch_sweep.py [--preset FILE] [--set KEY=VALUE]
        [--jobs N] [--gaitlab PATH]
-(PATH defaults to target/release/gaitlab; `--set` is passed to every run,
+(FILE defaults to the bundled raibert-quadruped, a candidate from `gaitlab
+tune` is measured by naming it; PATH defaults to target/release/gaitlab; `--set` is passed to every run,
 e.g. `--set scenario.physics.lab_additions.hop_integrator=true` to keep the
 trot's hop integrator, its default.)"""
 import argparse
@@ -38,7 +39,7 @@ def case(args, a, b, speed, at):
     extra = ["--set", "scenario.physics.switch_to_start=[]"]
     for s in args.set:
         extra += ["--set", s]
-    m = run(args.gaitlab, "raibert-quadruped", [
+    m = run(args.gaitlab, args.preset, [
         "--gait", a, "--switch", f"{at}:{b}", "--speed", str(speed),
         "--seconds", str(SECONDS), "--paper-alone", *extra])
     c = cell(m)
@@ -47,6 +48,7 @@ def case(args, a, b, speed, at):
 
 def main():
     parser = argparse.ArgumentParser()
+    parser.add_argument("--preset", default="raibert-quadruped")
     parser.add_argument("--set", action="append", default=[])
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--gaitlab", default="target/release/gaitlab")

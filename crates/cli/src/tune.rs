@@ -26,7 +26,7 @@ pub struct TuneArgs {
     /// Desired speed of the tuned runs, m/s at scale 1 (default: the preset's).
     #[arg(long)]
     pub speed: Option<f64>,
-    /// Weighted terms to minimise: fall, speed, table2, energy, jump, steps, switch, pairs, friction (`fall=10,speed=1,table2=1,energy=0.5`).
+    /// Weighted terms to minimise: fall, speed, table2, table2_out, energy, jump, steps, switch, pairs, friction (`fall=10,speed=1,table2=1,energy=0.5`).
     #[arg(long, default_value = "fall=10,speed=1")]
     pub objective: String,
     /// Further desired speeds every candidate also runs at, m/s at scale 1
@@ -43,6 +43,11 @@ pub struct TuneArgs {
     /// gait halfway (`--switch-from trot`); needed by that term.
     #[arg(long)]
     pub switch_from: Option<String>,
+    /// A gait the `switch` term's runs also change to, begun in the tuned
+    /// gait and switched halfway (`--switch-to trot`); with `--switch-from`
+    /// both ways are run.
+    #[arg(long)]
+    pub switch_to: Option<String>,
     /// Candidates evaluated in all (the start's included): one simulated run
     /// each, more with `--also-at` and the `jump`, `steps` and `switch` terms.
     #[arg(long, default_value_t = 200)]
@@ -97,14 +102,16 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
     }
     problem.also_at_mps.clone_from(&args.also_at);
     problem.vary(&args.vary).map_err(Failure::input)?;
-    match (&args.switch_from, objective.switch > 0.0) {
-        (Some(from), _) => problem.set_switch_from(from).map_err(Failure::input)?,
-        (None, true) => {
-            return Err(Failure::input(
-                "objective.switch: name the gait its runs begin in with --switch-from",
-            ));
-        }
-        (None, false) => {}
+    if let Some(from) = &args.switch_from {
+        problem.set_switch_from(from).map_err(Failure::input)?;
+    }
+    if let Some(to) = &args.switch_to {
+        problem.set_switch_to(to).map_err(Failure::input)?;
+    }
+    if objective.switch > 0.0 && args.switch_from.is_none() && args.switch_to.is_none() {
+        return Err(Failure::input(
+            "objective.switch: name the gait its runs begin in with --switch-from or change to with --switch-to",
+        ));
     }
     let threads = args
         .threads
@@ -122,6 +129,10 @@ pub fn tune(args: &TuneArgs) -> Result<(), Failure> {
     };
     let also = match problem.switch_from() {
         Some(from) if objective.switch > 0.0 => format!("{also} · switch runs from {from}"),
+        _ => also,
+    };
+    let also = match problem.switch_to() {
+        Some(to) if objective.switch > 0.0 => format!("{also} · switch runs to {to}"),
         _ => also,
     };
     let per = problem.runs_per_candidate();

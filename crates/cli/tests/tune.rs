@@ -108,11 +108,19 @@ fn bad_tune_arguments_are_named() {
         ),
         (
             vec!["--objective", "fall=10,switch=1"],
-            "objective.switch: name the gait its runs begin in with --switch-from",
+            "objective.switch: name the gait its runs begin in with --switch-from or change to with --switch-to",
         ),
         (
             vec!["--objective", "switch=1", "--switch-from", "run"],
-            "switch_from: the runs switch to run",
+            "switch_from: the runs begin in run, the tuned gait",
+        ),
+        (
+            vec!["--objective", "switch=1", "--switch-to", "run"],
+            "switch_to: the runs change to run, the tuned gait",
+        ),
+        (
+            vec!["--objective", "switch=1", "--switch-to", "trot"],
+            "switch_to: scenario.physics.gait",
         ),
         (
             vec!["--objective", "switch=1", "--switch-from", "trot"],

@@ -12,7 +12,7 @@ use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::load_bundled;
 use gaitlab_physics::PhysicsDriver;
 use gaitlab_physics::control::gaits::table::{gait_names, tested_speeds_mps};
-use gaitlab_physics::engine::table2::{compare, paper_speed_mps};
+use gaitlab_physics::engine::table2::{BAND_PCT, compare, paper_speed_mps};
 
 const BEGIN: &str = "<!-- table2_doc:begin -->";
 const END: &str = "<!-- table2_doc:end -->";
@@ -78,7 +78,7 @@ fn tables() -> Result<String, Box<dyn std::error::Error>> {
                     }
                     (Some(v), Some(d)) => {
                         let speed_error = c.row.quantity.is_speed_error();
-                        let mark = if d.abs() <= 35.0 || speed_error {
+                        let mark = if d.abs() <= BAND_PCT || speed_error {
                             ""
                         } else {
                             " ✗"

@@ -66,19 +66,32 @@ fn the_body_trots_with_its_own_gains() {
 }
 
 /// The literal reading of the trunk's inertia (the bundled quadruped's
-/// until 2026-12-04, [0.54 2.35 2.39] kg·m², j above 1) with the same gains: the body pitches
-/// over within seconds.
+/// until 2026-12-04, [0.54 2.35 2.39] kg·m², j above 1) with the same gains:
+/// no bound. With the bound's gains until 2026-12-06 the body pitched over
+/// within seconds; with those bundled since (the take-over tune,
+/// docs/physics.md) it runs 20 s at 2.3 m/s without the bound's pitching
+/// (about 5° against the paper's 26°) and more than 10 % slow.
 #[test]
-fn on_the_literal_reading_of_the_trunks_inertia_the_same_gains_fall() {
-    let mut driver = driver_with(&bounding(), |params| {
+fn on_the_literal_reading_of_the_trunks_inertia_the_same_gains_do_not_bound() {
+    let literal = |params: &mut PhysicsParams| {
         if let Some(trunk) = params.trunk.as_mut() {
             trunk.inertia_kgm2 = [2.35, 2.39, 0.54];
         }
-    });
-    while driver.time() < 20.0 && driver.resets() == 0 {
-        driver.step(1.0 / 60.0);
-    }
-    assert!(driver.resets() > 0, "held 20 s on the literal reading");
+    };
+    let (s, _) = run(&bounding(), None, 2.3, 20.0, literal, &[]);
+    let off = speed_error(&s, "bound, literal inertia", 2.3);
+    println!(
+        "literal reading: fell {} · {:+.1} % · pitch {:.1}°",
+        s.fell,
+        100.0 * off,
+        s.pitch_magnitude_deg
+    );
+    assert!(
+        s.fell || (off.abs() > 0.10 && s.pitch_magnitude_deg < 13.0),
+        "it bounds on the literal reading: {:+.1} %, {:.1}°",
+        100.0 * off,
+        s.pitch_magnitude_deg
+    );
 }
 
 /// With the lab's speed trim turned on at the bound's own trim gain
@@ -102,7 +115,8 @@ fn with_the_labs_trim_at_its_gain_the_bound_holds_its_speed() {
 /// legs through the trunk's roll"). Aimed in the trunk's sagittal plane
 /// (`swing_roll_follow` 0, the bundled bound's) it holds a minute at 2.3 m/s;
 /// aimed through the trunk's roll (1, every other preset's) with the roll
-/// servo it was tuned with, it tumbles within seconds.
+/// servo it was tuned with, it tumbles at 2.8 m/s (at 2.3 m/s, with the
+/// bound's gains bundled since the take-over tune of 2026-12-06, it holds).
 #[test]
 fn with_one_leg_heavier_the_bound_holds_when_its_legs_aim_in_the_trunks_plane() {
     let heavier = |params: &mut PhysicsParams| {
@@ -122,7 +136,7 @@ fn with_one_leg_heavier_the_bound_holds_when_its_legs_aim_in_the_trunks_plane() 
 
     let mut world = driver_with(&bounding(), |params| {
         heavier(params);
-        params.speed_mps = 2.3;
+        params.speed_mps = 2.8;
         let bound = params
             .controller_by_gait
             .entry("bound".to_owned())

@@ -7,6 +7,9 @@
 //!   (animation column) over the gait's measured rows, as a fraction; a row
 //!   the run has no figure for counts 1. Inputs (desired speeds) and the
 //!   undefined "error in running speed" rows are left out.
+//! - `table2_out`: the share of those rows more than
+//!   [`BAND_PCT`] % off (a row with no figure counts as off): what
+//!   `table2`'s mean can hide, one row far out while the rest sit close.
 //! - `energy`: the cost of transport (positive actuator work over weight ×
 //!   distance, [`GaitSummary::cost_of_transport`]), capped at 10.
 //! - `jump`: the share of runs with a box in the path ([`JUMP_BOXES`]) that
@@ -35,11 +38,20 @@
 use gaitlab_core::portable::Portable;
 use gaitlab_physics::engine::metrics::{GaitSummary, paper_friction_bounds};
 use gaitlab_physics::engine::pair_timing::{GALLOP_GAP_SHARE, pair_timing, timing_cost};
-use gaitlab_physics::engine::table2::compare;
+use gaitlab_physics::engine::table2::{BAND_PCT, compare};
 
 /// The names [`Objective::parse`] knows.
-pub const TERMS: [&str; 9] = [
-    "fall", "speed", "table2", "energy", "jump", "steps", "switch", "pairs", "friction",
+pub const TERMS: [&str; 10] = [
+    "fall",
+    "speed",
+    "table2",
+    "table2_out",
+    "energy",
+    "jump",
+    "steps",
+    "switch",
+    "pairs",
+    "friction",
 ];
 
 /// The boxes of the `jump` term, one run each: the near face's distance
@@ -63,6 +75,8 @@ pub struct Objective {
     pub speed: f64,
     /// Weight of `table2`.
     pub table2: f64,
+    /// Weight of `table2_out`.
+    pub table2_out: f64,
     /// Weight of `energy`.
     pub energy: f64,
     /// Weight of `jump`.
@@ -84,6 +98,7 @@ impl Default for Objective {
             fall: 10.0,
             speed: 1.0,
             table2: 0.0,
+            table2_out: 0.0,
             energy: 0.0,
             jump: 0.0,
             steps: 0.0,
@@ -104,6 +119,7 @@ impl Objective {
             fall: 0.0,
             speed: 0.0,
             table2: 0.0,
+            table2_out: 0.0,
             energy: 0.0,
             jump: 0.0,
             steps: 0.0,
@@ -127,6 +143,7 @@ impl Objective {
                 "fall" => o.fall = w,
                 "speed" => o.speed = w,
                 "table2" => o.table2 = w,
+                "table2_out" => o.table2_out = w,
                 "energy" => o.energy = w,
                 "jump" => o.jump = w,
                 "steps" => o.steps = w,
@@ -144,6 +161,7 @@ impl Objective {
         let total = o.fall
             + o.speed
             + o.table2
+            + o.table2_out
             + o.energy
             + o.jump
             + o.steps
@@ -177,14 +195,25 @@ impl Objective {
             cost +=
                 self.speed * ((s.speed_mean_mps - s.speed_desired_mps).abs() / desired).min(1.0);
         }
-        if self.table2 > 0.0 {
-            let rows: Vec<f64> = compare(s, gait, legs)
+        if self.table2 > 0.0 || self.table2_out > 0.0 {
+            let rows: Vec<Option<f64>> = compare(s, gait, legs)
                 .iter()
                 .filter(|c| !c.row.quantity.is_input() && !c.row.quantity.is_speed_error())
-                .map(|c| c.diff_pct().map_or(1.0, |d| (d.abs() / 100.0).min(1.0)))
+                .map(|c| c.diff_pct().map(f64::abs))
                 .collect();
             if !rows.is_empty() {
-                cost += self.table2 * rows.iter().sum::<f64>() / rows.len() as f64;
+                let n = rows.len() as f64;
+                let mean = rows
+                    .iter()
+                    .map(|d| d.map_or(1.0, |d| (d / 100.0).min(1.0)))
+                    .sum::<f64>()
+                    / n;
+                let out = rows
+                    .iter()
+                    .filter(|d| d.is_none_or(|d| d > BAND_PCT))
+                    .count() as f64
+                    / n;
+                cost += self.table2 * mean + self.table2_out * out;
             }
         }
         if self.energy > 0.0 {
@@ -242,6 +271,10 @@ mod tests {
         assert_eq!(Objective::parse("steps=2").map(|o| o.steps), Ok(2.0));
         assert_eq!(Objective::parse("switch=3").map(|o| o.switch), Ok(3.0));
         assert_eq!(Objective::parse("pairs=2").map(|o| o.pairs), Ok(2.0));
+        assert_eq!(
+            Objective::parse("table2_out=4").map(|o| o.table2_out),
+            Ok(4.0)
+        );
     }
 
     #[test]
@@ -267,6 +300,38 @@ mod tests {
         let p = Objective::parse("pairs=3").expect("parses");
         assert!((p.cost(&s, false, "bound", &[], &[[0, 1]]) - 3.0).abs() < 1e-12);
         assert_eq!(p.cost(&s, false, "run", &[], &[]), 0.0);
+    }
+
+    #[test]
+    fn table2_out_counts_the_rows_outside_the_band() {
+        // The trot's six measured rows: pitch on the paper, stride length
+        // +10 %, stride duration +50 %, flight -40 %, stance on the paper,
+        // leg-length change missing. Three of six are out.
+        let s = GaitSummary {
+            speed_desired_mps: 2.3,
+            speed_mean_mps: 2.3,
+            pitch_magnitude_deg: 6.2,
+            stride_length_m: 1.49 * 1.1,
+            stride_duration_s: 0.54 * 1.5,
+            flight_duration_s: 0.18 * 0.6,
+            stance_duration_s: 0.09,
+            ..GaitSummary::default()
+        };
+        let out = Objective::parse("table2_out=2").expect("parses");
+        let c = out.cost(&s, false, "trot", &[], &[]);
+        assert!((c - 2.0 * 0.5).abs() < 1e-12, "{c}");
+        // The mean of the same rows: (0 + 0.1 + 0.5 + 0.4 + 0 + 1) / 6.
+        let mean = Objective::parse("table2=1").expect("parses");
+        let c = mean.cost(&s, false, "trot", &[], &[]);
+        assert!((c - 2.0 / 6.0).abs() < 1e-12, "{c}");
+        // Every row in: nothing to pay.
+        let inside = GaitSummary {
+            stride_duration_s: 0.54 * 1.34,
+            flight_duration_s: 0.18 * 0.66,
+            leg_length_change_m: 0.03,
+            ..s
+        };
+        assert_eq!(out.cost(&inside, false, "trot", &[], &[]), 0.0);
     }
 
     /// ln 1.5 and ln 1.25, to 17 digits.

@@ -48,6 +48,9 @@ pub struct Problem {
     /// The gait the `switch` term's runs begin in
     /// ([`Problem::set_switch_from`]).
     switch_from: Option<String>,
+    /// The gait the `switch` term's runs begun in the tuned gait change to
+    /// ([`Problem::set_switch_to`]).
+    switch_to: Option<String>,
 }
 
 /// What changes halfway through a run.
@@ -57,7 +60,7 @@ enum Change {
     None,
     /// The desired speed is multiplied by this (the `steps` term).
     Speed(f64),
-    /// The run begun in another gait switches to this one (the `switch` term).
+    /// The run switches to this gait (the `switch` term).
     Gait(String),
 }
 
@@ -115,6 +118,7 @@ impl Problem {
             objective,
             also_at_mps: Vec::new(),
             switch_from: None,
+            switch_to: None,
         })
     }
 
@@ -125,17 +129,38 @@ impl Problem {
     /// `switch_from: …` when `gait` is the tuned gait or one the creature
     /// does not run; nothing changes then.
     pub fn set_switch_from(&mut self, gait: &str) -> Result<(), PresetError> {
+        self.check_other_gait("switch_from", gait, "begin in")?;
+        self.switch_from = Some(gait.to_owned());
+        Ok(())
+    }
+
+    /// The `switch` term's runs also begin in the tuned gait and switch to
+    /// `gait` halfway: the tuned gait handing over to another, as
+    /// [`Problem::set_switch_from`] has it taking over.
+    ///
+    /// # Errors
+    /// `switch_to: …` when `gait` is the tuned gait or one the creature
+    /// does not run; nothing changes then.
+    pub fn set_switch_to(&mut self, gait: &str) -> Result<(), PresetError> {
+        self.check_other_gait("switch_to", gait, "change to")?;
+        self.switch_to = Some(gait.to_owned());
+        Ok(())
+    }
+
+    /// `Ok` when `gait` is not the tuned gait and the creature runs it.
+    fn check_other_gait(&self, field: &str, gait: &str, verb: &str) -> Result<(), PresetError> {
         if gait == self.gait {
             return Err(PresetError::new(
-                "switch_from",
-                format!("the runs switch to {gait}, so they must begin in another gait"),
+                field,
+                format!(
+                    "the runs {verb} {gait}, the tuned gait: name another gait the creature runs"
+                ),
             ));
         }
         let mut params = self.params.clone();
         params.gait = Some(gait.to_owned());
         PhysicsDriver::with_params(&self.preset, params)
-            .map_err(|e| PresetError::new("switch_from", e.to_string()))?;
-        self.switch_from = Some(gait.to_owned());
+            .map_err(|e| PresetError::new(field, e.to_string()))?;
         Ok(())
     }
 
@@ -145,11 +170,20 @@ impl Problem {
         self.switch_from.as_deref()
     }
 
-    /// The `switch` term's runs: one per speed a candidate runs at, when
-    /// the term is weighted and a gait to begin in is set.
+    /// The gait the `switch` term's runs change to from the tuned gait,
+    /// when one is set.
+    #[must_use]
+    pub fn switch_to(&self) -> Option<&str> {
+        self.switch_to.as_deref()
+    }
+
+    /// The `switch` term's runs: one per speed a candidate runs at for each
+    /// of the switch from a gait and the switch to one that is set, when
+    /// the term is weighted.
     fn switch_runs(&self) -> usize {
-        if self.objective.switch > 0.0 && self.switch_from.is_some() {
-            1 + self.also_at_mps.len()
+        let ways = usize::from(self.switch_from.is_some()) + usize::from(self.switch_to.is_some());
+        if self.objective.switch > 0.0 {
+            ways * (1 + self.also_at_mps.len())
         } else {
             0
         }
@@ -313,7 +347,11 @@ impl Problem {
                 friction: 0.0,
                 ..*o
             };
-            let rest = Objective { table2: 0.0, ..*o };
+            let rest = Objective {
+                table2: 0.0,
+                table2_out: 0.0,
+                ..*o
+            };
             let mut sum = rest.cost(&main, fell, gait, &legs, self.pairs);
             for &speed in &self.also_at_mps {
                 let mut at = params.clone();
@@ -343,13 +381,22 @@ impl Problem {
             cost += o.steps * f64::from(self.fallen(steps)) / SPEED_STEPS.len() as f64;
         }
         let switches = self.switch_runs();
-        if let Some(from) = self.switch_from.as_ref().filter(|_| switches > 0) {
+        if switches > 0 {
             let speeds = std::iter::once(params.speed_mps).chain(self.also_at_mps.iter().copied());
-            let runs = speeds.map(|speed| {
-                let mut begun = params.clone();
-                begun.speed_mps = speed;
-                begun.gait = Some(from.clone());
-                (begun, Change::Gait(self.gait.clone()))
+            let ways = [
+                self.switch_from
+                    .clone()
+                    .map(|from| (from, self.gait.clone())),
+                self.switch_to.clone().map(|to| (self.gait.clone(), to)),
+            ];
+            let runs = ways.into_iter().flatten().flat_map(|(begin, end)| {
+                let params = &params;
+                speeds.clone().map(move |speed| {
+                    let mut begun = params.clone();
+                    begun.speed_mps = speed;
+                    begun.gait = Some(begin.clone());
+                    (begun, Change::Gait(end.clone()))
+                })
             });
             cost += o.switch * f64::from(self.fallen(runs)) / switches as f64;
         }
@@ -371,7 +418,7 @@ impl Problem {
             0.0
         };
         Evaluation {
-            cost: o.fall + o.speed + o.table2 + o.jump + o.steps + switch,
+            cost: o.fall + o.speed + o.table2 + o.table2_out + o.jump + o.steps + switch,
             fell: true,
             speed_mean_mps: 0.0,
         }

@@ -4,7 +4,8 @@
 //! single-speed problems must reproduce; the `jump` term counts the box runs
 //! that fell, in steps of one box, and only the kangaroo may ask for it;
 //! the `steps` term counts the runs with a speed step that fell, and the
-//! `switch` term the runs switched into from another gait that fell; the
+//! `switch` term the runs switched into from another gait, or handed over
+//! from the tuned gait to another, that fell; the
 //! `pairs` term asks unison of the bound and half a stance of a gallop.
 
 use gaitlab_core::Creature;
@@ -236,6 +237,64 @@ fn the_switch_term_counts_the_switches_that_felled_the_creature() {
         panic!("{error}");
     }
     assert_eq!(cost(&biped), (2, 0.0), "the biped runs on after its gallop");
+}
+
+/// The `switch` term's other way (`--switch-to`): runs begun in the tuned
+/// gait hand over to another halfway. The bundled bound hands over to the
+/// bundled trot at 2.3 m/s and runs on; with the trot's legs a quarter as
+/// stiff (a trot that cannot carry the creature) every such run falls
+/// after the hand-over. Both ways together run once each per speed.
+#[test]
+fn the_switch_term_also_counts_hand_overs_to_another_gait() {
+    let cost = start_cost;
+    let mut bound = bundled("raibert-quadruped", 2.3);
+    if let Some(physics) = bound.scenario.physics.as_mut() {
+        physics.switch_to_start.clear();
+    }
+    let mut handing = problem_of(&bound, "bound", 16.0, "switch=3");
+    assert!(
+        handing
+            .set_switch_to("bound")
+            .is_err_and(|e| e.to_string().starts_with("switch_to"))
+    );
+    assert!(
+        handing
+            .set_switch_to("canter")
+            .is_err_and(|e| e.to_string().starts_with("switch_to"))
+    );
+    assert_eq!(handing.switch_to(), None);
+    assert_eq!(cost(&handing), (1, 0.0), "no way set: no switch runs");
+    if let Err(error) = handing.set_switch_to("trot") {
+        panic!("{error}");
+    }
+    assert_eq!(handing.switch_to(), Some("trot"));
+    assert_eq!(cost(&handing), (2, 0.0), "the bundled bound hands over");
+
+    let mut soft_trot = bound.clone();
+    if let Some(physics) = soft_trot.scenario.physics.as_mut() {
+        let trot = physics
+            .controller_by_gait
+            .entry("trot".to_owned())
+            .or_default();
+        let stiffness = trot.get("leg_stiffness").copied().unwrap_or(6300.0);
+        trot.insert("leg_stiffness".to_owned(), stiffness / 4.0);
+    }
+    let mut felled = problem_of(&soft_trot, "bound", 16.0, "switch=3");
+    if let Err(error) = felled.set_switch_to("trot") {
+        panic!("{error}");
+    }
+    let (runs, switch_cost) = cost(&felled);
+    assert_eq!(runs, 2);
+    assert!(
+        (switch_cost - 3.0).abs() < 1e-12,
+        "the soft trot fell after the hand-over: {switch_cost}"
+    );
+    // Both ways, at two speeds: two runs per way per speed.
+    if let Err(error) = felled.set_switch_from("trot") {
+        panic!("{error}");
+    }
+    felled.also_at_mps = vec![2.8];
+    assert_eq!(felled.runs_per_candidate(), 2 + 2 * 2);
 }
 
 #[test]

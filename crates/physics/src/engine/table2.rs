@@ -5,6 +5,11 @@
 
 use crate::engine::metrics::GaitSummary;
 
+/// How far (%) a measured row may be from the animation column and still
+/// be counted as reproducing it: the lab's band for "close to Table 2"
+/// (issue 42's acceptance, the docs' ✗, the tuner's `table2_out`).
+pub const BAND_PCT: f64 = 35.0;
+
 /// Which measured quantity a row compares.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Quantity {
