@@ -218,7 +218,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
             if !to_start.is_empty() {
                 ui.label(format!("Switch into {to_start}: at the gait's own start (the lab's)"))
                     .on_hover_text(
-                        "The paper's creatures change gait while running: the new state machine takes over at the next flight. Taken over so, this quadruped's pitching bound tumbles in most runs, so a switch into these gaits puts the creature in the gait's own start where it is, turned to its heading (scenario.physics.switch_to_start, docs/physics.md \"Switching into the bound\")",
+                        "The paper's creatures change gait while running: the new state machine takes over at the next flight. This file names gaits to enter at their own start instead, where the creature is, turned to its heading (scenario.physics.switch_to_start, the lab's option; the bundled quadruped takes over as the paper does: docs/physics.md \"Switching into the bound\")",
                     );
             }
             ui.label(format!(
