@@ -184,6 +184,63 @@ fn the_dynamic_scale_from_the_panel_stretches_steps_by_root_l() {
     assert_eq!(lab.driver().physics().map(|d| d.params().scale), Some(1.0));
 }
 
+/// Two boxes, the second placed 10 m ahead while the kangaroo is in the air
+/// over the first (at the bundled 5 m/s): each is jumped in turn.
+/// Before the jumps were queued the second box replaced the first's jump
+/// and the kangaroo ran into one of them.
+#[test]
+fn a_second_box_placed_mid_jump_is_jumped_too() {
+    let mut lab = Lab::new(Settings::default());
+    lab.command(r#"{"preset":"raibert-kangaroo"}"#)
+        .expect("valid");
+    run(&mut lab, 2.0);
+    lab.place_obstacle(3.0).expect("the kangaroo jumps");
+    let phase = |lab: &Lab| lab.driver().physics().map_or("", |d| d.phase_name());
+    let mut frames = 0;
+    while phase(&lab) != "jump flight" {
+        lab.advance(1.0 / 60.0);
+        frames += 1;
+        assert!(frames < 3 * 60, "no jump within 3 s");
+    }
+    lab.place_obstacle(10.0).expect("a second box");
+    let Some(driver) = lab.driver().physics() else {
+        panic!("physics")
+    };
+    let boxes = driver.sim().terrain.obstacles.clone();
+    assert_eq!(boxes.len(), 2);
+    let mut clearance = f64::INFINITY;
+    let mut jumps = 0;
+    let mut was = phase(&lab);
+    for _ in 0..(8 * 60) {
+        lab.advance(1.0 / 60.0);
+        let Some(driver) = lab.driver().physics() else {
+            panic!("physics")
+        };
+        let toe = driver.sim().contacts[0].position;
+        for b in &boxes {
+            if b.covers(toe.x, toe.z) {
+                clearance = clearance.min(toe.y - b.height_m);
+            }
+        }
+        let now = phase(&lab);
+        if now == "jump flight" && was != "jump flight" {
+            jumps += 1;
+        }
+        was = now;
+    }
+    let s = state(&lab);
+    assert_eq!(s["physics"]["fell"], false, "{s}");
+    assert_eq!(jumps, 1, "one more jump after the first");
+    assert!(clearance > 0.0, "the toe entered a box ({clearance} m)");
+    let com_z = lab.driver().physics().map(|d| {
+        gaitlab_physics::dynamics::energy::center_of_mass(&d.sim().creature.model, &d.sim().data).z
+    });
+    assert!(
+        com_z.is_some_and(|z| z > boxes[1].max_xz[1] + 1.0),
+        "{com_z:?}"
+    );
+}
+
 /// The kangaroo's jump from the panel ("Place a box 3 m ahead",
 /// `Lab::place_obstacle`): the box appears in its path and the jump states
 /// carry it over without the toe entering it; the other gaits have no jump.

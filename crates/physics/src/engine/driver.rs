@@ -12,8 +12,9 @@ use glam::{DMat3, DVec3};
 
 use crate::control::additions::Additions;
 use crate::control::gaits::controller::GaitController;
-use crate::control::gaits::kangaroo_hop::KangarooHop;
+use crate::control::gaits::kangaroo_hop::jumps::QueuedJump;
 use crate::control::gaits::kangaroo_hop::kangaroo_ground;
+use crate::control::gaits::kangaroo_hop::{KangarooHop, KangarooHopParams};
 use crate::control::gaits::make::make_controller;
 use crate::control::gaits::table::gait_names;
 use crate::control::laws::scale::Scale;
@@ -682,13 +683,20 @@ impl PhysicsDriver {
         let l = self.params.scale;
         let com = crate::dynamics::energy::center_of_mass(&self.sim.creature.model, &self.sim.data);
         let at_m = com.z / l + distance_m;
-        let p = kangaroo.params;
+        // The box of the controller's own size (0.25 m high, 0.3 m deep),
+        // whatever box a file gave before it.
+        let size = KangarooHopParams::default();
+        let jump = QueuedJump {
+            at_m,
+            depth_m: size.obstacle_depth_m,
+            height_m: size.obstacle_height_m,
+        };
         self.sim.terrain.obstacles.push(Obstacle {
             min_xz: [-10.0 * l, at_m * l],
-            max_xz: [10.0 * l, (at_m + p.obstacle_depth_m) * l],
-            height_m: p.obstacle_height_m * l,
+            max_xz: [10.0 * l, (at_m + jump.depth_m) * l],
+            height_m: jump.height_m * l,
         });
-        kangaroo.jump_at(at_m);
+        kangaroo.jump_over(jump);
         Ok(at_m)
     }
 

@@ -1,5 +1,5 @@
 //! The kangaroo hop's controller built from a preset's physics section (its
-//! row of the gait table): the preset's first obstacle (the jump), its
+//! row of the gait table): the preset's obstacles (each one jumped), its
 //! controller parameters by name and the lab's additions it runs with.
 
 use gaitlab_core::preset::PhysicsParams;
@@ -8,6 +8,7 @@ use crate::control::additions::Additions;
 use crate::control::gaits::builder::{Misfit, with_parameters};
 use crate::control::gaits::gait::Gait;
 use crate::control::gaits::kangaroo_hop::KangarooHop;
+use crate::control::gaits::kangaroo_hop::jumps::QueuedJump;
 use crate::control::gaits::kangaroo_hop::params::KangarooHopParams;
 use crate::creatures::PhysicalCreature;
 
@@ -31,18 +32,19 @@ pub fn build(
             "the kangaroo hop needs a planar base, one leg with hip, knee and ankle, a three-joint tail and a neck",
         ));
     }
-    let d = KangarooHopParams::default();
-    let obstacle = params.obstacles.first();
-    let p = KangarooHopParams {
-        jump_at_m: obstacle.map(|o| o.at_m),
-        obstacle_height_m: obstacle.map_or(d.obstacle_height_m, |o| o.height_m),
-        obstacle_depth_m: obstacle.map_or(d.obstacle_depth_m, |o| o.depth_m),
-        ..d
-    };
-    let mut p = with_parameters(p, params, "hop")?;
+    let mut p = with_parameters(KangarooHopParams::default(), params, "hop")?;
     p.speed_trim = additions.speed_trim;
     p.speed_ramp = additions.speed_ramp;
     p.tail_feedback = additions.tail_feedback;
     p.hop_integrator = additions.hop_integrator;
-    Ok(Box::new(KangarooHop::new(p)))
+    let mut hop = KangarooHop::new(p);
+    // Every box of the file is jumped, nearest first.
+    for o in &params.obstacles {
+        hop.jump_over(QueuedJump {
+            at_m: o.at_m,
+            depth_m: o.depth_m,
+            height_m: o.height_m,
+        });
+    }
+    Ok(Box::new(hop))
 }

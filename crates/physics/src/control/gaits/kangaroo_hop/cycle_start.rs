@@ -16,8 +16,9 @@ impl KangarooHop {
     pub fn for_settling(&self) -> Self {
         let mut params = self.params;
         params.speed_ramp = true;
-        params.jump_at_m = None;
-        Self::new(params)
+        let mut copy = Self::new(params);
+        copy.clear_jumps();
+        copy
     }
 
     /// Continue from `settled`'s state of the hop cycle, with this

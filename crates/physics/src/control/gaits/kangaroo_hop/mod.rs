@@ -47,6 +47,7 @@ use crate::world::sim::{ControlInput, Controller, Drive};
 mod ankle;
 pub mod build;
 mod cycle_start;
+pub mod jumps;
 pub mod leg;
 pub mod origins;
 pub mod params;
@@ -92,8 +93,10 @@ pub struct KangarooHop {
     /// The lab's speed trim added to the commanded speed in eq. 3 (zero
     /// unless `speed_trim`), from one touchdown to the next.
     pub trim: SpeedTrim,
-    /// Whether a jump is still to come.
+    /// Whether the jump in the parameters' `jump_at_m` is still to come.
     jump_pending: bool,
+    /// The boxes to jump after it, nearest first (jumps.rs).
+    queued: Vec<jumps::QueuedJump>,
     started: bool,
     touchdown_time: f64,
     touchdown_toe: f64,
@@ -120,6 +123,7 @@ impl KangarooHop {
             speed_command_mps: f64::NAN,
             trim: SpeedTrim::default(),
             jump_pending: params.jump_at_m.is_some(),
+            queued: Vec::new(),
             started: false,
             touchdown_time: 0.0,
             touchdown_toe: 0.0,
@@ -141,12 +145,6 @@ impl KangarooHop {
             JumpStage::Airborne => "jump flight",
             JumpStage::Landing => "jump landing",
         }
-    }
-
-    /// Ask for a jump over an obstacle whose near face is at `at_m` (m).
-    pub fn jump_at(&mut self, at_m: f64) {
-        self.params.jump_at_m = Some(at_m);
-        self.jump_pending = true;
     }
 
     /// At the first control call: the stance-time and stride guesses for
@@ -244,7 +242,7 @@ impl Controller for KangarooHop {
             let r0 = (p.landing_leg_m - p.flight_retract_m * rising) * l;
             let mut toe = if self.jump == JumpStage::Airborne
                 && p.jump_at_m
-                    .is_some_and(|at| com.z < at + p.obstacle_depth_m * l)
+                    .is_some_and(|at| com.z < (at + p.obstacle_depth_m) * l)
             {
                 // Tucked over the obstacle.
                 DVec2::new(0.05 * l, -0.22 * l)

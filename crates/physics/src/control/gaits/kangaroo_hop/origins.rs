@@ -262,7 +262,7 @@ pub const ORIGINS: &[ControllerParam] = &[
         "m",
         "Raibert & Hodgins 1991 Figure 2 (how high to jump)",
         Origin::Open,
-        "The paper's animator says how high to jump; the lab asks for 8 cm over the box",
+        "The paper's animator says how high to jump; the lab asks for 8 cm over the box (the bundled kangaroo 3 cm, from the box sweep)",
     ),
     row(
         "jump_stiffness_factor",
@@ -270,7 +270,7 @@ pub const ORIGINS: &[ControllerParam] = &[
         "",
         JUMP,
         Origin::Open,
-        "The paper's jump stiffens the legs for take-off without saying how much: ×1.5",
+        "The paper's jump stiffens the legs for take-off without saying how much: ×1.5 (the bundled kangaroo ×1.4, from the box sweep)",
     ),
     row(
         "landing_damping_factor",
@@ -278,7 +278,7 @@ pub const ORIGINS: &[ControllerParam] = &[
         "",
         JUMP,
         Origin::Open,
-        "The paper's jump adds dissipation to the landing without a value: ×4",
+        "The paper's jump adds dissipation to the landing without a value: ×4 (the bundled kangaroo ×1.5: more took the next hop's energy too)",
     ),
 ];
 

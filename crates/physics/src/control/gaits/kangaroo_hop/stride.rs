@@ -90,13 +90,15 @@ impl KangarooHop {
             JumpStage::Landing => JumpStage::None,
             s => s,
         };
+        self.next_jump(toe_z, l);
+        let p = self.params;
         if self.jump_pending
             && let Some(at) = p.jump_at_m
         {
-            // Jump now if the next ordinary stride would land short of the
-            // obstacle's far side but past its near face minus a margin.
+            // Jump now if the next ordinary stride would land past the
+            // obstacle's near face minus a margin (positions at scale 1).
             let next = toe_z + self.stride_m;
-            if next > (at - 0.25 * l) * 1.0 && toe_z < at {
+            if next > (at - 0.25) * l && toe_z < at * l {
                 self.jump = JumpStage::Takeoff;
                 self.jump_pending = false;
             }
@@ -142,7 +144,7 @@ impl KangarooHop {
             // Long enough to carry the body past the obstacle, and high
             // enough for the tucked toe to clear it.
             let v = com_v.z.max(0.5 * Scale::new(l).velocity());
-            let far = at + p.obstacle_depth_m * l + 0.3 * l;
+            let far = (at + p.obstacle_depth_m + 0.3) * l;
             let flight = ((far - com.z) / v - 0.5 * self.stance_s).max(0.1 * Scale::new(l).time());
             let rise_time = 0.5 * flight;
             let by_time = 0.5 * g * rise_time * rise_time;
