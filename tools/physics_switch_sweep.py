@@ -9,11 +9,14 @@ controller takes over at the next flight from the state it finds. A cell is
 it was put back. Prints a Markdown table and the number held.
 
 Usage: python3 tools/physics_switch_sweep.py [--preset FILE] [--set KEY=VALUE]
+       [--speeds 1.5,2.3,2.8] [--times 7,10,13.3,20 | --times FROM:TO:STEP]
        [--jobs N] [--gaitlab PATH]
 (FILE defaults to the bundled raibert-quadruped, a candidate from `gaitlab
 tune` is measured by naming it; PATH defaults to target/release/gaitlab; `--set` is passed to every run,
 e.g. `--set scenario.physics.lab_additions.hop_integrator=true` to keep the
-trot's hop integrator, its default.)"""
+trot's hop integrator, its default. `--times 7:20.3:0.7` switches at 7,
+7.7, … 20.3 s, a denser sample of the hand-over's phase than the twelve
+cases.)"""
 import argparse
 from concurrent.futures import ThreadPoolExecutor
 
@@ -46,27 +49,45 @@ def case(args, a, b, speed, at):
     return c, c == "·"
 
 
+def times_arg(text):
+    """`a,b,c` or `FROM:TO:STEP` (seconds) as a list."""
+    if ":" in text:
+        start, stop, step = (float(x) for x in text.split(":"))
+        count = int(round((stop - start) / step)) + 1
+        return [round(start + i * step, 3) for i in range(count)]
+    return [float(x) for x in text.split(",")]
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--preset", default="raibert-quadruped")
     parser.add_argument("--set", action="append", default=[])
+    parser.add_argument("--speeds", type=lambda t: [float(x) for x in t.split(",")],
+                        default=SPEEDS)
+    parser.add_argument("--times", type=times_arg, default=TIMES)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--gaitlab", default="target/release/gaitlab")
     args = parser.parse_args()
     pairs = [(a, b) for a in GAITS for b in GAITS if a != b]
-    jobs = [(a, b, v, t) for a, b in pairs for v in SPEEDS for t in TIMES]
+    speeds, times = args.speeds, args.times
+    jobs = [(a, b, v, t) for a, b in pairs for v in speeds for t in times]
     with ThreadPoolExecutor(args.jobs) as pool:
         results = list(pool.map(lambda j: case(args, *j), jobs))
     by = dict(zip(jobs, results))
-    print("| pair | " + " | ".join(f"{v} m/s at 7 / 10 / 13.3 / 20 s"
-                                    for v in SPEEDS) + " | held |")
-    print("| --- |" + " --- |" * len(SPEEDS) + " ---: |")
+    at = " / ".join(f"{t:g}" for t in times) if len(times) <= 6 else \
+        f"{times[0]:g} … {times[-1]:g} s ({len(times)} times)"
+    print("| pair | " + " | ".join(f"{v} m/s at {at}" + (" s" if len(times) <= 6 else "")
+                                    for v in speeds) + " | held |")
+    print("| --- |" + " --- |" * len(speeds) + " ---: |")
     total = 0
     for a, b in pairs:
         cells, held = [], 0
-        for v in SPEEDS:
-            row = [by[(a, b, v, t)] for t in TIMES]
-            cells.append(" ".join(c for c, _ in row))
+        for v in speeds:
+            row = [by[(a, b, v, t)] for t in times]
+            if len(times) <= 6:
+                cells.append(" ".join(c for c, _ in row))
+            else:
+                cells.append(f"{sum(ok for _, ok in row)} of {len(row)}")
             held += sum(ok for _, ok in row)
         total += held
         print(f"| {a} → {b} | " + " | ".join(cells) + f" | {held} |")
