@@ -140,8 +140,10 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 && ui
                     .button("Place a box 3 m ahead")
                     .on_hover_text(
-                        "A 0.25 m × 0.3 m box in the kangaroo's path: its jump states \
-                         (stiffer take-off, tucked leg, damped landing) carry it over",
+                        "A 0.25 m × 0.3 m box in the kangaroo's path, for its jump states \
+                         (stiffer take-off, tucked leg, damped landing). Measured over 12 \
+                         box positions: cleared 11 at 5 m/s, 12 at 3.5 m/s, 5 at 2 m/s \
+                         (docs/physics.md)",
                     )
                     .clicked()
             {
