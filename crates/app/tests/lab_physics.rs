@@ -80,6 +80,19 @@ fn an_absurd_gain_is_caught_and_the_lab_says_why() {
         "{s}"
     );
     assert!(s["time_s"].as_f64().expect("time") < 2.0, "{s}");
+    // A preset that does not load leaves the biped running.
+    assert!(lab.command(r#"{"preset":"no-such-creature"}"#).is_err());
+    assert_eq!(state(&lab)["preset"], "raibert-biped");
+    // The next preset is a new run: the biped's put-back is not its message,
+    // nor, after it, an IK preset's.
+    lab.command(r#"{"preset":"raibert-kangaroo"}"#)
+        .expect("valid");
+    run(&mut lab, 1.0);
+    let s = state(&lab);
+    assert!(s["last_error"].is_null(), "{s}");
+    assert_eq!(s["physics"]["resets"], 0);
+    lab.command(r#"{"preset":"she-2006"}"#).expect("valid");
+    assert!(state(&lab)["last_error"].is_null());
 }
 
 #[test]

@@ -255,6 +255,9 @@ impl Lab {
         self.stage = Stage::new(driver, History::default());
         self.session.creature = creature;
         self.session.custom_preset = custom;
+        // A problem shown belonged to the run this one replaces (a fall, a
+        // blow-up and put-back): it does not stay over the new one.
+        self.session.last_error = None;
         // A recording belongs to its skeleton.
         self.session.track = None;
         self.editor.preset_changed();
