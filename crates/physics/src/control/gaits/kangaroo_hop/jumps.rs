@@ -26,8 +26,7 @@ impl KangarooHop {
     /// the next; otherwise it waits its turn (nearest first), so boxes
     /// placed one after another are each jumped.
     pub fn jump_over(&mut self, jump: QueuedJump) {
-        let busy =
-            self.jump_pending || matches!(self.jump, JumpStage::Takeoff | JumpStage::Airborne);
+        let busy = self.jump_under_way();
         let current = self.params.jump_at_m.map(|at_m| QueuedJump {
             at_m,
             depth_m: self.params.obstacle_depth_m,
@@ -50,6 +49,11 @@ impl KangarooHop {
         &self.queued
     }
 
+    /// A jump pending, or its take-off or flight under way.
+    fn jump_under_way(&self) -> bool {
+        self.jump_pending || matches!(self.jump, JumpStage::Takeoff | JumpStage::Airborne)
+    }
+
     fn queue(&mut self, jump: QueuedJump) {
         let at = self.queued.partition_point(|q| q.at_m <= jump.at_m);
         self.queued.insert(at, jump);
@@ -66,7 +70,7 @@ impl KangarooHop {
     /// air: the nearest waiting box whose near face is still ahead becomes
     /// the next; boxes already reached are dropped.
     pub(super) fn next_jump(&mut self, toe_z: f64, l: f64) {
-        if self.jump_pending || matches!(self.jump, JumpStage::Takeoff | JumpStage::Airborne) {
+        if self.jump_under_way() {
             return;
         }
         let passed = self.queued.partition_point(|q| q.at_m * l <= toe_z);
