@@ -43,7 +43,7 @@ function hueChroma(r, g, b) {
   return [(h * 60 + 360) % 360, c];
 }
 
-/** The views' colours (the app's compare::VIEW_COLOURS, Okabe–Ito) and their hues. */
+/** The colours of transpose, pinv, DLS and SDLS (the app's compare::METHOD_COLOURS, Okabe–Ito). */
 const VIEW_COLOURS = [[0xE6, 0x9F, 0x00], [0x56, 0xB4, 0xE9], [0x00, 0x9E, 0x73], [0xCC, 0x79, 0xA7]];
 
 /** Pixels in `rect` of each view colour's hue (±10°, chroma over 60): lighting changes a colour's

@@ -520,7 +520,7 @@ fn the_overlay_draws_every_view_in_one_scene_without_restarting_the_run() {
     let one_figure = bones / 4;
     assert!(compare.overlay().capsules().len() >= one_figure);
     for i in 0..4 {
-        let want = gaitlab_app::compare::view_colour_srgb(i);
+        let want = compare.colour_srgb(i);
         let found = compare.overlay().capsules().iter().any(|c| {
             let k = c.color[1] / want[1];
             (0..3).all(|ch| (c.color[ch] - k * want[ch]).abs() < 1e-4)

@@ -248,7 +248,7 @@ fn the_side_by_side_controls_change_the_comparison() {
     };
     assert_eq!(views(&harness), ["transpose", "pinv", "dls", "sdls"]);
     // Four method cards with their formulas and sliders.
-    harness.get_by_label("Δθ = J^T (JJ^T + λ²I)⁻¹ e");
+    harness.get_by_label("Δθ = Jᵀ(JJᵀ + λ²I)⁻¹ e");
     assert!(harness.query_all_by_label("jitter").count() == 4);
     harness.get_by_label("2 views").click();
     harness.run();
@@ -705,7 +705,7 @@ fn a_first_visit_finds_the_intro_the_help_and_presets_by_engine() {
     // The help window: the view's key, the controls, the engines.
     for text in [
         "The 3-D view",
-        "the figure's left side (joints named left…)",
+        "the figure's left side (left_knee, front-left-foot, PODA's L1…); the plots draw its series in blues",
         "IK targets the effectors follow",
         "Moving around",
         "orbit the camera (one finger on a touch screen)",

@@ -68,6 +68,9 @@ pub struct CompareCommand {
     /// `state().compare.notice`, ignored.
     #[cfg_attr(feature = "schema", schemars(with = "Option<Vec<String>>"))]
     pub notice: Option<serde::de::IgnoredAny>,
+    /// `state().compare.claims`, ignored.
+    #[cfg_attr(feature = "schema", schemars(with = "Option<Vec<serde_json::Value>>"))]
+    pub claims: Option<serde::de::IgnoredAny>,
 }
 
 /// The `compare` key's value: `false` (or `null`) leaves the comparison, an

@@ -85,18 +85,18 @@ impl CompareMethod {
         }
     }
 
-    /// The method's update rule in Unicode text (`^T` transpose, `_i` subscript).
+    /// The method's update rule typeset in Unicode (Jᵀ, σᵢ⁻¹; the glyphs
+    /// egui's fonts lack come from `ui::fonts`' symbol font).
     #[must_use]
     pub fn formula(self) -> &'static str {
-        // Only glyphs egui's bundled monospace font (Hack) has: no ᵀ or ᵢ.
         match self {
-            CompareMethod::Transpose => "Δθ = α J^T e,  α = ⟨e, JJ^T e⟩ / (2‖JJ^T e‖²)",
-            CompareMethod::Pinv => "Δθ = J⁺e = Σ σ_i⁻¹ v_i u_i^T e",
-            CompareMethod::Dls => "Δθ = J^T (JJ^T + λ²I)⁻¹ e",
-            CompareMethod::Sdls => "Δθ = ClampMaxAbs(Σ ClampMaxAbs(σ_i⁻¹ α_i v_i, γ_i), γmax)",
-            CompareMethod::PinvCentering => "Δθ = J⁺e + (I − J⁺J)(−k∇H),  H = Σ α_j (θ_j − θc_j)²",
-            CompareMethod::DlsCentering => "Δθ = Σ σ_i/(σ_i² + λ²) v_i u_i^T e + (I − J⁺J)(−k∇H)",
-            CompareMethod::Ccd => "θ_j += atan2(Σ a·(u × v), Σ u·v),  j = leaf … root",
+            CompareMethod::Transpose => "Δθ = α Jᵀe,  α = ⟨e, JJᵀe⟩ / (2‖JJᵀe‖²)",
+            CompareMethod::Pinv => "Δθ = J⁺e = Σ σᵢ⁻¹ vᵢ uᵢᵀ e",
+            CompareMethod::Dls => "Δθ = Jᵀ(JJᵀ + λ²I)⁻¹ e",
+            CompareMethod::Sdls => "Δθ = ClampMaxAbs(Σ ClampMaxAbs(σᵢ⁻¹ αᵢ vᵢ, γᵢ), γmax)",
+            CompareMethod::PinvCentering => "Δθ = J⁺e + (I − J⁺J)(−k∇H),  H = Σ αⱼ (θⱼ − θcⱼ)²",
+            CompareMethod::DlsCentering => "Δθ = Σ σᵢ/(σᵢ² + λ²) vᵢ uᵢᵀ e + (I − J⁺J)(−k∇H)",
+            CompareMethod::Ccd => "θⱼ += atan2(Σ a·(u × v), Σ u·v),  j = leaf … root",
         }
     }
 
@@ -106,27 +106,29 @@ impl CompareMethod {
     pub fn formula_with(self, options: &IkOptions) -> &'static str {
         match (self, options.transpose_alpha) {
             (CompareMethod::Transpose, TransposeAlpha::Buss) => {
-                "Δθ = α J^T e,  α = ⟨e, JJ^T e⟩ / ‖JJ^T e‖²  (Buss)"
+                "Δθ = α Jᵀe,  α = ⟨e, JJᵀe⟩ / ‖JJᵀe‖²  (Buss)"
             }
             _ => self.formula(),
         }
     }
 
-    /// One sentence on how the method behaves.
+    /// One sentence on how the method works — its mechanism, never a
+    /// comparison with the others (those are the notes' claims, checked
+    /// against the run: issue 43 item 1).
     #[must_use]
     pub fn behaviour(self) -> &'static str {
         match self {
             CompareMethod::Transpose => {
-                "Cheap: one product with J^T per iteration and no inverse; slow to converge."
+                "No inverse: one product with Jᵀ per iteration, a step along the error's gradient scaled by α."
             }
             CompareMethod::Pinv => {
-                "Exact least-norm steps; near a singular (stretched) pose 1/σ explodes and the limb oscillates."
+                "The least-norm step that cancels the error; each singular direction is scaled by 1/σ, which grows without bound as a limb straightens (σ → 0)."
             }
             CompareMethod::Dls => {
-                "Damping λ trades a little accuracy for smooth, bounded steps near singularities."
+                "Each singular direction scaled by σ/(σ² + λ²): bounded by 1/(2λ) as σ → 0, at the price of an error that stays where λ is large."
             }
             CompareMethod::Sdls => {
-                "Damps each singular direction by how far it would move the effectors: accurate and smooth."
+                "Each singular direction's step clamped by how far it would move the effectors (γᵢ), the whole step by γmax."
             }
             CompareMethod::PinvCentering => {
                 "Pseudoinverse plus a pull of every joint toward its center angle in the null space."
@@ -135,7 +137,7 @@ impl CompareMethod {
                 "Damped least squares plus PODA's null-space pull toward the center angles."
             }
             CompareMethod::Ccd => {
-                "No Jacobian: turns one joint at a time toward the targets; robust but stiff-looking."
+                "No Jacobian: turns one joint at a time, leaf to root, to aim the effectors at their targets."
             }
         }
     }

@@ -17,15 +17,16 @@
 //! holds 2 or 4 of [`CompareMethod::ALL`]'s names, `scenario` and `options`
 //! (one object per view, each key optional) may be left out. `{"compare":
 //! false}` leaves it. `state().compare` is that same object plus a
-//! `metrics` array, the plots' shared `plot_error_max_mm` and the scenario's
-//! "what to notice" lines, `notice` (all ignored by the command), so passing it back verbatim
-//! restores the configuration; it is `null` when no comparison runs.
+//! `metrics` array, the plots' shared `plot_error_max_mm`, the scenario's
+//! "what to notice" lines, `notice` (a line that compares methods ends with
+//! this run's verdict, "here: holds — …"), and those comparisons, `claims`
+//! (`{line, figure, method, rank, among, verdict}`; all ignored by the
+//! command), so passing it back verbatim restores the configuration; it is
+//! `null` when no comparison runs.
 
-use gaitlab_core::driver::{Driver, IkMetrics};
+use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::IkOptions;
-use gaitlab_engine::metrics::EffectorMetrics;
 use gaitlab_engine::{AnyDriver, EngineCommand, StretchOptions};
-use serde::Serialize;
 use serde_json::{Value, json};
 
 use crate::history::History;
@@ -34,143 +35,29 @@ use crate::plot_scale::round_step;
 use crate::render::Scene;
 use crate::view::ViewOptions;
 
+mod claim;
 mod colours;
 mod config;
 mod method;
 mod metrics;
 mod notice;
+mod view;
 
-pub use colours::{VIEW_COLOURS, view_colour, view_colour_srgb};
+pub use claim::{Checked, Claim, Figure, LEVEL_FRACTION, MIN_FRAMES, Rank, Verdict};
+pub use colours::{METHOD_COLOURS, colour_srgb, colour32, colours_for, method_colour};
 pub use config::{CompareConfig, CompareScenario, DEFAULT_VIEWS};
 pub use method::{CompareMethod, DEFAULT_NULL_SPACE_GAIN, Parameter};
 pub use metrics::{JITTER_WINDOW_FRAMES, ViewMetrics};
 pub use notice::{NoticeLine, notice};
-
-/// One view: its configuration, its stage (driver, scene, and as history the
-/// largest effector error per frame, one series in metres) and its figures.
-pub struct CompareView {
-    /// The configuration.
-    pub method: CompareMethod,
-    pub(crate) stage: Stage<AnyDriver>,
-    pub(crate) metrics: ViewMetrics,
-}
-
-impl CompareView {
-    /// The view's driver.
-    #[must_use]
-    pub fn driver(&self) -> &AnyDriver {
-        &self.stage.driver
-    }
-
-    /// The view's stage.
-    #[must_use]
-    pub fn stage(&self) -> &Stage<AnyDriver> {
-        &self.stage
-    }
-
-    /// The view's figures.
-    #[must_use]
-    pub fn metrics(&self) -> &ViewMetrics {
-        &self.metrics
-    }
-
-    /// Mean over effectors of each effector's mean error since the reset, metres.
-    #[must_use]
-    pub fn mean_error_m(&self) -> f64 {
-        let Some(m) = self.stage.driver.ik_metrics() else {
-            return 0.0;
-        };
-        let k = m.effector_count().max(1);
-        (0..k).filter_map(|e| m.mean_error_m(e)).sum::<f64>() / k as f64
-    }
-
-    /// Largest effector error since the reset, metres.
-    #[must_use]
-    pub fn max_error_m(&self) -> f64 {
-        let Some(m) = self.stage.driver.ik_metrics() else {
-            return 0.0;
-        };
-        (0..m.effector_count())
-            .filter_map(|e| m.max_error_m(e))
-            .fold(0.0, f64::max)
-    }
-
-    /// Mean over the effectors that have it of a per-effector figure of the
-    /// driver's IK metrics (`None` when none has it).
-    fn effector_mean(&self, figure: impl Fn(&IkMetrics, usize) -> Option<f64>) -> Option<f64> {
-        let m = self.stage.driver.ik_metrics()?;
-        let (sum, count) = (0..m.effector_count())
-            .filter_map(|e| figure(m, e))
-            .fold((0.0, 0_u32), |(sum, count), v| (sum + v, count + 1));
-        (count > 0).then(|| sum / f64::from(count))
-    }
-
-    /// Oscillation of the limbs' joints since the reset, Hz, averaged over the
-    /// effectors ([`IkMetrics::oscillation_hz`]).
-    #[must_use]
-    pub fn oscillation_hz(&self) -> Option<f64> {
-        self.effector_mean(IkMetrics::oscillation_hz)
-    }
-
-    /// Fraction of frames with the target within reach since the reset,
-    /// averaged over the effectors ([`IkMetrics::reachable`]).
-    #[must_use]
-    pub fn reachable(&self) -> Option<f64> {
-        self.effector_mean(IkMetrics::reachable)
-    }
-
-    /// Mean error over the frames each target was reachable, metres, averaged
-    /// over the effectors that had such frames.
-    #[must_use]
-    pub fn mean_error_reachable_m(&self) -> Option<f64> {
-        self.effector_mean(IkMetrics::mean_error_reachable_m)
-    }
-
-    /// Mean error over the frames each target was out of reach, metres,
-    /// averaged over the effectors that had such frames.
-    #[must_use]
-    pub fn mean_error_unreachable_m(&self) -> Option<f64> {
-        self.effector_mean(IkMetrics::mean_error_unreachable_m)
-    }
-
-    /// Each effector's reach and oscillation figures: name, how far its target
-    /// is out of reach this frame (metres, negative inside), and its figures
-    /// since the reset.
-    #[must_use]
-    pub fn effectors(&self) -> Vec<EffectorFigures> {
-        let driver = &self.stage.driver;
-        let (Some(metrics), Some(report)) = (driver.ik_metrics(), driver.ik_report()) else {
-            return Vec::new();
-        };
-        let skeleton = driver.skeleton();
-        (0..skeleton.effector_count())
-            .map(|e| EffectorFigures {
-                metrics: EffectorMetrics::of(skeleton, metrics, e),
-                out_of_reach_m: report.out_of_reach_m.get(e).copied(),
-            })
-            .collect()
-    }
-}
-
-/// One effector's figures in a comparison view
-/// (`state().compare.metrics[i].effectors`): the run's figures since the
-/// reset, as `gaitlab run --json` prints them (docs/ik-metrics.md), and how
-/// far its target is out of reach this frame.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct EffectorFigures {
-    /// Name, errors, reach, oscillation and jitter since the reset.
-    #[serde(flatten)]
-    pub metrics: EffectorMetrics,
-    /// How far the target lies beyond the limb's reach this frame, metres
-    /// (negative: inside by that much).
-    pub out_of_reach_m: Option<f64>,
-}
+pub use view::{CompareView, EffectorFigures};
 
 /// A running comparison.
 pub struct Comparison {
     /// What runs.
     pub config: CompareConfig,
     pub(crate) views: Vec<CompareView>,
+    /// Each view's colour: its method's ([`colours_for`]), sRGB bytes.
+    colours: Vec<[u8; 3]>,
     /// Every view's figure in its colour, in one scene (filled while
     /// `config.overlay` is on).
     overlay: Scene,
@@ -207,8 +94,10 @@ impl Comparison {
                 view_state
             })
             .collect();
+        let colours = colours_for(&config.views);
         let mut comparison = Self {
             config,
+            colours,
             views,
             overlay: Scene::default(),
         };
@@ -243,10 +132,23 @@ impl Comparison {
             self.overlay.fill_overlay(
                 self.views
                     .iter()
-                    .enumerate()
-                    .map(|(i, v)| (&v.stage.scene, view_colour_srgb(i))),
+                    .zip(&self.colours)
+                    .map(|(v, &c)| (&v.stage.scene, colour_srgb(c))),
             );
         }
+    }
+
+    /// View `i`'s colour for egui: its method's, in every card, bar, plot
+    /// and overlay.
+    #[must_use]
+    pub fn colour(&self, i: usize) -> egui::Color32 {
+        colour32(self.colours.get(i).copied().unwrap_or([0x99; 3]))
+    }
+
+    /// View `i`'s colour for the scene (sRGB, 0–1, opaque).
+    #[must_use]
+    pub fn colour_srgb(&self, i: usize) -> [f32; 4] {
+        colour_srgb(self.colours.get(i).copied().unwrap_or([0x99; 3]))
     }
 
     /// The views.
@@ -324,6 +226,16 @@ impl Comparison {
         round_step(largest.max(1.0))
     }
 
+    /// The scenario's "what to notice" lines, each claim checked against
+    /// this run's figures.
+    #[must_use]
+    pub fn notes(&self) -> Vec<(NoticeLine, Option<Checked>)> {
+        notice(self.config.scenario, self.recorded())
+            .iter()
+            .map(|line| (*line, line.claim.map(|c| c.check(&self.views))))
+            .collect()
+    }
+
     /// The state's `compare` object: the configuration plus per-view metrics.
     #[must_use]
     pub fn state(&self) -> Value {
@@ -355,11 +267,33 @@ impl Comparison {
                 "plot_error_max_mm".to_owned(),
                 json!(self.plot_error_max_mm()),
             );
-            let lines: Vec<String> = notice(self.config.scenario, self.recorded())
+            let notes = self.notes();
+            let lines: Vec<String> = notes
                 .iter()
-                .map(|l| format!("{} ({})", l.text, l.source))
+                .map(|(l, checked)| match (l.claim, checked) {
+                    (Some(claim), Some(checked)) => {
+                        format!("{} ({}) {}", l.text, l.source, checked.sentence(&claim))
+                    }
+                    _ => format!("{} ({})", l.text, l.source),
+                })
                 .collect();
             object.insert("notice".to_owned(), json!(lines));
+            let claims: Vec<Value> = notes
+                .iter()
+                .enumerate()
+                .filter_map(|(i, (l, checked))| {
+                    let (claim, checked) = (l.claim?, checked.as_ref()?);
+                    Some(json!({
+                        "line": i,
+                        "figure": claim.figure.key(),
+                        "method": claim.method.name(),
+                        "rank": claim.rank.name(),
+                        "among": claim.among.iter().map(|m| m.name()).collect::<Vec<_>>(),
+                        "verdict": checked.verdict.name(),
+                    }))
+                })
+                .collect();
+            object.insert("claims".to_owned(), Value::Array(claims));
         }
         value
     }

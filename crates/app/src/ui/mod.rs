@@ -5,10 +5,10 @@
 //! plots become drawers toggled from a slim top bar (one open at a time, the
 //! plots one under another), so the 3-D view keeps most of the screen.
 
-use crate::compare::view_colour;
 use crate::lab::Lab;
 use crate::render::viewport;
 
+pub mod fonts;
 pub mod panels;
 pub(crate) mod param_widgets;
 pub(crate) mod plots;
@@ -109,7 +109,7 @@ impl Lab {
                     let key: Vec<_> = labels
                         .iter()
                         .enumerate()
-                        .map(|(i, label)| (view_colour(i), label.as_str()))
+                        .map(|(i, label)| (compare.colour(i), label.as_str()))
                         .collect();
                     let settings = &self.session.settings.view;
                     if compare.config.overlay {
@@ -287,6 +287,7 @@ impl Lab {
     /// Applies the chosen theme to egui (it takes effect from the next frame)
     /// and notes whether this frame is dark.
     fn apply_theme(&mut self, ui: &egui::Ui) {
+        fonts::ensure(ui.ctx());
         let wanted = self.session.settings.theme.preference();
         if ui.ctx().options(|o| o.theme_preference) != wanted {
             ui.ctx().set_theme(wanted);

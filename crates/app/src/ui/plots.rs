@@ -17,18 +17,20 @@ use crate::plot_scale::{few_round_marks, tick_label};
 use crate::history::History;
 use crate::lab::{Lab, MAX_PLOT_JOINTS};
 
-/// Series colours, told apart by colour-blind viewers too (Okabe & Ito's
-/// palette), one per series up to [`MAX_PLOT_JOINTS`].
-pub const SERIES_COLOURS: [Color32; MAX_PLOT_JOINTS] = [
-    Color32::from_rgb(0xE6, 0x9F, 0x00),
-    Color32::from_rgb(0x56, 0xB4, 0xE9),
-    Color32::from_rgb(0x00, 0x9E, 0x73),
-    Color32::from_rgb(0xD5, 0x5E, 0x00),
-    Color32::from_rgb(0xCC, 0x79, 0xA7),
-    Color32::from_rgb(0x00, 0x72, 0xB2),
-    Color32::from_rgb(0xF0, 0xE4, 0x42),
-    Color32::from_rgb(0x99, 0x99, 0x99),
-];
+/// The colours of `names`' series: each by its side, as the 3-D view draws
+/// it (the figure's left blue, its right orange, the centre line in other
+/// hues), the `n`th of a side in its `n`th shade
+/// ([`crate::render::scene::series_colour`]).
+fn series_colours<'a>(names: impl Iterator<Item = &'a str>) -> impl Iterator<Item = Color32> {
+    let mut count = [0_usize; 3];
+    names.map(move |name| {
+        let side = crate::render::scene::side_of(name) as usize;
+        let nth = count[side];
+        count[side] += 1;
+        let [r, g, b] = crate::render::scene::series_colour(name, nth);
+        Color32::from_rgb(r, g, b)
+    })
+}
 
 /// Figure 4's states in the order of their index, for the state plot's axis.
 const STATE_NAMES: [&str; 5] = ["flight", "loading", "compression", "thrust", "unloading"];
@@ -272,8 +274,8 @@ fn series_plot(ui: &mut egui::Ui, title: &str, history: &History, spec: &PlotSpe
             ui.strong(title);
         }
         if series.len() > 1 {
-            for (k, s) in series.clone().enumerate() {
-                let colour = SERIES_COLOURS[k % SERIES_COLOURS.len()];
+            let names = history.names[series.clone()].iter().map(String::as_str);
+            for (s, colour) in series.clone().zip(series_colours(names)) {
                 let (swatch, _) =
                     ui.allocate_exact_size(egui::vec2(10.0, 10.0), egui::Sense::hover());
                 ui.painter().rect_filled(swatch, 2.0, colour);
@@ -334,15 +336,13 @@ fn series_plot(ui: &mut egui::Ui, title: &str, history: &History, spec: &PlotSpe
             });
     }
     plot.show(ui, |plot| {
-        for (k, s) in series.enumerate() {
+        let names = history.names[series.clone()].iter().map(String::as_str);
+        for (s, colour) in series.zip(series_colours(names)) {
             let points: Vec<[f64; 2]> = history
                 .points(s)
                 .map(|[t, v]| [t, v * spec.scale])
                 .collect();
-            plot.line(
-                Line::new(history.names[s].as_str(), PlotPoints::from(points))
-                    .color(SERIES_COLOURS[k % SERIES_COLOURS.len()]),
-            );
+            plot.line(Line::new(history.names[s].as_str(), PlotPoints::from(points)).color(colour));
         }
     });
 }

@@ -38,7 +38,8 @@ pub use bounds::Bounds;
 pub use frame::{Scene, SceneFrame, TargetRanges};
 pub use palette::{
     CENTRE_COLOR, EFFECTOR_COLOR, ERROR_COLOR, LEFT_COLOR, PRISMATIC_AXIS_COLOR,
-    REVOLUTE_AXIS_COLOR, RIGHT_COLOR, TARGET_COLOR, TARGET_OUT_OF_REACH_COLOR, WORLD_AXIS_COLORS,
+    REVOLUTE_AXIS_COLOR, RIGHT_COLOR, SIDE_SERIES_COLOURS, Side, TARGET_COLOR,
+    TARGET_OUT_OF_REACH_COLOR, WORLD_AXIS_COLORS, series_colour, side_of,
 };
 pub use primitives::{Capsule, GroundMark, Segment, Sphere};
 pub use sizes::{

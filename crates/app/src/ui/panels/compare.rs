@@ -10,7 +10,7 @@ use crate::plot_scale::{few_round_marks, tick_label};
 
 use super::panel::Panel;
 use crate::compare::{
-    CompareConfig, CompareMethod, CompareScenario, DEFAULT_VIEWS, Parameter, notice, view_colour,
+    CompareConfig, CompareMethod, CompareScenario, DEFAULT_VIEWS, Parameter, Verdict,
 };
 use crate::lab::Lab;
 use crate::ui::param_widgets::{self as widgets, Param, key};
@@ -200,25 +200,23 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab, stacked: bool) {
     egui::ScrollArea::vertical()
         .scroll_bar_visibility(bar)
         .show(ui, |ui| {
-            notice_ui(ui, compare.config.scenario, compare.recorded());
+            notice_ui(ui, compare);
             super::compare_bars::bars(ui, compare, stacked);
             if stacked {
-                for (i, view) in compare.views().iter().enumerate() {
+                for i in 0..count {
                     ui.separator();
-                    if let Some(options) = card(ui, i, view, &compare.config.options[i], y_max_mm) {
+                    if let Some(options) = card(ui, compare, i, y_max_mm) {
                         edits.push((i, options));
                     }
                 }
                 return;
             }
             ui.columns(count.max(1), |columns| {
-                for (i, (column, view)) in columns.iter_mut().zip(compare.views()).enumerate() {
+                for (i, column) in columns.iter_mut().enumerate().take(count) {
                     // Left-aligned, not justified: a wrapped formula keeps its
                     // letters together.
                     column.with_layout(egui::Layout::top_down(egui::Align::LEFT), |ui| {
-                        if let Some(options) =
-                            card(ui, i, view, &compare.config.options[i], y_max_mm)
-                        {
+                        if let Some(options) = card(ui, compare, i, y_max_mm) {
                             edits.push((i, options));
                         }
                     });
@@ -235,13 +233,13 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab, stacked: bool) {
 /// options when one moved), figures and per-effector table.
 fn card(
     ui: &mut egui::Ui,
+    compare: &crate::compare::Comparison,
     i: usize,
-    view: &crate::compare::CompareView,
-    options: &gaitlab_core::ik::IkOptions,
     y_max_mm: f64,
 ) -> Option<gaitlab_core::ik::IkOptions> {
+    let (view, options) = (&compare.views()[i], &compare.config.options[i]);
     let method = view.method;
-    let colour = view_colour(i);
+    let colour = compare.colour(i);
     ui.horizontal(|ui| {
         let (swatch, _) = ui.allocate_exact_size(egui::vec2(14.0, 14.0), egui::Sense::hover());
         ui.painter().rect_filled(swatch, 3.0, colour);
@@ -299,7 +297,7 @@ fn card(
                 ("mean error", format!("{:.2} mm", view.mean_error_m() * 1e3), "Mean effector-to-target distance since the reset, averaged over the effectors"),
                 ("max error", format!("{:.2} mm", view.max_error_m() * 1e3), "Largest effector-to-target distance since the reset"),
                 ("µs / iteration", format!("{:.1}", m.us_per_iteration()), "Wall time per IK iteration (forward kinematics, Jacobian, solve)"),
-                ("jitter", format!("{:.2e} rad", m.jitter_rad()), "Joint-velocity jitter: mean |Δ²θ| over the joints and the last 4 s, radians per frame²"),
+                ("jitter", format!("{:.2e} rad/frame²", m.jitter_rad()), "Joint-velocity jitter: mean |Δ²θ| over the joints and the last 4 s, radians per frame²"),
                 ("limit hits", m.limit_hits.to_string(), "Times a joint ran into one of its limits since the reset"),
                 ("posture pull", posture_pull(view), "The lab's addition, not in She 2006: before each frame's IK every joint moves this fraction of its joint gain toward its centre angle (Motion panel; the she-2006 preset has it off)"),
                 ("joint limits", limit_rule(options), "How a joint past its limit is handled: clamped to the limit (She 2006 §6.1.1.1), or clamped and the IK solved again without it (the lab's addition; Method panel, Limit passes)"),
@@ -318,23 +316,50 @@ fn card(
     changed.then_some(edited)
 }
 
-/// The scenario's "what to notice" lines, each with its thesis section.
-fn notice_ui(ui: &mut egui::Ui, scenario: CompareScenario, recorded: bool) {
+/// The scenario's "what to notice" lines, each with its thesis section; a
+/// line that compares methods is followed by this run's verdict, coloured by
+/// it (green: holds, amber: level, orange: does not hold, grey: not yet).
+fn notice_ui(ui: &mut egui::Ui, compare: &crate::compare::Comparison) {
     egui::CollapsingHeader::new("What to notice")
         .id_salt("compare-notice")
         .default_open(true)
         .show(ui, |ui| {
             let font = egui::TextStyle::Body.resolve(ui.style());
             let (text, weak) = (ui.visuals().text_color(), ui.visuals().weak_text_color());
-            for line in notice(scenario, recorded) {
-                // One wrapped paragraph: the line, then its source in grey.
+            for (line, checked) in compare.notes() {
+                // One wrapped paragraph: the line, its source in grey, then
+                // the run's verdict in the verdict's colour.
                 let mut job = egui::text::LayoutJob::default();
                 let plain = |color| egui::TextFormat::simple(font.clone(), color);
                 job.append(&format!("• {}  ", line.text), 0.0, plain(text));
                 job.append(line.source, 0.0, plain(weak));
+                if let (Some(claim), Some(checked)) = (line.claim, checked) {
+                    let colour = verdict_colour(checked.verdict, ui.visuals().dark_mode, weak);
+                    job.append(
+                        &format!("  {}", checked.sentence(&claim)),
+                        0.0,
+                        plain(colour),
+                    );
+                }
                 ui.add(egui::Label::new(job).wrap());
             }
         });
+}
+
+/// A verdict's colour: green holds, amber level, orange does not hold, the
+/// weak text colour where nothing was compared (darker shades on the light
+/// theme, so the text stays readable).
+fn verdict_colour(verdict: Verdict, dark: bool, weak: egui::Color32) -> egui::Color32 {
+    let [r, g, b] = match (verdict, dark) {
+        (Verdict::Holds, true) => [0x4C, 0xC2, 0x7A],
+        (Verdict::Holds, false) => [0x1A, 0x80, 0x45],
+        (Verdict::Level, true) => [0xE0, 0xC0, 0x40],
+        (Verdict::Level, false) => [0x8A, 0x6A, 0x00],
+        (Verdict::Fails, true) => [0xF0, 0x80, 0x30],
+        (Verdict::Fails, false) => [0xB8, 0x48, 0x10],
+        (Verdict::NotInRun | Verdict::NotMeasured, _) => return weak,
+    };
+    egui::Color32::from_rgb(r, g, b)
 }
 
 /// The view's posture pull (the lab's addition): its gain, or "off (thesis)".

@@ -5,7 +5,7 @@
 
 use egui_plot::{Bar, BarChart, GridMark, Plot, uniform_grid_spacer};
 
-use crate::compare::{Comparison, view_colour};
+use crate::compare::Comparison;
 
 /// Height of one bar chart, points.
 const CHART_HEIGHT_PT: f32 = 120.0;
@@ -14,18 +14,28 @@ const CHART_HEIGHT_PT: f32 = 120.0;
 const JITTER_FLOOR: f64 = 1e-9;
 
 /// The most views a comparison has (one colour each).
-const MAX_VIEWS: usize = crate::compare::VIEW_COLOURS.len();
+const MAX_VIEWS: usize = 4;
+
+/// The views' names and colours, one per bar.
+struct Key {
+    names: [&'static str; MAX_VIEWS],
+    colours: [egui::Color32; MAX_VIEWS],
+}
 
 /// The two charts, side by side, or one under the other when `stacked`.
 pub(super) fn bars(ui: &mut egui::Ui, compare: &Comparison, stacked: bool) {
     // At most four views: fixed arrays, nothing allocated for them per frame.
     let views = compare.views();
     let n = views.len().min(MAX_VIEWS);
-    let mut names = [""; MAX_VIEWS];
+    let mut key = Key {
+        names: [""; MAX_VIEWS],
+        colours: [egui::Color32::GRAY; MAX_VIEWS],
+    };
     let mut jitter = [0.0; MAX_VIEWS];
     let mut oscillation = [0.0; MAX_VIEWS];
     for (i, v) in views.iter().take(n).enumerate() {
-        names[i] = v.method.name();
+        key.names[i] = v.method.name();
+        key.colours[i] = compare.colour(i);
         jitter[i] = v.metrics().jitter_rad().max(JITTER_FLOOR).log10();
         oscillation[i] = v.oscillation_hz().unwrap_or(0.0);
     }
@@ -37,7 +47,7 @@ pub(super) fn bars(ui: &mut egui::Ui, compare: &Comparison, stacked: bool) {
             ui,
             "compare-jitter",
             "jitter (rad/frame², log)",
-            names,
+            &key,
             jitter,
             base,
             true,
@@ -52,7 +62,7 @@ pub(super) fn bars(ui: &mut egui::Ui, compare: &Comparison, stacked: bool) {
             ui,
             "compare-oscillation",
             "oscillation (Hz)",
-            names,
+            &key,
             oscillation,
             0.0,
             false,
@@ -79,7 +89,7 @@ fn chart(
     ui: &mut egui::Ui,
     id: &str,
     y_label: &str,
-    names: [&'static str; MAX_VIEWS],
+    key: &Key,
     values: &[f64],
     base: f64,
     log: bool,
@@ -96,12 +106,12 @@ fn chart(
             Bar::new((i + 1) as f64, v - base)
                 .base_offset(base)
                 .width(0.6)
-                .fill(view_colour(i))
-                .name(format!("{} · {}: {shown}", i + 1, names[i]))
+                .fill(key.colours[i])
+                .name(format!("{} · {}: {shown}", i + 1, key.names[i]))
         })
         .collect();
     let top = values.iter().copied().fold(base, f64::max);
-    let labels = &names[..values.len()];
+    let labels = &key.names[..values.len()];
     Plot::new(id)
         .height(CHART_HEIGHT_PT)
         .allow_drag(false)

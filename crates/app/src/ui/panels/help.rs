@@ -40,8 +40,14 @@ pub const INTRO: &str = "Legged figures animated by three classic papers: pick a
 
 /// The 3-D view's key: each colour and what it marks.
 const KEY: [([f32; 4], &str); 14] = [
-    (LEFT_COLOR, "the figure's left side (joints named left…)"),
-    (RIGHT_COLOR, "its right side"),
+    (
+        LEFT_COLOR,
+        "the figure's left side (left_knee, front-left-foot, PODA's L1…); the plots draw its series in blues",
+    ),
+    (
+        RIGHT_COLOR,
+        "its right side (right_…, …-right-…, R1…); the plots draw its series in oranges",
+    ),
     (CENTRE_COLOR, "its centre line: trunk, spine, head"),
     (EFFECTOR_COLOR, "end effectors: hands and feet the IK moves"),
     (TARGET_COLOR, "IK targets the effectors follow"),
@@ -67,6 +73,9 @@ const KEY: [([f32; 4], &str); 14] = [
         "world axes: x red, y green, z (forward) blue",
     ),
 ];
+
+/// Width of the key column of "Moving around", points.
+const KEY_COLUMN_PT: f32 = 110.0;
 
 /// How to drive the view and the clock.
 const CONTROLS: [(&str, &str); 7] = [
@@ -124,13 +133,19 @@ pub fn help_window(ctx: &egui::Context, lab: &mut Lab) {
         }
         ui.add_space(6.0);
         ui.strong("Moving around");
-        egui::Grid::new("gaitlab-help-controls").show(ui, |ui| {
-            for (key, what) in CONTROLS {
-                ui.monospace(key);
+        // One row per key: the key in a fixed column, its meaning wrapping
+        // in the width left (a grid gives a wrapping column only a word).
+        let key_width = KEY_COLUMN_PT.min(ui.available_width() * 0.4);
+        for (key, what) in CONTROLS {
+            ui.horizontal(|ui| {
+                let left = egui::Layout::left_to_right(egui::Align::Min);
+                ui.allocate_ui_with_layout(egui::vec2(key_width, 0.0), left, |ui| {
+                    ui.set_min_width(key_width);
+                    ui.monospace(key);
+                });
                 ui.add(egui::Label::new(what).wrap());
-                ui.end_row();
-            }
-        });
+            });
+        }
         ui.add_space(6.0);
         ui.strong("The engines");
         for (name, what) in ENGINES {

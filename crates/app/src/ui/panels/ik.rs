@@ -38,9 +38,11 @@ fn method_label(method: Method) -> &'static str {
 /// What each method does, for its tooltip.
 fn method_hint(method: Method) -> &'static str {
     match method {
-        Method::Transpose => "Δθ = α Jᵀ e: cheap, never singular, slow to converge",
-        Method::Pinv => "Δθ = J⁺ e: fastest convergence, oscillates near singular poses",
-        Method::Dls => "Δθ = Jᵀ (J Jᵀ + λ² I)⁻¹ e: damped by λ, stable near singularities",
+        Method::Transpose => "Δθ = α Jᵀ e: no inverse, a step along the error's gradient",
+        Method::Pinv => {
+            "Δθ = J⁺ e: the least-norm step; its gain 1/σ grows without bound near singular poses"
+        }
+        Method::Dls => "Δθ = Jᵀ (J Jᵀ + λ² I)⁻¹ e: each direction damped by λ, gain at most 1/(2λ)",
         Method::Sdls => "Selectively damped least squares: each singular direction clamped by γmax",
         Method::Ccd => {
             "Cyclic coordinate descent: turns one joint at a time to aim the effector at its target; no Jacobian"
