@@ -113,6 +113,10 @@ pub struct PhysicsFigures {
     /// Largest ratio of a stance foot's horizontal to vertical ground force
     /// while it carries at least 10 % of the body's weight (unitless).
     pub friction_needed_max: f64,
+    /// The same without each support's first and last 10 ms.
+    pub friction_needed_mid: f64,
+    /// The same within those first and last 10 ms.
+    pub friction_needed_edges: f64,
 }
 
 /// A physics creature's place and its waypoints (Raibert & Hodgins 1991,
@@ -315,6 +319,8 @@ impl AnyDriver {
                 speed_desired_mps: summary.speed_desired_mps,
                 speed_mean_mps: summary.speed_mean_mps,
                 friction_needed_max: summary.friction_needed_max,
+                friction_needed_mid: summary.friction_needed_mid,
+                friction_needed_edges: summary.friction_needed_edges,
             },
             table2: catalog::table2(&summary, &gait, &legs),
             route: self.physics_route()?,

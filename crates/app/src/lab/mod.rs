@@ -263,8 +263,8 @@ impl Lab {
         self.editor.preset_changed();
         // A take belongs to its skeleton.
         self.take.clear();
-        // Frame the new creature from scratch.
-        self.camera.framed = false;
+        // Frame the new creature from the home view, whatever the last one's.
+        self.camera.home();
         self.outbox.push(Effect::PresetChanged);
         self.outbox.push(Effect::LinkChanged);
         self.after_reset();

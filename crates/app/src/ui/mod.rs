@@ -324,14 +324,18 @@ impl Lab {
         if ui.ctx().egui_wants_keyboard_input() {
             return;
         }
-        let (space, reset, step, back) = ui.input(|i| {
+        let (space, reset, step, back, home) = ui.input(|i| {
             (
                 i.key_pressed(egui::Key::Space),
                 i.key_pressed(egui::Key::R),
                 i.key_pressed(egui::Key::Period),
                 i.key_pressed(egui::Key::Comma),
+                i.key_pressed(egui::Key::H),
             )
         });
+        if home {
+            self.camera.home();
+        }
         if back && let Err(error) = self.step_back(1) {
             self.report_error(error);
         }

@@ -88,7 +88,17 @@ pub struct PhysicsDriver {
     pending: Option<GaitController>,
     /// Whether a fall puts the creature back at the start after
     /// [`FALL_RESET_S`] (the app's choice; a measuring run turns it off).
+    /// Meanwhile the fallen creature is held as it was when the fall was
+    /// seen, so it never sinks through the ground it has no contact with.
     pub reset_after_fall: bool,
+    /// Seconds (of `dt`) the fallen creature has been held, while
+    /// `reset_after_fall`.
+    held_s: f64,
+    /// The desired speed (m/s at scale 1) and hop height (m) the run
+    /// started with: a put-back restores them, so a speed that made the
+    /// creature fall does not make it fall again at once.
+    start_speed_mps: f64,
+    start_hop_height_m: Option<f64>,
     message: Option<String>,
     resets: u32,
     /// The first [`MAX_PUT_BACKS`] put-backs since the run began or was
@@ -225,6 +235,7 @@ impl PhysicsDriver {
             }
         }
         let legs = sim.creature.legs.len();
+        let (start_speed_mps, start_hop_height_m) = (params.speed_mps, params.hop_height_m);
         let mut driver = Self {
             pose: Pose {
                 root: RootTransform {
@@ -256,6 +267,9 @@ impl PhysicsDriver {
             steering: Steering::default(),
             pending: None,
             reset_after_fall: true,
+            held_s: 0.0,
+            start_speed_mps,
+            start_hop_height_m,
             message,
             resets: 0,
             put_backs: Vec::new(),
@@ -532,9 +546,20 @@ impl PhysicsDriver {
     }
 
     /// Put the creature back at the start after a blow-up or a fall,
-    /// recording when and why.
-    fn put_back(&mut self, why: String) {
+    /// recording when and why, with the speed and hop height the run
+    /// started with.
+    fn put_back(&mut self, mut why: String) {
         let run_time_s = self.run_time_s();
+        if self.params.speed_mps != self.start_speed_mps
+            || self.params.hop_height_m != self.start_hop_height_m
+        {
+            self.params.speed_mps = self.start_speed_mps;
+            self.params.hop_height_m = self.start_hop_height_m;
+            why.push_str(&format!(
+                ", at its starting speed of {:.2} m/s",
+                self.start_speed_mps
+            ));
+        }
         self.attempt_start_s = run_time_s;
         if self.put_backs.len() < MAX_PUT_BACKS {
             self.put_backs.push(PutBack {
@@ -545,6 +570,12 @@ impl PhysicsDriver {
         self.restart(why);
     }
 
+    /// Whether no step has run since the start (or a reset): a command now
+    /// is the run's starting command.
+    fn at_start(&self) -> bool {
+        self.sim.time == 0.0
+    }
+
     /// Change the desired speed (m/s at scale 1) while running.
     ///
     /// # Errors
@@ -552,6 +583,9 @@ impl PhysicsDriver {
     /// ([`gaitlab_core::preset::physics::check_speed_mps`]); nothing changes.
     pub fn set_speed(&mut self, speed_mps: f64) -> Result<(), PresetError> {
         check_speed_mps("speed_mps", speed_mps)?;
+        if self.at_start() {
+            self.start_speed_mps = speed_mps;
+        }
         self.params.speed_mps = speed_mps;
         self.sim.commands.speed_mps = speed_mps;
         self.recorder.speed_desired_mps = speed_mps * Scale::new(self.params.scale).velocity();
@@ -565,6 +599,9 @@ impl PhysicsDriver {
     /// ([`gaitlab_core::preset::physics::HOP_HEIGHT_RANGE_M`]); nothing changes.
     pub fn set_hop_height(&mut self, height_m: f64) -> Result<(), PresetError> {
         check_hop_height_m("hop_height_m", height_m)?;
+        if self.at_start() {
+            self.start_hop_height_m = Some(height_m);
+        }
         self.params.hop_height_m = Some(height_m);
         self.sim.commands.hop_height_m = Some(height_m);
         Ok(())
@@ -880,6 +917,7 @@ impl PhysicsDriver {
         self.steering = Steering::default();
         self.sim.commands = starting_commands(&self.params);
         self.fell_at = None;
+        self.held_s = 0.0;
         self.message = Some(why);
         self.resets += 1;
         self.update_pose();
@@ -893,6 +931,18 @@ impl PhysicsDriver {
     /// [`Driver::step`].
     pub fn step_observed(&mut self, dt: f64, mut after_step: impl FnMut(&Self)) {
         if !(dt.is_finite() && dt > 0.0) {
+            return;
+        }
+        if self.reset_after_fall
+            && let Some(t) = self.fell_at
+        {
+            // Held where it fell, then put back.
+            self.held_s += dt;
+            if self.held_s > FALL_RESET_S * Scale::new(self.params.scale).time() {
+                self.put_back(format!(
+                    "the creature fell at t = {t:.2} s and was put back at the start"
+                ));
+            }
             return;
         }
         self.steer(dt);
@@ -919,18 +969,8 @@ impl PhysicsDriver {
             return;
         }
         let summary_fell = self.recorder.fell();
-        match (summary_fell, self.fell_at) {
-            (true, None) => self.fell_at = Some(self.sim.time),
-            (true, Some(t))
-                if self.reset_after_fall
-                    && self.sim.time - t > FALL_RESET_S * Scale::new(self.params.scale).time() =>
-            {
-                self.put_back(format!(
-                    "the creature fell at t = {t:.2} s and was put back at the start"
-                ));
-                return;
-            }
-            _ => {}
+        if summary_fell && self.fell_at.is_none() {
+            self.fell_at = Some(self.sim.time);
         }
         self.update_pose();
     }

@@ -77,7 +77,7 @@ impl Camera {
             self.zoom((input.scroll * ZOOM_PER_POINT).exp());
         }
         if input.reframe {
-            self.framed = false;
+            self.home();
         }
         *self != before
     }
@@ -204,5 +204,28 @@ mod tests {
         // The scene under the pointer moves with it: 50 points of 500 is a tenth of the height.
         let expected = 50.0 * 2.0 * camera.half_height_at_target() / 500.0;
         assert!((moved.dot(camera.right()).abs() - expected).abs() < 1e-4);
+    }
+
+    /// A double-click returns to the home view, whatever the orbit: a
+    /// three-quarter view from above, framed on the next frame.
+    #[test]
+    fn a_double_click_returns_to_the_home_view() {
+        use crate::render::camera::{HOME_PITCH, HOME_YAW};
+        let mut camera = Camera {
+            framed: true,
+            ..Camera::default()
+        };
+        camera.orbit(Vec2::new(300.0, -200.0));
+        assert!((camera.pitch - HOME_PITCH).abs() > 0.1);
+        camera.apply(
+            &CameraInput {
+                reframe: true,
+                zoom: 1.0,
+                ..CameraInput::default()
+            },
+            400.0,
+        );
+        assert_eq!((camera.yaw, camera.pitch), (HOME_YAW, HOME_PITCH));
+        assert!(!camera.framed, "framed again on the next frame");
     }
 }

@@ -30,4 +30,6 @@ mod projection;
 pub use follow::{FOLLOW_JUMP_DISTANCES, FOLLOW_RATE};
 pub use framing::{FRAME_FILL, FRAME_PAD_M, KEEP_FILL};
 pub use gestures::{CameraInput, ORBIT_RADIANS_PER_POINT, ZOOM_PER_POINT, gestures};
-pub use orbit::{Camera, MAX_DISTANCE, MIN_DISTANCE, MIN_EYE_HEIGHT, PITCH_LIMIT};
+pub use orbit::{
+    Camera, HOME_PITCH, HOME_YAW, MAX_DISTANCE, MIN_DISTANCE, MIN_EYE_HEIGHT, PITCH_LIMIT,
+};

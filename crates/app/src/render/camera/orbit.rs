@@ -16,6 +16,12 @@ pub const PITCH_LIMIT: f32 = 1.50;
 /// would slice it with the near plane, and under it the ground hides the figure.
 pub const MIN_EYE_HEIGHT: f32 = 0.05;
 
+/// The home view's yaw, radians: a three-quarter view of a figure facing +z.
+pub const HOME_YAW: f32 = 0.65;
+/// The home view's pitch, radians (about 24°): from above, so the feet and
+/// the ground ahead show (issue 43 item 4).
+pub const HOME_PITCH: f32 = 0.42;
+
 /// An orbit camera. `Copy`, so a frame's camera travels into the paint callback.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
@@ -52,8 +58,8 @@ impl Default for Camera {
     fn default() -> Self {
         Self {
             target: Vec3::new(0.0, 0.9, 0.0),
-            yaw: 0.65,
-            pitch: 0.22,
+            yaw: HOME_YAW,
+            pitch: HOME_PITCH,
             distance: 3.2,
             perspective: true,
             fov_y: 40_f32.to_radians(),
@@ -66,6 +72,15 @@ impl Default for Camera {
 }
 
 impl Camera {
+    /// Back to the home view: the three-quarter view from above
+    /// ([`HOME_YAW`], [`HOME_PITCH`]), framing the figure on the next frame
+    /// (a new preset, a double-click, the H key, *Home view*).
+    pub fn home(&mut self) {
+        self.yaw = HOME_YAW;
+        self.pitch = HOME_PITCH;
+        self.framed = false;
+    }
+
     /// Unit vector from the target toward the eye.
     #[must_use]
     pub fn back(&self) -> Vec3 {

@@ -92,6 +92,15 @@ impl Scene {
             let size = joints
                 .get(effector.joint)
                 .map_or(0.0, |joint| joint.size as f32);
+            // No wider than half the bone to it is long: a short tip on a
+            // big joint (the hexapod's head_tip) stays a marker, not a ball
+            // hiding the creature (issue 43 item 4).
+            let reach = effector.offset.length() as f32;
+            let size = if reach > 0.0 {
+                size.min(0.5 * reach)
+            } else {
+                size
+            };
             let radius = size.max(MIN_BONE_RADIUS);
             let name_color = side_color(&effector.name);
             let color = if name_color == CENTRE_COLOR {

@@ -78,9 +78,13 @@ const KEY: [([f32; 4], &str); 14] = [
 const KEY_COLUMN_PT: f32 = 110.0;
 
 /// How to drive the view and the clock.
-const CONTROLS: [(&str, &str); 7] = [
+const CONTROLS: [(&str, &str); 8] = [
     ("Drag", "orbit the camera (one finger on a touch screen)"),
     ("Scroll or pinch", "zoom"),
+    (
+        "H or double-click",
+        "home view: the figure from a three-quarter view above",
+    ),
     ("Space", "pause or play"),
     ("R", "reset to time 0"),
     (".", "one frame forward while paused"),

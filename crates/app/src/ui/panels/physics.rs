@@ -81,17 +81,30 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                 })
                 .response
                 .on_hover_text("The gait the controllers' state machine runs");
-            let speed_param = Param::new(key::PHYSICS_SPEED).band(SPEED_RANGE_MPS);
-            let response = widgets::add(
-                ui,
-                speed_param,
-                egui::Slider::new(&mut speed, speed_param.range())
-                    .text(speed_param.text("Desired speed")),
-                "ẋ_d of eq. 3: foot placement about the neutral point regulates it",
-            );
-            if let Some(band) = tested {
-                band_under_slider(ui, response.rect, speed_param.range(), band, false);
-            }
+            let speed_param = Param::new(key::PHYSICS_SPEED).band(speed_band(tested));
+            // A wider rail over the gait's own speeds, in steps of 0.05 m/s:
+            // a drag moves the speed by what a person can follow; a typed
+            // value may leave the rail (the table's range still holds).
+            let response = ui
+                .scope(|ui| {
+                    ui.spacing_mut().slider_width = SPEED_SLIDER_PT;
+                    let response = widgets::add(
+                        ui,
+                        speed_param,
+                        egui::Slider::new(&mut speed, speed_param.range())
+                            .step_by(SPEED_STEP_MPS)
+                            .clamping(egui::SliderClamping::Never)
+                            .text(speed_param.text("Desired speed")),
+                        "ẋ_d of eq. 3: foot placement about the neutral point regulates it. \
+                         The rail spans the gait's tested speeds and 1 m/s either side; type \
+                         a value for more",
+                    );
+                    if let Some(band) = tested {
+                        band_under_slider(ui, response.rect, speed_param.range(), band, false);
+                    }
+                    response
+                })
+                .inner;
             if response.changed() {
                 edits.push((speed_param.command(), speed));
             }
@@ -223,19 +236,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
                         "The paper's creatures change gait while running: the new state machine takes over at the next flight. This file names gaits to enter at their own start instead, where the creature is, turned to its heading (scenario.physics.switch_to_start, the lab's option; the bundled quadruped takes over as the paper does: docs/physics.md \"Switching into the bound\")",
                     );
             }
-            ui.label(format!(
-                "speed {:.2} m/s of {:.2} · friction needed {:.2}",
-                summary.speed_mean_mps, summary.speed_desired_mps, summary.friction_needed_max
-            ))
-            .on_hover_text(
-                "Mean forward speed after 3 s, of the desired. Friction needed: the largest \
-                 ratio of a stance foot's horizontal to vertical ground force while it carries at \
-                 least 10 % of the body's weight — the friction coefficient real ground would \
-                 need so the foot does not slip (a running animal needs well under 1). High \
-                 values come at touchdown: the feet arrive with their swing speed and stop \
-                 within a few ms on the stiff ground springs, which hold them whatever the \
-                 ratio; the paper saw almost 2.0 for up to 10 ms (docs/physics.md).",
-            );
+            measured_line(ui, &summary, time);
             let rows = &readout.table2;
             if rows.is_empty() {
                 ui.label("Table 2 has no column for this gait.");
@@ -373,9 +374,62 @@ fn push_row(ui: &mut egui::Ui, view: &PushView) -> Option<[f64; 2]> {
     asked
 }
 
-/// The desired-speed slider's band, m/s (the table takes ±15 m/s; the
-/// slider's tooltip says both).
+/// Seconds of settling before the run's figures are measured (Table 2's 3 s).
+const SETTLE_S: f64 = 3.0;
+
+/// The run's speed and the friction its feet needed, in words, once there
+/// is something measured (from [`SETTLE_S`] on; before, it says so rather
+/// than show zeros).
+fn measured_line(
+    ui: &mut egui::Ui,
+    summary: &gaitlab_engine::readout::PhysicsFigures,
+    time_s: f64,
+) {
+    if time_s < SETTLE_S {
+        ui.weak(format!(
+            "Speed and friction are measured from t = {SETTLE_S:.0} s (settling)"
+        ));
+        return;
+    }
+    ui.label(format!(
+        "speed {:.2} m/s of {:.2} desired",
+        summary.speed_mean_mps, summary.speed_desired_mps
+    ))
+    .on_hover_text("Mean forward speed from 3 s on, of the desired speed");
+    ui.label(format!(
+        "friction needed {:.2} mid-stance, {:.2} in a stance's first and last 10 ms",
+        summary.friction_needed_mid, summary.friction_needed_edges
+    ))
+    .on_hover_text(format!(
+        "The friction coefficient real ground would need so no foot slips: the largest \
+         ratio of a stance foot's horizontal to vertical ground force while it carries at \
+         least 10 % of the body's weight. The paper: under 1 for the biped, about 0.5 for \
+         the quadruped and kangaroo, \"almost 2.0\" for up to 10 ms at touchdown and \
+         lift-off; dry rubber on concrete gives about 0.8. Over whole stances this run's \
+         largest is {:.2} (docs/physics.md, \"Friction and force, as the paper reads them\").",
+        summary.friction_needed_max
+    ));
+}
+
+/// The desired-speed slider's band, m/s, for a gait with no tested speeds
+/// (the table takes ±15 m/s; the slider's tooltip says both).
 const SPEED_RANGE_MPS: std::ops::RangeInclusive<f64> = -1.0..=6.0;
+
+/// The desired-speed slider's rail width, points (egui's default is 100).
+const SPEED_SLIDER_PT: f32 = 170.0;
+
+/// The desired-speed slider's step, m/s.
+const SPEED_STEP_MPS: f64 = 0.05;
+
+/// The speed slider's rail (issue 43 item 3): the gait's tested speeds and
+/// 1 m/s either side (not below 0), else [`SPEED_RANGE_MPS`] — so a 45-px
+/// drag moves the bound's speed by under 1 m/s, not 3.
+fn speed_band(tested: Option<(f64, f64)>) -> std::ops::RangeInclusive<f64> {
+    match tested {
+        Some((low, high)) => (low - 1.0).max(0.0)..=high + 1.0,
+        None => SPEED_RANGE_MPS,
+    }
+}
 
 /// The hop-height slider's band, m (the table takes 0–2 m; the slider's
 /// tooltip says both).

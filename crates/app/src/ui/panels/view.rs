@@ -22,6 +22,16 @@ impl Panel for ViewPanel {
 /// View and object-transformation panels.
 fn view(ui: &mut egui::Ui, lab: &mut Lab) {
     ui.collapsing("View", |ui| {
+        if ui
+            .button("Home view")
+            .on_hover_text(
+                "Frame the figure from a three-quarter view above it (key H; a double-click \
+                 on the view does the same)",
+            )
+            .clicked()
+        {
+            lab.camera.home();
+        }
         let view = &mut lab.session.settings.view;
         ui.checkbox(&mut view.world_axes, "Axes")
             .on_hover_text("World x (red), y (green), z (blue) axes at the origin, 1 m long");
