@@ -90,3 +90,56 @@ fn the_kangaroo_with_three_boxes_keeps_its_trunk_above_ground() {
         "the trunk went {lowest:.3} m below the ground"
     );
 }
+
+/// Every bundled preset, opened one after another in one lab (so each runs
+/// after whatever ran before it, as in the page), runs its default for 60 s:
+/// no fall, no put-back, no blow-up banner, the trunk above the ground; a
+/// preset change clears any banner.
+#[test]
+fn every_bundled_preset_runs_its_default_for_a_minute_whatever_ran_before() {
+    let mut lab = Lab::new(Settings::default());
+    // Start from a blown-up biped, so the first preset follows a banner.
+    for command in [
+        r#"{"preset":"raibert-biped"}"#,
+        r#"{"gain":{"name":"leg_stiffness","value":1e9}}"#,
+    ] {
+        if let Err(error) = lab.command(command) {
+            panic!("{command}: {error}");
+        }
+    }
+    let _ = lowest_trunk_or_any(&mut lab, 2.0);
+    assert!(
+        lab.last_error().is_some_and(|e| e.contains("blew up")),
+        "{:?}",
+        lab.last_error()
+    );
+    for name in gaitlab_core::preset::bundled_names() {
+        if let Err(error) = lab.set_preset(name) {
+            panic!("{name}: {error}");
+        }
+        assert!(
+            lab.last_error().is_none(),
+            "{name}: a banner from before stayed: {:?}",
+            lab.last_error()
+        );
+        let lowest = lowest_trunk_or_any(&mut lab, 60.0);
+        let put_backs = lab.driver().physics().map_or(0, |d| d.put_backs().len());
+        let fell = lab.driver().physics().is_some_and(|d| d.fell());
+        println!("{name:>18}: 60 s, put back {put_backs}, fell {fell}, lowest trunk {lowest:.3} m");
+        assert_eq!(put_backs, 0, "{name}: put back");
+        assert!(!fell, "{name}: fell");
+        assert!(lowest >= 0.0, "{name}: trunk {lowest} m");
+        assert!(lab.last_error().is_none(), "{name}: {:?}", lab.last_error());
+    }
+}
+
+/// [`lowest_trunk`] for a physics creature; other engines just run (∞).
+fn lowest_trunk_or_any(lab: &mut Lab, seconds: f64) -> f64 {
+    if lab.driver().physics_probe().is_some() {
+        return lowest_trunk(lab, seconds);
+    }
+    for _ in 0..(seconds / FRAME_S).round() as usize {
+        lab.advance(FRAME_S);
+    }
+    f64::INFINITY
+}

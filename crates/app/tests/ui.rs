@@ -944,3 +944,66 @@ fn the_scale_slider_warns_outside_the_tested_scales() {
         serde_json::from_str(&harness.state().state_json()).unwrap_or_default();
     assert_eq!(state["physics"]["scale"], 6.0);
 }
+
+/// Issue 43 item 5: the PODA gait panel's messages (the stability warning,
+/// the derived values, a gait change being taken on) keep their place, so
+/// the section headers below the panel hold still through 20 s of play with
+/// gait switches and edits (a click aimed at one lands on it). The run must
+/// show the messages coming and going, or it proves nothing.
+#[test]
+fn the_sections_below_the_poda_panel_hold_still_through_play_and_gait_switches() {
+    let mut harness = poda_harness("hexapod", 1400.0);
+    harness.run_steps(4);
+    let header_y = |h: &Harness<'static, Lab>| {
+        (
+            h.get_by_label("Phases and steps").rect().top(),
+            h.get_by_label("Center angles and gains").rect().top(),
+        )
+    };
+    // Which of the panel's messages show: the warning, derived values, a change taken on.
+    let messages = |lab: &Lab| {
+        let readout = lab.driver().poda_readout();
+        (
+            readout.as_ref().is_some_and(|r| {
+                r.stability.unstable_share > gaitlab_app::ui::panels::UNSTABLE_WARNING_SHARE
+            }),
+            !lab.gait_derived().is_empty(),
+            readout.as_ref().is_some_and(|r| r.shifting),
+        )
+    };
+    let start = header_y(&harness);
+    let mut seen = std::collections::BTreeSet::new();
+    harness.state_mut().set_paused(false);
+    for k in 0..(20 * 10_u32) {
+        // A switch or an edit every 2 s; 0.1 s of play between frames drawn.
+        if k % 20 == 0 {
+            let lab = harness.state_mut();
+            let done = match (k / 20) % 4 {
+                0 => lab.set_gait("tripod"),
+                1 => lab.edit_gait("duty_factor", 0.3),
+                2 => lab.set_gait("wave"),
+                _ => lab.edit_gait("speed_mps", 0.35),
+            };
+            if let Err(error) = done {
+                panic!("{k}: {error}");
+            }
+        }
+        let lab = harness.state_mut();
+        for _ in 0..6 {
+            lab.advance(1.0 / 60.0);
+        }
+        seen.insert(messages(harness.state()));
+        harness.run_steps(1);
+        assert_eq!(
+            header_y(&harness),
+            start,
+            "the headers moved at {:.1} s",
+            f64::from(k) * 0.1
+        );
+    }
+    println!("messages seen (warning, derived, shifting): {seen:?}");
+    assert!(
+        seen.len() >= 3,
+        "the messages did not come and go: {seen:?}"
+    );
+}

@@ -119,17 +119,15 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
                 "support {:.3} s · transfer {:.3} s (eq. 7: support = stroke / speed)",
                 gait.support_s, gait.transfer_s
             ));
-            if !lab.gait_derived().is_empty() {
-                ui.weak(format!("derived: {}", lab.gait_derived().join(", ")));
-            }
-            super::stability::stability_lines(ui, stability);
-            if shifting {
-                ui.weak("Legs taking the change on, each at its own mid-stance")
-                    .on_hover_text(
-                        "Girard & Maciejewski: each leg adjusts at the beginning of its push; \
-                         the diagram shows the gait they are moving to (docs/poda.md, Leg by leg)",
-                    );
-            }
+            super::stability::status_lines(
+                ui,
+                &super::stability::Status {
+                    report: stability,
+                    planned_feet_down: gait.duty_factor * leg_names.len() as f64,
+                    derived: lab.gait_derived(),
+                    shifting,
+                },
+            );
             footfall_diagram(ui, &leg_names, &gait.footfall);
         });
     if let Some(name) = chosen
