@@ -24,6 +24,7 @@ pub mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;
 pub mod webm;
+pub mod words;
 
 pub use lab::Lab;
 pub use settings::Settings;

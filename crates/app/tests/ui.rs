@@ -729,13 +729,13 @@ fn a_first_visit_finds_the_intro_the_help_and_presets_by_engine() {
     // The preset menu groups the bundled presets by engine.
     harness.get_by_label("Preset").click();
     harness.run();
-    for text in ["PODA gaits", "raibert-kangaroo", "poda-quadruped"] {
+    for text in ["PODA gaits", "Raibert–Hodgins kangaroo", "PODA quadruped"] {
         assert!(
             harness.query_all_by_label(text).next().is_some(),
             "the menu lists {text}"
         );
     }
-    harness.get_by_label("raibert-kangaroo").click();
+    harness.get_by_label("Raibert–Hodgins kangaroo").click();
     harness.run();
     assert_eq!(harness.state().creature().name, "raibert-kangaroo");
 }

@@ -171,9 +171,13 @@ impl Lab {
                         let full = self.plots.joints.len() >= MAX_PLOT_JOINTS;
                         let enabled = on || !full;
                         if ui
-                            .add_enabled(enabled, egui::Checkbox::new(&mut on, joint.name.as_str()))
+                            .add_enabled(
+                                enabled,
+                                egui::Checkbox::new(&mut on, crate::words::in_words(&joint.name)),
+                            )
                             .on_hover_text(format!(
-                                "Plot this joint's angle (degrees; prismatic joints in millimetres), at most {MAX_PLOT_JOINTS}"
+                                "Plot this joint's angle (degrees; prismatic joints in millimetres), at most {MAX_PLOT_JOINTS} ({})",
+                                joint.name
                             ))
                             .changed()
                         {
@@ -279,7 +283,11 @@ fn series_plot(ui: &mut egui::Ui, title: &str, history: &History, spec: &PlotSpe
                 let (swatch, _) =
                     ui.allocate_exact_size(egui::vec2(10.0, 10.0), egui::Sense::hover());
                 ui.painter().rect_filled(swatch, 2.0, colour);
-                ui.label(egui::RichText::new(history.names[s].as_str()).color(colour));
+                ui.label(
+                    egui::RichText::new(crate::words::series_in_words(&history.names[s]))
+                        .color(colour),
+                )
+                .on_hover_text(history.names[s].as_str());
             }
         }
     });
@@ -342,7 +350,8 @@ fn series_plot(ui: &mut egui::Ui, title: &str, history: &History, spec: &PlotSpe
                 .points(s)
                 .map(|[t, v]| [t, v * spec.scale])
                 .collect();
-            plot.line(Line::new(history.names[s].as_str(), PlotPoints::from(points)).color(colour));
+            let name = crate::words::series_in_words(&history.names[s]);
+            plot.line(Line::new(name, PlotPoints::from(points)).color(colour));
         }
     });
 }

@@ -44,7 +44,11 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
     let weight_share = gait.weight_share_n;
     let shifting = gait.shifting;
     let stability = gait.stability;
-    let leg_names: Vec<&str> = gait.legs.iter().map(|leg| leg.name.as_str()).collect();
+    let leg_names: Vec<String> = gait
+        .legs
+        .iter()
+        .map(|leg| crate::words::in_words(&leg.name))
+        .collect();
     let mut chosen = None;
     let mut edits: Vec<(&str, f64)> = Vec::new();
     egui::CollapsingHeader::new("Gait (PODA)")
@@ -289,22 +293,28 @@ fn shape(ui: &mut egui::Ui, lab: &mut Lab) {
 
 /// Each leg's support bar over one cycle (filled while the foot is planted),
 /// and a cursor at the current time within the cycle.
-fn footfall_diagram(ui: &mut egui::Ui, names: &[&str], footfall: &Footfall) {
+fn footfall_diagram(ui: &mut egui::Ui, names: &[String], footfall: &Footfall) {
     let font = egui::FontId::proportional(LABEL_FONT_PT);
     // As wide as the longest name, so none is clipped.
     let label_width = names
         .iter()
         .map(|name| {
             ui.painter()
-                .layout_no_wrap((*name).to_owned(), font.clone(), egui::Color32::WHITE)
+                .layout_no_wrap(name.clone(), font.clone(), egui::Color32::WHITE)
                 .size()
                 .x
         })
         .fold(40.0_f32, f32::max)
         + 8.0;
     let width = ui.available_width().max(label_width + 40.0);
-    let height = ROW_HEIGHT * names.len() as f32;
-    let (rect, _) = ui.allocate_exact_size(egui::vec2(width, height), egui::Sense::hover());
+    let rows = ROW_HEIGHT * names.len() as f32;
+    let height = rows + 2.0 * ROW_HEIGHT;
+    let (rect, response) = ui.allocate_exact_size(egui::vec2(width, height), egui::Sense::hover());
+    response.on_hover_text(
+        "One row per leg, one gait cycle across (0 to 1 of the period): a filled bar while \
+         the foot is down (stance, supporting), the empty track while it swings through the \
+         air (transfer); the vertical line is now",
+    );
     let painter = ui.painter_at(rect);
     let visuals = ui.visuals();
     let bar = visuals.selection.bg_fill;
@@ -318,7 +328,7 @@ fn footfall_diagram(ui: &mut egui::Ui, names: &[&str], footfall: &Footfall) {
         painter.text(
             egui::pos2(rect.left(), top + ROW_HEIGHT * 0.5),
             egui::Align2::LEFT_CENTER,
-            *name,
+            name,
             font.clone(),
             text,
         );
@@ -341,7 +351,73 @@ fn footfall_diagram(ui: &mut egui::Ui, names: &[&str], footfall: &Footfall) {
     }
     let now = x(footfall.now.clamp(0.0, 1.0));
     painter.line_segment(
-        [egui::pos2(now, rect.top()), egui::pos2(now, rect.bottom())],
+        [
+            egui::pos2(now, rect.top()),
+            egui::pos2(now, rect.top() + rows),
+        ],
         egui::Stroke::new(1.5, visuals.warn_fg_color),
     );
+    // The time axis: fractions of the cycle, ticks at quarters.
+    let weak = visuals.weak_text_color();
+    let axis = rect.top() + rows + 1.0;
+    painter.line_segment(
+        [egui::pos2(x0, axis), egui::pos2(rect.right(), axis)],
+        egui::Stroke::new(1.0, weak),
+    );
+    for (k, label) in ["0", "¼", "½", "¾", "1"].iter().enumerate() {
+        let at = x(k as f64 / 4.0);
+        painter.line_segment(
+            [egui::pos2(at, axis), egui::pos2(at, axis + 3.0)],
+            egui::Stroke::new(1.0, weak),
+        );
+        let align = match k {
+            0 => egui::Align2::LEFT_TOP,
+            4 => egui::Align2::RIGHT_TOP,
+            _ => egui::Align2::CENTER_TOP,
+        };
+        painter.text(
+            egui::pos2(at, axis + 3.0),
+            align,
+            *label,
+            font.clone(),
+            weak,
+        );
+    }
+    painter.text(
+        egui::pos2(rect.left(), axis + 3.0),
+        egui::Align2::LEFT_TOP,
+        "cycle",
+        font.clone(),
+        weak,
+    );
+    // The key: stance, swing, now.
+    let key_y = rect.top() + rows + ROW_HEIGHT + 2.0;
+    let mut at = rect.left();
+    for (fill, line, label) in [
+        (Some(bar), None, "stance (foot down)"),
+        (Some(track), None, "swing"),
+        (None, Some(visuals.warn_fg_color), "now"),
+    ] {
+        let swatch = egui::Rect::from_min_size(
+            egui::pos2(at, key_y + 2.0),
+            egui::vec2(12.0, ROW_HEIGHT - 6.0),
+        );
+        if let Some(fill) = fill {
+            painter.rect_filled(swatch, 1.0, fill);
+        }
+        if let Some(line) = line {
+            painter.line_segment(
+                [swatch.center_top(), swatch.center_bottom()],
+                egui::Stroke::new(1.5, line),
+            );
+        }
+        let label = painter.text(
+            egui::pos2(swatch.right() + 4.0, swatch.center().y),
+            egui::Align2::LEFT_CENTER,
+            label,
+            font.clone(),
+            text,
+        );
+        at = label.right() + 12.0;
+    }
 }

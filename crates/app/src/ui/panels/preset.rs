@@ -75,10 +75,11 @@ fn engine_hover(engine: Engine) -> &'static str {
 fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
     let current = lab.creature().name.clone();
     let edited = lab.session.custom_preset.is_some();
+    let title = crate::words::preset_title(&current);
     let shown = if edited {
-        format!("{current} (edited)")
+        format!("{title} (edited)")
     } else {
-        current.clone()
+        title.to_owned()
     };
     let mut chosen = None;
     egui::ComboBox::from_label("Preset")
@@ -86,11 +87,12 @@ fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
         .height(480.0)
         .show_ui(ui, |ui| {
             for engine in Engine::ALL {
-                ui.label(egui::RichText::new(engine_label(engine)).strong().small());
+                ui.label(egui::RichText::new(engine_label(engine)).strong());
                 for info in bundled_catalog().iter().filter(|i| i.engine == engine) {
+                    let title = crate::words::preset_title(info.name);
                     if ui
-                        .selectable_label(!edited && info.name == current, info.name)
-                        .on_hover_text(info.description.as_str())
+                        .selectable_label(!edited && info.name == current, title)
+                        .on_hover_text(format!("{} ({})", info.description, info.name))
                         .clicked()
                     {
                         chosen = Some(info.name);
