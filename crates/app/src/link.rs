@@ -255,20 +255,27 @@ pub fn encode_full(link: &FullLink) -> Result<String, String> {
     Ok(deflate(&text))
 }
 
-/// The query string for a bundled preset, mode and method (`?preset=…&mode=…&method=…`).
+/// The query string for a bundled preset and, where they apply, the IK
+/// mode and method (`?preset=…[&mode=…[&method=…]]`): the address bar says
+/// only what is on screen (issue 43 item 5) — no method while a comparison
+/// runs several, no mode or method for a PODA or physics creature.
 #[must_use]
-pub fn query(preset: &str, mode: &str, method: &str) -> String {
+pub fn query(preset: &str, mode: Option<&str>, method: Option<&str>) -> String {
     let clean = |s: &str| {
         s.chars()
             .filter(|c| c.is_ascii_alphanumeric() || *c == '-' || *c == '_')
             .collect::<String>()
     };
-    format!(
-        "?preset={}&mode={}&method={}",
-        clean(preset),
-        clean(mode),
-        clean(method)
-    )
+    let mut query = format!("?preset={}", clean(preset));
+    if let Some(mode) = mode {
+        query.push_str("&mode=");
+        query.push_str(&clean(mode));
+        if let Some(method) = method {
+            query.push_str("&method=");
+            query.push_str(&clean(method));
+        }
+    }
+    query
 }
 
 #[cfg(test)]
@@ -339,13 +346,18 @@ mod tests {
     #[test]
     fn query_strings_are_clean() {
         assert_eq!(
-            query("human", "run", "dls"),
+            query("human", Some("run"), Some("dls")),
             "?preset=human&mode=run&method=dls"
         );
         assert_eq!(
-            query("a&b=c", "run", "<x>"),
+            query("a&b=c", Some("run"), Some("<x>")),
             "?preset=abc&mode=run&method=x"
         );
+        assert_eq!(
+            query("she-2006", Some("walk"), None),
+            "?preset=she-2006&mode=walk"
+        );
+        assert_eq!(query("hexapod", None, Some("sdls")), "?preset=hexapod");
     }
 
     fn sample_link() -> FullLink {

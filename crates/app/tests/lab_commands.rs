@@ -164,3 +164,35 @@ fn settings_that_cannot_drive_fall_back_to_the_default_creature_and_driver() {
     let error = lab.last_error().unwrap_or_default();
     assert!(error.starts_with("settings.ik.lambda"), "{error}");
 }
+
+/// Issue 43 item 5: the address bar says only what is on screen — the IK
+/// method while one view runs, not while a comparison runs several, and no
+/// mode or method for a physics or PODA creature.
+#[test]
+fn the_address_bar_describes_what_is_on_screen() {
+    let mut lab = gaitlab_app::Lab::new(gaitlab_app::Settings::default());
+    for (command, query) in [
+        (
+            r#"{"preset":"she-2006","mode":"walk","method":"sdls"}"#,
+            "?preset=she-2006&mode=walk&method=sdls",
+        ),
+        (
+            r#"{"compare":{"views":["transpose","pinv","dls","sdls"]}}"#,
+            "?preset=she-2006&mode=walk",
+        ),
+        (
+            r#"{"compare":false}"#,
+            "?preset=she-2006&mode=walk&method=sdls",
+        ),
+        (
+            r#"{"preset":"raibert-quadruped"}"#,
+            "?preset=raibert-quadruped",
+        ),
+        (r#"{"preset":"hexapod"}"#, "?preset=hexapod"),
+    ] {
+        if let Err(error) = lab.command(command) {
+            panic!("{command}: {error}");
+        }
+        assert_eq!(lab.address_query(), query, "after {command}");
+    }
+}

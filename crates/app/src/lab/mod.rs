@@ -327,6 +327,20 @@ impl Lab {
         }
     }
 
+    /// The address bar's query for what is on screen ([`crate::link::query`]):
+    /// the preset; for the IK engine its mode; and the method when one view
+    /// runs (a comparison runs several).
+    #[must_use]
+    pub fn address_query(&self) -> String {
+        let settings = &self.session.settings;
+        let ik = self.engine() == Engine::Ik;
+        crate::link::query(
+            &settings.preset,
+            ik.then(|| settings.mode.name()),
+            (ik && self.compare.is_none()).then(|| settings.method.name()),
+        )
+    }
+
     /// The engine of the creature being animated.
     #[must_use]
     pub fn engine(&self) -> Engine {

@@ -205,12 +205,7 @@ impl WebApp {
         let Some(history) = window().and_then(|w| w.history().ok()) else {
             return;
         };
-        let settings = self.lab.settings();
-        let mut url = link::query(
-            &settings.preset,
-            settings.mode.name(),
-            settings.method.name(),
-        );
+        let mut url = self.lab.address_query();
         if let Some(json) = &self.lab.session.custom_preset {
             url.push_str("#p=");
             url.push_str(&link::encode_preset(json));
