@@ -24,7 +24,7 @@ fn a_preset_change_asks_for_a_history_entry_and_a_link_update_once() {
 #[test]
 fn opening_a_link_leaves_the_address_bar_as_it_is() {
     let mut lab = Lab::new(Settings::default());
-    let query = gaitlab_app::link::query("ik-quadruped", "run", "dls");
+    let query = gaitlab_app::link::query("ik-quadruped", Some("run"), Some("dls"));
     lab.open_link(&query, "");
     assert_eq!(lab.creature().name, "ik-quadruped");
     assert!(

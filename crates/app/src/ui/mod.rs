@@ -47,6 +47,13 @@ impl Lab {
         } else {
             self.layout.controls_button_pt = [0.0; 4];
             self.layout.plots_button_pt = [0.0; 4];
+            // The history scrubber along the window's foot, as wide as the
+            // plots (issue 43 item 5: it was 90 px for 600 frames).
+            if self.rewind_range().is_some() {
+                egui::Panel::bottom("gaitlab-timeline").show(ui, |ui| {
+                    panels::history_scrubber(ui, self, ui.available_width());
+                });
+            }
             egui::Panel::left("gaitlab-controls")
                 .resizable(true)
                 .default_size(290.0)

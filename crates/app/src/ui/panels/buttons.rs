@@ -75,16 +75,37 @@ impl Panel for RatePanel {
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
         rate(ui, lab);
-        history(ui, lab);
+        // On a wide screen the scrubber runs along the window's foot.
+        if lab.narrow() {
+            let width = ui.spacing().slider_width;
+            history_scrubber(ui, lab, width);
+        }
     }
 }
 
-/// The history scrubber: the frame shown among the stored ones, labelled in
-/// seconds before the newest; dragging it pauses and goes there.
-fn history(ui: &mut egui::Ui, lab: &mut Lab) {
+/// Room the scrubber leaves beside its rail for its value and label, points.
+const SCRUBBER_LABELS_PT: f32 = 140.0;
+
+/// The history scrubber, its rail `width` points wide (less its value and
+/// label): the frame shown among the stored ones, labelled in seconds
+/// before the newest; dragging it pauses and goes there.
+pub(crate) fn history_scrubber(ui: &mut egui::Ui, lab: &mut Lab, width: f32) {
     let Some((oldest, newest)) = lab.rewind_range() else {
         return;
     };
+    let rail = if width > 2.0 * SCRUBBER_LABELS_PT {
+        width - SCRUBBER_LABELS_PT
+    } else {
+        width
+    };
+    ui.scope(|ui| {
+        ui.spacing_mut().slider_width = rail;
+        scrubber(ui, lab, oldest, newest);
+    });
+}
+
+/// The scrubber's slider between frames `oldest` and `newest`.
+fn scrubber(ui: &mut egui::Ui, lab: &mut Lab, oldest: u64, newest: u64) {
     let dt = lab.frame_seconds();
     let mut frame = lab.frame().clamp(oldest, newest);
     let response = ui

@@ -25,6 +25,7 @@ mod view;
 mod waypoints;
 
 pub use buttons::buttons;
+pub(crate) use buttons::history_scrubber;
 pub use compare::cards as compare_cards;
 pub use help::{INTRO, help_window};
 pub use panel::Panel;
