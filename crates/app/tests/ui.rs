@@ -247,9 +247,13 @@ fn the_side_by_side_controls_change_the_comparison() {
             .unwrap_or_default()
     };
     assert_eq!(views(&harness), ["transpose", "pinv", "dls", "sdls"]);
-    // Four method cards with their formulas and sliders.
+    // Four method cards with their formulas and sliders, and one table of
+    // their figures, a column each.
     harness.get_by_label("Δθ = Jᵀ(JJᵀ + λ²I)⁻¹ e");
-    assert!(harness.query_all_by_label("jitter").count() == 4);
+    assert_eq!(harness.query_all_by_label("jitter").count(), 1);
+    for column in ["1 · transpose", "2 · pinv", "3 · dls", "4 · sdls"] {
+        harness.get_by_label(column);
+    }
     harness.get_by_label("2 views").click();
     harness.run();
     assert_eq!(views(&harness), ["transpose", "pinv"]);

@@ -202,6 +202,7 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab, stacked: bool) {
         .show(ui, |ui| {
             notice_ui(ui, compare);
             super::compare_bars::bars(ui, compare, stacked);
+            figures_table(ui, compare, stacked);
             if stacked {
                 for i in 0..count {
                     ui.separator();
@@ -230,7 +231,8 @@ pub fn cards(ui: &mut egui::Ui, lab: &mut Lab, stacked: bool) {
 
 /// View `i`'s card: its method and colour, the error plot on the shared
 /// scale `y_max_mm`, formula, behaviour, parameter sliders (the edited
-/// options when one moved), figures and per-effector table.
+/// options when one moved) and per-effector table; the figures are in the
+/// one table above the cards ([`figures_table`]).
 fn card(
     ui: &mut egui::Ui,
     compare: &crate::compare::Comparison,
@@ -288,32 +290,105 @@ fn card(
     for &parameter in shown {
         changed |= slider(ui, parameter, &mut edited);
     }
-    let m = view.metrics();
-    egui::Grid::new(("compare-table", i))
-        .num_columns(2)
-        .striped(true)
-        .show(ui, |ui| {
-            let rows = [
-                ("mean error", format!("{:.2} mm", view.mean_error_m() * 1e3), "Mean effector-to-target distance since the reset, averaged over the effectors"),
-                ("max error", format!("{:.2} mm", view.max_error_m() * 1e3), "Largest effector-to-target distance since the reset"),
-                ("µs / iteration", format!("{:.1}", m.us_per_iteration()), "Wall time per IK iteration (forward kinematics, Jacobian, solve)"),
-                ("jitter", format!("{:.2e} rad/frame²", m.jitter_rad()), "Joint-velocity jitter: mean |Δ²θ| over the joints and the last 4 s, radians per frame²"),
-                ("limit hits", m.limit_hits.to_string(), "Times a joint ran into one of its limits since the reset"),
-                ("posture pull", posture_pull(view), "The lab's addition, not in She 2006: before each frame's IK every joint moves this fraction of its joint gain toward its centre angle (Motion panel; the she-2006 preset has it off)"),
-                ("joint limits", limit_rule(options), "How a joint past its limit is handled: clamped to the limit (She 2006 §6.1.1.1), or clamped and the IK solved again without it (the lab's addition; Method panel, Limit passes)"),
-                ("oscillation", optional(view.oscillation_hz(), 1.0, "Hz", 2), "Sign changes of each limb joint's per-frame Δθ (|Δθ| ≥ 1e-6 rad) per second, averaged over the limb's joints and the effectors since the reset (She 2006 §5.3's oscillation; a smooth swing at the gait's f Hz gives 2f)"),
-                ("reachable", optional(view.reachable(), 100.0, "%", 0), "Share of frames whose target lay within the limb's length of its first joint, averaged over the effectors (She 2006 §5.3's reachable targets)"),
-                ("error, reachable", optional(view.mean_error_reachable_m(), 1e3, "mm", 2), "Mean effector error over the frames its target was within reach, averaged over the effectors"),
-                ("error, unreachable", optional(view.mean_error_unreachable_m(), 1e3, "mm", 2), "Mean effector error over the frames its target was out of reach, averaged over the effectors"),
-            ];
-            for (name, value, tip) in rows {
-                ui.label(name).on_hover_text(tip);
-                ui.label(value).on_hover_text(tip);
-                ui.end_row();
-            }
-        });
     effector_table(ui, i, view);
     changed.then_some(edited)
+}
+
+/// Every view's figures in one table (issue 43 item 5: each card had its own,
+/// at its own height): a row per figure, a column per view under its
+/// method's name in its colour, so a row reads across the methods.
+fn figures_table(ui: &mut egui::Ui, compare: &crate::compare::Comparison, stacked: bool) {
+    type Cell = fn(&crate::compare::CompareView, &gaitlab_core::ik::IkOptions) -> String;
+    let rows: [(&str, &str, Cell); 11] = [
+        (
+            "mean error",
+            "Mean effector-to-target distance since the reset, averaged over the effectors",
+            |v, _| format!("{:.2} mm", v.mean_error_m() * 1e3),
+        ),
+        (
+            "max error",
+            "Largest effector-to-target distance since the reset",
+            |v, _| format!("{:.2} mm", v.max_error_m() * 1e3),
+        ),
+        (
+            "µs / iteration",
+            "Wall time per IK iteration (forward kinematics, Jacobian, solve)",
+            |v, _| format!("{:.1}", v.metrics().us_per_iteration()),
+        ),
+        (
+            "jitter",
+            "Joint-velocity jitter: mean |Δ²θ| over the joints and the last 4 s, radians per frame²",
+            |v, _| format!("{:.2e} rad/frame²", v.metrics().jitter_rad()),
+        ),
+        (
+            "limit hits",
+            "Times a joint ran into one of its limits since the reset",
+            |v, _| v.metrics().limit_hits.to_string(),
+        ),
+        (
+            "oscillation",
+            "Sign changes of each limb joint's per-frame Δθ (|Δθ| ≥ 1e-6 rad) per second, averaged over the limb's joints and the effectors since the reset (She 2006 §5.3's oscillation; a smooth swing at the gait's f Hz gives 2f)",
+            |v, _| optional(v.oscillation_hz(), 1.0, "Hz", 2),
+        ),
+        (
+            "reachable",
+            "Share of frames whose target lay within the limb's length of its first joint, averaged over the effectors (She 2006 §5.3's reachable targets)",
+            |v, _| optional(v.reachable(), 100.0, "%", 0),
+        ),
+        (
+            "error, reachable",
+            "Mean effector error over the frames its target was within reach, averaged over the effectors",
+            |v, _| optional(v.mean_error_reachable_m(), 1e3, "mm", 2),
+        ),
+        (
+            "error, unreachable",
+            "Mean effector error over the frames its target was out of reach, averaged over the effectors",
+            |v, _| optional(v.mean_error_unreachable_m(), 1e3, "mm", 2),
+        ),
+        (
+            "posture pull",
+            "The lab's addition, not in She 2006: before each frame's IK every joint moves this fraction of its joint gain toward its centre angle (Motion panel; the she-2006 preset has it off)",
+            |v, _| posture_pull(v),
+        ),
+        (
+            "joint limits",
+            "How a joint past its limit is handled: clamped to the limit (She 2006 §6.1.1.1), or clamped and the IK solved again without it (the lab's addition; Method panel, Limit passes)",
+            |_, o| limit_rule(o),
+        ),
+    ];
+    // On a phone the table scrolls by dragging: no thin bar to aim at.
+    let bar = if stacked {
+        egui::scroll_area::ScrollBarVisibility::AlwaysHidden
+    } else {
+        egui::scroll_area::ScrollBarVisibility::VisibleWhenNeeded
+    };
+    egui::ScrollArea::horizontal()
+        .id_salt("compare-figures")
+        .scroll_bar_visibility(bar)
+        .show(ui, |ui| {
+            egui::Grid::new("compare-figures-table")
+                .num_columns(1 + compare.views().len())
+                .striped(true)
+                .show(ui, |ui| {
+                    ui.label("");
+                    for (i, view) in compare.views().iter().enumerate() {
+                        ui.label(
+                            egui::RichText::new(format!("{} · {}", i + 1, view.method.name()))
+                                .strong()
+                                .color(compare.colour(i)),
+                        )
+                        .on_hover_text(view.method.label());
+                    }
+                    ui.end_row();
+                    for (name, tip, cell) in rows {
+                        ui.label(name).on_hover_text(tip);
+                        for (view, options) in compare.views().iter().zip(&compare.config.options) {
+                            ui.label(cell(view, options)).on_hover_text(tip);
+                        }
+                        ui.end_row();
+                    }
+                });
+        });
 }
 
 /// The scenario's "what to notice" lines, each with its thesis section; a
