@@ -142,6 +142,11 @@ pub struct LayoutState {
     pub small_touch_targets_pt: Vec<[f32; 4]>,
     /// The phone layout's plots button's rectangle, points.
     pub plots_button_pt: [f32; 4],
+    /// Where the Help button, the playback-rate slider and the preset combo
+    /// box were drawn, points `[x, y, w, h]` (zeros where not drawn).
+    pub widgets_pt: crate::lab::layout::WidgetRects,
+    /// Whether a popup (a combo box's list) is open.
+    pub popup_open: bool,
 }
 
 /// `track`: the target recording the figure follows.
@@ -394,6 +399,8 @@ impl State {
                 touch_targets_checked: lab.layout.touch_targets_checked,
                 small_touch_targets_pt: lab.layout.small_touch_targets_pt.clone(),
                 plots_button_pt: lab.layout.plots_button_pt,
+                widgets_pt: lab.layout.widgets_pt,
+                popup_open: lab.layout.popup_open,
             },
             video: VideoState {
                 recording: lab.video.recording,

@@ -37,6 +37,31 @@ pub struct Layout {
     /// The physics creature's trunk on screen, points `[x, y]`: where a drag
     /// grabs it to push it (`None`: no physics creature in the single view).
     pub trunk_pt: Option<[f32; 2]>,
+    /// Where the last frame drew the Help button, the playback-rate slider
+    /// and the preset combo box, points `[x, y, w, h]` (zeros where not
+    /// drawn), for tests that click their drawn centres at every device
+    /// scale factor (issue 43 item 6).
+    pub widgets_pt: WidgetRects,
+    /// Whether a popup (a combo box's list) is open.
+    pub popup_open: bool,
+}
+
+/// Rectangles of a few widgets as drawn, points `[x, y, w, h]`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct WidgetRects {
+    /// The Help button.
+    pub help: [f32; 4],
+    /// The playback-rate slider (rail and value).
+    pub rate_slider: [f32; 4],
+    /// The preset combo box.
+    pub preset_combo: [f32; 4],
+}
+
+/// `rect` as `[x, y, w, h]`.
+#[must_use]
+pub fn rect_pt(rect: egui::Rect) -> [f32; 4] {
+    [rect.min.x, rect.min.y, rect.width(), rect.height()]
 }
 
 impl Default for Layout {
@@ -56,6 +81,8 @@ impl Default for Layout {
             dark_mode: true,
             view_rect_px: [0.0; 4],
             trunk_pt: None,
+            widgets_pt: WidgetRects::default(),
+            popup_open: false,
         }
     }
 }

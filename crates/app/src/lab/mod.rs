@@ -22,7 +22,7 @@ mod editor;
 mod gait;
 mod gait_shape;
 mod lambda_tradeoff;
-mod layout;
+pub(crate) mod layout;
 mod lesson;
 mod outbox;
 mod overlays;

@@ -29,6 +29,7 @@ const DRAWER_HEIGHT_FRACTION: f32 = 0.45;
 impl Lab {
     /// Shows the whole lab in `ui` and advances the animation by the frame's time.
     pub fn ui(&mut self, ui: &mut egui::Ui) {
+        self.layout.widgets_pt = crate::lab::layout::WidgetRects::default();
         self.apply_theme(ui);
         let dt = ui.input(|i| f64::from(i.stable_dt));
         self.note_frame_time(dt);
@@ -75,6 +76,7 @@ impl Lab {
                     .show(ui, |ui| self.plots_ui(ui));
             }
         }
+        self.layout.popup_open = egui::Popup::is_any_open(ui.ctx());
         panels::editor_window(&ui.ctx().clone(), self);
         panels::help_window(&ui.ctx().clone(), self);
         panels::lesson::lesson_window(&ui.ctx().clone(), self);

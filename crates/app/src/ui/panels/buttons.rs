@@ -138,7 +138,7 @@ fn scrubber(ui: &mut egui::Ui, lab: &mut Lab, oldest: u64, newest: u64) {
 fn rate(ui: &mut egui::Ui, lab: &mut Lab) {
     let mut rate = lab.playback.rate();
     let range = crate::lab::PLAYBACK_RATES;
-    if ui
+    let response = ui
         .add(
             egui::Slider::new(&mut rate, range)
                 .logarithmic(true)
@@ -148,9 +148,9 @@ fn rate(ui: &mut egui::Ui, lab: &mut Lab) {
         .on_hover_text(
             "Simulated time per second of your time: 0.1× to watch a motion slowly, 2× to \
              hurry it; the motion itself is the same",
-        )
-        .changed()
-    {
+        );
+    lab.layout.widgets_pt.rate_slider = crate::lab::layout::rect_pt(response.rect);
+    if response.changed() {
         lab.playback.set_rate(rate);
     }
 }

@@ -24,11 +24,11 @@ impl Panel for IntroPanel {
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             ui.label(INTRO);
-            if ui
+            let help = ui
                 .button("Help")
-                .on_hover_text("What the colours mean, how to move the view, the three engines")
-                .clicked()
-            {
+                .on_hover_text("What the colours mean, how to move the view, the three engines");
+            lab.layout.widgets_pt.help = crate::lab::layout::rect_pt(help.rect);
+            if help.clicked() {
                 lab.layout.help_open = !lab.layout.help_open;
             }
         });

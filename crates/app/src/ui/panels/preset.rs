@@ -82,7 +82,7 @@ fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
         title.to_owned()
     };
     let mut chosen = None;
-    egui::ComboBox::from_label("Preset")
+    let combo = egui::ComboBox::from_label("Preset")
         .selected_text(shown)
         .height(480.0)
         .show_ui(ui, |ui| {
@@ -102,6 +102,7 @@ fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
         })
         .response
         .on_hover_text("The creature and its scenario: the bundled presets, by engine");
+    lab.layout.widgets_pt.preset_combo = crate::lab::layout::rect_pt(combo.rect);
     if let Some(name) = chosen
         && (name != current || edited)
         && let Err(error) = lab.set_preset(name)

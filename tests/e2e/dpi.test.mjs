@@ -1,0 +1,80 @@
+// Clicks land on the widget drawn under them at every device scale factor (issue 43 item 6):
+// headless Chromium with a real scale factor of 1, 2 and 3 (`--force-device-scale-factor`, as a
+// phone or a laptop screen has; Playwright's emulated factor leaves the canvas at CSS pixels and is
+// not what a browser does), at 1440 × 900 and 390 × 844. At each, a mouse click at the drawn centre
+// of Help opens the help window, one at the left of the playback-rate slider's rail moves the rate,
+// one at the centre of the preset combo box opens its list, and on a phone one at the centre of
+// Controls opens the drawer first. Where each widget is drawn comes from `state().layout`
+// (points = CSS pixels).
+
+import { after, before, describe, it } from 'node:test';
+import assert from 'node:assert/strict';
+import { command, launch, serveDist, sleep, state, withLoadedApp } from './harness.mjs';
+
+const T = { timeout: 300_000 };
+
+let server;
+before(async () => { server = await serveDist(); });
+after(async () => { await server?.close(); });
+
+/** Waits until `pred(state())` holds, polling. */
+async function until(page, pred, what, timeout = 30_000) {
+  const end = Date.now() + timeout;
+  for (;;) {
+    const s = await state(page);
+    if (pred(s)) return s;
+    if (Date.now() > end) throw new Error(`timed out waiting for ${what}: ${JSON.stringify(s.layout)}`);
+    await sleep(150);
+  }
+}
+
+/**
+ * Clicks at `(x, y)` until `pred(state())` holds, up to three times: on a starved machine a
+ * click's press and release can fall in frames too far apart for egui to count it.
+ */
+async function clickUntil(page, [x, y], pred, what) {
+  for (let k = 1; ; k++) {
+    await page.mouse.click(x, y, { delay: 60 });
+    try {
+      return await until(page, pred, what, k < 3 ? 10_000 : 30_000);
+    } catch (e) {
+      if (k >= 3) throw e;
+    }
+  }
+}
+
+const centre = ([x, y, w, h]) => [x + w / 2, y + h / 2];
+
+for (const viewport of [{ width: 1440, height: 900 }, { width: 390, height: 844 }]) {
+  for (const dpr of [1, 2, 3]) {
+    describe(`clicks at device scale factor ${dpr}, ${viewport.width} × ${viewport.height}`, () => {
+      let browser;
+      before(async () => { browser = await launch('webgl2', { deviceScaleFactor: dpr, viewport }); });
+      after(async () => { await browser?.close(); });
+
+      it('hit Help, Controls, a slider and a combo box where they are drawn', T, async () => {
+        await withLoadedApp(browser, server.url, async ({ page }) => {
+          assert.equal(await page.evaluate(() => devicePixelRatio), dpr);
+          assert.equal(await command(page, { paused: true }), 'ok');
+          let s = await until(page, (st) => st.layout.narrow || st.layout.widgets_pt.help[2] > 0, 'a frame');
+          if (s.layout.narrow) {
+            s = await clickUntil(page, centre(s.layout.controls_button_pt),
+              (st) => st.layout.controls_open && st.layout.widgets_pt.help[2] > 0, 'the controls drawer');
+          }
+          // Help opens the help window, and closes it again.
+          s = await clickUntil(page, centre(s.layout.widgets_pt.help), (st) => st.layout.help_open, 'Help');
+          s = await clickUntil(page, centre(s.layout.widgets_pt.help), (st) => !st.layout.help_open, 'Help again');
+          // The rate slider's rail, a tenth of the way along: the rate drops below 1×.
+          const [x, y, w, h] = s.layout.widgets_pt.rate_slider;
+          assert.ok(w > 0, JSON.stringify(s.layout.widgets_pt));
+          s = await clickUntil(page, [x + 0.1 * w, y + h / 2], (st) => st.playback_rate < 0.9,
+            'the rate slider');
+          // The preset combo box opens its list.
+          s = await clickUntil(page, centre(s.layout.widgets_pt.preset_combo), (st) => st.layout.popup_open,
+            'the preset combo box');
+          await page.keyboard.press('Escape');
+        });
+      });
+    });
+  }
+}
