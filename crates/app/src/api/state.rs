@@ -147,6 +147,11 @@ pub struct LayoutState {
     pub widgets_pt: crate::lab::layout::WidgetRects,
     /// Whether a popup (a combo box's list) is open.
     pub popup_open: bool,
+    /// The single view's figure on screen, points `[x, y, w, h]` (`null` in
+    /// a comparison or where a corner is behind the eye).
+    pub figure_pt: Option<[f32; 4]>,
+    /// The single 3-D view's rectangle, points `[x, y, w, h]`.
+    pub view_pt: [f32; 4],
 }
 
 /// `track`: the target recording the figure follows.
@@ -401,6 +406,8 @@ impl State {
                 plots_button_pt: lab.layout.plots_button_pt,
                 widgets_pt: lab.layout.widgets_pt,
                 popup_open: lab.layout.popup_open,
+                figure_pt: lab.layout.figure_pt,
+                view_pt: lab.layout.view_pt,
             },
             video: VideoState {
                 recording: lab.video.recording,

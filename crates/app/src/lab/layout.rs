@@ -44,6 +44,12 @@ pub struct Layout {
     pub widgets_pt: WidgetRects,
     /// Whether a popup (a combo box's list) is open.
     pub popup_open: bool,
+    /// The single view's figure (its box, the trunk and a box near it
+    /// included) on screen, points `[x, y, w, h]` (`None` in a comparison
+    /// or where a corner is behind the eye).
+    pub figure_pt: Option<[f32; 4]>,
+    /// The single 3-D view's rectangle, points `[x, y, w, h]`.
+    pub view_pt: [f32; 4],
 }
 
 /// Rectangles of a few widgets as drawn, points `[x, y, w, h]`.
@@ -83,6 +89,8 @@ impl Default for Layout {
             trunk_pt: None,
             widgets_pt: WidgetRects::default(),
             popup_open: false,
+            figure_pt: None,
+            view_pt: [0.0; 4],
         }
     }
 }

@@ -109,6 +109,7 @@ impl Lab {
             let rect = match &self.compare {
                 Some(compare) => {
                     self.layout.trunk_pt = None;
+                    self.layout.figure_pt = None;
                     let labels: Vec<String> = compare
                         .views()
                         .iter()
@@ -154,6 +155,12 @@ impl Lab {
                     self.layout.trunk_pt = trunk
                         .and_then(|(p, _)| viewport::screen_point(&self.camera, response.rect, p))
                         .map(|at| [at.x, at.y]);
+                    self.layout.figure_pt = self
+                        .stage
+                        .scene
+                        .bounds()
+                        .and_then(|b| figure_on_screen(&self.camera, response.rect, &b));
+                    self.layout.view_pt = crate::lab::layout::rect_pt(response.rect);
                     if let Some(dv) = pushed
                         && let Err(error) = self.push(dv)
                     {
@@ -359,6 +366,39 @@ impl Lab {
             self.single_step();
         }
     }
+}
+
+/// The screen rectangle, points `[x, y, w, h]`, around the corners of the
+/// figure's box `bounds` seen by `camera` in the view `rect` (`None` when a
+/// corner is behind the eye).
+fn figure_on_screen(
+    camera: &crate::render::camera::Camera,
+    rect: egui::Rect,
+    bounds: &crate::render::scene::Bounds,
+) -> Option<[f32; 4]> {
+    let mut screen = egui::Rect::NOTHING;
+    for i in 0..8 {
+        let corner = glam::DVec3::new(
+            if i & 1 == 0 {
+                bounds.min.x
+            } else {
+                bounds.max.x
+            },
+            if i & 2 == 0 {
+                bounds.min.y
+            } else {
+                bounds.max.y
+            },
+            if i & 4 == 0 {
+                bounds.min.z
+            } else {
+                bounds.max.z
+            },
+        );
+        let at = viewport::screen_point(camera, rect, corner.as_vec3())?;
+        screen.extend_with(at);
+    }
+    Some(crate::lab::layout::rect_pt(screen))
 }
 
 /// A phone-bar button that opens a drawer: whether it was clicked, and its
