@@ -162,17 +162,18 @@ impl Claim {
             m != self.method && (self.among.is_empty() || self.among.contains(&m))
         };
         let own_view = views.iter().find(|v| v.method == self.method);
-        let rivals: Vec<&CompareView> = views.iter().filter(|v| in_claim(v.method)).collect();
+        let rivals = || views.iter().filter(|v| in_claim(v.method));
+        let count = rivals().count();
         let mut checked = Checked {
             verdict: Verdict::NotInRun,
             own: None,
             rival: None,
-            compared: rivals.len() + usize::from(own_view.is_some()),
+            compared: count + usize::from(own_view.is_some()),
         };
         let Some(own_view) = own_view else {
             return checked;
         };
-        if rivals.is_empty() {
+        if count == 0 {
             return checked;
         }
         checked.verdict = Verdict::NotMeasured;
@@ -189,7 +190,7 @@ impl Claim {
             Rank::Least => a < b,
         };
         let mut rival: Option<(CompareMethod, f64)> = None;
-        for view in rivals {
+        for view in rivals() {
             let Some(value) = self.figure.of(view) else {
                 return checked;
             };
