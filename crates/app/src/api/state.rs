@@ -147,6 +147,9 @@ pub struct LayoutState {
     pub widgets_pt: crate::lab::layout::WidgetRects,
     /// Whether a popup (a combo box's list) is open.
     pub popup_open: bool,
+    /// The open preset menu's entries by preset name, points `[x, y, w, h]`
+    /// (empty while it is closed).
+    pub preset_menu_pt: crate::lab::layout::MenuRects,
     /// The single view's figure on screen, points `[x, y, w, h]` (`null` in
     /// a comparison or where a corner is behind the eye).
     pub figure_pt: Option<[f32; 4]>,
@@ -406,6 +409,7 @@ impl State {
                 plots_button_pt: lab.layout.plots_button_pt,
                 widgets_pt: lab.layout.widgets_pt,
                 popup_open: lab.layout.popup_open,
+                preset_menu_pt: lab.layout.preset_menu_pt.clone(),
                 figure_pt: lab.layout.figure_pt,
                 view_pt: lab.layout.view_pt,
             },

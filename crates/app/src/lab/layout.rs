@@ -44,6 +44,8 @@ pub struct Layout {
     pub widgets_pt: WidgetRects,
     /// Whether a popup (a combo box's list) is open.
     pub popup_open: bool,
+    /// The open preset menu's entries as drawn.
+    pub preset_menu_pt: MenuRects,
     /// The single view's figure (its box, the trunk and a box near it
     /// included) on screen, points `[x, y, w, h]` (`None` in a comparison
     /// or where a corner is behind the eye).
@@ -63,6 +65,10 @@ pub struct WidgetRects {
     /// The preset combo box.
     pub preset_combo: [f32; 4],
 }
+
+/// The open preset menu's entries, by preset name, points `[x, y, w, h]`
+/// (empty while the menu is closed).
+pub type MenuRects = std::collections::BTreeMap<&'static str, [f32; 4]>;
 
 /// `rect` as `[x, y, w, h]`.
 #[must_use]
@@ -89,6 +95,7 @@ impl Default for Layout {
             trunk_pt: None,
             widgets_pt: WidgetRects::default(),
             popup_open: false,
+            preset_menu_pt: MenuRects::new(),
             figure_pt: None,
             view_pt: [0.0; 4],
         }

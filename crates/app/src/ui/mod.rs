@@ -30,6 +30,7 @@ impl Lab {
     /// Shows the whole lab in `ui` and advances the animation by the frame's time.
     pub fn ui(&mut self, ui: &mut egui::Ui) {
         self.layout.widgets_pt = crate::lab::layout::WidgetRects::default();
+        self.layout.preset_menu_pt.clear();
         self.apply_theme(ui);
         let dt = ui.input(|i| f64::from(i.stable_dt));
         self.note_frame_time(dt);

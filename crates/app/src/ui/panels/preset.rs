@@ -82,6 +82,7 @@ fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
         title.to_owned()
     };
     let mut chosen = None;
+    let mut entries = crate::lab::layout::MenuRects::new();
     let combo = egui::ComboBox::from_label("Preset")
         .selected_text(shown)
         .height(480.0)
@@ -90,11 +91,11 @@ fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
                 ui.label(egui::RichText::new(engine_label(engine)).strong());
                 for info in bundled_catalog().iter().filter(|i| i.engine == engine) {
                     let title = crate::words::preset_title(info.name);
-                    if ui
+                    let entry = ui
                         .selectable_label(!edited && info.name == current, title)
-                        .on_hover_text(format!("{} ({})", info.description, info.name))
-                        .clicked()
-                    {
+                        .on_hover_text(format!("{} ({})", info.description, info.name));
+                    entries.insert(info.name, crate::lab::layout::rect_pt(entry.rect));
+                    if entry.clicked() {
                         chosen = Some(info.name);
                     }
                 }
@@ -103,6 +104,7 @@ fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
         .response
         .on_hover_text("The creature and its scenario: the bundled presets, by engine");
     lab.layout.widgets_pt.preset_combo = crate::lab::layout::rect_pt(combo.rect);
+    lab.layout.preset_menu_pt = entries;
     if let Some(name) = chosen
         && (name != current || edited)
         && let Err(error) = lab.set_preset(name)
