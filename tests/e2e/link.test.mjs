@@ -30,7 +30,10 @@ function settled(s) {
   for (const key of LIVE) delete out[key];
   // The side-by-side comparison's live figures: its metrics and the plots' shared y-range, which
   // follows the errors measured so far (its configuration must match).
-  if (out.compare) out.compare = { ...out.compare, metrics: undefined, plot_error_max_mm: undefined };
+  // The notes' verdicts are computed from those figures too.
+  if (out.compare) {
+    out.compare = { ...out.compare, metrics: undefined, plot_error_max_mm: undefined, notice: undefined, claims: undefined };
+  }
   return out;
 }
 

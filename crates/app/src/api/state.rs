@@ -147,6 +147,8 @@ pub struct LayoutState {
     pub widgets_pt: crate::lab::layout::WidgetRects,
     /// Whether a popup (a combo box's list) is open.
     pub popup_open: bool,
+    /// Clicks the preset combo box has taken since the page opened.
+    pub preset_combo_clicks: u32,
     /// The open preset menu's entries by preset name, points `[x, y, w, h]`
     /// (empty while it is closed).
     pub preset_menu_pt: crate::lab::layout::MenuRects,
@@ -409,6 +411,7 @@ impl State {
                 plots_button_pt: lab.layout.plots_button_pt,
                 widgets_pt: lab.layout.widgets_pt,
                 popup_open: lab.layout.popup_open,
+                preset_combo_clicks: lab.layout.preset_combo_clicks,
                 preset_menu_pt: lab.layout.preset_menu_pt.clone(),
                 figure_pt: lab.layout.figure_pt,
                 view_pt: lab.layout.view_pt,

@@ -44,6 +44,8 @@ pub struct Layout {
     pub widgets_pt: WidgetRects,
     /// Whether a popup (a combo box's list) is open.
     pub popup_open: bool,
+    /// Clicks the preset combo box has taken since the page opened.
+    pub preset_combo_clicks: u32,
     /// The open preset menu's entries as drawn.
     pub preset_menu_pt: MenuRects,
     /// The single view's figure (its box, the trunk and a box near it
@@ -95,6 +97,7 @@ impl Default for Layout {
             trunk_pt: None,
             widgets_pt: WidgetRects::default(),
             popup_open: false,
+            preset_combo_clicks: 0,
             preset_menu_pt: MenuRects::new(),
             figure_pt: None,
             view_pt: [0.0; 4],

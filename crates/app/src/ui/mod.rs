@@ -111,6 +111,7 @@ impl Lab {
                 Some(compare) => {
                     self.layout.trunk_pt = None;
                     self.layout.figure_pt = None;
+                    self.layout.view_pt = [0.0; 4];
                     let labels: Vec<String> = compare
                         .views()
                         .iter()

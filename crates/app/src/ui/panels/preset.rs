@@ -104,6 +104,9 @@ fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
         .response
         .on_hover_text("The creature and its scenario: the bundled presets, by engine");
     lab.layout.widgets_pt.preset_combo = crate::lab::layout::rect_pt(combo.rect);
+    if combo.clicked() {
+        lab.layout.preset_combo_clicks += 1;
+    }
     lab.layout.preset_menu_pt = entries;
     if let Some(name) = chosen
         && (name != current || edited)
