@@ -53,6 +53,17 @@ const fn claim(
 
 use CompareMethod::{Dls, Pinv, Sdls, Transpose};
 
+/// §5.3 on the pseudoinverse, for the script and a recording alike.
+const PINV_OSCILLATES: NoticeLine = claim(
+    "On the pseudoinverse: \"the unreachable target positions caused the rigid body to \
+     oscillate\" — more oscillation than DLS and SDLS.",
+    "She 2006 §5.3",
+    Figure::Oscillation,
+    Pinv,
+    Rank::Most,
+    &[Dls, Sdls],
+);
+
 const SCRIPT: &[NoticeLine] = &[
     line(
         "In the walk the foot targets are always within reach and the hand targets never are \
@@ -67,15 +78,7 @@ const SCRIPT: &[NoticeLine] = &[
         Rank::Most,
         &[],
     ),
-    claim(
-        "On the pseudoinverse: \"the unreachable target positions caused the rigid body to \
-         oscillate\" — more oscillation than DLS and SDLS.",
-        "She 2006 §5.3",
-        Figure::Oscillation,
-        Pinv,
-        Rank::Most,
-        &[Dls, Sdls],
-    ),
+    PINV_OSCILLATES,
     claim(
         "DLS \"worked substantially better than either the Jacobian Transpose Method or the \
          Pseudoinverse Method\" — a smaller mean error than those two.",
@@ -147,15 +150,7 @@ const RECORDED: &[NoticeLine] = &[
          its limb's reach it turns orange.",
         "gaitlab",
     ),
-    claim(
-        "On the pseudoinverse the thesis found \"the unreachable target positions caused the \
-         rigid body to oscillate\" — more oscillation than DLS and SDLS.",
-        "She 2006 §5.3",
-        Figure::Oscillation,
-        Pinv,
-        Rank::Most,
-        &[Dls, Sdls],
-    ),
+    PINV_OSCILLATES,
     claim(
         "SDLS \"has the best performance for both reachable target positions and unreachable \
          target positions\" — on unreachable ones, the smallest error.",
