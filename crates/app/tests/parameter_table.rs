@@ -30,6 +30,8 @@ const NOT_PARAMETERS: &[&str] = &[
     "reset",
     "push_mps",
     "step",
+    "iterate",
+    "drag_target",
     "playback_rate",
     "step_back_s",
     "rewind_to_frame",

@@ -9,12 +9,13 @@
 use gaitlab_core::Skeleton;
 use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
 use gaitlab_core::export::TargetTrack;
-use gaitlab_core::ik::{IkOptions, Method, Targets};
+use gaitlab_core::ik::{IkOptions, IkSolver, Method, Targets};
 use gaitlab_core::pose::Pose;
 use gaitlab_core::preset::{
     LabAddition, ik_lab_additions, poda_lab_additions, thesis_lab_additions,
 };
-use gaitlab_motion::{PodaDriver, ThesisDriver, TrackDriver};
+use gaitlab_motion::held::HeldTargets;
+use gaitlab_motion::{IterationRecord, IterationStep, PodaDriver, ThesisDriver, TrackDriver};
 use gaitlab_physics::PhysicsDriver;
 use glam::DVec3;
 
@@ -173,6 +174,59 @@ impl AnyDriver {
             AnyDriver::Track(driver) => driver.set_method(method),
             _ => {}
         }
+    }
+
+    /// Holds effector `e`'s target at the world point `at` (`Some`) or lets
+    /// go of it (`None`) — the lab's grab and pull, for the thesis' script
+    /// ([`ThesisDriver::hold_target`]). `false` when the driver has no
+    /// script targets to hold (PODA, physics, a recording) or `e` or `at`
+    /// is unusable.
+    pub fn hold_target(&mut self, e: usize, at: Option<DVec3>) -> bool {
+        self.thesis_mut()
+            .is_some_and(|driver| driver.hold_target(e, at))
+    }
+
+    /// Pins or unpins effector `e`'s target ([`ThesisDriver::pin_target`]);
+    /// `false` without the thesis' script or for an unknown effector.
+    pub fn pin_target(&mut self, e: usize, on: bool) -> bool {
+        match self.thesis_mut() {
+            Some(driver) if e < driver.skeleton().effector_count() => {
+                driver.pin_target(e, on);
+                true
+            }
+            _ => false,
+        }
+    }
+
+    /// The held and pinned targets, for the thesis' script.
+    #[must_use]
+    pub fn held_targets(&self) -> Option<&HeldTargets> {
+        self.thesis().map(ThesisDriver::held)
+    }
+
+    /// One IK iteration of the frame to come ([`ThesisDriver::step_iteration`]);
+    /// `None` for other drivers or a bad `dt`.
+    pub fn step_iteration(&mut self, dt: f64) -> Option<IterationStep> {
+        self.thesis_mut()?.step_iteration(dt)
+    }
+
+    /// One frame's IK iterations without advancing time ([`ThesisDriver::settle`]);
+    /// `false` for other drivers.
+    pub fn settle(&mut self) -> bool {
+        self.thesis_mut().map(ThesisDriver::settle).is_some()
+    }
+
+    /// The iterations of the frame last run, for the thesis' script (empty
+    /// for other drivers).
+    #[must_use]
+    pub fn iteration_log(&self) -> &[IterationRecord] {
+        self.thesis().map_or(&[], ThesisDriver::iteration_log)
+    }
+
+    /// The IK solver of the thesis' script, as its last iteration left it.
+    #[must_use]
+    pub fn ik_solver(&self) -> Option<&IkSolver> {
+        self.thesis().map(ThesisDriver::solver)
     }
 
     /// The PODA driver, when the engine is `poda`.

@@ -7,6 +7,7 @@
 
 use gaitlab_core::driver::{IkFrameReport, IkMetrics};
 use gaitlab_core::ik::{IkOptions, IkSolver, Targets};
+use gaitlab_core::preset::MAX_ITERATIONS_PER_FRAME;
 use gaitlab_core::{Kinematics, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
 
@@ -20,6 +21,18 @@ pub(crate) struct IkStage {
     pub(crate) metrics: IkMetrics,
     /// Joint values at the start of the frame, restored if the solve goes non-finite.
     last_good: Vec<f64>,
+    /// This frame's iterations so far (capacity for the most a frame may have).
+    log: Vec<IterationRecord>,
+}
+
+/// One IK iteration's figures, for the Jacobian panel.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct IterationRecord {
+    /// The largest effector error when the iteration started, metres.
+    pub error_before_m: f64,
+    /// ‖Δθ‖ of the step it took (Euclidean, radians and metres mixed as
+    /// the joints are).
+    pub step_norm: f64,
 }
 
 impl IkStage {
@@ -35,6 +48,7 @@ impl IkStage {
             report: IkFrameReport::new(k),
             metrics: IkMetrics::new(skeleton),
             last_good: vec![0.0; skeleton.joint_count()],
+            log: Vec::with_capacity(MAX_ITERATIONS_PER_FRAME),
         }
     }
 
@@ -92,7 +106,9 @@ impl IkStage {
     /// Runs `iterations` IK iterations on `values` toward the current targets
     /// without measuring or recording; if the joint values go non-finite they
     /// are restored to their starting values. Call [`IkStage::finish`] with the
-    /// pose the figure shows to close the frame.
+    /// pose the figure shows to close the frame. The same as
+    /// [`IkStage::begin`], `iterations` × [`IkStage::iterate_once`] and
+    /// [`IkStage::end`], which the one-iteration step runs one at a time.
     pub(crate) fn iterate(
         &mut self,
         skeleton: &Skeleton,
@@ -100,18 +116,59 @@ impl IkStage {
         values: &mut [f64],
         iterations: usize,
     ) {
-        self.last_good.copy_from_slice(values);
-        let mut clamped = 0;
+        self.begin(values);
         for _ in 0..iterations {
-            let status = self.solver.iterate(skeleton, root, values, &self.targets);
-            clamped = status.clamped_joints;
+            self.iterate_once(skeleton, root, values);
         }
+        self.end(values, iterations);
+    }
+
+    /// Opens a frame's iterations: remembers `values` to restore them if the
+    /// solve goes non-finite.
+    pub(crate) fn begin(&mut self, values: &[f64]) {
+        self.last_good.copy_from_slice(values);
+        self.report.clamped_joints = 0;
+        self.log.clear();
+        // A clone's log has lost its capacity: reserved again once.
+        self.log.reserve_exact(MAX_ITERATIONS_PER_FRAME);
+    }
+
+    /// One IK iteration on `values` toward the current targets.
+    pub(crate) fn iterate_once(
+        &mut self,
+        skeleton: &Skeleton,
+        root: &RootTransform,
+        values: &mut [f64],
+    ) {
+        let status = self.solver.iterate(skeleton, root, values, &self.targets);
+        self.report.clamped_joints = status.clamped_joints;
+        if self.log.len() < MAX_ITERATIONS_PER_FRAME {
+            self.log.push(IterationRecord {
+                error_before_m: status.max_error_m,
+                step_norm: self
+                    .solver
+                    .last_step()
+                    .iter()
+                    .map(|x| x * x)
+                    .sum::<f64>()
+                    .sqrt(),
+            });
+        }
+    }
+
+    /// The iterations of the frame last run (or still open).
+    pub(crate) fn iteration_log(&self) -> &[IterationRecord] {
+        &self.log
+    }
+
+    /// Closes a frame's `iterations` iterations: restores the starting values
+    /// if they went non-finite and notes the iteration count.
+    pub(crate) fn end(&mut self, values: &mut [f64], iterations: usize) {
         let restored = !values.iter().all(|v| v.is_finite());
         if restored {
             values.copy_from_slice(&self.last_good);
         }
         self.report.iterations = iterations;
-        self.report.clamped_joints = clamped;
         self.report.restored = restored;
     }
 

@@ -6,7 +6,9 @@
 //! read the [`Pose`](gaitlab_core::Pose), the targets and the IK metrics.
 
 mod error;
+pub mod held;
 mod ik_stage;
+pub use ik_stage::IterationRecord;
 pub mod poda;
 mod script;
 pub mod stretch;
@@ -16,5 +18,5 @@ mod track;
 pub use error::DriverError;
 pub use poda::PodaDriver;
 pub use script::{Limb, ScriptSample, ThesisScript};
-pub use thesis_driver::{MAX_ITERATIONS_PER_FRAME, ThesisDriver, validate_params};
+pub use thesis_driver::{IterationStep, MAX_ITERATIONS_PER_FRAME, ThesisDriver, validate_params};
 pub use track::{FnTargets, TargetSource, TrackDriver, TrackOptions};

@@ -8,14 +8,15 @@
 use std::sync::Arc;
 
 use gaitlab_core::driver::{Driver, IkFrameReport, IkMetrics};
-use gaitlab_core::ik::{IkOptions, JointWeight, Method, Targets};
+use gaitlab_core::ik::{IkOptions, IkSolver, JointWeight, Method, Targets};
 use gaitlab_core::preset::Creature;
 use gaitlab_core::preset::thesis::{EffectorRoles, ThesisMode, ThesisParams, WoundForm};
 use gaitlab_core::{Kinematics, Pose, RootTransform, Skeleton};
 use glam::{DMat3, DVec3};
 
 use crate::error::DriverError;
-use crate::ik_stage::IkStage;
+use crate::held::HeldTargets;
+use crate::ik_stage::{IkStage, IterationRecord};
 use crate::script::{Limb, ScriptSample, ThesisScript};
 use crate::stretch::{LimbReach, StretchOptions};
 
@@ -64,6 +65,20 @@ pub struct ThesisDriver {
     transition_start: f64,
     /// The singularity scenario, when on: its options and each limb's reach.
     stretch: Option<(StretchOptions, [Option<LimbReach>; 4])>,
+    /// Targets held or pinned by hand (the lab's grab and pull).
+    held: HeldTargets,
+    /// Iterations done of a frame opened by [`ThesisDriver::step_iteration`]
+    /// (0: none open), and that frame's length, seconds.
+    open_frame: (usize, f64),
+}
+
+/// Where a one-iteration step left the frame it belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct IterationStep {
+    /// Iterations of the frame done, this one included (1 to `of`).
+    pub done: usize,
+    /// Iterations the frame has.
+    pub of: usize,
 }
 
 impl ThesisDriver {
@@ -89,6 +104,7 @@ impl ThesisDriver {
             },
         );
         let stage = IkStage::new(&skeleton, options);
+        let skeleton_effectors = skeleton.effector_count();
         let sample = ThesisScript::new(&params, mode).at_phase(0.0);
         let mut driver = Self {
             pose: Pose {
@@ -112,6 +128,8 @@ impl ThesisDriver {
             transition_from: mode,
             transition_start: 0.0,
             stretch: None,
+            held: HeldTargets::new(skeleton_effectors),
+            open_frame: (0, 0.0),
         };
         driver.apply_weights();
         driver.reset();
@@ -186,6 +204,13 @@ impl ThesisDriver {
     /// Replaces the IK options (take effect at the next iteration).
     pub fn set_options(&mut self, options: IkOptions) {
         *self.stage.solver.options_mut() = options;
+    }
+
+    /// The IK solver, as its last iteration left it (its Jacobian, error
+    /// and step: what the Jacobian panel reads).
+    #[must_use]
+    pub fn solver(&self) -> &IkSolver {
+        &self.stage.solver
     }
 
     /// Switches the IK method (She 2006 §6.2 method panel).
@@ -308,6 +333,133 @@ impl ThesisDriver {
             let relative = self.rest_offset[e].lerp(cycle, blend);
             targets.position[e] = root_position + heading * relative;
         }
+        self.held
+            .apply(self.time, &self.pose.root, &mut targets.position);
+    }
+
+    /// Opens a frame of `dt` seconds: advances the clock, the cycle and the
+    /// root, places the targets and relaxes the posture.
+    fn begin_frame(&mut self, dt: f64) {
+        let (omega, speed) = self.rates();
+        self.time += dt;
+        self.phase = (self.phase + omega * dt) % self.script().phase_period();
+        self.distance += speed * start_blend(self.time, self.params.start_ramp_s) * dt;
+        self.place();
+        IkStage::relax(
+            &self.skeleton,
+            &mut self.ik_joints,
+            self.params.posture_gain,
+        );
+        self.stage.begin(&self.ik_joints);
+    }
+
+    /// Closes a frame of `dt` seconds after its iterations: shows the IK's
+    /// angles and records the frame's figures.
+    fn end_frame(&mut self, dt: f64) {
+        self.stage
+            .end(&mut self.ik_joints, self.params.iterations_per_frame);
+        self.open_frame = (0, 0.0);
+        self.show();
+        self.stage
+            .finish(&self.skeleton, &self.pose.root, &self.pose.joints, dt);
+    }
+
+    /// One IK iteration: the first of the next frame of `dt` seconds (which
+    /// it opens), or the next of a frame already open. The frame closes —
+    /// its figures recorded — with its last iteration, so `of` calls are
+    /// bit-identical to one [`Driver::step`]; between them the figure shows
+    /// each iteration's angles. `None` for a bad `dt` with no frame open.
+    pub fn step_iteration(&mut self, dt: f64) -> Option<IterationStep> {
+        let of = self.params.iterations_per_frame;
+        if self.open_frame.0 == 0 {
+            if !(dt.is_finite() && dt > 0.0) {
+                return None;
+            }
+            self.begin_frame(dt);
+            self.open_frame = (0, dt);
+        }
+        let (done, length) = self.open_frame;
+        if done < of {
+            self.stage
+                .iterate_once(&self.skeleton, &self.pose.root, &mut self.ik_joints);
+        }
+        let done = done + 1;
+        if done >= of {
+            self.end_frame(length);
+        } else {
+            self.open_frame = (done, length);
+            self.show();
+            self.stage
+                .measure(&self.skeleton, &self.pose.root, &self.pose.joints);
+        }
+        Some(IterationStep {
+            done: done.min(of.max(1)),
+            of,
+        })
+    }
+
+    /// The iterations of the frame last run (or still open): each one's
+    /// error before it and ‖Δθ‖.
+    #[must_use]
+    pub fn iteration_log(&self) -> &[IterationRecord] {
+        self.stage.iteration_log()
+    }
+
+    /// Whether a one-iteration step has opened a frame not yet closed.
+    #[must_use]
+    pub fn frame_open(&self) -> bool {
+        self.open_frame.0 > 0
+    }
+
+    /// Holds effector `e`'s target at the world point `at` (`Some`) or lets
+    /// go of it (`None`; a pinned target stays). The targets move at once;
+    /// the IK follows as frames run, or at once with [`ThesisDriver::settle`].
+    /// Returns whether `e` and `at` were usable.
+    pub fn hold_target(&mut self, e: usize, at: Option<DVec3>) -> bool {
+        if e >= self.skeleton.effector_count() {
+            return false;
+        }
+        let took = match at {
+            Some(at) => self.held.hold(e, at, &self.pose.root),
+            None => {
+                self.held.release(e, self.time);
+                true
+            }
+        };
+        self.place();
+        took
+    }
+
+    /// Pins (or unpins) effector `e`'s target where it is held: a pinned
+    /// target stays after the hand lets go.
+    pub fn pin_target(&mut self, e: usize, on: bool) {
+        self.held.pin(e, on, self.time);
+        self.place();
+    }
+
+    /// The held and pinned targets.
+    #[must_use]
+    pub fn held(&self) -> &HeldTargets {
+        &self.held
+    }
+
+    /// A paused figure reaching for moved targets: one frame's iterations at
+    /// the current time, without advancing the clock or recording figures
+    /// (the page runs this while a target is dragged with time stopped).
+    pub fn settle(&mut self) {
+        if self.open_frame.0 > 0 {
+            return;
+        }
+        self.stage.begin(&self.ik_joints);
+        for _ in 0..self.params.iterations_per_frame {
+            self.stage
+                .iterate_once(&self.skeleton, &self.pose.root, &mut self.ik_joints);
+        }
+        self.stage
+            .end(&mut self.ik_joints, self.params.iterations_per_frame);
+        self.show();
+        self.stage
+            .measure(&self.skeleton, &self.pose.root, &self.pose.joints);
     }
 
     /// Whether the wounded weights act on the shown angles this frame.
@@ -345,25 +497,22 @@ impl Driver for ThesisDriver {
         if !(dt.is_finite() && dt > 0.0) {
             return;
         }
-        let (omega, speed) = self.rates();
-        self.time += dt;
-        self.phase = (self.phase + omega * dt) % self.script().phase_period();
-        self.distance += speed * start_blend(self.time, self.params.start_ramp_s) * dt;
-        self.place();
-        IkStage::relax(
-            &self.skeleton,
-            &mut self.ik_joints,
-            self.params.posture_gain,
-        );
-        self.stage.iterate(
-            &self.skeleton,
-            &self.pose.root,
-            &mut self.ik_joints,
-            self.params.iterations_per_frame,
-        );
-        self.show();
-        self.stage
-            .finish(&self.skeleton, &self.pose.root, &self.pose.joints, dt);
+        if self.open_frame.0 > 0 {
+            // Finish the frame a one-iteration step opened.
+            let (done, length) = self.open_frame;
+            for _ in done..self.params.iterations_per_frame {
+                self.stage
+                    .iterate_once(&self.skeleton, &self.pose.root, &mut self.ik_joints);
+            }
+            self.end_frame(length);
+            return;
+        }
+        self.begin_frame(dt);
+        for _ in 0..self.params.iterations_per_frame {
+            self.stage
+                .iterate_once(&self.skeleton, &self.pose.root, &mut self.ik_joints);
+        }
+        self.end_frame(dt);
     }
 
     fn time(&self) -> f64 {
@@ -380,6 +529,8 @@ impl Driver for ThesisDriver {
         for (value, joint) in self.ik_joints.iter_mut().zip(self.skeleton.joints()) {
             *value = joint.rest;
         }
+        self.open_frame = (0, 0.0);
+        self.held.reset();
         self.show();
         self.place();
         self.stage.clear();

@@ -187,6 +187,14 @@ pub struct Command {
     pub reset: Option<bool>,
     /// true: one frame forward.
     pub step: Option<bool>,
+    /// true: pause and run one IK iteration (the first of the next frame,
+    /// or the next of a frame already opened; the frame's last iteration
+    /// closes it). The IK engine's thesis script only.
+    pub iterate: Option<bool>,
+    /// Hold, let go of or pin an effector's target in every figure on
+    /// screen (the 3-D view's grab and pull).
+    #[serde(default, deserialize_with = "object")]
+    pub drag_target: Option<crate::grab::DragTargetCommand>,
     /// Playback rate, simulated seconds per wall second, [0.1, 2].
     pub playback_rate: Option<f64>,
     /// Pause and step back this many seconds of simulated time, [0, 10]
@@ -406,6 +414,12 @@ impl Lab {
         }
         if c.step == Some(true) {
             self.single_step();
+        }
+        if c.iterate == Some(true) {
+            self.step_iteration().map_err(|e| format!("iterate: {e}"))?;
+        }
+        if let Some(drag) = &c.drag_target {
+            self.drag_target(drag)?;
         }
         if let Some(seconds) = c.step_back_s {
             let seconds = range("step_back_s", seconds, 0.0, crate::lab::rewind::REWIND_S)?;

@@ -38,6 +38,19 @@ pub struct EffectorState {
     /// How far this frame's target lies beyond the limb's reach, metres
     /// (negative: within reach; see docs/ik-metrics.md).
     pub out_of_reach_m: Option<f64>,
+    /// Where the effector is, world `[x, y, z]` metres.
+    pub position_m: [f64; 3],
+    /// Where its target is, world metres (null without targets).
+    pub target_m: Option<[f64; 3]>,
+    /// The target on screen, `[x, y]` points (null off screen or without one).
+    pub target_pt: Option<[f32; 2]>,
+    /// Where the limb's reach is measured from (its first joint), world
+    /// metres: a target farther than the limb's length from it is out of reach.
+    pub reach_anchor_m: [f64; 3],
+    /// Whether the target is held (by the hand, `drag_target` or a pin).
+    pub held: bool,
+    /// Whether the target is pinned.
+    pub pinned: bool,
 }
 
 /// `views[0]`: the single view's method, errors, box on screen and run metrics.
@@ -289,6 +302,10 @@ pub struct State {
     /// The note shown about the running preset: the deprecated values it
     /// uses, which still run as it was made.
     pub notice: Option<String>,
+    /// The Jacobian panel's figures: each view's singular values, condition
+    /// number and gains, and the last frame's iterations (null outside the
+    /// IK engine's script).
+    pub jacobian: Option<crate::jacobian::JacobianState>,
 }
 
 impl State {
@@ -298,6 +315,8 @@ impl State {
         let skeleton = &lab.session.creature.skeleton;
         let report = lab.stage.driver.ik_report();
         let metrics = lab.stage.driver.ik_metrics();
+        let targets = lab.stage.driver.targets();
+        let held = lab.stage.driver.held_targets();
         let effectors = skeleton
             .effectors()
             .iter()
@@ -308,6 +327,25 @@ impl State {
                 mean_error_m: metrics.and_then(|m| m.mean_error_m(e)),
                 max_error_m: metrics.and_then(|m| m.max_error_m(e)),
                 out_of_reach_m: report.and_then(|r| r.out_of_reach_m.get(e).copied()),
+                position_m: lab
+                    .stage
+                    .driver
+                    .effector_positions()
+                    .get(e)
+                    .map_or([f64::NAN; 3], |p| p.to_array()),
+                target_m: targets
+                    .and_then(|t| t.position.get(e))
+                    .map(|p| p.to_array()),
+                target_pt: lab.layout.target_pt.get(e).copied().flatten(),
+                reach_anchor_m: skeleton
+                    .limb(e)
+                    .anchor(
+                        &lab.stage.kinematics.joint_anchor,
+                        &lab.stage.kinematics.joint_position,
+                    )
+                    .to_array(),
+                held: held.is_some_and(|h| h.held_at(e).is_some()),
+                pinned: held.is_some_and(|h| h.is_pinned(e)),
             })
             .collect();
         let settings = &lab.session.settings;
@@ -433,6 +471,10 @@ impl State {
                 duration_s: t.targets.end_time() - t.targets.start_time(),
             }),
             notice: lab.session.notice.clone(),
+            jacobian: lab.driver().ik_solver().map(|_| {
+                let views = lab.comparison().map_or(1, |c| c.views().len());
+                crate::jacobian::JacobianState::of(lab.jacobian(), views)
+            }),
         }
     }
 }

@@ -65,6 +65,18 @@ impl CompareMethod {
         }
     }
 
+    /// The configuration running `method` plainly (no centering).
+    #[must_use]
+    pub fn of(method: Method) -> Self {
+        match method {
+            Method::Transpose => CompareMethod::Transpose,
+            Method::Pinv => CompareMethod::Pinv,
+            Method::Dls => CompareMethod::Dls,
+            Method::Sdls => CompareMethod::Sdls,
+            Method::Ccd => CompareMethod::Ccd,
+        }
+    }
+
     /// Parses [`CompareMethod::name`].
     #[must_use]
     pub fn parse(name: &str) -> Option<Self> {

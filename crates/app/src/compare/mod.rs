@@ -177,15 +177,24 @@ impl Comparison {
             if let (Some(started), Some(clock)) = (started, clock) {
                 view.metrics.wall_us += (clock() - started) * 1e3;
             }
-            let stage = &mut view.stage;
-            view.metrics.iterations += stage.driver.ik_report().map_or(0, |r| r.iterations as u64);
-            let skeleton = stage.driver.skeleton();
-            view.metrics.record(skeleton, &stage.driver.pose().joints);
-            let error = stage.driver.ik_report().map_or(0.0, |r| r.max_error_m);
-            stage
-                .history
-                .push(stage.driver.time(), std::iter::once(error));
+            view.record_frame();
         }
+    }
+
+    /// One IK iteration in every view, in lock step (see
+    /// [`gaitlab_engine::AnyDriver::step_iteration`]); a view whose frame the
+    /// iteration closes records it as [`Comparison::step`] does. The first
+    /// view's step, `None` when the views cannot step by iteration.
+    pub fn step_iteration(&mut self, dt: f64) -> Option<gaitlab_engine::IterationStep> {
+        let mut first = None;
+        for view in &mut self.views {
+            let step = view.stage.step_iteration(dt)?;
+            if step.done >= step.of {
+                view.record_frame();
+            }
+            first.get_or_insert(step);
+        }
+        first
     }
 
     /// Back to time 0 with cleared figures.

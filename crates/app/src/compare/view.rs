@@ -40,6 +40,18 @@ impl CompareView {
         &self.metrics
     }
 
+    /// After a frame: the view's figures and its error history.
+    pub(crate) fn record_frame(&mut self) {
+        let stage = &mut self.stage;
+        self.metrics.iterations += stage.driver.ik_report().map_or(0, |r| r.iterations as u64);
+        let skeleton = stage.driver.skeleton();
+        self.metrics.record(skeleton, &stage.driver.pose().joints);
+        let error = stage.driver.ik_report().map_or(0.0, |r| r.max_error_m);
+        stage
+            .history
+            .push(stage.driver.time(), std::iter::once(error));
+    }
+
     /// Mean over effectors of each effector's mean error since the reset, metres.
     #[must_use]
     pub fn mean_error_m(&self) -> f64 {

@@ -54,6 +54,8 @@ pub struct Layout {
     pub figure_pt: Option<[f32; 4]>,
     /// The single 3-D view's rectangle, points `[x, y, w, h]`.
     pub view_pt: [f32; 4],
+    /// Each effector's target on screen in the first pane, `[x, y]` points.
+    pub target_pt: Vec<Option<[f32; 2]>>,
 }
 
 /// Rectangles of a few widgets as drawn, points `[x, y, w, h]`.
@@ -101,6 +103,7 @@ impl Default for Layout {
             preset_menu_pt: MenuRects::new(),
             figure_pt: None,
             view_pt: [0.0; 4],
+            target_pt: Vec::new(),
         }
     }
 }

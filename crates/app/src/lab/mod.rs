@@ -21,6 +21,8 @@ mod compare;
 mod editor;
 mod gait;
 mod gait_shape;
+mod grab;
+mod iteration;
 mod lambda_tradeoff;
 pub(crate) mod layout;
 mod lesson;
@@ -81,6 +83,10 @@ pub struct Lab {
     pub(crate) gait_derived: Vec<&'static str>,
     /// The link "Copy link" made last, shown for copying by hand.
     pub(crate) shown_link: Option<String>,
+    /// The hand in the 3-D view: grab and pull of IK targets.
+    pub(crate) grab: crate::grab::Grab,
+    /// The Jacobian panel's figures (singular values, gains, traces).
+    pub(crate) jacobian: crate::jacobian::JacobianProbe,
     /// The last measured λ trade-off (the Method panel's).
     pub(crate) lambda_tradeoff: Option<crate::lambda_tradeoff::LambdaTradeoff>,
     /// The graphics path drawing the view ("webgpu (…)" or "webgl2 (…)"), when known.
@@ -113,6 +119,8 @@ impl Lab {
             editor: crate::editor::PresetEditor::default(),
             gait_derived: Vec::new(),
             shown_link: None,
+            grab: crate::grab::Grab::default(),
+            jacobian: crate::jacobian::JacobianProbe::default(),
             lambda_tradeoff: None,
             backend: None,
             page_url: String::new(),
@@ -401,6 +409,8 @@ impl Lab {
                     .collect(),
             )
         };
+        self.jacobian.clear();
+        self.probe_jacobian();
         self.refresh_scene();
         self.rewind_restart();
     }
@@ -440,6 +450,7 @@ impl Lab {
             self.record_frame();
         }
         self.rewind_note();
+        self.probe_jacobian();
     }
 
     /// After a step of the single view: the plots, the take and the footprints.

@@ -98,3 +98,16 @@ impl<D: Driver> Stage<D> {
         );
     }
 }
+
+impl Stage<AnyDriver> {
+    /// One IK iteration ([`AnyDriver::step_iteration`]); the frame counter
+    /// moves when the iteration closes its frame. `None` when the driver
+    /// cannot step by iteration.
+    pub fn step_iteration(&mut self, dt: f64) -> Option<gaitlab_engine::IterationStep> {
+        let step = self.driver.step_iteration(dt)?;
+        if step.done >= step.of {
+            self.frame += 1;
+        }
+        Some(step)
+    }
+}

@@ -84,6 +84,34 @@ pub fn screen_point(camera: &Camera, rect: Rect, p: Vec3) -> Option<Pos2> {
     Projector::new(rect, camera).point(p).map(|(at, _)| at)
 }
 
+/// A tool that can take a pointer gesture in the 3-D view before the camera
+/// does (the IK engine's grab and pull).
+pub trait ViewTool {
+    /// Reads this frame's pointer on `response` over the view's `panes`
+    /// (their rectangles, in order); returns whether the tool holds the
+    /// gesture, so the camera stays still.
+    fn update(&mut self, response: &egui::Response, panes: &[Rect], camera: &Camera) -> bool;
+
+    /// Draws the tool's marks over `panes`.
+    fn paint(&self, painter: &egui::Painter, panes: &[Rect], camera: &Camera);
+}
+
+/// [`show`] with a [`ViewTool`] that may take a drag before the camera.
+pub fn show_with_tool(
+    ui: &mut egui::Ui,
+    scene: &Scene,
+    camera: &mut Camera,
+    view: &ViewOptions,
+    tool: &mut dyn ViewTool,
+) -> egui::Response {
+    let (rect, response) = allocate(ui);
+    let held = tool.update(&response, &[rect], camera);
+    steer(ui, &response, aspect(rect), scene, camera, view, !held);
+    draw(ui, rect, response.id.value(), scene, camera, view);
+    tool.paint(ui.painter(), &[rect], camera);
+    response
+}
+
 /// Shows several scenes through one shared camera, side by side: 2 panes split
 /// the space left and right, 4 make a 2 × 2 grid (any other count makes
 /// columns). Each pane is labelled with its text, after a swatch of its
@@ -94,18 +122,19 @@ pub fn show_split(
     panes: &[(&Scene, &str, Color32)],
     camera: &mut Camera,
     view: &ViewOptions,
+    tool: &mut dyn ViewTool,
 ) -> egui::Response {
     let (rect, response) = allocate(ui);
-    if let Some((first, _, _)) = panes.first() {
-        let pane = split_rects(rect, panes.len())[0];
-        steer(ui, &response, aspect(pane), first, camera, view, true);
+    let rects = split_rects(rect, panes.len());
+    let held = tool.update(&response, &rects, camera);
+    if let (Some((first, _, _)), Some(pane)) = (panes.first(), rects.first()) {
+        steer(ui, &response, aspect(*pane), first, camera, view, !held);
     }
-    for (i, ((scene, label, colour), pane)) in
-        panes.iter().zip(split_rects(rect, panes.len())).enumerate()
-    {
-        draw(ui, pane, response.id.with(i).value(), scene, camera, view);
-        legend(ui, pane, &[(*colour, label)]);
+    for (i, ((scene, label, colour), pane)) in panes.iter().zip(&rects).enumerate() {
+        draw(ui, *pane, response.id.with(i).value(), scene, camera, view);
+        legend(ui, *pane, &[(*colour, label)]);
     }
+    tool.paint(ui.painter(), &rects, camera);
     response
 }
 
@@ -117,8 +146,9 @@ pub fn show_overlay(
     key: &[(Color32, &str)],
     camera: &mut Camera,
     view: &ViewOptions,
+    tool: &mut dyn ViewTool,
 ) -> egui::Response {
-    let response = show(ui, scene, camera, view);
+    let response = show_with_tool(ui, scene, camera, view, tool);
     legend(ui, response.rect, key);
     response
 }

@@ -107,6 +107,7 @@ impl Lab {
                 });
             }
             self.recording_indicator(ui);
+            self.offer_grab_points();
             let rect = match &self.compare {
                 Some(compare) => {
                     self.layout.trunk_pt = None;
@@ -131,6 +132,7 @@ impl Lab {
                             &key,
                             &mut self.camera,
                             settings,
+                            &mut self.grab,
                         )
                         .rect
                     } else {
@@ -140,8 +142,26 @@ impl Lab {
                             .zip(&key)
                             .map(|(v, (colour, label))| (&v.stage.scene, *label, *colour))
                             .collect();
-                        viewport::show_split(ui, &panes, &mut self.camera, settings).rect
+                        viewport::show_split(ui, &panes, &mut self.camera, settings, &mut self.grab)
+                            .rect
                     }
+                }
+                None if self.stage.driver.held_targets().is_some() => {
+                    let response = viewport::show_with_tool(
+                        ui,
+                        &self.stage.scene,
+                        &mut self.camera,
+                        &self.session.settings.view,
+                        &mut self.grab,
+                    );
+                    self.layout.trunk_pt = None;
+                    self.layout.figure_pt = self
+                        .stage
+                        .scene
+                        .bounds()
+                        .and_then(|b| figure_on_screen(&self.camera, response.rect, &b));
+                    self.layout.view_pt = crate::lab::layout::rect_pt(response.rect);
+                    response.rect
                 }
                 None => {
                     let grab = self.stage.driver.push_grab();
@@ -171,6 +191,8 @@ impl Lab {
                     response.rect
                 }
             };
+            self.apply_grab();
+            self.note_targets_on_screen(rect);
             let ppp = ui.ctx().pixels_per_point();
             self.layout.view_rect_px = [
                 rect.min.x * ppp,
@@ -338,19 +360,50 @@ impl Lab {
         self.layout.plots_open
     }
 
+    /// Where the first figure's targets are on screen in the view `rect`
+    /// (its first pane side by side), for `state()`.
+    fn note_targets_on_screen(&mut self, rect: egui::Rect) {
+        let (driver, pane) = match &self.compare {
+            Some(compare) => {
+                let Some(first) = compare.views().first() else {
+                    return;
+                };
+                let pane = if compare.config.overlay {
+                    rect
+                } else {
+                    viewport::split_rects(rect, compare.views().len())[0]
+                };
+                (first.driver(), pane)
+            }
+            None => (&self.stage.driver, rect),
+        };
+        self.layout.target_pt.clear();
+        if let Some(targets) = gaitlab_core::driver::Driver::targets(driver) {
+            self.layout
+                .target_pt
+                .extend(targets.position.iter().map(|p| {
+                    viewport::screen_point(&self.camera, pane, p.as_vec3()).map(|at| [at.x, at.y])
+                }));
+        }
+    }
+
     fn keyboard(&mut self, ui: &egui::Ui) {
         if ui.ctx().egui_wants_keyboard_input() {
             return;
         }
-        let (space, reset, step, back, home) = ui.input(|i| {
+        let (space, reset, step, back, home, iterate) = ui.input(|i| {
             (
                 i.key_pressed(egui::Key::Space),
                 i.key_pressed(egui::Key::R),
                 i.key_pressed(egui::Key::Period),
                 i.key_pressed(egui::Key::Comma),
                 i.key_pressed(egui::Key::H),
+                i.key_pressed(egui::Key::I),
             )
         });
+        if iterate && let Err(error) = self.step_iteration() {
+            self.report_error(error);
+        }
         if home {
             self.camera.home();
         }

@@ -21,6 +21,40 @@ pub fn clamp_max_abs(values: &mut [f64], limit: f64) {
     }
 }
 
+/// SDLS's clamp γᵢ = min(1, Nᵢ/Mᵢ)·γmax of direction i, from Nᵢ, σᵢ and
+/// `m_sigma` = Mᵢσᵢ = Σⱼ |vⱼᵢ| ρⱼ (γmax when Mᵢ is 0).
+#[must_use]
+pub(crate) fn direction_clamp(n_i: f64, m_sigma: f64, sigma: f64, gamma_max: f64) -> f64 {
+    let m_i = m_sigma / sigma;
+    if m_i > 0.0 {
+        (n_i / m_i).min(1.0) * gamma_max
+    } else {
+        gamma_max
+    }
+}
+
+/// Σℓ ‖xℓ‖ over the 3-row blocks of `x` (one block per effector position or
+/// orientation): Nᵢ for x = uᵢ, ρⱼ for x = column j of J.
+#[must_use]
+pub(crate) fn block_norm_sum(x: &[f64]) -> f64 {
+    x.chunks_exact(3)
+        .map(|b| (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]).sqrt())
+        .sum()
+}
+
+/// Writes ρⱼ = Σℓ ‖∂sℓ/∂θⱼ‖ for every column j of `jacobian` into `rho`.
+pub(crate) fn fill_rho(jacobian: &DMatrix<f64>, rho: &mut Vec<f64>) {
+    let (m, n) = jacobian.shape();
+    rho.resize(n, 0.0);
+    for (col, out) in jacobian
+        .as_slice()
+        .chunks_exact(m.max(1))
+        .zip(rho.iter_mut())
+    {
+        *out = block_norm_sum(col);
+    }
+}
+
 /// One singular direction's contribution φᵢ.
 struct Direction<'a> {
     v: &'a [f64],
@@ -42,12 +76,7 @@ impl Direction<'_> {
             m_sigma += x * rho[j];
             v_max = v_max.max(x);
         }
-        let m_i = m_sigma / self.sigma;
-        let gamma = if m_i > 0.0 {
-            (self.n_i / m_i).min(1.0) * self.gamma_max
-        } else {
-            self.gamma_max
-        };
+        let gamma = direction_clamp(self.n_i, m_sigma, self.sigma, self.gamma_max);
         // ClampMaxAbs of a scaled vector is one scale factor.
         let mut scale = self.alpha / self.sigma;
         let largest = scale.abs() * v_max;
@@ -79,27 +108,15 @@ impl SdlsWorkspace {
         gamma_max: f64,
         step: &mut [f64],
     ) {
-        let (m, n) = jacobian.shape();
-        let data = jacobian.as_slice();
-        self.rho.resize(n, 0.0);
-        // ρⱼ = Σℓ ‖∂sℓ/∂θⱼ‖ over the 3-row blocks of column j.
-        for (c, rho) in self.rho.iter_mut().enumerate() {
-            let col = &data[c * m..(c + 1) * m];
-            *rho = col
-                .chunks_exact(3)
-                .map(|b| (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]).sqrt())
-                .sum();
-        }
+        let n = jacobian.ncols();
+        fill_rho(jacobian, &mut self.rho);
         step.fill(0.0);
         for i in 0..svd.rank() {
             let sigma = svd.sigma(i);
             let u = svd.u(i);
             let v = svd.v(i);
             let alpha: f64 = u.iter().zip(error).map(|(x, y)| x * y).sum();
-            let n_i: f64 = u
-                .chunks_exact(3)
-                .map(|b| (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]).sqrt())
-                .sum();
+            let n_i = block_norm_sum(u);
             let direction = Direction {
                 v,
                 sigma,

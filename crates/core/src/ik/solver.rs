@@ -24,6 +24,7 @@ use super::dls::DlsWorkspace;
 use super::nullspace::add_null_space;
 use super::pinv::{filtered_step, pinv_step};
 use super::sdls::{SdlsWorkspace, clamp_max_abs};
+use super::spectrum::Spectrum;
 use super::svd::ThinSvd;
 use super::transpose::transpose_step;
 use super::{IkOptions, IkStatus, JacobianAt, JointWeight, Method, Targets};
@@ -136,6 +137,34 @@ impl IkSolver {
     #[must_use]
     pub fn jacobian(&self) -> &DMatrix<f64> {
         &self.jacobian
+    }
+
+    /// The task error e = t − s at the start of the last iteration (m).
+    #[must_use]
+    pub fn error(&self) -> &[f64] {
+        &self.error
+    }
+
+    /// The last iteration's Jacobian as the running method sees it: its
+    /// singular values and the method's gain along them (see [`Spectrum`]),
+    /// with the clamps evaluated for an error of `amplitude_m` metres along
+    /// a direction.
+    ///
+    /// # Errors
+    /// [`NoConvergence`](super::NoConvergence) when the Jacobian holds
+    /// non-finite values.
+    pub fn spectrum(
+        &self,
+        amplitude_m: f64,
+        out: &mut Spectrum,
+    ) -> Result<(), super::NoConvergence> {
+        out.compute(
+            &self.jacobian,
+            &self.blocks,
+            &self.options,
+            &self.error,
+            amplitude_m,
+        )
     }
 
     /// The step Δθ applied by the last iteration.

@@ -15,6 +15,23 @@ pub fn transpose_step(
     scratch: &mut [f64],
     step: &mut [f64],
 ) {
+    let alpha = transpose_alpha(jacobian, error, alpha_factor, scratch, step);
+    for g in step.iter_mut() {
+        *g *= alpha;
+    }
+}
+
+/// The transpose method's α = `alpha_factor` · ⟨e, JJᵀe⟩ / ‖JJᵀe‖² for
+/// `error` (0 when JJᵀe vanishes), leaving Jᵀe in `gradient` (length n) and
+/// JJᵀe in `scratch` (length m).
+pub fn transpose_alpha(
+    jacobian: &DMatrix<f64>,
+    error: &[f64],
+    alpha_factor: f64,
+    scratch: &mut [f64],
+    gradient: &mut [f64],
+) -> f64 {
+    let step = gradient;
     let m = jacobian.nrows();
     let data = jacobian.as_slice();
     // g = Jᵀ e
@@ -36,12 +53,9 @@ pub fn transpose_step(
     }
     let numerator: f64 = error.iter().zip(scratch.iter()).map(|(x, y)| x * y).sum();
     let denominator: f64 = scratch.iter().map(|x| x * x).sum();
-    let alpha = if denominator > 1e-300 {
+    if denominator > 1e-300 {
         alpha_factor * numerator / denominator
     } else {
         0.0
-    };
-    for g in step.iter_mut() {
-        *g *= alpha;
     }
 }

@@ -78,8 +78,12 @@ const KEY: [([f32; 4], &str); 14] = [
 const KEY_COLUMN_PT: f32 = 110.0;
 
 /// How to drive the view and the clock.
-const CONTROLS: [(&str, &str); 8] = [
+const CONTROLS: [(&str, &str); 10] = [
     ("Drag", "orbit the camera (one finger on a touch screen)"),
+    (
+        "Drag a target",
+        "IK: pull a target (or a hand or foot) and watch the methods chase it",
+    ),
     ("Scroll or pinch", "zoom"),
     (
         "H or double-click",
@@ -88,6 +92,10 @@ const CONTROLS: [(&str, &str); 8] = [
     ("Space", "pause or play"),
     ("R", "reset to time 0"),
     (".", "one frame forward while paused"),
+    (
+        "I",
+        "IK: one solver iteration (the Jacobian panel shows it)",
+    ),
     (
         ",",
         "one frame back (the last 10 s are kept; History slider under Playback)",

@@ -9,6 +9,7 @@ mod gait;
 mod ground_view;
 mod help;
 mod ik;
+mod jacobian;
 pub(crate) mod lesson;
 mod motion;
 mod panel;
@@ -50,6 +51,7 @@ pub static REGISTRY: &[&dyn Panel] = &[
     &path::PathPanel,
     &compare::SideBySidePanel,
     &ik::MethodPanel,
+    &jacobian::JacobianPanel,
     &motion::MotionPanel,
     &motion::SpeedAndTargetsPanel,
     &view::ViewPanel,
@@ -105,7 +107,7 @@ mod tests {
         };
         assert_eq!(
             shown("human"),
-            with(&["Side by side", "Method", "Motion", "Speed"])
+            with(&["Side by side", "Method", "Jacobian", "Motion", "Speed"])
         );
         assert_eq!(
             shown(gaitlab_engine::bundled_for_engine(

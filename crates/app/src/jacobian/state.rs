@@ -1,0 +1,123 @@
+//! `state().jacobian`: the Jacobian panel's figures for the JS API — each
+//! view's singular values, condition number, gain law and gain at each σᵢ,
+//! and the last frame's iterations.
+
+use gaitlab_core::ik::{GainLaw, Spectrum};
+use serde::Serialize;
+
+use super::probe::JacobianProbe;
+
+/// A method's gain law and its constants this frame.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(tag = "law", rename_all = "lowercase")]
+pub enum LawState {
+    /// g = α·σ.
+    Transpose {
+        /// α, 1/m².
+        alpha: f64,
+    },
+    /// g = 1/σ above `cutoff`.
+    Pinv {
+        /// The rank tolerance times σ_max, m.
+        cutoff: f64,
+    },
+    /// g = σ/(σ² + λ²).
+    Dls {
+        /// λ, m.
+        lambda: f64,
+    },
+    /// g = 1/σ clamped per direction by γᵢ.
+    Sdls {
+        /// γmax, radians.
+        gamma_max: f64,
+    },
+}
+
+/// One view's spectrum.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct SpectrumState {
+    /// The nonzero singular values, largest first, m/rad.
+    pub sigma: Vec<f64>,
+    /// How many more singular values are zero.
+    pub zero: usize,
+    /// σ_max / σ_min (null when infinite).
+    pub condition: Option<f64>,
+    /// The running method's law.
+    pub law: LawState,
+    /// The method's gain at each σᵢ, clamps included, rad/m.
+    pub gain: Vec<f64>,
+    /// The error size the clamps are evaluated for (this iteration's ‖e‖), m.
+    pub amplitude_m: f64,
+}
+
+/// One iteration of the last frame.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct IterationState {
+    /// ‖Δθ‖ of its step.
+    pub step_norm: f64,
+    /// The largest effector error before it, m.
+    pub error_before_m: f64,
+    /// The largest effector error after it, m.
+    pub error_after_m: f64,
+}
+
+/// `state().jacobian`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct JacobianState {
+    /// Per view (the single view, or each comparison view), null where the
+    /// figure has no Jacobian (CCD, a recording).
+    pub views: Vec<Option<SpectrumState>>,
+    /// The first view's iterations in the last frame traced.
+    pub iterations: Vec<IterationState>,
+}
+
+impl SpectrumState {
+    /// The figures of `spectrum` (`None` without a Jacobian law).
+    #[must_use]
+    pub fn of(spectrum: &Spectrum) -> Option<Self> {
+        let law = match spectrum.law()? {
+            GainLaw::Transpose { alpha } => LawState::Transpose { alpha },
+            GainLaw::Pinv { cutoff } => LawState::Pinv { cutoff },
+            GainLaw::Dls { lambda } => LawState::Dls { lambda },
+            GainLaw::Sdls { gamma_max } => LawState::Sdls { gamma_max },
+            GainLaw::None => return None,
+        };
+        let directions = spectrum.directions();
+        Some(Self {
+            sigma: directions.iter().map(|d| d.sigma).collect(),
+            zero: spectrum.zero_count(),
+            condition: spectrum.condition().filter(|c| c.is_finite()),
+            law,
+            gain: (0..directions.len())
+                .map(|i| spectrum.gain(i, directions[i].sigma).unwrap_or(0.0))
+                .collect(),
+            amplitude_m: spectrum.amplitude_m(),
+        })
+    }
+}
+
+impl JacobianState {
+    /// The probe's figures for `views` views.
+    #[must_use]
+    pub fn of(probe: &JacobianProbe, views: usize) -> Self {
+        let last = probe.iterations().last().map(|p| p.time_s);
+        Self {
+            views: (0..views)
+                .map(|i| probe.spectrum(i).and_then(SpectrumState::of))
+                .collect(),
+            iterations: probe
+                .iterations()
+                .filter(|p| Some(p.time_s) == last)
+                .map(|p| IterationState {
+                    step_norm: p.step_norm,
+                    error_before_m: p.error_before_m,
+                    error_after_m: p.error_after_m,
+                })
+                .collect(),
+        }
+    }
+}

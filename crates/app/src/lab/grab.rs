@@ -1,0 +1,123 @@
+//! The lab's side of grab and pull ([`crate::grab`]): which points each pane
+//! offers the hand, the hand's events applied to every figure on screen (so
+//! side by side every view chases the same target), and a paused figure
+//! reaching for a moved target.
+
+use gaitlab_core::driver::Driver;
+use gaitlab_engine::AnyDriver;
+
+use super::Lab;
+use crate::grab::{DragTargetCommand, GrabEvent, Pickable};
+
+impl Lab {
+    /// The figures on screen: each comparison view's driver, or the single one.
+    fn drivers_mut(&mut self) -> Vec<&mut AnyDriver> {
+        match self.compare.as_mut() {
+            Some(compare) => compare
+                .views
+                .iter_mut()
+                .map(|v| &mut v.stage.driver)
+                .collect(),
+            None => vec![&mut self.stage.driver],
+        }
+    }
+
+    /// Refills the hand's pickable points: in each pane, every target and
+    /// every effector of a figure whose targets can be held.
+    pub(crate) fn offer_grab_points(&mut self) {
+        let (overlay, count) = match self.compare.as_ref() {
+            Some(compare) => (compare.config.overlay, compare.views.len()),
+            None => (false, 1),
+        };
+        self.grab.clear_panes(if overlay { 1 } else { count });
+        for k in 0..count {
+            let driver = match self.compare.as_ref() {
+                Some(compare) => &compare.views[k].stage.driver,
+                None => &self.stage.driver,
+            };
+            if driver.held_targets().is_none() {
+                continue;
+            }
+            let pane = &mut self.grab.panes[if overlay { 0 } else { k }];
+            if let Some(targets) = driver.targets() {
+                pane.extend(
+                    targets
+                        .position
+                        .iter()
+                        .enumerate()
+                        .map(|(effector, &at)| Pickable { effector, at }),
+                );
+            }
+            pane.extend(
+                driver
+                    .effector_positions()
+                    .iter()
+                    .enumerate()
+                    .map(|(effector, &at)| Pickable { effector, at }),
+            );
+        }
+    }
+
+    /// Applies what the hand did to every figure on screen; a paused figure
+    /// reaches for a moved target for a while ([`crate::grab::SETTLE_FRAMES`]).
+    pub(crate) fn apply_grab(&mut self) {
+        let events: Vec<GrabEvent> = self.grab.drain_events().collect();
+        let moved = !events.is_empty();
+        for event in events {
+            for driver in self.drivers_mut() {
+                match event {
+                    GrabEvent::Hold { effector, at } => {
+                        driver.hold_target(effector, Some(at));
+                    }
+                    GrabEvent::Release { effector } => {
+                        driver.hold_target(effector, None);
+                    }
+                    GrabEvent::Pin { effector, on } => {
+                        driver.pin_target(effector, on);
+                    }
+                }
+            }
+        }
+        let settle = self.playback.paused && self.grab.take_settle_frame();
+        if settle {
+            for driver in self.drivers_mut() {
+                driver.settle();
+            }
+        }
+        if moved || settle {
+            self.probe_jacobian();
+            self.refresh_scene();
+        }
+    }
+
+    /// `drag_target`: holds, lets go of or pins an effector's target, in
+    /// every figure on screen.
+    ///
+    /// # Errors
+    /// The command's `drag_target.…: reason`, or when the figure's targets
+    /// cannot be held (PODA, physics, a recording).
+    pub fn drag_target(&mut self, c: &DragTargetCommand) -> Result<(), String> {
+        if self.stage.driver.held_targets().is_none() {
+            return Err(
+                "drag_target: only the IK engine's thesis script has targets to hold".to_owned(),
+            );
+        }
+        let skeleton = self.session.creature.skeleton.clone();
+        self.grab.command(c, &skeleton)?;
+        self.apply_grab();
+        Ok(())
+    }
+
+    /// Lets go of and unpins every target (the panel's *Unpin all*).
+    pub fn release_all_targets(&mut self) {
+        let count = self.session.creature.skeleton.effector_count();
+        for driver in self.drivers_mut() {
+            for effector in 0..count {
+                driver.pin_target(effector, false);
+                driver.hold_target(effector, None);
+            }
+        }
+        self.grab.note_moved();
+        self.refresh_scene();
+    }
+}

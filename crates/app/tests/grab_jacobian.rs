@@ -1,0 +1,273 @@
+//! Grab and pull and the Jacobian panel through the JS API (issue 44):
+//! `drag_target` moves a target in every figure on screen and the effector
+//! follows; the one-iteration step (`iterate`) is the frame's iterations one
+//! by one; `state().jacobian` carries each view's singular values and gains;
+//! bad input names its field and changes nothing.
+
+use gaitlab_app::{Lab, Settings};
+use serde_json::{Value, json};
+
+fn lab(preset: &str) -> Lab {
+    let mut lab = Lab::new(Settings::default());
+    if let Err(error) = lab.set_preset(preset) {
+        panic!("{preset}: {error}");
+    }
+    lab.set_paused(true);
+    lab
+}
+
+fn state(lab: &Lab) -> Value {
+    match serde_json::from_str(&lab.state_json()) {
+        Ok(value) => value,
+        Err(error) => panic!("{error}"),
+    }
+}
+
+fn command(lab: &mut Lab, c: &Value) {
+    if let Err(error) = lab.command(&c.to_string()) {
+        panic!("{c}: {error}");
+    }
+}
+
+fn frames(lab: &mut Lab, n: usize) {
+    for _ in 0..n {
+        lab.single_step();
+        lab.advance(0.0);
+    }
+}
+
+fn effector<'a>(s: &'a Value, name: &str) -> &'a Value {
+    match s["views"][0]["effectors"]
+        .as_array()
+        .and_then(|a| a.iter().find(|e| e["name"] == name))
+    {
+        Some(e) => e,
+        None => panic!("no effector {name}"),
+    }
+}
+
+fn point(v: &Value) -> [f64; 3] {
+    let a = |k: usize| v[k].as_f64().unwrap_or(f64::NAN);
+    [a(0), a(1), a(2)]
+}
+
+fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+}
+
+#[test]
+fn a_dragged_target_moves_and_the_hand_follows_alone_and_side_by_side() {
+    let mut lab = lab("she-2006");
+    frames(&mut lab, 60);
+    let s = state(&lab);
+    let hand = effector(&s, "left_hand");
+    // Grab where the hand is, then pull it 0.3 m toward the shoulder.
+    let at = point(&hand["position_m"]);
+    let anchor = point(&hand["reach_anchor_m"]);
+    command(
+        &mut lab,
+        &json!({"drag_target": {"name": "left_hand", "position": at}}),
+    );
+    let length = distance(anchor, at);
+    let to: [f64; 3] = std::array::from_fn(|k| at[k] + (anchor[k] - at[k]) * 0.3 / length);
+    command(
+        &mut lab,
+        &json!({"drag_target": {"name": "left_hand", "position": to}}),
+    );
+    let s = state(&lab);
+    let hand = effector(&s, "left_hand");
+    assert_eq!(hand["held"], true);
+    let moved = distance(point(&hand["target_m"]), at);
+    assert!((moved - 0.3).abs() < 0.01, "target moved {moved} m");
+    // Paused, the figure reaches for it over the next UI frames.
+    let error = |lab: &Lab| {
+        effector(&state(lab), "left_hand")["error_m"]
+            .as_f64()
+            .unwrap_or(f64::NAN)
+    };
+    let first = error(&lab);
+    for _ in 0..30 {
+        command(
+            &mut lab,
+            &json!({"drag_target": {"name": "left_hand", "position": to}}),
+        );
+    }
+    let paused = error(&lab);
+    // Running, the held target rides with the body; within a second SDLS has it.
+    let mut frames_to_1cm = None;
+    for frame in 1..=60 {
+        frames(&mut lab, 1);
+        if frames_to_1cm.is_none() && error(&lab) < 0.01 {
+            frames_to_1cm = Some(frame);
+        }
+    }
+    let s = state(&lab);
+    let hand = effector(&s, "left_hand");
+    assert!(
+        hand["out_of_reach_m"].as_f64().unwrap_or(1.0) < 0.0,
+        "{hand}"
+    );
+    println!(
+        "left hand: {:.1} mm at the pull, {:.1} mm after 30 paused settles, under 1 cm after {frames_to_1cm:?} frames running, {:.1} mm at 1 s",
+        first * 1e3,
+        paused * 1e3,
+        error(&lab) * 1e3
+    );
+    assert!(paused < first, "paused, it reaches");
+    assert!(error(&lab) < 0.01, "{hand}");
+    // Side by side: every view's target moves with the drag.
+    command(
+        &mut lab,
+        &json!({"compare": {"views": ["transpose", "pinv", "dls", "sdls"]}}),
+    );
+    frames(&mut lab, 30);
+    let to = [to[0], to[1], to[2] + 0.05];
+    command(
+        &mut lab,
+        &json!({"drag_target": {"name": "left_hand", "position": to}}),
+    );
+    let Some(compare) = lab.comparison() else {
+        panic!("a comparison")
+    };
+    let e = lab
+        .creature()
+        .skeleton
+        .effector_index("left_hand")
+        .unwrap_or(0);
+    for view in compare.views() {
+        let target = gaitlab_core::driver::Driver::targets(view.driver())
+            .map(|t| t.position[e].to_array())
+            .unwrap_or([f64::NAN; 3]);
+        assert!(
+            distance(target, to) < 1e-9,
+            "{}: {target:?}",
+            view.method.name()
+        );
+    }
+}
+
+#[test]
+fn one_iteration_at_a_time_is_the_frame() {
+    let mut whole = lab("she-2006");
+    let mut stepped = lab("she-2006");
+    frames(&mut whole, 21);
+    frames(&mut stepped, 20);
+    let of = stepped
+        .driver()
+        .thesis()
+        .map_or(0, |d| d.params().iterations_per_frame);
+    for k in 1..=of {
+        command(&mut stepped, &json!({"iterate": true}));
+        let s = state(&stepped);
+        assert_eq!(
+            s["jacobian"]["iterations"].as_array().map(Vec::len),
+            Some(k),
+            "the panel shows the frame's iterations so far"
+        );
+    }
+    let (a, b) = (state(&whole), state(&stepped));
+    assert_eq!(a["frame"], b["frame"]);
+    assert_eq!(a["time_s"], b["time_s"]);
+    let joints = |lab: &Lab| -> Vec<u64> {
+        gaitlab_core::driver::Driver::pose(lab.driver())
+            .joints
+            .iter()
+            .map(|x| x.to_bits())
+            .collect()
+    };
+    assert_eq!(joints(&whole), joints(&stepped), "bit-identical");
+    assert_eq!(a["views"][0]["metrics"], b["views"][0]["metrics"]);
+    assert_eq!(a["jacobian"], b["jacobian"]);
+    // Each iteration's error after is the next one's before.
+    let iterations = b["jacobian"]["iterations"]
+        .as_array()
+        .cloned()
+        .unwrap_or_default();
+    for pair in iterations.windows(2) {
+        assert_eq!(pair[0]["error_after_m"], pair[1]["error_before_m"]);
+    }
+}
+
+#[test]
+fn the_state_carries_each_views_singular_values_and_gains() {
+    let mut lab = lab("she-2006");
+    command(
+        &mut lab,
+        &json!({"compare": {"views": ["pinv", "dls"], "scenario": "singularity"}}),
+    );
+    frames(&mut lab, 90);
+    let s = state(&lab);
+    let views = s["jacobian"]["views"]
+        .as_array()
+        .cloned()
+        .unwrap_or_default();
+    assert_eq!(views.len(), 2);
+    for (view, law) in views.iter().zip(["pinv", "dls"]) {
+        assert_eq!(view["law"]["law"], law);
+        let sigma: Vec<f64> = view["sigma"]
+            .as_array()
+            .map(|a| a.iter().filter_map(Value::as_f64).collect())
+            .unwrap_or_default();
+        let gain: Vec<f64> = view["gain"]
+            .as_array()
+            .map(|a| a.iter().filter_map(Value::as_f64).collect())
+            .unwrap_or_default();
+        assert!(sigma.len() >= 3 && sigma.len() == gain.len(), "{view}");
+        assert!(sigma.windows(2).all(|w| w[0] >= w[1]), "largest first");
+        if law == "dls" {
+            let lambda = view["law"]["lambda"].as_f64().unwrap_or(f64::NAN);
+            for (s, g) in sigma.iter().zip(&gain) {
+                let formula = s / (s * s + lambda * lambda);
+                assert!(*g <= formula * (1.0 + 1e-12), "{g} above {formula}");
+            }
+        }
+        println!(
+            "{law}: σ {:.4} … {:.4}, condition {}, gains {:.2} … {:.2}",
+            sigma[0],
+            sigma[sigma.len() - 1],
+            view["condition"],
+            gain[0],
+            gain[gain.len() - 1]
+        );
+    }
+}
+
+#[test]
+fn bad_drags_name_their_field_and_change_nothing() {
+    let mut lab = lab("she-2006");
+    frames(&mut lab, 5);
+    let before = state(&lab)["views"][0]["effectors"].clone();
+    for (c, field) in [
+        (
+            json!({"drag_target": {"name": "tail", "position": [0, 1, 0]}}),
+            "drag_target.name",
+        ),
+        (
+            json!({"drag_target": {"name": "left_hand", "position": [0, 1e6, 0]}}),
+            "drag_target.position",
+        ),
+        (
+            json!({"drag_target": {"name": "left_hand", "position": [0, 1]}}),
+            "drag_target.position",
+        ),
+        (
+            json!({"drag_target": {"name": "left_hand", "where": 1}}),
+            "drag_target",
+        ),
+    ] {
+        let error = lab.command(&c.to_string()).err().unwrap_or_default();
+        assert!(error.starts_with(field), "{c}: {error}");
+    }
+    assert_eq!(state(&lab)["views"][0]["effectors"], before);
+    let mut physics = self::lab("raibert-biped");
+    let error = physics
+        .command(&json!({"drag_target": {"name": "foot", "position": null}}).to_string())
+        .err()
+        .unwrap_or_default();
+    assert!(error.starts_with("drag_target"), "{error}");
+    let error = physics
+        .command(&json!({"iterate": true}).to_string())
+        .err()
+        .unwrap_or_default();
+    assert!(error.starts_with("iterate"), "{error}");
+}
