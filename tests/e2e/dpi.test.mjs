@@ -30,11 +30,13 @@ async function until(page, pred, what, timeout = 30_000) {
 
 /**
  * Clicks at `(x, y)` until `pred(state())` holds, up to three times: on a starved machine a
- * click's press and release can fall in frames too far apart for egui to count it.
+ * click's press and release can fall in frames too far apart for egui to count it, or in one
+ * frame (a 1170 × 2532 software canvas draws under a frame a second), so each try holds the
+ * button longer: 60 ms, then 0.6 s, then 2 s.
  */
 async function clickUntil(page, [x, y], pred, what) {
   for (let k = 1; ; k++) {
-    await page.mouse.click(x, y, { delay: 60 });
+    await page.mouse.click(x, y, { delay: [60, 600, 2000][k - 1] });
     try {
       return await until(page, pred, what, k < 3 ? 10_000 : 30_000);
     } catch (e) {

@@ -212,6 +212,9 @@ pub struct Command {
     /// The lab's addition: the step clamp on transpose and DLS too (She 2006
     /// §4.4.2 clamps pinv only).
     pub clamp_every_method: Option<bool>,
+    /// Buss's target clamp, metres, [0, 10]: each effector's error is cut
+    /// to this length before the solve (the lab's addition; 0 off).
+    pub target_clamp_m: Option<f64>,
     /// The transpose method's α: `thesis` (§4.4.1) or `buss` (twice it).
     pub transpose_alpha: Option<TransposeAlphaName>,
     /// `true`: measure the running thesis motion's λ trade-off (DLS at
@@ -555,6 +558,7 @@ impl Lab {
             ("gamma_max", c.gamma_max),
             ("max_step", c.max_step),
             ("null_space_gain", c.null_space_gain),
+            ("target_clamp_m", c.target_clamp_m),
         ] {
             let Some(x) = value else { continue };
             let x = table(key).check_command(key, x)?;
@@ -563,6 +567,7 @@ impl Lab {
                 "lambda" => ik.lambda = x,
                 "gamma_max" => ik.gamma_max = x,
                 "max_step" => ik.max_step = x,
+                "target_clamp_m" => ik.target_clamp_m = x,
                 _ => ik.null_space_gain = x,
             }
             changed = true;

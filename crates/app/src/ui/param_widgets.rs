@@ -56,6 +56,8 @@ pub(crate) mod key {
         MAX_STEP = "scenario.ik.max_step";
         /// The lab's clamp on every method.
         CLAMP_EVERY_METHOD = "scenario.ik.clamp_every_method";
+        /// Buss's target clamp.
+        TARGET_CLAMP = "scenario.ik.target_clamp_m";
         /// §4.4.1's α.
         TRANSPOSE_ALPHA = "scenario.ik.transpose_alpha";
         /// The rank tolerance (side-by-side cards).

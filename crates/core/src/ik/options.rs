@@ -206,6 +206,14 @@ pub struct IkOptions {
     /// as on, as they ran.
     #[serde(default = "before_2026_12_05_clamp")]
     pub clamp_every_method: bool,
+    /// The lab's addition from Buss's IK code: each effector's position error
+    /// is clamped to this length, metres, before every method's solve (his
+    /// `CalcdTClampedFromdS` with its fixed base, `BaseMaxTargetDist`; his
+    /// SDLS always clamps, his other methods never), so a far target pulls
+    /// no harder than one this far away. The reported errors stay the
+    /// unclamped distances. 0 turns it off (default: the thesis clamps no
+    /// target).
+    pub target_clamp_m: f64,
     /// The transpose method's α: §4.4.1's as printed (default) or Buss's.
     /// Serialized options without the key read Buss's, as they ran.
     #[serde(default = "before_2026_12_05_alpha")]
@@ -270,6 +278,7 @@ impl Default for IkOptions {
             gamma_max: std::f64::consts::FRAC_PI_4,
             max_step: 0.2,
             clamp_every_method: false,
+            target_clamp_m: 0.0,
             transpose_alpha: TransposeAlpha::Thesis,
             rank_tolerance: 1e-6,
             null_space_gain: 0.0,

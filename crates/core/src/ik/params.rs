@@ -57,6 +57,17 @@ pub const IK_PARAMS: &[ParamSpec] = &[
         why: "§4.4.2 clamps pinv only; Buss's code clamps every method",
     },
     ParamSpec {
+        key: "scenario.ik.target_clamp_m",
+        command: Some("target_clamp_m"),
+        label: "Target clamp (longest effector error a solve sees; 0 off)",
+        unit: "m",
+        domain: Domain::closed(0.0, 10.0),
+        live: true,
+        reference: "Buss's IK code (CalcdTClampedFromdS, BaseMaxTargetDist 0.4)",
+        origin: Origin::Lab,
+        why: "the thesis clamps no target; Buss's SDLS clamps each effector's error to 0.4 of his scene's units",
+    },
+    ParamSpec {
         key: "scenario.ik.transpose_alpha",
         command: Some("transpose_alpha"),
         label: "Transpose step α",
@@ -129,7 +140,8 @@ pub const IK_PARAMS: &[ParamSpec] = &[
 ];
 
 /// IK options in range, by [`IK_PARAMS`]: λ in (0, 10] m, γmax and max_step
-/// in (0, π], rank tolerance in (0, 1), null-space gain in [0, 10], 1..=16
+/// in (0, π], rank tolerance in (0, 1), null-space gain in [0, 10], the
+/// target clamp in [0, 10] m, 1..=16
 /// limit passes. Shared by presets and by settings restored from storage.
 ///
 /// # Errors
@@ -143,6 +155,7 @@ pub fn check_ik_options(prefix: &str, ik: &IkOptions) -> Result<(), PresetError>
         ("max_step", ik.max_step),
         ("rank_tolerance", ik.rank_tolerance),
         ("null_space_gain", ik.null_space_gain),
+        ("target_clamp_m", ik.target_clamp_m),
     ] {
         spec(field).check_real(&at(field), value)?;
     }

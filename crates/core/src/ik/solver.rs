@@ -294,10 +294,17 @@ impl IkSolver {
         let mut row = 0;
         let mut largest: f64 = 0.0;
         let mut sum_sq = 0.0;
+        let clamp = self.options.target_clamp_m;
         for (e, effector) in skeleton.effectors().iter().enumerate() {
             let delta = targets.position[e] - self.kinematics.effector_position[e];
-            self.error[row..row + 3].copy_from_slice(&delta.to_array());
             let distance = delta.length();
+            // Buss's target clamp: the solve sees at most `clamp` of the error.
+            let seen = if clamp > 0.0 && distance > clamp {
+                delta * (clamp / distance)
+            } else {
+                delta
+            };
+            self.error[row..row + 3].copy_from_slice(&seen.to_array());
             largest = largest.max(distance);
             sum_sq += distance * distance;
             if effector.orientation {

@@ -22,6 +22,10 @@ const CLAMP_EVERY_METHOD: LabAddition = LabAddition {
     name: "clamp_every_method",
     reason: "max_step also clamps transpose and DLS; §4.4.2 clamps pinv only (Buss's code clamps every method)",
 };
+const TARGET_CLAMP: LabAddition = LabAddition {
+    name: "target_clamp",
+    reason: "each effector's error is clamped to target_clamp_m before the solve (Buss's code; the thesis clamps no target)",
+};
 const BUSS_ALPHA: LabAddition = LabAddition {
     name: "buss_alpha",
     reason: "transpose's α is Buss's ⟨e, JJᵀe⟩/‖JJᵀe‖², twice §4.4.1's Δs·Δt/(2|Δt|²)",
@@ -104,6 +108,7 @@ pub fn ik_lab_additions(ik: &IkOptions) -> impl Iterator<Item = LabAddition> + u
     [
         (ik.clamp_every_method && matches!(method, Method::Transpose | Method::Dls))
             .then_some(CLAMP_EVERY_METHOD),
+        (ik.target_clamp_m > 0.0 && method != Method::Ccd).then_some(TARGET_CLAMP),
         (ik.transpose_alpha == TransposeAlpha::Buss && method == Method::Transpose)
             .then_some(BUSS_ALPHA),
         (ik.null_space_gain > 0.0 && matches!(method, Method::Pinv | Method::Dls))

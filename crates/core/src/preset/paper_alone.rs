@@ -17,6 +17,7 @@ use super::schema::FORMAT;
 /// The values each engine's additions take when off, by preset path.
 const IK_OFF: &[(&str, ValueOf)] = &[
     ("scenario.ik.clamp_every_method", ValueOf::Bool(false)),
+    ("scenario.ik.target_clamp_m", ValueOf::Int(0)),
     ("scenario.ik.transpose_alpha", ValueOf::Text("thesis")),
     ("scenario.ik.limit_passes", ValueOf::Int(1)),
     ("scenario.ik.null_space_gain", ValueOf::Int(0)),

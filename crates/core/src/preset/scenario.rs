@@ -184,6 +184,9 @@ mod ik_section {
         /// 2006 §4.4.2 clamps pinv only). Default false; a
         /// `gaitlab-preset/1` file without it runs with true, as it was made.
         clamp_every_method: bool,
+        /// The lab's addition from Buss's code: each effector's error is
+        /// clamped to this length, metres, before the solve. Default 0, off.
+        target_clamp_m: f64,
         /// The transpose method's α: `thesis` (§4.4.1 as printed, default) or
         /// `buss` (Buss 2004's, twice the thesis'; what a `gaitlab-preset/1`
         /// file without this key runs).
@@ -213,6 +216,7 @@ mod ik_section {
                 gamma_max: ik.gamma_max,
                 max_step: ik.max_step,
                 clamp_every_method: ik.clamp_every_method,
+                target_clamp_m: ik.target_clamp_m,
                 transpose_alpha: ik.transpose_alpha,
                 rank_tolerance: ik.rank_tolerance,
                 null_space_gain: ik.null_space_gain,
@@ -230,6 +234,7 @@ mod ik_section {
                 gamma_max: section.gamma_max,
                 max_step: section.max_step,
                 clamp_every_method: section.clamp_every_method,
+                target_clamp_m: section.target_clamp_m,
                 transpose_alpha: section.transpose_alpha,
                 rank_tolerance: section.rank_tolerance,
                 null_space_gain: section.null_space_gain,
@@ -267,6 +272,7 @@ mod ik_section {
                 gamma_max: 0.4,
                 max_step: 0.5,
                 clamp_every_method: true,
+                target_clamp_m: 0.25,
                 transpose_alpha: TransposeAlpha::Buss,
                 rank_tolerance: 1e-3,
                 null_space_gain: 2.0,

@@ -146,6 +146,17 @@ fn method(ui: &mut egui::Ui, lab: &mut Lab) {
              §4.4.2 clamps pinv only. Files made before 2026-12-05 run with it",
         )
         .changed();
+        let target_clamp = Param::new(key::TARGET_CLAMP).band(0.0..=1.0);
+        changed |= widgets::add(
+            ui,
+            target_clamp,
+            egui::Slider::new(&mut ik.target_clamp_m, target_clamp.range())
+                .text(target_clamp.text("Target clamp (m, 0 off)")),
+            "Buss's target clamp: each effector's error is cut to this length before every \
+             method's solve, so a far target pulls no harder than one this far (his SDLS \
+             uses 0.4 of his scene's units). The thesis clamps no target: 0, off",
+        )
+        .changed();
         ui.horizontal(|ui| {
             Param::new(key::TRANSPOSE_ALPHA).hover(
                 ui.label("Transpose α:"),
