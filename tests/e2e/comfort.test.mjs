@@ -7,7 +7,7 @@
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  assertDrawn, command, launch, pngStats, serveDist, shootCanvas, sleep, state, withLoadedApp,
+  assertDrawn, command, launch, pngStats, serveDist, shootCanvas, sleep, state, until as waitFor, withLoadedApp,
 } from './harness.mjs';
 
 const T = { timeout: 240_000 };
@@ -18,16 +18,9 @@ after(async () => { await server?.close(); });
 
 const withApp = (browser, fn) => withLoadedApp(browser, server.url, fn);
 
-/** Waits until `pred(state())` holds (polling the page). */
-async function until(page, pred, what, timeout = 20_000) {
-  const end = Date.now() + timeout;
-  for (;;) {
-    const s = await state(page);
-    if (pred(s)) return s;
-    if (Date.now() > end) throw new Error(`timed out waiting for ${what}: ${JSON.stringify(s.layout)}`);
-    await sleep(100);
-  }
-}
+/** Waits until `pred(state())` holds, polling; a timeout shows the layout. */
+const until = (page, pred, what, timeout = 20_000) =>
+  waitFor(page, pred, what, timeout, 100, (s) => JSON.stringify(s.layout));
 
 /**
  * A finger tap on the phone bar's button at `rect` (CSS pixels = egui points at DPR 1), repeated

@@ -9,7 +9,7 @@
 
 import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
-import { command, launch, serveDist, sleep, state, withLoadedApp } from './harness.mjs';
+import { command, launch, serveDist, sleep, state, withLoadedApp, until as waitFor } from './harness.mjs';
 
 const T = { timeout: 300_000 };
 
@@ -17,16 +17,9 @@ let server;
 before(async () => { server = await serveDist(); });
 after(async () => { await server?.close(); });
 
-/** Waits until `pred(state())` holds, polling. */
-async function until(page, pred, what, timeout = 30_000) {
-  const end = Date.now() + timeout;
-  for (;;) {
-    const s = await state(page);
-    if (pred(s)) return s;
-    if (Date.now() > end) throw new Error(`timed out waiting for ${what}: ${JSON.stringify(s.layout)}`);
-    await sleep(150);
-  }
-}
+/** Waits until `pred(state())` holds, polling; a timeout shows the layout. */
+const until = (page, pred, what, timeout = 30_000) =>
+  waitFor(page, pred, what, timeout, 150, (s) => JSON.stringify(s.layout));
 
 /**
  * Clicks at `(x, y)` until `pred(state())` holds, up to three times: on a starved machine a

@@ -223,6 +223,20 @@ export function cliOption(name) {
 export const sleep = (ms) => new Promise((ok) => setTimeout(ok, ms));
 
 /**
+ * Waits until `pred(state())` holds, polling every `every` ms; a timeout names `what` and what
+ * `show(state)` says of the last state (its time by default).
+ */
+export async function until(page, pred, what, timeout = 30_000, every = 150, show = (s) => `t = ${s.time_s}`) {
+  const end = Date.now() + timeout;
+  for (;;) {
+    const s = await state(page);
+    if (pred(s)) return s;
+    if (Date.now() > end) throw new Error(`timed out waiting for ${what} (${show(s)})`);
+    await sleep(every);
+  }
+}
+
+/**
  * Luminance statistics of a PNG over a region given in fractions of its size:
  * { mean, stddev, distinct (distinct RGB colours, capped), width, height }.
  */

@@ -18,10 +18,12 @@ const T = { timeout: 240_000 };
 /**
  * state() fields that are live counters, not settings, and so differ between two labs opened from
  * one link: the frame counter, simulated time, frame rate and timing, the wasm memory size and heap counts,
- * `views` (each effector's error at the current frame), the history scrubber's `rewind` and the comparison's live metrics and plot range.
+ * `views` (each effector's error at the current frame), the Jacobian panel's `jacobian` (this
+ * iteration's singular values and gains), the history scrubber's `rewind` and the comparison's
+ * live metrics and plot range.
  * Everything else must match exactly.
  */
-const LIVE = ['frame', 'time_s', 'fps', 'sim_us_per_frame', 'views', 'rewind', 'wasm_memory_bytes', 'wasm_heap_live_bytes', 'wasm_heap_peak_bytes'];
+const LIVE = ['frame', 'time_s', 'fps', 'sim_us_per_frame', 'views', 'jacobian', 'rewind', 'wasm_memory_bytes', 'wasm_heap_live_bytes', 'wasm_heap_peak_bytes'];
 
 const presetJson = (name) => readFileSync(join(repoRoot, 'presets', `${name}.json`), 'utf8');
 

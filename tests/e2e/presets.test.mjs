@@ -9,7 +9,7 @@ import { after, before, describe, it } from 'node:test';
 import assert from 'node:assert/strict';
 import { readdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { command, launch, repoRoot, serveDist, sleep, state, withLoadedApp } from './harness.mjs';
+import { command, launch, repoRoot, serveDist, sleep, state, until as waitFor, withLoadedApp } from './harness.mjs';
 
 const SECONDS = Number(process.env.GAITLAB_E2E_PRESET_SECONDS ?? 4);
 const PRESETS = readdirSync(join(repoRoot, 'presets'))
@@ -21,16 +21,8 @@ let server;
 before(async () => { server = await serveDist(); });
 after(async () => { await server?.close(); });
 
-/** Waits until `pred(state())` holds, polling. */
-async function until(page, pred, what, timeout) {
-  const end = Date.now() + timeout;
-  for (;;) {
-    const s = await state(page);
-    if (pred(s)) return s;
-    if (Date.now() > end) throw new Error(`timed out waiting for ${what} (t = ${s.time_s})`);
-    await sleep(250);
-  }
-}
+/** Waits until `pred(state())` holds, polling every 250 ms. */
+const until = (page, pred, what, timeout) => waitFor(page, pred, what, timeout, 250);
 
 const centre = ([x, y, w, h]) => [x + w / 2, y + h / 2];
 

@@ -271,3 +271,53 @@ fn bad_drags_name_their_field_and_change_nothing() {
         .unwrap_or_default();
     assert!(error.starts_with("iterate"), "{error}");
 }
+
+#[test]
+fn pinned_targets_ride_in_links_and_bad_pins_change_nothing() {
+    let mut lab = lab("she-2006");
+    frames(&mut lab, 30);
+    let s = state(&lab);
+    let at = point(&effector(&s, "right_foot")["position_m"]);
+    let to = [at[0], at[1] + 0.15, at[2] + 0.1];
+    command(
+        &mut lab,
+        &json!({"drag_target": {"name": "right_foot", "position": to, "pin": true}}),
+    );
+    command(
+        &mut lab,
+        &json!({"drag_target": {"name": "right_foot", "position": null}}),
+    );
+    let pins = state(&lab)["pinned_targets"].clone();
+    assert_eq!(pins.as_object().map(|m| m.len()), Some(1), "{pins}");
+    let link = lab.full_link();
+    assert_eq!(link.state.get("pinned_targets"), Some(&pins));
+    let mut opened = Lab::new(Settings::default());
+    let errors = opened.apply_full_link(&link);
+    assert!(errors.is_empty(), "{errors:?}");
+    let s = state(&opened);
+    assert_eq!(s["pinned_targets"], pins);
+    let foot = effector(&s, "right_foot");
+    assert_eq!(foot["pinned"], true);
+    // Where the link says, relative to the restored root.
+    let body = point(&pins["right_foot"]);
+    let root = gaitlab_core::driver::Driver::pose(opened.driver()).root;
+    let world = root.position + root.rotation * glam::DVec3::from_array(body);
+    assert!(distance(point(&foot["target_m"]), world.to_array()) < 1e-9);
+    // Bad pins name their field and leave the pins as they were.
+    for (c, field) in [
+        (
+            json!({"pinned_targets": {"tail": [0, 0, 0]}}),
+            "pinned_targets.tail",
+        ),
+        (
+            json!({"pinned_targets": {"left_hand": [0, 500, 0]}}),
+            "pinned_targets.left_hand",
+        ),
+    ] {
+        let error = opened.command(&c.to_string()).err().unwrap_or_default();
+        assert!(error.starts_with(field), "{c}: {error}");
+        assert_eq!(state(&opened)["pinned_targets"], pins);
+    }
+    command(&mut opened, &json!({"pinned_targets": {}}));
+    assert_eq!(state(&opened)["pinned_targets"], json!({}));
+}

@@ -32,6 +32,7 @@ const NOT_PARAMETERS: &[&str] = &[
     "step",
     "iterate",
     "drag_target",
+    "pinned_targets",
     "playback_rate",
     "step_back_s",
     "rewind_to_frame",

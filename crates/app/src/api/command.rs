@@ -195,6 +195,9 @@ pub struct Command {
     /// screen (the 3-D view's grab and pull).
     #[serde(default, deserialize_with = "object")]
     pub drag_target: Option<crate::grab::DragTargetCommand>,
+    /// Every pinned target at once: effector name → where, `[x, y, z]` in
+    /// the root's frame, metres (`state().pinned_targets`; `{}` unpins all).
+    pub pinned_targets: Option<std::collections::BTreeMap<String, [f64; 3]>>,
     /// Playback rate, simulated seconds per wall second, [0.1, 2].
     pub playback_rate: Option<f64>,
     /// Pause and step back this many seconds of simulated time, [0, 10]
@@ -423,6 +426,9 @@ impl Lab {
         }
         if let Some(drag) = &c.drag_target {
             self.drag_target(drag)?;
+        }
+        if let Some(pins) = &c.pinned_targets {
+            self.set_pinned_targets(pins)?;
         }
         if let Some(seconds) = c.step_back_s {
             let seconds = range("step_back_s", seconds, 0.0, crate::lab::rewind::REWIND_S)?;

@@ -44,6 +44,8 @@ pub struct EffectorState {
     pub target_m: Option<[f64; 3]>,
     /// The target on screen, `[x, y]` points (null off screen or without one).
     pub target_pt: Option<[f32; 2]>,
+    /// The effector on screen, `[x, y]` points (null off screen).
+    pub position_pt: Option<[f32; 2]>,
     /// Where the limb's reach is measured from (its first joint), world
     /// metres: a target farther than the limb's length from it is out of reach.
     pub reach_anchor_m: [f64; 3],
@@ -80,6 +82,8 @@ pub struct IkState {
     pub max_step: f64,
     /// The lab's addition: the step clamp on transpose and DLS too.
     pub clamp_every_method: bool,
+    /// The lab's addition: Buss's target clamp, metres (0 off).
+    pub target_clamp_m: f64,
     /// The transpose method's α: `thesis` (She 2006 §4.4.1) or `buss`.
     pub transpose_alpha: TransposeAlpha,
     /// Null-space gain.
@@ -306,6 +310,9 @@ pub struct State {
     /// number and gains, and the last frame's iterations (null outside the
     /// IK engine's script).
     pub jacobian: Option<crate::jacobian::JacobianState>,
+    /// The pinned targets: effector name → where, in the root's frame,
+    /// metres (`pinned_targets` takes the same; empty without pins).
+    pub pinned_targets: std::collections::BTreeMap<String, [f64; 3]>,
 }
 
 impl State {
@@ -337,6 +344,7 @@ impl State {
                     .and_then(|t| t.position.get(e))
                     .map(|p| p.to_array()),
                 target_pt: lab.layout.target_pt.get(e).copied().flatten(),
+                position_pt: lab.layout.effector_pt.get(e).copied().flatten(),
                 reach_anchor_m: skeleton
                     .limb(e)
                     .anchor(
@@ -403,6 +411,7 @@ impl State {
                 gamma_max: settings.ik.gamma_max,
                 max_step: settings.ik.max_step,
                 clamp_every_method: settings.ik.clamp_every_method,
+                target_clamp_m: settings.ik.target_clamp_m,
                 transpose_alpha: settings.ik.transpose_alpha,
                 null_space_gain: settings.ik.null_space_gain,
                 enforce_limits: settings.ik.enforce_limits,
@@ -471,6 +480,7 @@ impl State {
                 duration_s: t.targets.end_time() - t.targets.start_time(),
             }),
             notice: lab.session.notice.clone(),
+            pinned_targets: lab.pinned_targets(),
             jacobian: lab.driver().ik_solver().map(|_| {
                 let views = lab.comparison().map_or(1, |c| c.views().len());
                 crate::jacobian::JacobianState::of(lab.jacobian(), views)

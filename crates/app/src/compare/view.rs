@@ -125,6 +125,11 @@ impl CompareView {
             .map(|e| EffectorFigures {
                 metrics: EffectorMetrics::of(skeleton, metrics, e),
                 out_of_reach_m: report.out_of_reach_m.get(e).copied(),
+                error_m: report.effector_error_m.get(e).copied(),
+                target_m: driver
+                    .targets()
+                    .and_then(|t| t.position.get(e))
+                    .map(|p| p.to_array()),
             })
             .collect()
     }
@@ -142,4 +147,9 @@ pub struct EffectorFigures {
     /// How far the target lies beyond the limb's reach this frame, metres
     /// (negative: inside by that much).
     pub out_of_reach_m: Option<f64>,
+    /// This frame's distance from the target, metres.
+    pub error_m: Option<f64>,
+    /// Where the target is this frame, world metres (a dragged target is the
+    /// same in every view).
+    pub target_m: Option<[f64; 3]>,
 }

@@ -3,6 +3,8 @@
 //! side by side every view chases the same target), and a paused figure
 //! reaching for a moved target.
 
+use std::collections::BTreeMap;
+
 use gaitlab_core::driver::Driver;
 use gaitlab_engine::AnyDriver;
 
@@ -10,16 +12,15 @@ use super::Lab;
 use crate::grab::{DragTargetCommand, GrabEvent, Pickable};
 
 impl Lab {
-    /// The figures on screen: each comparison view's driver, or the single one.
+    /// Every figure: the single view's driver (hidden during a comparison,
+    /// it keeps the holds for when the comparison ends) and each comparison
+    /// view's.
     fn drivers_mut(&mut self) -> Vec<&mut AnyDriver> {
-        match self.compare.as_mut() {
-            Some(compare) => compare
-                .views
-                .iter_mut()
-                .map(|v| &mut v.stage.driver)
-                .collect(),
-            None => vec![&mut self.stage.driver],
+        let mut drivers = vec![&mut self.stage.driver];
+        if let Some(compare) = self.compare.as_mut() {
+            drivers.extend(compare.views.iter_mut().map(|v| &mut v.stage.driver));
         }
+        drivers
     }
 
     /// Refills the hand's pickable points: in each pane, every target and
@@ -105,6 +106,73 @@ impl Lab {
         let skeleton = self.session.creature.skeleton.clone();
         self.grab.command(c, &skeleton)?;
         self.apply_grab();
+        Ok(())
+    }
+
+    /// The pinned targets of the single view's figure: name → where, in the
+    /// root's frame, metres.
+    #[must_use]
+    pub fn pinned_targets(&self) -> BTreeMap<String, [f64; 3]> {
+        let Some(held) = self.stage.driver.held_targets() else {
+            return BTreeMap::new();
+        };
+        self.session
+            .creature
+            .skeleton
+            .effectors()
+            .iter()
+            .enumerate()
+            .filter(|(e, _)| held.is_pinned(*e))
+            .filter_map(|(e, effector)| {
+                let at = held.held_at(e)?;
+                Some((effector.name.clone(), at.to_array()))
+            })
+            .collect()
+    }
+
+    /// `pinned_targets`: every pin at once, each a point in the root's frame
+    /// (as `state().pinned_targets` and links carry them); the others let go.
+    ///
+    /// # Errors
+    /// `pinned_targets.NAME: …` for an effector the figure lacks or a point
+    /// beyond ±[`crate::grab::MAX_DRAG_M`]; nothing changes then.
+    pub fn set_pinned_targets(&mut self, pins: &BTreeMap<String, [f64; 3]>) -> Result<(), String> {
+        if self.stage.driver.held_targets().is_none() {
+            if pins.is_empty() {
+                return Ok(());
+            }
+            return Err(
+                "pinned_targets: only the IK engine's thesis script has targets to pin".to_owned(),
+            );
+        }
+        let skeleton = &self.session.creature.skeleton;
+        let mut resolved = Vec::with_capacity(pins.len());
+        for (name, at) in pins {
+            let e = skeleton
+                .effector_index(name)
+                .ok_or_else(|| format!("pinned_targets.{name}: no effector named {name:?}"))?;
+            if let Some(x) = at
+                .iter()
+                .find(|x| x.is_nan() || x.abs() > crate::grab::MAX_DRAG_M)
+            {
+                return Err(format!(
+                    "pinned_targets.{name}: {x} is outside ±{} m",
+                    crate::grab::MAX_DRAG_M
+                ));
+            }
+            resolved.push((e, glam::DVec3::from_array(*at)));
+        }
+        self.release_all_targets();
+        let root = self.stage.driver.pose().root;
+        for (e, body) in resolved {
+            let world = root.position + root.rotation * body;
+            for driver in self.drivers_mut() {
+                driver.hold_target(e, Some(world));
+                driver.pin_target(e, true);
+            }
+        }
+        self.grab.note_moved();
+        self.refresh_scene();
         Ok(())
     }
 

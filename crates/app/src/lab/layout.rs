@@ -56,6 +56,8 @@ pub struct Layout {
     pub view_pt: [f32; 4],
     /// Each effector's target on screen in the first pane, `[x, y]` points.
     pub target_pt: Vec<Option<[f32; 2]>>,
+    /// Each effector of the first figure on screen, `[x, y]` points.
+    pub effector_pt: Vec<Option<[f32; 2]>>,
 }
 
 /// Rectangles of a few widgets as drawn, points `[x, y, w, h]`.
@@ -104,6 +106,7 @@ impl Default for Layout {
             figure_pt: None,
             view_pt: [0.0; 4],
             target_pt: Vec::new(),
+            effector_pt: Vec::new(),
         }
     }
 }

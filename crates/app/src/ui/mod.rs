@@ -360,7 +360,7 @@ impl Lab {
         self.layout.plots_open
     }
 
-    /// Where the first figure's targets are on screen in the view `rect`
+    /// Where the first figure's targets and effectors are on screen in the view `rect`
     /// (its first pane side by side), for `state()`.
     fn note_targets_on_screen(&mut self, rect: egui::Rect) {
         let (driver, pane) = match &self.compare {
@@ -377,14 +377,22 @@ impl Lab {
             }
             None => (&self.stage.driver, rect),
         };
+        let camera = &self.camera;
+        let on_screen = |p: &glam::DVec3| {
+            viewport::screen_point(camera, pane, p.as_vec3()).map(|at| [at.x, at.y])
+        };
         self.layout.target_pt.clear();
         if let Some(targets) = gaitlab_core::driver::Driver::targets(driver) {
             self.layout
                 .target_pt
-                .extend(targets.position.iter().map(|p| {
-                    viewport::screen_point(&self.camera, pane, p.as_vec3()).map(|at| [at.x, at.y])
-                }));
+                .extend(targets.position.iter().map(on_screen));
         }
+        self.layout.effector_pt.clear();
+        self.layout.effector_pt.extend(
+            gaitlab_core::driver::Driver::effector_positions(driver)
+                .iter()
+                .map(on_screen),
+        );
     }
 
     fn keyboard(&mut self, ui: &egui::Ui) {
