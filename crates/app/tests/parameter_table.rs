@@ -47,6 +47,7 @@ const NOT_PARAMETERS: &[&str] = &[
     "theme",
     "narrow",
     "help",
+    "jacobian_panel",
     "lesson",
     "lesson_note_open",
     "track",

@@ -258,6 +258,8 @@ pub struct Command {
     pub narrow: Option<Option<bool>>,
     /// Open or close the help window.
     pub help: Option<bool>,
+    /// Open or close the Jacobian panel's section (IK engine).
+    pub jacobian_panel: Option<bool>,
     /// A teacher's lesson (note, hidden panels, pinned plots); `false` leaves it.
     #[serde(default, deserialize_with = "present")]
     pub lesson: Option<super::off_or::OffOr<crate::lesson::Lesson>>,
@@ -486,6 +488,9 @@ impl Lab {
         }
         if let Some(help) = c.help {
             self.layout.help_open = help;
+        }
+        if let Some(open) = c.jacobian_panel {
+            self.layout.jacobian_open = Some(open);
         }
         if let Some(lesson) = &c.lesson {
             self.set_lesson(

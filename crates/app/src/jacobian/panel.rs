@@ -8,7 +8,8 @@
 
 use egui::Color32;
 use egui_plot::{
-    GridMark, HoverPosition, Legend, Line, Plot, PlotPoints, Points, uniform_grid_spacer,
+    GridMark, HoverPosition, Legend, Line, MarkerShape, Plot, PlotPoints, Points,
+    uniform_grid_spacer,
 };
 use gaitlab_core::ik::GainLaw;
 
@@ -16,6 +17,10 @@ use super::probe::{JacobianProbe, TRACE_S};
 
 /// Height of each plot, points.
 const PLOT_HEIGHT_PT: f32 = 120.0;
+
+/// Measured gains below this show as a cross on the floor: the direction
+/// got no step (a joint at its limit, or the error had no part there), rad/m.
+const GAIN_FLOOR: f64 = 1e-3;
 
 /// Samples along each gain line.
 const CURVE_SAMPLES: usize = 64;
@@ -45,10 +50,7 @@ fn sigma_words(sigma: &[f64], zero: usize) -> String {
             } else {
                 String::new()
             };
-            format!(
-                "{} singular values from {max:.3} down to {min:.3} m/rad{zero}",
-                sigma.len()
-            )
+            format!("{} σ from {max:.3} to {min:.3} m/rad{zero}", sigma.len())
         }
         _ => "no singular values (J is zero)".to_owned(),
     }
@@ -57,16 +59,16 @@ fn sigma_words(sigma: &[f64], zero: usize) -> String {
 /// The law's formula in words.
 fn law_words(law: GainLaw) -> String {
     match law {
-        GainLaw::Transpose { alpha } => format!("transpose: gain α·σ, α = {alpha:.3}"),
-        GainLaw::Pinv { cutoff } => format!("pinv: gain 1/σ, 0 below σ = {cutoff:.1e}"),
+        GainLaw::Transpose { alpha } => format!("Gain α·σ, α = {alpha:.3}."),
+        GainLaw::Pinv { cutoff } => format!("Gain 1/σ (0 below σ = {cutoff:.1e})."),
         GainLaw::Dls { lambda } => format!(
-            "DLS: gain σ/(σ² + λ²), λ = {lambda:.3} m, at most {:.2}",
+            "Gain σ/(σ² + λ²), λ = {lambda:.3} m: at most {:.2}.",
             0.5 / lambda
         ),
         GainLaw::Sdls { gamma_max } => {
-            format!("SDLS: gain 1/σ clamped per direction, γmax = {gamma_max:.3} rad")
+            format!("Gain 1/σ, clamped per direction (γmax = {gamma_max:.3} rad).")
         }
-        GainLaw::None => "no Jacobian".to_owned(),
+        GainLaw::None => "No Jacobian.".to_owned(),
     }
 }
 
@@ -91,26 +93,26 @@ pub fn figures(ui: &mut egui::Ui, probe: &JacobianProbe, views: &[(String, Color
                 "∞".to_owned()
             }
         });
+        let law = spectrum.law().map_or(String::new(), law_words);
         ui.colored_label(
             *colour,
             format!(
-                "{label}: {}; condition σmax/σmin {condition}",
+                "{label}: {}; condition {condition}. {law}",
                 sigma_words(&sigma, spectrum.zero_count())
             ),
         );
-        if let Some(law) = spectrum.law() {
-            ui.label(law_words(law));
-        }
         for s in sigma {
             low = low.min(s);
             high = high.max(s);
         }
     }
     if low.is_finite() && high.is_finite() {
-        ui.label(format!(
-            "Gain per singular direction (rad/m), for an error of {:.0} mm — line: the formula; dots: this iteration's σᵢ and the gain each got:",
-            probe.spectrum(0).map_or(0.0, |s| s.amplitude_m() * 1e3)
-        ));
+        ui.label(
+            "Gain per singular direction (rad/m) — line: the method's formula; dots: at this \
+             iteration's σᵢ, the gain the direction actually got, (vᵢ·Δθ)/(uᵢ·e). A dot under \
+             its line is a clamp at work; a cross on the floor, a direction that got no step \
+             (a joint at its limit).",
+        );
         gain_plot(ui, probe, views, low, high);
     }
     let frames: Vec<_> = probe.frames().copied().collect();
@@ -195,7 +197,6 @@ fn gain_plot(
         .allow_scroll(false)
         .allow_boxed_zoom(false)
         .allow_axis_zoom_drag(false)
-        .legend(Legend::default())
         .x_axis_label("σ (m/rad)")
         .y_axis_label("gain (rad/m)")
         .x_grid_spacer(uniform_grid_spacer(|_| [1.0, 1.0, 1.0]))
@@ -226,19 +227,26 @@ fn gain_plot(
                     })
                     .collect();
                 plot.line(Line::new(label.clone(), PlotPoints::from(line)).color(*colour));
-                let dots: Vec<[f64; 2]> = spectrum
-                    .directions()
-                    .iter()
-                    .enumerate()
-                    .filter_map(|(k, d)| {
-                        let g = spectrum.gain(k, d.sigma)?;
-                        (g > 0.0).then(|| [d.sigma.log10(), g.log10()])
-                    })
-                    .collect();
+                let actual = probe.actual_gains(i).unwrap_or(&[]);
+                let mut dots = Vec::new();
+                let mut stalled = Vec::new();
+                for (d, g) in spectrum.directions().iter().zip(actual) {
+                    match g {
+                        Some(g) if *g >= GAIN_FLOOR => dots.push([d.sigma.log10(), g.log10()]),
+                        Some(_) => stalled.push([d.sigma.log10(), GAIN_FLOOR.log10()]),
+                        None => {}
+                    }
+                }
                 plot.points(
                     Points::new(format!("{label} σᵢ"), PlotPoints::from(dots))
                         .color(*colour)
                         .radius(3.5),
+                );
+                plot.points(
+                    Points::new(format!("{label}: no step"), PlotPoints::from(stalled))
+                        .color(*colour)
+                        .shape(MarkerShape::Cross)
+                        .radius(4.0),
                 );
             }
         });

@@ -42,6 +42,9 @@ pub struct IterationPoint {
 #[derive(Clone, Debug, Default)]
 pub struct JacobianProbe {
     spectra: Vec<Spectrum>,
+    /// Per view, per direction: the gain the last iteration actually gave
+    /// it, (vᵢ·Δθ)/(uᵢ·e); `None` where the error had no part along uᵢ.
+    actual: Vec<Vec<Option<f64>>>,
     /// Whether each spectrum holds this frame's figures.
     valid: Vec<bool>,
     frames: VecDeque<FramePoint>,
@@ -63,14 +66,24 @@ impl JacobianProbe {
             }
             if self.spectra.len() <= i {
                 self.spectra.push(Spectrum::default());
+                self.actual.push(Vec::new());
                 self.valid.push(false);
             }
             self.valid[i] = driver.ik_solver().is_some_and(|solver| {
                 let size = solver.error().iter().map(|x| x * x).sum::<f64>().sqrt();
                 // Before the first iteration J is all zeros: nothing to show yet.
-                solver.spectrum(size, &mut self.spectra[i]).is_ok()
+                let valid = solver.spectrum(size, &mut self.spectra[i]).is_ok()
                     && self.spectra[i].law().is_some()
-                    && !self.spectra[i].directions().is_empty()
+                    && !self.spectra[i].directions().is_empty();
+                if valid {
+                    actual_gains(
+                        &self.spectra[i],
+                        solver.error(),
+                        solver.last_step(),
+                        &mut self.actual[i],
+                    );
+                }
+                valid
             });
             count = i + 1;
         }
@@ -150,6 +163,15 @@ impl JacobianProbe {
         (*self.valid.get(i)?).then(|| &self.spectra[i])
     }
 
+    /// The gain the last iteration of view `i` actually gave each direction,
+    /// (vᵢ·Δθ)/(uᵢ·e), in [`Spectrum::directions`]' order (`None` where the
+    /// error had no part along uᵢ).
+    #[must_use]
+    pub fn actual_gains(&self, i: usize) -> Option<&[Option<f64>]> {
+        self.spectrum(i)?;
+        self.actual.get(i).map(Vec::as_slice)
+    }
+
     /// The smallest σ and the condition number, frame by frame, oldest first.
     pub fn frames(&self) -> impl ExactSizeIterator<Item = &FramePoint> {
         self.frames.iter()
@@ -166,6 +188,23 @@ impl JacobianProbe {
         self.iterations.clear();
         self.valid.fill(false);
         self.last_time_s = None;
+    }
+}
+
+/// Each direction's measured gain: the step's part along vᵢ over the
+/// error's part along uᵢ, where the error has a part along uᵢ (above 1e-6 of
+/// its length).
+fn actual_gains(spectrum: &Spectrum, error: &[f64], step: &[f64], out: &mut Vec<Option<f64>>) {
+    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let size = dot(error, error).sqrt();
+    out.clear();
+    for k in 0..spectrum.directions().len() {
+        let (Some(u), Some(v)) = (spectrum.u(k), spectrum.v(k)) else {
+            out.push(None);
+            continue;
+        };
+        let along = dot(u, error);
+        out.push((along.abs() > 1e-6 * size && size > 0.0).then(|| dot(v, step) / along));
     }
 }
 

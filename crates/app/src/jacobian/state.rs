@@ -46,10 +46,14 @@ pub struct SpectrumState {
     pub condition: Option<f64>,
     /// The running method's law.
     pub law: LawState,
-    /// The method's gain at each σᵢ, clamps included, rad/m.
-    pub gain: Vec<f64>,
-    /// The error size the clamps are evaluated for (this iteration's ‖e‖), m.
-    pub amplitude_m: f64,
+    /// The law's formula at each σᵢ (no clamp), rad/m.
+    pub formula_gain: Vec<f64>,
+    /// The gain the last iteration actually gave each direction,
+    /// (vᵢ·Δθ)/(uᵢ·e), clamps and limits included (null where the error had
+    /// no part along uᵢ), rad/m.
+    pub actual_gain: Vec<Option<f64>>,
+    /// This iteration's ‖e‖, m.
+    pub error_m: f64,
 }
 
 /// One iteration of the last frame.
@@ -76,9 +80,10 @@ pub struct JacobianState {
 }
 
 impl SpectrumState {
-    /// The figures of `spectrum` (`None` without a Jacobian law).
+    /// The figures of `spectrum` and the measured gains `actual` (`None`
+    /// without a Jacobian law).
     #[must_use]
-    pub fn of(spectrum: &Spectrum) -> Option<Self> {
+    pub fn of(spectrum: &Spectrum, actual: &[Option<f64>]) -> Option<Self> {
         let law = match spectrum.law()? {
             GainLaw::Transpose { alpha } => LawState::Transpose { alpha },
             GainLaw::Pinv { cutoff } => LawState::Pinv { cutoff },
@@ -92,10 +97,17 @@ impl SpectrumState {
             zero: spectrum.zero_count(),
             condition: spectrum.condition().filter(|c| c.is_finite()),
             law,
-            gain: (0..directions.len())
-                .map(|i| spectrum.gain(i, directions[i].sigma).unwrap_or(0.0))
+            formula_gain: directions
+                .iter()
+                .map(|d| {
+                    spectrum
+                        .law()
+                        .and_then(|l| l.formula(d.sigma))
+                        .unwrap_or(0.0)
+                })
                 .collect(),
-            amplitude_m: spectrum.amplitude_m(),
+            actual_gain: actual.to_vec(),
+            error_m: spectrum.amplitude_m(),
         })
     }
 }
@@ -107,7 +119,10 @@ impl JacobianState {
         let last = probe.iterations().last().map(|p| p.time_s);
         Self {
             views: (0..views)
-                .map(|i| probe.spectrum(i).and_then(SpectrumState::of))
+                .map(|i| {
+                    let actual = probe.actual_gains(i).unwrap_or(&[]);
+                    probe.spectrum(i).and_then(|s| SpectrumState::of(s, actual))
+                })
                 .collect(),
             iterations: probe
                 .iterations()

@@ -18,7 +18,10 @@ impl Panel for JacobianPanel {
     }
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
-        ui.collapsing("Jacobian (§4.4, the SVD of J)", |ui| {
+        let open = lab.layout.jacobian_open.take();
+        egui::CollapsingHeader::new("Jacobian (§4.4, the SVD of J)")
+            .open(open)
+            .show(ui, |ui| {
             ui.horizontal_wrapped(|ui| {
                 if ui
                     .button("One iteration (I)")
