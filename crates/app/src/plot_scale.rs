@@ -55,6 +55,20 @@ pub fn round_step(wanted: f64) -> f64 {
         .unwrap_or(10.0 * decade)
 }
 
+/// A log₁₀ axis' tick label: `10^k` written out for whole k in −2..=3
+/// (0.01 … 1000), `1ek` beyond, nothing between whole powers.
+#[must_use]
+pub fn power_of_ten_label(mark: egui_plot::GridMark) -> String {
+    let k = mark.value.round();
+    if (mark.value - k).abs() > 1e-6 {
+        String::new()
+    } else if (-2.0..=3.0).contains(&k) {
+        format!("{}", 10f64.powf(k))
+    } else {
+        format!("1e{k}")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

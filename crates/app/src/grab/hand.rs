@@ -87,9 +87,18 @@ impl Grab {
         }
     }
 
-    /// What the hand did since the last call, oldest first.
-    pub fn drain_events(&mut self) -> std::vec::Drain<'_, GrabEvent> {
-        self.events.drain(..)
+    /// What the hand did since the last call, oldest first, in the event
+    /// buffer itself (give it back with [`Grab::give_back_events`]).
+    pub fn take_events(&mut self) -> Vec<GrabEvent> {
+        std::mem::take(&mut self.events)
+    }
+
+    /// Returns the (emptied) event buffer, keeping its capacity.
+    pub fn give_back_events(&mut self, mut events: Vec<GrabEvent>) {
+        events.clear();
+        if self.events.is_empty() {
+            self.events = events;
+        }
     }
 
     /// Notes that a target moved, so a paused figure reaches for it a while.

@@ -29,18 +29,6 @@ const CURVE_SAMPLES: usize = 64;
 const FIRST: Color32 = Color32::from_rgb(0x00, 0x72, 0xB2);
 const SECOND: Color32 = Color32::from_rgb(0xD5, 0x5E, 0x00);
 
-/// `10^k` for whole `k`, else nothing (the log axes' ticks).
-fn power_label(mark: GridMark) -> String {
-    let k = mark.value.round();
-    if (mark.value - k).abs() > 1e-6 {
-        String::new()
-    } else if (-2.0..=3.0).contains(&k) {
-        format!("{}", 10f64.powf(k))
-    } else {
-        format!("1e{k}")
-    }
-}
-
 /// A σ list in words: the largest, the smallest and how many.
 fn sigma_words(sigma: &[f64], zero: usize) -> String {
     match (sigma.first(), sigma.last()) {
@@ -201,8 +189,8 @@ fn gain_plot(
         .y_axis_label("gain (rad/m)")
         .x_grid_spacer(uniform_grid_spacer(|_| [1.0, 1.0, 1.0]))
         .y_grid_spacer(uniform_grid_spacer(|_| [1.0, 1.0, 1.0]))
-        .x_axis_formatter(|mark: GridMark, _| power_label(mark))
-        .y_axis_formatter(|mark: GridMark, _| power_label(mark))
+        .x_axis_formatter(|mark: GridMark, _| crate::plot_scale::power_of_ten_label(mark))
+        .y_axis_formatter(|mark: GridMark, _| crate::plot_scale::power_of_ten_label(mark))
         .label_formatter(|hover| match hover {
             HoverPosition::NearDataPoint { position, .. } => Some(format!(
                 "σ {:.3e}, gain {:.3e}",
@@ -280,7 +268,7 @@ fn trace_plot(
         })
         .y_axis_formatter(move |mark: GridMark, _| {
             if log_y {
-                power_label(mark)
+                crate::plot_scale::power_of_ten_label(mark)
             } else {
                 crate::plot_scale::tick_label(mark)
             }

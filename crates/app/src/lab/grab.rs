@@ -12,15 +12,16 @@ use super::Lab;
 use crate::grab::{DragTargetCommand, GrabEvent, Pickable};
 
 impl Lab {
-    /// Every figure: the single view's driver (hidden during a comparison,
-    /// it keeps the holds for when the comparison ends) and each comparison
-    /// view's.
-    fn drivers_mut(&mut self) -> Vec<&mut AnyDriver> {
-        let mut drivers = vec![&mut self.stage.driver];
+    /// Runs `f` on every figure: the single view's driver (hidden during a
+    /// comparison, it keeps the holds for when the comparison ends) and each
+    /// comparison view's.
+    fn each_driver(&mut self, mut f: impl FnMut(&mut AnyDriver)) {
+        f(&mut self.stage.driver);
         if let Some(compare) = self.compare.as_mut() {
-            drivers.extend(compare.views.iter_mut().map(|v| &mut v.stage.driver));
+            for view in &mut compare.views {
+                f(&mut view.stage.driver);
+            }
         }
-        drivers
     }
 
     /// Refills the hand's pickable points: in each pane, every target and
@@ -62,28 +63,28 @@ impl Lab {
     /// Applies what the hand did to every figure on screen; a paused figure
     /// reaches for a moved target for a while ([`crate::grab::SETTLE_FRAMES`]).
     pub(crate) fn apply_grab(&mut self) {
-        let events: Vec<GrabEvent> = self.grab.drain_events().collect();
+        // The event buffer is lent out and given back, so nothing allocates.
+        let mut events = self.grab.take_events();
         let moved = !events.is_empty();
-        for event in events {
-            for driver in self.drivers_mut() {
-                match event {
-                    GrabEvent::Hold { effector, at } => {
-                        driver.hold_target(effector, Some(at));
-                    }
-                    GrabEvent::Release { effector } => {
-                        driver.hold_target(effector, None);
-                    }
-                    GrabEvent::Pin { effector, on } => {
-                        driver.pin_target(effector, on);
-                    }
+        for event in events.drain(..) {
+            self.each_driver(|driver| match event {
+                GrabEvent::Hold { effector, at } => {
+                    driver.hold_target(effector, Some(at));
                 }
-            }
+                GrabEvent::Release { effector } => {
+                    driver.hold_target(effector, None);
+                }
+                GrabEvent::Pin { effector, on } => {
+                    driver.pin_target(effector, on);
+                }
+            });
         }
+        self.grab.give_back_events(events);
         let settle = self.playback.paused && self.grab.take_settle_frame();
         if settle {
-            for driver in self.drivers_mut() {
+            self.each_driver(|driver| {
                 driver.settle();
-            }
+            });
         }
         if moved || settle {
             self.probe_jacobian();
@@ -166,10 +167,10 @@ impl Lab {
         let root = self.stage.driver.pose().root;
         for (e, body) in resolved {
             let world = root.position + root.rotation * body;
-            for driver in self.drivers_mut() {
+            self.each_driver(|driver| {
                 driver.hold_target(e, Some(world));
                 driver.pin_target(e, true);
-            }
+            });
         }
         self.grab.note_moved();
         self.refresh_scene();
@@ -179,12 +180,12 @@ impl Lab {
     /// Lets go of and unpins every target (the panel's *Unpin all*).
     pub fn release_all_targets(&mut self) {
         let count = self.session.creature.skeleton.effector_count();
-        for driver in self.drivers_mut() {
+        self.each_driver(|driver| {
             for effector in 0..count {
                 driver.pin_target(effector, false);
                 driver.hold_target(effector, None);
             }
-        }
+        });
         self.grab.note_moved();
         self.refresh_scene();
     }

@@ -56,15 +56,6 @@ pub fn section(ui: &mut egui::Ui, lab: &mut Lab) {
     });
 }
 
-fn log_label(mark: GridMark) -> String {
-    let k = mark.value.round();
-    if (mark.value - k).abs() > 1e-6 {
-        String::new()
-    } else {
-        format!("{}", 10f64.powf(k))
-    }
-}
-
 fn plots(ui: &mut egui::Ui, sweep: &LambdaTradeoff, current_lambda_m: f64) {
     let series = |f: &dyn Fn(&gaitlab_engine::LambdaPoint) -> Option<f64>| -> Vec<[f64; 2]> {
         sweep
@@ -116,7 +107,7 @@ fn small_plot(
         .x_axis_label("λ (m)")
         .y_axis_label(y_label)
         .x_grid_spacer(uniform_grid_spacer(|_| [1.0, 1.0, 1.0]))
-        .x_axis_formatter(|mark: GridMark, _| log_label(mark))
+        .x_axis_formatter(|mark: GridMark, _| crate::plot_scale::power_of_ten_label(mark))
         .y_grid_spacer(if log_y {
             uniform_grid_spacer(|_| [1.0, 1.0, 1.0])
         } else {
@@ -124,7 +115,7 @@ fn small_plot(
         })
         .y_axis_formatter(move |mark: GridMark, _| {
             if log_y {
-                log_label(mark)
+                crate::plot_scale::power_of_ten_label(mark)
             } else {
                 crate::plot_scale::tick_label(mark)
             }

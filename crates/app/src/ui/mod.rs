@@ -155,12 +155,7 @@ impl Lab {
                         &mut self.grab,
                     );
                     self.layout.trunk_pt = None;
-                    self.layout.figure_pt = self
-                        .stage
-                        .scene
-                        .bounds()
-                        .and_then(|b| figure_on_screen(&self.camera, response.rect, &b));
-                    self.layout.view_pt = crate::lab::layout::rect_pt(response.rect);
+                    self.note_single_view(response.rect);
                     response.rect
                 }
                 None => {
@@ -177,12 +172,7 @@ impl Lab {
                     self.layout.trunk_pt = trunk
                         .and_then(|(p, _)| viewport::screen_point(&self.camera, response.rect, p))
                         .map(|at| [at.x, at.y]);
-                    self.layout.figure_pt = self
-                        .stage
-                        .scene
-                        .bounds()
-                        .and_then(|b| figure_on_screen(&self.camera, response.rect, &b));
-                    self.layout.view_pt = crate::lab::layout::rect_pt(response.rect);
+                    self.note_single_view(response.rect);
                     if let Some(dv) = pushed
                         && let Err(error) = self.push(dv)
                     {
@@ -358,6 +348,16 @@ impl Lab {
     #[must_use]
     pub fn plots_open(&self) -> bool {
         self.layout.plots_open
+    }
+
+    /// The single view's rectangle and its figure's box on screen, for `state()`.
+    fn note_single_view(&mut self, rect: egui::Rect) {
+        self.layout.figure_pt = self
+            .stage
+            .scene
+            .bounds()
+            .and_then(|b| figure_on_screen(&self.camera, rect, &b));
+        self.layout.view_pt = crate::lab::layout::rect_pt(rect);
     }
 
     /// Where the first figure's targets and effectors are on screen in the view `rect`
