@@ -19,17 +19,19 @@ after(async () => { await server?.close(); });
 
 /** Waits until `pred(state())` holds, polling; a timeout shows the layout. */
 const until = (page, pred, what, timeout = 30_000) =>
-  waitFor(page, pred, what, timeout, 150, (s) => JSON.stringify(s.layout));
+  waitFor(page, pred, what, timeout, 150, (s) => `rate ${s.playback_rate}, ${JSON.stringify(s.layout)}`);
 
 /**
- * Clicks at `(x, y)` until `pred(state())` holds, up to three times: on a starved machine a
- * click's press and release can fall in frames too far apart for egui to count it, or in one
- * frame (a 1170 × 2532 software canvas draws under a frame a second), so each try holds the
- * button longer: 60 ms, then 0.6 s, then 2 s.
+ * Clicks where `at(state())` says until `pred(state())` holds, up to three times: on a starved
+ * machine a click's press and release can fall in frames too far apart for egui to count it, or
+ * in one frame (a 1170 × 2532 software canvas draws under a frame a second), so each try holds
+ * the button longer (60 ms, then 0.3 s, then 0.7 s: egui counts a press of up to 0.8 s as a
+ * click) and aims at the widget where it is drawn now.
  */
-async function clickUntil(page, [x, y], pred, what) {
+async function clickUntil(page, at, pred, what) {
   for (let k = 1; ; k++) {
-    await page.mouse.click(x, y, { delay: [60, 600, 2000][k - 1] });
+    const [x, y] = at(await settled(page));
+    await page.mouse.click(x, y, { delay: [60, 300, 700][k - 1] });
     try {
       return await until(page, pred, what, k < 3 ? 10_000 : 30_000);
     } catch (e) {
@@ -72,11 +74,11 @@ for (const viewport of [{ width: 1440, height: 900 }, { width: 390, height: 844 
           assert.equal(await command(page, { paused: true }), 'ok');
           let s = await until(page, (st) => st.layout.narrow || st.layout.widgets_pt.help[2] > 0, 'a frame');
           if (s.layout.narrow) {
-            s = await clickUntil(page, centre(s.layout.controls_button_pt),
+            s = await clickUntil(page, (st) => centre(st.layout.controls_button_pt),
               (st) => st.layout.controls_open && st.layout.widgets_pt.help[2] > 0, 'the controls drawer');
           }
           // Help opens the help window (closed again through the API: on a phone it covers Help).
-          s = await clickUntil(page, centre(s.layout.widgets_pt.help), (st) => st.layout.help_open, 'Help');
+          s = await clickUntil(page, (st) => centre(st.layout.widgets_pt.help), (st) => st.layout.help_open, 'Help');
           assert.equal(await command(page, { help: false }), 'ok');
           s = await settled(page);
           // On a phone the drawer scrolls: wheel it until the rate slider is in the window.
@@ -93,13 +95,15 @@ for (const viewport of [{ width: 1440, height: 900 }, { width: 390, height: 844 
           const [x, y, w, h] = s.layout.widgets_pt.rate_slider;
           assert.ok(y + h <= height, `the rate slider in the window: ${y} + ${h} of ${height}`);
           assert.ok(w > 0, JSON.stringify(s.layout.widgets_pt));
-          s = await clickUntil(page, [x + 0.1 * w, y + h / 2], (st) => st.playback_rate < 0.9,
-            'the rate slider');
+          s = await clickUntil(page, (st) => {
+            const [rx, ry, rw, rh] = st.layout.widgets_pt.rate_slider;
+            return [rx + 0.1 * rw, ry + rh / 2];
+          }, (st) => st.playback_rate < 0.9, 'the rate slider');
           // The preset combo box takes the click (and opens its list, which a phone may close
           // again at once: the click count is the evidence).
           const clicks = s.layout.preset_combo_clicks;
           s = await settled(page);
-          s = await clickUntil(page, centre(s.layout.widgets_pt.preset_combo),
+          s = await clickUntil(page, (st) => centre(st.layout.widgets_pt.preset_combo),
             (st) => st.layout.preset_combo_clicks > clicks, 'the preset combo box');
           await page.keyboard.press('Escape');
         });
