@@ -140,8 +140,10 @@ for (const device of [
           console.log(`# ${device.label}: the reach-and-follow part is skipped under CI (run locally)`);
         } else {
           // 2. The hand itself, pulled 0.3 m toward its limb's anchor (within reach), pinned. Seen
-          // from the side, so the drag plane is the body's own on both screens.
-          assert.equal(await command(page, { camera: { yaw_deg: 90, pitch_deg: 10 } }), 'ok');
+          // from the side, so the drag plane is the body's own on both screens: from the left
+          // hand's side (the eye at yaw 90° is on +x), so it is drawn in front of the right one.
+          const side = effector(s, 'left_hand').position_m[0] >= effector(s, 'right_hand').position_m[0] ? 90 : -90;
+          assert.equal(await command(page, { camera: { yaw_deg: side, pitch_deg: 10 } }), 'ok');
           await sleep(500);
           s = await state(page);
           lh = effector(s, 'left_hand');

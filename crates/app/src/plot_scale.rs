@@ -2,7 +2,7 @@
 //! short plot can number, their labels, and the top of a y range several
 //! plots share (issue 21 item 2, readable plots).
 
-use egui_plot::{GridInput, GridMark};
+use egui_plot::{GridInput, GridMark, Plot};
 
 /// Ticks for a short plot: three to five round values (1, 2 or 5 × 10ⁿ
 /// apart) across the shown range, so a plot 100 px tall still numbers its
@@ -67,6 +67,18 @@ pub fn power_of_ten_label(mark: egui_plot::GridMark) -> String {
     } else {
         format!("1e{k}")
     }
+}
+
+/// A plot that shows figures and is not moved: no drag, zoom, scroll or box
+/// zoom, so a touch on it scrolls the panel instead of panning the axes.
+#[must_use]
+pub fn still_plot<'a>(id: impl egui::AsIdSalt) -> Plot<'a> {
+    Plot::new(id)
+        .allow_drag(false)
+        .allow_zoom(false)
+        .allow_scroll(false)
+        .allow_boxed_zoom(false)
+        .allow_axis_zoom_drag(false)
 }
 
 #[cfg(test)]

@@ -22,6 +22,12 @@ pub struct ViewOptions {
     pub grid: bool,
     /// Draw the figure's shadow and foot contact marks on the ground.
     pub shadow: bool,
+    /// Draw each effector's manipulability ellipsoid (its limb's block of
+    /// J Jᵀ, semi-axes σᵢ × 0.1 rad) at the effector (issue 44 item 3).
+    pub ellipsoids: bool,
+    /// Draw each limb's reach shell: the sphere of its full extension
+    /// around its first joint.
+    pub reach_shells: bool,
 }
 
 impl Default for ViewOptions {
@@ -34,6 +40,8 @@ impl Default for ViewOptions {
             follow: true,
             grid: true,
             shadow: true,
+            ellipsoids: false,
+            reach_shells: false,
         }
     }
 }
@@ -50,6 +58,8 @@ impl ViewOptions {
             follow: false,
             grid: false,
             shadow: false,
+            ellipsoids: false,
+            reach_shells: false,
         }
     }
 }

@@ -338,3 +338,71 @@ fn pinned_targets_ride_in_links_and_bad_pins_change_nothing() {
     command(&mut opened, &json!({"pinned_targets": {}}));
     assert_eq!(state(&opened)["pinned_targets"], json!({}));
 }
+
+/// A lesson starts from a pinned pose (issue 44 item 5): the right foot's
+/// target pinned 0.1 m beyond its leg's reach, the reach shells and
+/// ellipsoids on and the Jacobian panel named; the link brings all of it
+/// back, and playing, the leg straightens toward the target and its
+/// ellipsoid flattens to a disc (σ₃ of the foot's limb falls). The
+/// she-2006 hands are no example: their targets lie beyond reach by design
+/// and the trunk follows them, so their arms are straight (σ₃ ≈ 0) all along.
+#[test]
+fn a_lesson_link_starts_from_a_pinned_pose_and_the_leg_flattens() {
+    let mut lab = lab("she-2006");
+    command(&mut lab, &json!({"method": "dls"}));
+    frames(&mut lab, 10);
+    let s = state(&lab);
+    let sigma = |s: &Value, name: &str, i: usize| {
+        effector(s, name)["manipulability_m_per_rad"][i]
+            .as_f64()
+            .unwrap_or(f64::NAN)
+    };
+    let bent = sigma(&s, "right_foot", 2);
+    let hand = sigma(&s, "right_hand", 2);
+    let foot = effector(&s, "right_foot");
+    let anchor = point(&foot["reach_anchor_m"]);
+    let at = point(&foot["position_m"]);
+    let out = distance(at, anchor);
+    let leg_m = 0.987;
+    let to: Vec<f64> = (0..3)
+        .map(|k| anchor[k] + (at[k] - anchor[k]) / out * (leg_m + 0.1))
+        .collect();
+    command(
+        &mut lab,
+        &json!({"drag_target": {"name": "right_foot", "position": to, "pin": true}}),
+    );
+    command(
+        &mut lab,
+        &json!({"drag_target": {"name": "right_foot", "position": null},
+                "views": {"reach_shells": true, "ellipsoids": true},
+                "lesson": {"note": "Drag the right foot past its reach and watch σ₃.",
+                           "open_panels": ["Jacobian"], "pin_plots": ["errors"]}}),
+    );
+    let link = lab.full_link();
+    let mut opened = Lab::new(Settings::default());
+    let errors = opened.apply_full_link(&link);
+    assert!(errors.is_empty(), "{errors:?}");
+    let s = state(&opened);
+    assert_eq!(s["lesson"]["open_panels"], json!(["Jacobian"]));
+    assert_eq!(s["view_options"]["reach_shells"], true);
+    assert_eq!(s["view_options"]["ellipsoids"], true);
+    assert_eq!(effector(&s, "right_foot")["pinned"], true);
+    frames(&mut opened, 60);
+    let s = state(&opened);
+    let foot = effector(&s, "right_foot");
+    assert!(
+        foot["out_of_reach_m"].as_f64().is_some_and(|d| d > 0.05),
+        "{foot}"
+    );
+    let stretched = sigma(&s, "right_foot", 2);
+    eprintln!(
+        "right foot σ₃ {bent:.4} → {stretched:.4} m/rad pinned beyond reach (σ₁ {:.3}); right hand σ₃ {hand:.5}",
+        sigma(&s, "right_foot", 0)
+    );
+    assert!(bent > 0.05, "the walking leg is bent: σ₃ {bent}");
+    assert!(
+        stretched < 0.25 * bent,
+        "σ₃ {bent} → {stretched}: the leg straightens toward the target"
+    );
+    assert!(hand < 0.01, "the she-2006 arm is straight: σ₃ {hand}");
+}

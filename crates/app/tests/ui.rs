@@ -1011,3 +1011,33 @@ fn the_sections_below_the_poda_panel_hold_still_through_play_and_gait_switches()
         "the messages did not come and go: {seen:?}"
     );
 }
+
+/// A lesson that names the Jacobian panel opens its section (issue 44 item
+/// 5): closed before, "One iteration (I)" on screen after; a lesson that
+/// names a panel it cannot open is refused with the names it can.
+#[test]
+fn a_lesson_opens_the_jacobian_panel() {
+    let mut harness = harness();
+    harness.run();
+    assert!(
+        harness.query_by_label("One iteration (I)").is_none(),
+        "the Jacobian section starts closed"
+    );
+    let error = harness
+        .state_mut()
+        .command(r#"{"lesson": {"open_panels": ["Motion"]}}"#)
+        .err()
+        .unwrap_or_default();
+    assert!(
+        error.starts_with("lesson.open_panels[0]") && error.contains("Jacobian"),
+        "{error}"
+    );
+    if let Err(error) = harness
+        .state_mut()
+        .command(r#"{"lesson": {"note": "Watch σ₃.", "open_panels": ["Jacobian"]}, "lesson_note_open": false}"#)
+    {
+        panic!("{error}");
+    }
+    harness.run();
+    harness.get_by_label("One iteration (I)");
+}

@@ -63,6 +63,10 @@ pub struct ViewsCommand {
     pub grid: Option<bool>,
     /// The figure's shadow.
     pub shadow: Option<bool>,
+    /// Each effector's manipulability ellipsoid.
+    pub ellipsoids: Option<bool>,
+    /// Each limb's reach shell.
+    pub reach_shells: Option<bool>,
 }
 
 /// `save`'s object form.
@@ -524,6 +528,8 @@ impl Lab {
                 (&mut view.follow, views.follow),
                 (&mut view.grid, views.grid),
                 (&mut view.shadow, views.shadow),
+                (&mut view.ellipsoids, views.ellipsoids),
+                (&mut view.reach_shells, views.reach_shells),
             ] {
                 if let Some(value) = value {
                     *slot = value;

@@ -5,6 +5,7 @@
 
 use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::{JacobianAt, TransposeAlpha};
+use gaitlab_core::skeleton::Scope;
 use serde::Serialize;
 
 use gaitlab_engine::status::{PhysicsState, PodaState};
@@ -53,6 +54,10 @@ pub struct EffectorState {
     pub held: bool,
     /// Whether the target is pinned.
     pub pinned: bool,
+    /// The semi-axes σ₁ ≥ σ₂ ≥ σ₃ of the effector's manipulability
+    /// ellipsoid (its limb's block of J Jᵀ, drawn by `views.ellipsoids`),
+    /// metres per radian: σ₃ falls toward 0 as the limb straightens.
+    pub manipulability_m_per_rad: Option<[f64; 3]>,
 }
 
 /// `views[0]`: the single view's method, errors, box on screen and run metrics.
@@ -354,6 +359,9 @@ impl State {
                     .to_array(),
                 held: held.is_some_and(|h| h.held_at(e).is_some()),
                 pinned: held.is_some_and(|h| h.is_pinned(e)),
+                manipulability_m_per_rad: skeleton
+                    .manipulability(&lab.stage.kinematics, e, Scope::Limb)
+                    .map(|m| m.sigma),
             })
             .collect();
         let settings = &lab.session.settings;

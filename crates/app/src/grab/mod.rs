@@ -16,4 +16,4 @@ mod tool;
 
 pub use command::{DragTargetCommand, MAX_DRAG_M};
 pub use hand::{Grab, GrabEvent, SETTLE_FRAMES};
-pub use pick::{PICK_RADIUS_PT, Pickable, nearest, on_drag_plane, ray};
+pub use pick::{OVERLAP_PT, PICK_RADIUS_PT, Pickable, nearest, on_drag_plane, ray};

@@ -22,8 +22,14 @@ pub struct Pickable {
     pub at: DVec3,
 }
 
+/// Points whose screen distances from the pointer differ by less than this
+/// overlap: the one nearer the camera (drawn in front) is picked, points.
+pub const OVERLAP_PT: f32 = 8.0;
+
 /// The pickable point nearest `pointer` within [`PICK_RADIUS_PT`] in the
-/// pane `rect`, and its screen position.
+/// pane `rect`, and its screen position. Where points overlap on screen
+/// (within [`OVERLAP_PT`] of the nearest), the one nearest the camera wins:
+/// seen from the side, the hand in front, not the one behind it.
 #[must_use]
 pub fn nearest(
     camera: &Camera,
@@ -34,12 +40,18 @@ pub fn nearest(
     if !rect.contains(pointer) {
         return None;
     }
-    points
-        .iter()
-        .filter_map(|p| Some((*p, screen_point(camera, rect, p.at.as_vec3())?)))
-        .map(|(p, at)| (p, at, at.distance(pointer)))
-        .filter(|(_, _, d)| *d <= PICK_RADIUS_PT)
-        .min_by(|a, b| a.2.total_cmp(&b.2))
+    let on_screen = || {
+        points
+            .iter()
+            .filter_map(|p| Some((*p, screen_point(camera, rect, p.at.as_vec3())?)))
+            .map(|(p, at)| (p, at, at.distance(pointer)))
+            .filter(|(_, _, d)| *d <= PICK_RADIUS_PT)
+    };
+    let best = on_screen().map(|(_, _, d)| d).min_by(f32::total_cmp)?;
+    let eye = camera.eye().as_dvec3();
+    on_screen()
+        .filter(|(_, _, d)| *d < best + OVERLAP_PT)
+        .min_by(|a, b| a.0.at.distance(eye).total_cmp(&b.0.at.distance(eye)))
         .map(|(p, at, _)| (p, at))
 }
 
@@ -120,5 +132,45 @@ mod tests {
                 .is_none()
             );
         }
+    }
+
+    /// Two points on one line of sight: the one nearer the camera is picked
+    /// even when the pointer lands a little nearer the other's screen point;
+    /// apart on screen, the nearer on screen is picked.
+    #[test]
+    fn overlapping_points_pick_the_one_in_front() {
+        let rect = Rect::from_min_size(Pos2::ZERO, egui::vec2(800.0, 500.0));
+        let camera = Camera::default();
+        let eye = camera.eye().as_dvec3();
+        let front = DVec3::new(0.1, 0.8, 0.0);
+        let behind = front + (front - eye).normalize() * 0.5;
+        let points = [
+            Pickable {
+                effector: 1,
+                at: behind,
+            },
+            Pickable {
+                effector: 2,
+                at: front,
+            },
+        ];
+        let at_behind = screen_point(&camera, rect, behind.as_vec3()).expect("in view");
+        let at_front = screen_point(&camera, rect, front.as_vec3()).expect("in view");
+        assert!(at_behind.distance(at_front) < 1.0, "one line of sight");
+        let picked = nearest(&camera, rect, &points, at_behind + egui::vec2(3.0, 0.0));
+        assert_eq!(picked.map(|(p, _)| p.effector), Some(2));
+        // Side by side on screen, 20 pt apart: the one under the pointer.
+        let beside = [
+            Pickable {
+                effector: 1,
+                at: behind,
+            },
+            Pickable {
+                effector: 2,
+                at: front + camera.right().as_dvec3() * 0.3,
+            },
+        ];
+        let picked = nearest(&camera, rect, &beside, at_behind);
+        assert_eq!(picked.map(|(p, _)| p.effector), Some(1));
     }
 }

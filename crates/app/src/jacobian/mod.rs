@@ -13,4 +13,4 @@ mod state;
 
 pub use panel::figures;
 pub use probe::{FramePoint, IterationPoint, JacobianProbe, MAX_TRACED_ITERATIONS, TRACE_S};
-pub use state::{JacobianState, LawState, SpectrumState};
+pub use state::{JacobianState, SpectrumState};

@@ -8,8 +8,7 @@
 
 use egui::Color32;
 use egui_plot::{
-    GridMark, HoverPosition, Legend, Line, MarkerShape, Plot, PlotPoints, Points,
-    uniform_grid_spacer,
+    GridMark, HoverPosition, Legend, Line, MarkerShape, PlotPoints, Points, uniform_grid_spacer,
 };
 use gaitlab_core::ik::GainLaw;
 
@@ -178,13 +177,8 @@ fn gain_plot(
     high: f64,
 ) {
     let (x0, x1) = ((low / 10.0).log10(), (high * 3.0).log10());
-    Plot::new("jacobian_gain")
+    crate::plot_scale::still_plot("jacobian_gain")
         .height(PLOT_HEIGHT_PT * 1.5)
-        .allow_drag(false)
-        .allow_zoom(false)
-        .allow_scroll(false)
-        .allow_boxed_zoom(false)
-        .allow_axis_zoom_drag(false)
         .x_axis_label("σ (m/rad)")
         .y_axis_label("gain (rad/m)")
         .x_grid_spacer(uniform_grid_spacer(|_| [1.0, 1.0, 1.0]))
@@ -249,16 +243,11 @@ fn trace_plot(
     log_y: bool,
     series: &[(&str, Color32, Vec<[f64; 2]>)],
 ) {
-    let mut plot = Plot::new(id);
+    let mut plot = crate::plot_scale::still_plot(id);
     if !log_y {
         plot = plot.include_y(0.0);
     }
     plot.height(PLOT_HEIGHT_PT)
-        .allow_drag(false)
-        .allow_zoom(false)
-        .allow_scroll(false)
-        .allow_boxed_zoom(false)
-        .allow_axis_zoom_drag(false)
         .legend(Legend::default())
         .x_axis_label(x_label)
         .y_grid_spacer(if log_y {

@@ -7,33 +7,6 @@ use serde::Serialize;
 
 use super::probe::JacobianProbe;
 
-/// A method's gain law and its constants this frame.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
-#[serde(tag = "law", rename_all = "lowercase")]
-pub enum LawState {
-    /// g = α·σ.
-    Transpose {
-        /// α, 1/m².
-        alpha: f64,
-    },
-    /// g = 1/σ above `cutoff`.
-    Pinv {
-        /// The rank tolerance times σ_max, m.
-        cutoff: f64,
-    },
-    /// g = σ/(σ² + λ²).
-    Dls {
-        /// λ, m.
-        lambda: f64,
-    },
-    /// g = 1/σ clamped per direction by γᵢ.
-    Sdls {
-        /// γmax, radians.
-        gamma_max: f64,
-    },
-}
-
 /// One view's spectrum.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -45,7 +18,7 @@ pub struct SpectrumState {
     /// σ_max / σ_min (null when infinite).
     pub condition: Option<f64>,
     /// The running method's law.
-    pub law: LawState,
+    pub law: GainLaw,
     /// The law's formula at each σᵢ (no clamp), rad/m.
     pub formula_gain: Vec<f64>,
     /// The gain the last iteration actually gave each direction,
@@ -84,13 +57,7 @@ impl SpectrumState {
     /// without a Jacobian law).
     #[must_use]
     pub fn of(spectrum: &Spectrum, actual: &[Option<f64>]) -> Option<Self> {
-        let law = match spectrum.law()? {
-            GainLaw::Transpose { alpha } => LawState::Transpose { alpha },
-            GainLaw::Pinv { cutoff } => LawState::Pinv { cutoff },
-            GainLaw::Dls { lambda } => LawState::Dls { lambda },
-            GainLaw::Sdls { gamma_max } => LawState::Sdls { gamma_max },
-            GainLaw::None => return None,
-        };
+        let law = spectrum.law().filter(|l| *l != GainLaw::None)?;
         let directions = spectrum.directions();
         Some(Self {
             sigma: directions.iter().map(|d| d.sigma).collect(),
@@ -99,12 +66,7 @@ impl SpectrumState {
             law,
             formula_gain: directions
                 .iter()
-                .map(|d| {
-                    spectrum
-                        .law()
-                        .and_then(|l| l.formula(d.sigma))
-                        .unwrap_or(0.0)
-                })
+                .map(|d| law.formula(d.sigma).unwrap_or(0.0))
                 .collect(),
             actual_gain: actual.to_vec(),
             error_m: spectrum.amplitude_m(),

@@ -18,6 +18,9 @@ impl Lab {
             return Ok(());
         }
         self.layout.lesson_note_open = lesson.as_ref().is_some_and(|l| !l.note.trim().is_empty());
+        if lesson.as_ref().is_some_and(|l| l.opens("Jacobian")) {
+            self.layout.jacobian_open = Some(true);
+        }
         self.session.lesson = lesson;
         self.outbox.push(Effect::LinkChanged);
         Ok(())

@@ -4,9 +4,7 @@
 //! as a vertical line and the measured figures on hover.
 
 use egui::Color32;
-use egui_plot::{
-    GridMark, HoverPosition, Line, Plot, PlotPoints, Points, VLine, uniform_grid_spacer,
-};
+use egui_plot::{GridMark, HoverPosition, Line, PlotPoints, Points, VLine, uniform_grid_spacer};
 
 use super::LambdaTradeoff;
 use crate::lab::Lab;
@@ -96,13 +94,8 @@ fn small_plot(
     current_log_lambda: f64,
     log_y: bool,
 ) {
-    Plot::new(id)
+    crate::plot_scale::still_plot(id)
         .height(PLOT_HEIGHT_PT)
-        .allow_drag(false)
-        .allow_zoom(false)
-        .allow_scroll(false)
-        .allow_boxed_zoom(false)
-        .allow_axis_zoom_drag(false)
         .include_y(0.0)
         .x_axis_label("λ (m)")
         .y_axis_label(y_label)

@@ -9,7 +9,7 @@
 use std::ops::Range;
 
 use egui::Color32;
-use egui_plot::{GridMark, HoverPosition, Line, Plot, PlotPoints};
+use egui_plot::{GridMark, HoverPosition, Line, PlotPoints};
 use gaitlab_engine::DriverKind;
 
 use crate::plot_scale::{few_round_marks, tick_label};
@@ -293,12 +293,8 @@ fn series_plot(ui: &mut egui::Ui, title: &str, history: &History, spec: &PlotSpe
     });
     let y_names = spec.y_names;
     let unit = spec.unit;
-    let mut plot = Plot::new(spec.id)
+    let mut plot = crate::plot_scale::still_plot(spec.id)
         .height(ui.available_height().max(40.0))
-        .allow_drag(false)
-        .allow_zoom(false)
-        .allow_scroll(false)
-        .allow_axis_zoom_drag(false)
         .include_y(0.0)
         .include_y(spec.min_span)
         .x_axis_label("time (s)")

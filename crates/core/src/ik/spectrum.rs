@@ -28,8 +28,11 @@ use crate::skeleton::TaskBlock;
 /// smaller value is noise, not a direction.
 pub const ZERO_SIGMA_RELATIVE: f64 = 1e-7;
 
-/// A method's gain law, with this frame's constants.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// A method's gain law, with this frame's constants. Serialised as
+/// `{"law": "dls", "lambda": …}` (the JS API's `state().jacobian`).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(tag = "law", rename_all = "lowercase")]
 pub enum GainLaw {
     /// g = α·σ (She 2006 §4.4.1), α for this frame's error.
     Transpose {

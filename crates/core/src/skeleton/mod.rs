@@ -4,11 +4,13 @@
 mod dh;
 mod effector;
 mod joint;
+mod manipulability;
 mod reach;
 mod tree;
 
 pub use dh::{DhJoint, DhLimb};
 pub use effector::Effector;
 pub use joint::{Joint, JointKind};
+pub use manipulability::{Ellipsoid, Scope};
 pub use reach::Limb;
 pub use tree::{AxisKind, JointShape, Skeleton, SkeletonError, TaskBlock};

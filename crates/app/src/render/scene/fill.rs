@@ -230,6 +230,11 @@ impl Scene {
             }
         }
 
+        // Manipulability ellipsoids and reach shells.
+        if view.ellipsoids || view.reach_shells {
+            super::reach::push_reach(frame, skeleton, kin, view.ellipsoids, view.reach_shells);
+        }
+
         // World axes at the origin.
         if view.world_axes {
             for (axis, color) in [Vec3::X, Vec3::Y, Vec3::Z]

@@ -23,6 +23,7 @@
 //! - `frame`: [`SceneFrame`] (one frame's lists) and [`Scene`] (the shared, refilled frame).
 //! - `fill`: [`Scene::fill`], the figure from a skeleton's forward kinematics.
 //! - `tint`: [`Scene::fill_overlay`], several figures recoloured into one scene (the comparison's overlay).
+//! - `reach`: manipulability ellipsoids and reach shells (issue 44 item 3).
 //! - `palette`: colours by side (left, right, centre line) and by role.
 //! - `sizes`: the ground's height, the sizes of bones, spheres and axes, shadow reach.
 
@@ -31,6 +32,7 @@ mod fill;
 mod frame;
 mod palette;
 mod primitives;
+mod reach;
 mod sizes;
 mod tint;
 
@@ -42,6 +44,7 @@ pub use palette::{
     TARGET_OUT_OF_REACH_COLOR, WORLD_AXIS_COLORS, series_colour, side_of,
 };
 pub use primitives::{Capsule, GroundMark, Segment, Sphere};
+pub use reach::{ELLIPSOID_COLOR, ELLIPSOID_STEP_RAD};
 pub use sizes::{
     CONTACT_DARKNESS, CONTACT_HEIGHT, GROUND_Y, JOINT_SPHERE_SCALE, MIN_BONE_RADIUS,
     SHADOW_DARKNESS, SHADOW_FADE_HEIGHT, WORLD_AXIS_LENGTH,

@@ -4,7 +4,7 @@
 //! figures (errors, timing, jitter, limit hits, She 2006 §5.3's oscillation and
 //! reachability; docs/ik-metrics.md), a per-effector table and a live error plot.
 
-use egui_plot::{Line, Plot, PlotPoints};
+use egui_plot::{Line, PlotPoints};
 
 use crate::plot_scale::{few_round_marks, tick_label};
 
@@ -256,12 +256,8 @@ fn card(
         .collect();
     // Every card on one y range, so the cards compare by eye: 0 to the
     // shared top, which no view's error exceeds.
-    Plot::new(("compare-plot", i))
+    crate::plot_scale::still_plot(("compare-plot", i))
         .height(110.0)
-        .allow_drag(false)
-        .allow_zoom(false)
-        .allow_scroll(false)
-        .allow_axis_zoom_drag(false)
         .include_y(0.0)
         .include_y(y_max_mm)
         .x_axis_label("time (s)")

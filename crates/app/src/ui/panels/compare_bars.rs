@@ -3,7 +3,7 @@
 //! She 2006 §5.3's oscillation in Hz, and the joint-velocity jitter on a
 //! log scale (the pseudoinverse's can be a thousand times the others').
 
-use egui_plot::{Bar, BarChart, GridMark, Plot, uniform_grid_spacer};
+use egui_plot::{Bar, BarChart, GridMark, uniform_grid_spacer};
 
 use crate::compare::Comparison;
 
@@ -112,13 +112,8 @@ fn chart(
         .collect();
     let top = values.iter().copied().fold(base, f64::max);
     let labels = &key.names[..values.len()];
-    Plot::new(id)
+    crate::plot_scale::still_plot(id)
         .height(CHART_HEIGHT_PT)
-        .allow_drag(false)
-        .allow_zoom(false)
-        .allow_scroll(false)
-        .allow_boxed_zoom(false)
-        .allow_axis_zoom_drag(false)
         .include_y(base)
         .include_y(if log { top.ceil() } else { top.max(1.0) * 1.1 })
         .include_x(0.4)

@@ -5,7 +5,7 @@
 
 use super::panel::Panel;
 use crate::lab::Lab;
-use crate::lesson::{LESSON_PANEL, Lesson, PLOT_NAMES};
+use crate::lesson::{LESSON_PANEL, Lesson, OPENABLE_PANELS, PLOT_NAMES};
 
 /// The "Lesson" panel.
 pub struct LessonPanel;
@@ -69,6 +69,12 @@ fn maker(ui: &mut egui::Ui, lab: &mut Lab) {
                     toggle(ui, &mut draft.hide_panels, title);
                 }
             });
+            ui.label("Open these panels:");
+            ui.horizontal_wrapped(|ui| {
+                for title in OPENABLE_PANELS {
+                    toggle(ui, &mut draft.open_panels, title);
+                }
+            });
             ui.label("Pin these plots (the others hide):");
             ui.horizontal_wrapped(|ui| {
                 for name in PLOT_NAMES {
@@ -79,8 +85,9 @@ fn maker(ui: &mut egui::Ui, lab: &mut Lab) {
                 if ui
                     .button("Start the lesson")
                     .on_hover_text(
-                        "Apply the note, hidden panels and pinned plots here; Copy link then \
-                         hands the lesson out",
+                        "Apply the note, hidden and opened panels and pinned plots here; Copy \
+                         link then hands the lesson out, with the pinned targets and view \
+                         options as they are",
                     )
                     .clicked()
                     && let Err(error) =

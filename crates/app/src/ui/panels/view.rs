@@ -44,6 +44,17 @@ fn view(ui: &mut egui::Ui, lab: &mut Lab) {
                 "Targets (red; orange when beyond the limb's reach), footholds and the error \
                  segment from each effector to its target",
             );
+        ui.checkbox(&mut view.ellipsoids, "Reach ellipsoids")
+            .on_hover_text(
+                "Each effector's manipulability ellipsoid: how far a joint step of 0.1 rad \
+                 moves it in each direction (from its limb's Jacobian); it flattens to a disc \
+                 as the limb straightens",
+            );
+        ui.checkbox(&mut view.reach_shells, "Reach shells")
+            .on_hover_text(
+                "Each limb's reach: the sphere of its full extension around its first joint; \
+                 a target outside it is out of reach (orange)",
+            );
         ui.checkbox(&mut view.grid, "Ground grid")
             .on_hover_text("Ground grid lines, 1 m apart");
         ui.checkbox(&mut view.shadow, "Shadow")
