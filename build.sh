@@ -201,6 +201,8 @@ cmd_test() {
   cargo clippy -p gaitlab-core -p gaitlab-motion -p gaitlab-physics -p gaitlab-engine -p gaitlab-tuner -p gaitlab-app --target "$WASM_TARGET" --quiet -- -D warnings
   echo "== import cycles between modules (tools/module_cycles.py)"
   python3 tools/module_cycles.py
+  echo "== the app's folders: none imports another both ways (issue 44 item 6)"
+  python3 tools/module_cycles.py --folders crates/app/src
 
   local status=0 log e2e_log
   log=$(mktemp)

@@ -10,6 +10,12 @@ mod.rs) resolves to the module that defines it, so a facade does not make a cycl
 
 Usage: tools/module_cycles.py [CRATE_SRC_DIR ...] (default: every crates/*/src). Prints each cycle
 (a strongly connected component of more than one module) and exits 1 if there is any.
+
+`--folders CRATE_SRC_DIR ...` checks coarser nodes: each top-level module of the crate with all its
+children (a folder such as `compare/`, or a single file), so two folders that import each other
+through any of their files are a cycle (issue 44 item 6: the app's features each in one folder,
+none importing another both ways). Method calls on a type another folder extends (`impl Lab` in
+`api/`) are not paths and are not seen.
 """
 import os
 import re
@@ -171,8 +177,24 @@ def sccs(g):
     return out
 
 
+def folder_graph(edges):
+    """The module graph with each module folded into its top-level module (`()` is the root)."""
+    top = lambda m: m[:1]
+    out = {}
+    for a, targets in edges.items():
+        out.setdefault(top(a), set())
+        for b in targets:
+            out.setdefault(top(b), set())
+            if top(a) != top(b):
+                out[top(a)].add(top(b))
+    return out
+
+
 def main(argv):
     here = os.path.dirname(os.path.abspath(__file__))
+    folders = bool(argv) and argv[0] == "--folders"
+    if folders:
+        argv = argv[1:]
     dirs = argv or sorted(
         os.path.join(here, "..", "crates", c, "src")
         for c in os.listdir(os.path.join(here, "..", "crates"))
@@ -182,11 +204,13 @@ def main(argv):
     for src in dirs:
         mods = modules(src)
         crate = os.path.basename(os.path.dirname(os.path.normpath(src)))
-        for comp in sccs(graph(mods)):
+        g = graph(mods)
+        for comp in sccs(folder_graph(g) if folders else g):
             found += 1
             names = sorted("crate" if not m else "::".join(m) for m in comp)
             print(f"cycle in {crate}: {' <-> '.join(names)}")
-    print(f"module_cycles: {found} cycle(s) in {len(dirs)} crate(s)")
+    what = "folder" if folders else "module"
+    print(f"module_cycles: {found} {what} cycle(s) in {len(dirs)} crate(s)")
     return 1 if found else 0
 
 

@@ -133,9 +133,11 @@ for (const device of [
         console.log(`# ${device.label}: after release the target moved at most ${(worst * 1e3).toFixed(1)} mm a frame (the script alone ${(scriptMove * 1e3).toFixed(1)})`);
         assert.ok(worst <= scriptMove + 0.005, `a jump of ${worst} m in a frame`);
 
-        // 2 needs a pick of the hand seen from the side, where the other hand can overlap it,
-        // and a pull whose in-plane part keeps it within reach by millimetres: it passes most
-        // runs here but not all, so CI skips it (saying so) and a local run measures it.
+        // 2 pulls the hand seen from the side (the pick takes the hand in front where the two
+        // overlap) to a spot the trunk's own motion leaves within reach by centimetres: 12 of 12
+        // device runs passed here (2026-12-07), but the phone's error sits at 7-9 mm of the 10 mm
+        // line, too near it for a slower CI machine, so CI skips it (saying so) and a local run
+        // measures it.
         if (process.env.CI) {
           console.log(`# ${device.label}: the reach-and-follow part is skipped under CI (run locally)`);
         } else {

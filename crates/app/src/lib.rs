@@ -19,8 +19,11 @@ pub mod lesson;
 pub mod link;
 pub mod link_state;
 pub mod memory;
+pub mod named;
+pub mod off_or;
 pub mod plot_scale;
 pub mod settings;
+pub mod stage;
 pub mod theme;
 pub mod ui;
 #[cfg(target_arch = "wasm32")]

@@ -23,7 +23,7 @@ pub struct ViewOptions {
     /// Draw the figure's shadow and foot contact marks on the ground.
     pub shadow: bool,
     /// Draw each effector's manipulability ellipsoid (its limb's block of
-    /// J Jᵀ, semi-axes σᵢ × 0.1 rad) at the effector (issue 44 item 3).
+    /// J Jᵀ, semi-axes σᵢ × 0.15 rad) at the effector (issue 44 item 3).
     pub ellipsoids: bool,
     /// Draw each limb's reach shell: the sphere of its full extension
     /// around its first joint.

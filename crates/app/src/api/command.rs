@@ -9,12 +9,12 @@ use serde::Deserialize;
 use serde::de::{Deserializer, MapAccess, Visitor};
 
 use super::camera::CameraCommand;
-use super::compare::CompareValue;
 use super::error::{from_value, object, present};
 use super::names::{
     EngineName, JacobianAtName, MethodName, ModeName, SaveFormatName, ThemeName,
     TransposeAlphaName, VideoSizeName,
 };
+use crate::compare::CompareValue;
 use crate::lab::{GaitShapeEdit, Lab};
 
 /// Longest command text accepted, bytes (a custom preset rides in `preset_json`).
@@ -266,7 +266,7 @@ pub struct Command {
     pub jacobian_panel: Option<bool>,
     /// A teacher's lesson (note, hidden panels, pinned plots); `false` leaves it.
     #[serde(default, deserialize_with = "present")]
-    pub lesson: Option<super::off_or::OffOr<crate::lesson::Lesson>>,
+    pub lesson: Option<crate::off_or::OffOr<crate::lesson::Lesson>>,
     /// Open or close the lesson's note.
     pub lesson_note_open: Option<bool>,
     /// `false`: stop following the target recording (back to the creature's
@@ -499,8 +499,8 @@ impl Lab {
         if let Some(lesson) = &c.lesson {
             self.set_lesson(
                 match lesson {
-                    super::off_or::OffOr::Off => None,
-                    super::off_or::OffOr::On(lesson) => Some(lesson.clone()),
+                    crate::off_or::OffOr::Off => None,
+                    crate::off_or::OffOr::On(lesson) => Some(lesson.clone()),
                 },
                 &crate::ui::panels::hideable_titles(),
             )?;

@@ -4,10 +4,8 @@
 
 pub mod camera;
 pub mod command;
-pub mod compare;
 mod error;
 pub mod names;
-pub mod off_or;
 #[cfg(feature = "schema")]
 pub mod schema;
 pub mod state;

@@ -5,9 +5,8 @@
 use gaitlab_core::ik::{JacobianAt, Method, TransposeAlpha};
 use gaitlab_core::preset::Engine;
 use gaitlab_core::preset::thesis::ThesisMode;
-use serde::de::{Deserialize, Deserializer, Error as _};
 
-use crate::compare::{CompareMethod, CompareScenario};
+use crate::named::named;
 use crate::settings::VideoSize;
 use crate::theme::Theme;
 
@@ -37,37 +36,6 @@ impl SaveFormat {
             _ => None,
         }
     }
-}
-
-macro_rules! named {
-    ($(#[$doc:meta])* $name:ident($inner:ty), $what:literal, $parse:expr, [$($v:literal),+ $(,)?]) => {
-        $(#[$doc])*
-        #[derive(Clone, Copy, Debug, PartialEq)]
-        pub struct $name(pub $inner);
-
-        impl<'de> Deserialize<'de> for $name {
-            fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-                let text = String::deserialize(deserializer)?;
-                ($parse)(text.as_str()).map($name).ok_or_else(|| {
-                    D::Error::custom(format!(
-                        "unknown {} {text:?} ({})",
-                        $what,
-                        [$($v),+].join(", ")
-                    ))
-                })
-            }
-        }
-
-        #[cfg(feature = "schema")]
-        impl schemars::JsonSchema for $name {
-            fn schema_name() -> std::borrow::Cow<'static, str> {
-                stringify!($name).into()
-            }
-            fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
-                schemars::json_schema!({ "type": "string", "enum": [$($v),+] })
-            }
-        }
-    };
 }
 
 named!(
@@ -105,26 +73,12 @@ named!(
     /// `save.format`: the take's file format.
     SaveFormatName(SaveFormat), "format", SaveFormat::parse, ["bvh", "csv"]
 );
-named!(
-    /// `compare.views[i]`: one comparison view's configuration.
-    CompareMethodName(CompareMethod), "method", CompareMethod::parse,
-    ["transpose", "pinv", "dls", "sdls", "pinv-ns", "dls-ns", "ccd"]
-);
-named!(
-    /// `compare.scenario`: where the comparison's targets come from.
-    ScenarioName(CompareScenario), "scenario", CompareScenario::parse,
-    ["script", "singularity"]
-);
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn the_name_lists_are_the_enums_names() {
-        for m in CompareMethod::ALL {
-            assert!(serde_json::from_value::<CompareMethodName>(m.name().into()).is_ok());
-        }
         for name in ["walk", "run", "wounded-walk", "wounded-run"] {
             assert!(ThesisMode::parse(name).is_some(), "{name}");
         }

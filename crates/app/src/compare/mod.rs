@@ -30,13 +30,14 @@ use gaitlab_engine::{AnyDriver, EngineCommand, StretchOptions};
 use serde_json::{Value, json};
 
 use crate::history::History;
-use crate::lab::Stage;
 use crate::plot_scale::round_step;
 use crate::render::Scene;
+use crate::stage::Stage;
 use crate::view::ViewOptions;
 
 mod claim;
 mod colours;
+mod command;
 mod config;
 mod method;
 mod metrics;
@@ -45,6 +46,10 @@ mod view;
 
 pub use claim::{Checked, Claim, Figure, LEVEL_FRACTION, MIN_FRAMES, Rank, Verdict};
 pub use colours::{METHOD_COLOURS, colour_srgb, colour32, colours_for, method_colour};
+pub use command::{
+    CompareCommand, CompareMethodName, CompareOptions, CompareValue, ScenarioName,
+    config_from_command,
+};
 pub use config::{CompareConfig, CompareScenario, DEFAULT_VIEWS};
 pub use method::{CompareMethod, DEFAULT_NULL_SPACE_GAIN, Parameter};
 pub use metrics::{JITTER_WINDOW_FRAMES, ViewMetrics};

@@ -10,7 +10,7 @@ use serde::Serialize;
 
 use super::method::CompareMethod;
 use super::metrics::ViewMetrics;
-use crate::lab::Stage;
+use crate::stage::Stage;
 
 /// One view: its configuration, its stage (driver, scene, and as history the
 /// largest effector error per frame, one series in metres) and its figures.

@@ -4,8 +4,8 @@
 
 use serde_json::Value;
 
-use crate::api::compare::{CompareValue, config_from_command};
 use crate::compare::{CompareConfig, CompareScenario, Comparison, DEFAULT_VIEWS};
+use crate::compare::{CompareValue, config_from_command};
 use crate::lab::{Effect, Lab};
 
 /// The bundled preset that runs She 2006 as written.

@@ -33,11 +33,11 @@ mod playback;
 mod plots;
 pub mod rewind;
 mod session;
-mod stage;
 mod take;
 mod track;
 mod video;
 
+use crate::stage::Stage;
 pub use gait_shape::GaitShapeEdit;
 pub use layout::Layout;
 pub use outbox::{Download, Effect, Outbox};
@@ -45,7 +45,6 @@ pub use overlays::Overlays;
 pub use playback::{Clock, MAX_FRAME_ADVANCE_S, PLAYBACK_RATES, Playback};
 pub use plots::{MAX_PLOT_JOINTS, PHYSICS_ATTITUDE_SERIES, PHYSICS_BODY_SERIES, Plots};
 pub use session::Session;
-pub use stage::Stage;
 pub use take::TakeRecorder;
 pub use video::VideoStatus;
 

@@ -11,7 +11,8 @@ use gaitlab_core::export::{MAX_TARGET_CSV_BYTES, parse_target_csv};
 
 use super::session::{self, LoadedTrack};
 use crate::history::History;
-use crate::lab::{Effect, Lab, Stage};
+use crate::lab::{Effect, Lab};
+use crate::stage::Stage;
 
 impl Lab {
     /// Loads a file picked or dropped: a `.csv` is a target recording to

@@ -6,8 +6,9 @@
 use egui::Color32;
 use egui_plot::{GridMark, HoverPosition, Line, PlotPoints, Points, VLine, uniform_grid_spacer};
 
+use gaitlab_core::preset::thesis::ThesisMode;
+
 use super::LambdaTradeoff;
-use crate::lab::Lab;
 
 /// Height of each plot, points.
 const PLOT_HEIGHT_PT: f32 = 110.0;
@@ -21,37 +22,42 @@ const SERIES: Color32 = Color32::from_rgb(0x00, 0x72, 0xB2);
 /// Jitter below this shows as this (the log scale's floor), rad per frame².
 const JITTER_FLOOR: f64 = 1e-6;
 
+/// What runs now, as the section compares a measurement with it.
+#[derive(Clone, Copy, Debug)]
+pub struct Running<'a> {
+    /// The thesis motion.
+    pub mode: ThesisMode,
+    /// The preset's name.
+    pub preset: &'a str,
+    /// The current DLS damping λ, metres.
+    pub lambda_m: f64,
+}
+
 /// The section, for the running thesis motion: its button and, once
-/// measured, the plots and whether they belong to what runs now.
-pub fn section(ui: &mut egui::Ui, lab: &mut Lab) {
-    let Some(mode) = lab.stage.driver.thesis_mode() else {
-        return;
-    };
+/// measured (`sweep`), the plots and whether they belong to what runs now.
+/// Returns whether Measure was pressed (the caller runs the sweep).
+pub fn section(ui: &mut egui::Ui, running: &Running, sweep: Option<&LambdaTradeoff>) -> bool {
+    let mut measure = false;
     ui.collapsing("λ trade-off (§4.4.3)", |ui| {
         ui.label(
             "DLS's λ trades tracking for calm: measure this motion at λ = 0.01 … 1 m \
              (10 s each) and see the error within reach and the jitter out of reach.",
         );
-        if ui
+        measure = ui
             .button("Measure")
             .on_hover_text("Runs the motion with DLS at seven values of λ, off screen")
-            .clicked()
-            && let Err(error) = lab.measure_lambda_tradeoff()
-        {
-            lab.report_error(error);
-        }
-        let current = lab.session.settings.ik.lambda;
-        let preset = lab.session.creature.name.clone();
-        if let Some(sweep) = lab.lambda_tradeoff() {
-            if !sweep.is_for(&preset, mode) {
+            .clicked();
+        if let Some(sweep) = sweep {
+            if !sweep.is_for(running.preset, running.mode) {
                 ui.label(format!(
                     "Measured on {} ({}); measure again for what runs now.",
                     sweep.preset, sweep.mode
                 ));
             }
-            plots(ui, sweep, current);
+            plots(ui, sweep, running.lambda_m);
         }
     });
+    measure
 }
 
 fn plots(ui: &mut egui::Ui, sweep: &LambdaTradeoff, current_lambda_m: f64) {

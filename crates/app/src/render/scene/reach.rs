@@ -15,9 +15,10 @@ use super::primitives::Segment;
 
 /// The ellipsoid's scale: its semi-axes are σᵢ × this, so it is the set of
 /// first-order effector displacements for joint steps of this norm,
-/// radians. At 0.1 rad the she-2006 human's arm ellipsoid (σ₁ 0.64 m/rad)
-/// is 0.13 m across, its leg's (σ₁ about 1.1 m/rad) 0.22 m.
-pub const ELLIPSOID_STEP_RAD: f64 = 0.1;
+/// radians. At 0.15 rad the she-2006 human's arm ellipsoid (σ₁ 0.64 m/rad)
+/// is 0.19 m across, its leg's (σ₁ about 0.98 m/rad) 0.29 m: large enough
+/// to read in four views, small enough not to hide the figure.
+pub const ELLIPSOID_STEP_RAD: f64 = 0.15;
 
 /// Segments per drawn ring.
 const RING_SEGMENTS: usize = 32;
@@ -94,7 +95,7 @@ mod tests {
 
     use super::*;
 
-    /// A planar 2-link arm, bent: its ellipsoid's rings lie at σᵢ·0.1 m from
+    /// A planar 2-link arm, bent: its ellipsoid's rings lie at σᵢ·0.15 m from
     /// the hand along its axes and one ring is flat (σ₃ = 0); its shell's
     /// rings lie on the 0.8 m sphere around the shoulder.
     #[test]

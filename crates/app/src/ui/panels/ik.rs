@@ -218,6 +218,17 @@ fn method(ui: &mut egui::Ui, lab: &mut Lab) {
         if changed {
             lab.apply_ik_options();
         }
-        crate::lambda_tradeoff::plot::section(ui, lab);
+        if let Some(mode) = lab.stage.driver.thesis_mode() {
+            let running = crate::lambda_tradeoff::plot::Running {
+                mode,
+                preset: &lab.session.creature.name,
+                lambda_m: lab.session.settings.ik.lambda,
+            };
+            if crate::lambda_tradeoff::plot::section(ui, &running, lab.lambda_tradeoff())
+                && let Err(error) = lab.measure_lambda_tradeoff()
+            {
+                lab.report_error(error);
+            }
+        }
     });
 }

@@ -46,7 +46,7 @@ fn view(ui: &mut egui::Ui, lab: &mut Lab) {
             );
         ui.checkbox(&mut view.ellipsoids, "Reach ellipsoids")
             .on_hover_text(
-                "Each effector's manipulability ellipsoid: how far a joint step of 0.1 rad \
+                "Each effector's manipulability ellipsoid: how far a joint step of 0.15 rad \
                  moves it in each direction (from its limb's Jacobian); it flattens to a disc \
                  as the limb straightens",
             );

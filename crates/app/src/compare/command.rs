@@ -5,12 +5,23 @@
 
 use serde::Deserialize;
 
-use super::off_or::OffOr;
-
 use gaitlab_core::ik::IkOptions;
 
-use super::names::{CompareMethodName, ScenarioName};
-use crate::compare::{CompareConfig, CompareMethod, CompareScenario, DEFAULT_VIEWS, Parameter};
+use super::config::{CompareConfig, CompareScenario, DEFAULT_VIEWS};
+use super::method::{CompareMethod, Parameter};
+use crate::named::named;
+use crate::off_or::OffOr;
+
+named!(
+    /// `compare.views[i]`: one comparison view's configuration.
+    CompareMethodName(CompareMethod), "method", CompareMethod::parse,
+    ["transpose", "pinv", "dls", "sdls", "pinv-ns", "dls-ns", "ccd"]
+);
+named!(
+    /// `compare.scenario`: where the comparison's targets come from.
+    ScenarioName(CompareScenario), "scenario", CompareScenario::parse,
+    ["script", "singularity"]
+);
 
 /// One view's solver options (any subset; ranges as the panel's sliders).
 #[derive(Clone, Debug, Default, PartialEq, Deserialize)]
@@ -146,4 +157,19 @@ pub fn config_from_command(
             .overlay
             .unwrap_or_else(|| current.is_some_and(|c| c.overlay)),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_method_names_are_the_enums_names() {
+        for m in CompareMethod::ALL {
+            assert!(serde_json::from_value::<CompareMethodName>(m.name().into()).is_ok());
+        }
+        for s in ["script", "singularity"] {
+            assert!(serde_json::from_value::<ScenarioName>(s.into()).is_ok());
+        }
+    }
 }
