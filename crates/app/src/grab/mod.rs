@@ -10,10 +10,14 @@
 //! it to every figure.
 
 mod command;
+mod controls;
+mod figures;
 mod hand;
 mod pick;
 mod tool;
 
 pub use command::{DragTargetCommand, MAX_DRAG_M};
+pub use controls::controls;
+pub use figures::{Applied, apply, offer_points};
 pub use hand::{Grab, GrabEvent, SETTLE_FRAMES};
 pub use pick::{OVERLAP_PT, PICK_RADIUS_PT, Pickable, nearest, on_drag_plane, ray};

@@ -7,10 +7,12 @@
 //! frame and every single iteration; allocation-free once its buffers have
 //! grown.
 
+mod controls;
 mod panel;
 mod probe;
 mod state;
 
+pub use controls::iteration_row;
 pub use panel::figures;
 pub use probe::{FramePoint, IterationPoint, JacobianProbe, MAX_TRACED_ITERATIONS, TRACE_S};
 pub use state::{JacobianState, SpectrumState};

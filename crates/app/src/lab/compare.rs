@@ -12,6 +12,15 @@ use crate::lab::{Effect, Lab};
 pub const THESIS_PRESET: &str = "she-2006";
 
 impl Lab {
+    /// The lab's IK options with its method: a new comparison view's
+    /// defaults.
+    #[must_use]
+    pub fn compare_base(&self) -> gaitlab_core::ik::IkOptions {
+        let mut base = self.session.settings.ik.clone();
+        base.method = self.session.settings.method;
+        base
+    }
+
     /// The running comparison, if any.
     #[must_use]
     pub fn comparison(&self) -> Option<&Comparison> {
@@ -80,12 +89,10 @@ impl Lab {
         // whatever the panel held.
         self.session.settings.ik = self.session.creature.scenario.ik.clone();
         self.apply_ik_options();
-        let mut base = self.session.settings.ik.clone();
-        base.method = self.session.settings.method;
         self.start_compare(CompareConfig::new(
             &DEFAULT_VIEWS,
             CompareScenario::Script,
-            &base,
+            &self.compare_base(),
         ))
     }
 
@@ -107,8 +114,7 @@ impl Lab {
             self.stop_compare();
             return Ok(());
         };
-        let mut base = self.session.settings.ik.clone();
-        base.method = self.session.settings.method;
+        let base = self.compare_base();
         let config = config_from_command(command, &base, self.compare.as_ref().map(|c| &c.config))?;
         self.configure_compare(config)
     }

@@ -9,7 +9,7 @@ use gaitlab_core::driver::Driver;
 use gaitlab_engine::AnyDriver;
 
 use super::Lab;
-use crate::grab::{DragTargetCommand, GrabEvent, Pickable};
+use crate::grab::DragTargetCommand;
 
 impl Lab {
     /// Runs `f` on every figure: the single view's driver (hidden during a
@@ -24,69 +24,37 @@ impl Lab {
         }
     }
 
-    /// Refills the hand's pickable points: in each pane, every target and
-    /// every effector of a figure whose targets can be held.
+    /// Refills the hand's pickable points from the figures on screen
+    /// ([`crate::grab::offer_points`]).
     pub(crate) fn offer_grab_points(&mut self) {
-        let (overlay, count) = match self.compare.as_ref() {
-            Some(compare) => (compare.config.overlay, compare.views.len()),
-            None => (false, 1),
-        };
-        self.grab.clear_panes(if overlay { 1 } else { count });
-        for k in 0..count {
-            let driver = match self.compare.as_ref() {
-                Some(compare) => &compare.views[k].stage.driver,
-                None => &self.stage.driver,
-            };
-            if driver.held_targets().is_none() {
-                continue;
-            }
-            let pane = &mut self.grab.panes[if overlay { 0 } else { k }];
-            if let Some(targets) = driver.targets() {
-                pane.extend(
-                    targets
-                        .position
-                        .iter()
-                        .enumerate()
-                        .map(|(effector, &at)| Pickable { effector, at }),
-                );
-            }
-            pane.extend(
-                driver
-                    .effector_positions()
-                    .iter()
-                    .enumerate()
-                    .map(|(effector, &at)| Pickable { effector, at }),
-            );
+        match self.compare.as_ref() {
+            Some(compare) => crate::grab::offer_points(
+                &mut self.grab,
+                compare.views.iter().map(|v| &v.stage.driver),
+                compare.config.overlay,
+            ),
+            None => crate::grab::offer_points(
+                &mut self.grab,
+                std::iter::once(&self.stage.driver),
+                false,
+            ),
         }
     }
 
-    /// Applies what the hand did to every figure on screen; a paused figure
-    /// reaches for a moved target for a while ([`crate::grab::SETTLE_FRAMES`]).
+    /// Applies what the hand did to every figure on screen
+    /// ([`crate::grab::apply`]) and redraws when something moved.
     pub(crate) fn apply_grab(&mut self) {
-        // The event buffer is lent out and given back, so nothing allocates.
-        let mut events = self.grab.take_events();
-        let moved = !events.is_empty();
-        for event in events.drain(..) {
-            self.each_driver(|driver| match event {
-                GrabEvent::Hold { effector, at } => {
-                    driver.hold_target(effector, Some(at));
+        let paused = self.playback.paused;
+        let (stage, compare) = (&mut self.stage, &mut self.compare);
+        let applied = crate::grab::apply(&mut self.grab, paused, |f| {
+            f(&mut stage.driver);
+            if let Some(compare) = compare.as_mut() {
+                for view in &mut compare.views {
+                    f(&mut view.stage.driver);
                 }
-                GrabEvent::Release { effector } => {
-                    driver.hold_target(effector, None);
-                }
-                GrabEvent::Pin { effector, on } => {
-                    driver.pin_target(effector, on);
-                }
-            });
-        }
-        self.grab.give_back_events(events);
-        let settle = self.playback.paused && self.grab.take_settle_frame();
-        if settle {
-            self.each_driver(|driver| {
-                driver.settle();
-            });
-        }
-        if moved || settle {
+            }
+        });
+        if applied.moved || applied.settled {
             self.probe_jacobian();
             self.refresh_scene();
         }

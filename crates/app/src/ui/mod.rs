@@ -10,7 +10,6 @@ use crate::render::viewport;
 
 pub mod fonts;
 pub mod panels;
-pub(crate) mod param_widgets;
 pub(crate) mod plots;
 mod touch;
 pub(crate) mod window;

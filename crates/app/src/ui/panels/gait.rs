@@ -9,7 +9,7 @@ use gaitlab_engine::readout::{Footfall, JointCenterReadout};
 
 use super::panel::Panel;
 use crate::lab::{GaitShapeEdit, Lab};
-use crate::ui::param_widgets::{self as widgets, Param, key};
+use crate::param_widgets::{self as widgets, Param, key};
 
 /// The PODA gait panel.
 pub struct GaitPanel;

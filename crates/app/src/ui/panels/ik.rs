@@ -5,7 +5,7 @@ use gaitlab_core::ik::{JacobianAt, Method, TransposeAlpha};
 
 use super::panel::Panel;
 use crate::lab::Lab;
-use crate::ui::param_widgets::{self as widgets, Param, key};
+use crate::param_widgets::{self as widgets, Param, key};
 
 /// The Method panel (hidden while a comparison runs: each view has its own).
 pub struct MethodPanel;

@@ -4,7 +4,6 @@
 
 mod buttons;
 mod compare;
-mod compare_bars;
 mod gait;
 mod ground_view;
 mod help;

@@ -12,7 +12,7 @@ use gaitlab_engine::catalog::check_thesis_params;
 
 use super::panel::Panel;
 use crate::lab::Lab;
-use crate::ui::param_widgets::{self as widgets, Param, key};
+use crate::param_widgets::{self as widgets, Param, key};
 
 /// The Motion panel.
 pub struct MotionPanel;

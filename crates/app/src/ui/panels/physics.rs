@@ -9,7 +9,7 @@ use gaitlab_engine::DriverKind;
 
 use super::panel::Panel;
 use crate::lab::Lab;
-use crate::ui::param_widgets::{self as widgets, Param, key};
+use crate::param_widgets::{self as widgets, Param, key};
 
 /// The physics panel.
 pub struct PhysicsPanel;
@@ -165,7 +165,7 @@ fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
             push = push_row(ui, &push_view);
             egui::CollapsingHeader::new("Gains").show(ui, |ui| {
                 ui.label("Up to 1000× the default: too much and the simulation blows up, and the creature is put back.");
-                let rows = widgets::controller_rows(ui, lab, gains.iter().map(|g| g.name));
+                let rows = widgets::controller_rows(ui, lab.creature(), lab.driver(), gains.iter().map(|g| g.name));
                 for gain in &gains {
                     let mut value = gain.value;
                     let hi = if gain.default > 0.0 {

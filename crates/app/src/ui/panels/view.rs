@@ -3,8 +3,8 @@
 
 use super::panel::Panel;
 use crate::lab::Lab;
+use crate::param_widgets::{self as widgets, Param, key};
 use crate::theme::Theme;
-use crate::ui::param_widgets::{self as widgets, Param, key};
 
 /// The View and Object transformation panels.
 pub struct ViewPanel;

@@ -5,7 +5,7 @@
 
 use egui_plot::{Bar, BarChart, GridMark, uniform_grid_spacer};
 
-use crate::compare::Comparison;
+use super::comparison::Comparison;
 
 /// Height of one bar chart, points.
 const CHART_HEIGHT_PT: f32 = 120.0;

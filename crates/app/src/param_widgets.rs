@@ -15,12 +15,11 @@ use std::hash::{Hash as _, Hasher as _};
 use std::ops::RangeInclusive;
 use std::sync::Arc;
 
+use gaitlab_core::Creature;
 use gaitlab_core::ik::IK_PARAMS;
 use gaitlab_core::params::{Domain, Origin, ParamSpec, SCENARIO_PARAMS};
 use gaitlab_core::preset::{PHYSICS_PARAMS, PODA_PARAMS, THESIS_PARAMS};
-use gaitlab_engine::Parameter;
-
-use crate::lab::Lab;
+use gaitlab_engine::{AnyDriver, Parameter};
 
 /// Every static table a panel's control may set, searched in this order
 /// (no key is in two of them).
@@ -450,7 +449,8 @@ const CONTROLLER_PREFIX: &str = "scenario.physics.controller.";
 /// controllers apart) and kept in egui's memory.
 pub(crate) fn controller_rows(
     ui: &egui::Ui,
-    lab: &Lab,
+    creature: &Creature,
+    driver: &AnyDriver,
     names: impl Iterator<Item = &'static str>,
 ) -> Arc<Vec<Parameter>> {
     let slot = egui::Id::unique("gaitlab-controller-rows");
@@ -465,7 +465,7 @@ pub(crate) fn controller_rows(
         return rows;
     }
     let rows: Arc<Vec<Parameter>> = Arc::new(
-        gaitlab_engine::parameters(lab.creature(), lab.driver())
+        gaitlab_engine::parameters(creature, driver)
             .into_iter()
             .filter(|p| p.key.starts_with(CONTROLLER_PREFIX))
             .collect(),
@@ -577,17 +577,21 @@ mod tests {
     #[test]
     fn every_physics_gain_finds_its_controller_row_read_once() {
         for preset in ["raibert-biped", "raibert-quadruped", "raibert-kangaroo"] {
-            let mut lab = Lab::new(crate::Settings::default());
-            lab.set_preset(preset).expect("bundled");
-            let gains = lab.driver().physics_readout().expect("physics").gains;
+            let creature = gaitlab_core::preset::load_bundled(preset)
+                .expect("bundled")
+                .expect("valid");
+            let driver =
+                gaitlab_engine::driver_for(&creature, &gaitlab_engine::Overrides::default())
+                    .expect("a driver");
+            let gains = driver.physics_readout().expect("physics").gains;
             let ctx = egui::Context::default();
             let mut output = ctx.run_ui(egui::RawInput::default(), |ui| {
-                let rows = controller_rows(ui, &lab, gains.iter().map(|g| g.name));
+                let rows = controller_rows(ui, &creature, &driver, gains.iter().map(|g| g.name));
                 for gain in &gains {
                     let row = controller_row(&rows, gain.name);
                     assert!(row.is_some(), "{preset}: no row for {}", gain.name);
                 }
-                let again = controller_rows(ui, &lab, gains.iter().map(|g| g.name));
+                let again = controller_rows(ui, &creature, &driver, gains.iter().map(|g| g.name));
                 assert!(Arc::ptr_eq(&rows, &again), "{preset}: read once");
             });
             output.textures_delta.clear();
