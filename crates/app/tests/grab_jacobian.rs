@@ -406,3 +406,80 @@ fn a_lesson_link_starts_from_a_pinned_pose_and_the_leg_flattens() {
     );
     assert!(hand < 0.01, "the she-2006 arm is straight: σ₃ {hand}");
 }
+
+/// The hand following a pinned target on a reachable spot (issue 44's
+/// acceptance, "error under 1 cm within 1 s for SDLS"), on the she-2006
+/// walk at 60 frames a second: the left hand's target pinned 0.35 m and
+/// 0.45 m from the shoulder along the arm. With joint limits off SDLS is
+/// within 1 cm inside a second and stays within 5 mm for 2 s; under She
+/// 2006's own limit rule (clamp after each iteration, §6.1.1.1), and with
+/// the lab's re-solve (`limit_passes: 4`), clamped joints lose the target
+/// again for part of each step — a finding, printed, not asserted.
+#[test]
+fn a_pinned_reachable_target_is_followed_and_the_paper_clamp_loses_it() {
+    for (label, extra) in [
+        ("paper's clamp", json!({"method": "sdls"})),
+        (
+            "limits off",
+            json!({"method": "sdls", "enforce_limits": false}),
+        ),
+        (
+            "lab's re-solve",
+            json!({"method": "sdls", "limit_passes": 4}),
+        ),
+    ] {
+        for from_shoulder_m in [0.35, 0.45] {
+            let mut lab = lab("she-2006");
+            command(&mut lab, &extra);
+            frames(&mut lab, 30);
+            let s = state(&lab);
+            let hand = effector(&s, "left_hand");
+            let anchor = point(&hand["reach_anchor_m"]);
+            let at = point(&hand["position_m"]);
+            let out = distance(at, anchor);
+            let to: Vec<f64> = (0..3)
+                .map(|k| anchor[k] + (at[k] - anchor[k]) / out * from_shoulder_m)
+                .collect();
+            command(
+                &mut lab,
+                &json!({"drag_target": {"name": "left_hand", "position": to, "pin": true}}),
+            );
+            command(
+                &mut lab,
+                &json!({"drag_target": {"name": "left_hand", "position": null}}),
+            );
+            let mut reached = None;
+            let mut worst_after = 0.0_f64;
+            let mut deepest = 0.0_f64;
+            for k in 1..=120 {
+                frames(&mut lab, 1);
+                let s = state(&lab);
+                let hand = effector(&s, "left_hand");
+                let error = hand["error_m"].as_f64().unwrap_or(f64::NAN);
+                deepest = deepest.min(hand["out_of_reach_m"].as_f64().unwrap_or(f64::NAN));
+                match reached {
+                    None if error < 0.01 => reached = Some(k),
+                    Some(_) => worst_after = worst_after.max(error),
+                    None => {}
+                }
+            }
+            eprintln!(
+                "{label}, {from_shoulder_m} m from the shoulder: within 1 cm after {} frames, \
+                 then at most {:.1} mm over 2 s (target {:.0} mm inside the reach at most)",
+                reached.map_or("—".to_owned(), |k| k.to_string()),
+                worst_after * 1e3,
+                -deepest * 1e3
+            );
+            if label == "limits off" {
+                assert!(
+                    reached.is_some_and(|k| k <= 60),
+                    "{label} {from_shoulder_m}: reached after {reached:?} frames"
+                );
+                assert!(
+                    worst_after < 0.005,
+                    "{label} {from_shoulder_m}: lost by {worst_after} m"
+                );
+            }
+        }
+    }
+}
