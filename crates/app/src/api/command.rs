@@ -494,7 +494,7 @@ impl Lab {
             self.layout.help_open = help;
         }
         if let Some(open) = c.jacobian_panel {
-            self.layout.jacobian_open = Some(open);
+            self.jacobian.open_request = Some(open);
         }
         if let Some(lesson) = &c.lesson {
             self.set_lesson(

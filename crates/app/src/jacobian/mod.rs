@@ -8,11 +8,13 @@
 //! grown.
 
 mod controls;
+mod feature;
 mod panel;
 mod probe;
 mod state;
 
 pub use controls::iteration_row;
+pub use feature::Jacobian;
 pub use panel::figures;
 pub use probe::{FramePoint, IterationPoint, JacobianProbe, MAX_TRACED_ITERATIONS, TRACE_S};
 pub use state::{JacobianState, SpectrumState};

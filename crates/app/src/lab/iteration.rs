@@ -48,14 +48,18 @@ impl Lab {
         match self.compare.as_ref() {
             Some(compare) => self
                 .jacobian
+                .probe
                 .update(compare.views.iter().map(|v| &v.stage.driver)),
-            None => self.jacobian.update(std::iter::once(&self.stage.driver)),
+            None => self
+                .jacobian
+                .probe
+                .update(std::iter::once(&self.stage.driver)),
         }
     }
 
     /// The Jacobian panel's figures.
     #[must_use]
     pub fn jacobian(&self) -> &JacobianProbe {
-        &self.jacobian
+        &self.jacobian.probe
     }
 }

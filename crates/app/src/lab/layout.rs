@@ -58,9 +58,6 @@ pub struct Layout {
     pub target_pt: Vec<Option<[f32; 2]>>,
     /// Each effector of the first figure on screen, `[x, y]` points.
     pub effector_pt: Vec<Option<[f32; 2]>>,
-    /// Open (true) or close the Jacobian panel's section at the next frame
-    /// (`jacobian_panel`, a lesson), then leave it to the person.
-    pub jacobian_open: Option<bool>,
 }
 
 /// Rectangles of a few widgets as drawn, points `[x, y, w, h]`.
@@ -110,7 +107,6 @@ impl Default for Layout {
             view_pt: [0.0; 4],
             target_pt: Vec::new(),
             effector_pt: Vec::new(),
-            jacobian_open: None,
         }
     }
 }

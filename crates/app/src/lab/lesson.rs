@@ -19,7 +19,7 @@ impl Lab {
         }
         self.layout.lesson_note_open = lesson.as_ref().is_some_and(|l| !l.note.trim().is_empty());
         if lesson.as_ref().is_some_and(|l| l.opens("Jacobian")) {
-            self.layout.jacobian_open = Some(true);
+            self.jacobian.open_request = Some(true);
         }
         self.session.lesson = lesson;
         self.outbox.push(Effect::LinkChanged);

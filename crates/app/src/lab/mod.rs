@@ -85,7 +85,7 @@ pub struct Lab {
     /// The hand in the 3-D view: grab and pull of IK targets.
     pub(crate) grab: crate::grab::Grab,
     /// The Jacobian panel's figures (singular values, gains, traces).
-    pub(crate) jacobian: crate::jacobian::JacobianProbe,
+    pub(crate) jacobian: crate::jacobian::Jacobian,
     /// The last measured λ trade-off (the Method panel's).
     pub(crate) lambda_tradeoff: Option<crate::lambda_tradeoff::LambdaTradeoff>,
     /// The graphics path drawing the view ("webgpu (…)" or "webgl2 (…)"), when known.
@@ -119,7 +119,7 @@ impl Lab {
             gait_derived: Vec::new(),
             shown_link: None,
             grab: crate::grab::Grab::default(),
-            jacobian: crate::jacobian::JacobianProbe::default(),
+            jacobian: crate::jacobian::Jacobian::default(),
             lambda_tradeoff: None,
             backend: None,
             page_url: String::new(),
@@ -408,7 +408,7 @@ impl Lab {
                     .collect(),
             )
         };
-        self.jacobian.clear();
+        self.jacobian.probe.clear();
         self.probe_jacobian();
         self.refresh_scene();
         self.rewind_restart();

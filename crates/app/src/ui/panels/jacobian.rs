@@ -19,7 +19,7 @@ impl Panel for JacobianPanel {
     }
 
     fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
-        let open = lab.layout.jacobian_open.take();
+        let open = lab.jacobian.open_request.take();
         egui::CollapsingHeader::new("Jacobian (§4.4, the SVD of J)")
             .open(open)
             .show(ui, |ui| {
