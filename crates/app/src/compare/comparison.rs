@@ -24,7 +24,7 @@ use super::view::CompareView;
 pub struct Comparison {
     /// What runs.
     pub config: CompareConfig,
-    pub(crate) views: Vec<CompareView>,
+    pub(super) views: Vec<CompareView>,
     /// Each view's colour: its method's ([`colours_for`]), sRGB bytes.
     colours: Vec<[u8; 3]>,
     /// Every view's figure in its colour, in one scene (filled while
@@ -33,6 +33,18 @@ pub struct Comparison {
 }
 
 impl Comparison {
+    /// Every view's driver, in view order.
+    pub fn drivers(&self) -> impl ExactSizeIterator<Item = &AnyDriver> {
+        self.views.iter().map(|v| &v.stage.driver)
+    }
+
+    /// Runs `f` on every view's driver, in view order.
+    pub fn for_each_driver(&mut self, mut f: impl FnMut(&mut AnyDriver)) {
+        for view in &mut self.views {
+            f(&mut view.stage.driver);
+        }
+    }
+
     /// Builds one driver per view from `template` (the lab's IK driver: the
     /// thesis driver with its skeleton, parameters, mode and origin, or a
     /// recording's), reset to time 0. The singularity scenario stretches

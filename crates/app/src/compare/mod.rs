@@ -35,6 +35,7 @@ mod controls;
 mod method;
 mod metrics;
 mod notice;
+mod snapshot;
 mod table;
 mod view;
 
@@ -51,4 +52,5 @@ pub use controls::{CompareRequest, controls};
 pub use method::{CompareMethod, DEFAULT_NULL_SPACE_GAIN, Parameter};
 pub use metrics::{JITTER_WINDOW_FRAMES, ViewMetrics};
 pub use notice::{NoticeLine, notice};
+pub use snapshot::CompareSnapshot;
 pub use view::{CompareView, EffectorFigures};

@@ -17,8 +17,8 @@ use crate::stage::Stage;
 pub struct CompareView {
     /// The configuration.
     pub method: CompareMethod,
-    pub(crate) stage: Stage<AnyDriver>,
-    pub(crate) metrics: ViewMetrics,
+    pub(super) stage: Stage<AnyDriver>,
+    pub(super) metrics: ViewMetrics,
 }
 
 impl CompareView {
@@ -41,7 +41,7 @@ impl CompareView {
     }
 
     /// After a frame: the view's figures and its error history.
-    pub(crate) fn record_frame(&mut self) {
+    pub(super) fn record_frame(&mut self) {
         let stage = &mut self.stage;
         self.metrics.iterations += stage.driver.ik_report().map_or(0, |r| r.iterations as u64);
         let skeleton = stage.driver.skeleton();

@@ -18,9 +18,7 @@ impl Lab {
     fn each_driver(&mut self, mut f: impl FnMut(&mut AnyDriver)) {
         f(&mut self.stage.driver);
         if let Some(compare) = self.compare.as_mut() {
-            for view in &mut compare.views {
-                f(&mut view.stage.driver);
-            }
+            compare.for_each_driver(&mut f);
         }
     }
 
@@ -28,11 +26,9 @@ impl Lab {
     /// ([`crate::grab::offer_points`]).
     pub(crate) fn offer_grab_points(&mut self) {
         match self.compare.as_ref() {
-            Some(compare) => crate::grab::offer_points(
-                &mut self.grab,
-                compare.views.iter().map(|v| &v.stage.driver),
-                compare.config.overlay,
-            ),
+            Some(compare) => {
+                crate::grab::offer_points(&mut self.grab, compare.drivers(), compare.config.overlay)
+            }
             None => crate::grab::offer_points(
                 &mut self.grab,
                 std::iter::once(&self.stage.driver),
@@ -49,9 +45,7 @@ impl Lab {
         let applied = crate::grab::apply(&mut self.grab, paused, |f| {
             f(&mut stage.driver);
             if let Some(compare) = compare.as_mut() {
-                for view in &mut compare.views {
-                    f(&mut view.stage.driver);
-                }
+                compare.for_each_driver(&mut *f);
             }
         });
         if applied.moved || applied.settled {

@@ -46,10 +46,7 @@ impl Lab {
     /// Reads the Jacobian panel's figures from the figures on screen.
     pub(crate) fn probe_jacobian(&mut self) {
         match self.compare.as_ref() {
-            Some(compare) => self
-                .jacobian
-                .probe
-                .update(compare.views.iter().map(|v| &v.stage.driver)),
+            Some(compare) => self.jacobian.probe.update(compare.drivers()),
             None => self
                 .jacobian
                 .probe

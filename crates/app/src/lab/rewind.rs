@@ -23,7 +23,7 @@ use serde::Serialize;
 
 use super::Lab;
 use super::overlays::Overlays;
-use crate::compare::ViewMetrics;
+use crate::compare::CompareSnapshot;
 use crate::history::History;
 
 /// Seconds of history the scrubber keeps.
@@ -42,7 +42,7 @@ enum Snapshot {
         overlays: Overlays,
     },
     /// Each comparison view's driver, plot and figures.
-    Compare(Vec<(AnyDriver, History, ViewMetrics)>),
+    Compare(CompareSnapshot),
 }
 
 /// A keyframe: the state after `frame` frames.
@@ -136,19 +136,7 @@ impl Lab {
 
     fn rewind_snapshot(&self) -> Snapshot {
         match &self.compare {
-            Some(compare) => Snapshot::Compare(
-                compare
-                    .views
-                    .iter()
-                    .map(|v| {
-                        (
-                            v.stage.driver.clone(),
-                            v.stage.history.clone(),
-                            v.metrics.clone(),
-                        )
-                    })
-                    .collect(),
-            ),
+            Some(compare) => Snapshot::Compare(compare.snapshot()),
             None => Snapshot::Single {
                 driver: Box::new(self.stage.driver.clone()),
                 history: self.stage.history.clone(),
@@ -266,12 +254,7 @@ impl Lab {
         let key = &self.rewind.keys[k];
         match (&key.snapshot, self.compare.as_mut()) {
             (Snapshot::Compare(views), Some(compare)) => {
-                for (view, (driver, history, metrics)) in compare.views.iter_mut().zip(views) {
-                    view.stage.driver.clone_from(driver);
-                    view.stage.history.clone_from(history);
-                    view.metrics.clone_from(metrics);
-                    view.stage.frame = key.frame;
-                }
+                compare.restore(views, key.frame);
                 self.stage.frame = key.frame;
             }
             (

@@ -139,7 +139,7 @@ impl Lab {
                             .views()
                             .iter()
                             .zip(&key)
-                            .map(|(v, (colour, label))| (&v.stage.scene, *label, *colour))
+                            .map(|(v, (colour, label))| (&v.stage().scene, *label, *colour))
                             .collect();
                         viewport::show_split(ui, &panes, &mut self.camera, settings, &mut self.grab)
                             .rect
