@@ -43,7 +43,7 @@ pub(super) struct HandHold {
 #[derive(Clone, Debug, Default)]
 pub struct Grab {
     /// Each pane's pickable points (the lab refills them every frame).
-    pub(crate) panes: Vec<Vec<Pickable>>,
+    pub(super) panes: Vec<Vec<Pickable>>,
     pub(super) held: Option<HandHold>,
     /// The picked point's offset from the drag plane's point under the press.
     pub(super) offset: DVec3,
