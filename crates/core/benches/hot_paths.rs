@@ -1,7 +1,8 @@
 //! Criterion benchmarks of the core hot paths, the parts of She 2006 §4.4's
 //! per-iteration cost: forward kinematics (§3.1), the geometric Jacobian
 //! (§4.3.1, PODA eq. 3) and one IK iteration of each method (§4.4; CCD for
-//! contrast), on the human and on the 63-joint `ik-quadruped` preset.
+//! contrast), on the human and on the 63-joint `ik-quadruped` preset; and
+//! every effector's manipulability ellipsoid (issue 44 item 3).
 //!
 //! Each IK iteration starts from the rest pose towards targets a few
 //! centimetres off the rest effectors, so every sample does the same work.
@@ -13,6 +14,7 @@ use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use gaitlab_core::ik::{IkSolver, Method, Targets};
 use gaitlab_core::jacobian::fill_jacobian;
 use gaitlab_core::preset::load_bundled;
+use gaitlab_core::skeleton::Scope;
 use gaitlab_core::{Creature, Kinematics, RootTransform};
 use glam::DVec3;
 use nalgebra::DMatrix;
@@ -60,6 +62,26 @@ fn jacobian(c: &mut Criterion) {
     group.finish();
 }
 
+/// Every effector's manipulability ellipsoid in one pose (what the 3-D view
+/// computes per figure per frame with *Reach ellipsoids* on).
+fn manipulability(c: &mut Criterion) {
+    let mut group = c.benchmark_group("manipulability_all_effectors");
+    for name in PRESETS {
+        let creature = creature(name);
+        let skeleton = &creature.skeleton;
+        let mut kinematics = Kinematics::new(skeleton);
+        kinematics.update(skeleton, &RootTransform::default(), &skeleton.rest_values());
+        group.bench_function(BenchmarkId::from_parameter(name), |b| {
+            b.iter(|| {
+                for e in 0..skeleton.effector_count() {
+                    black_box(skeleton.manipulability(black_box(&kinematics), e, Scope::Limb));
+                }
+            });
+        });
+    }
+    group.finish();
+}
+
 fn ik_iteration(c: &mut Criterion) {
     let mut group = c.benchmark_group("ik_iteration");
     for name in PRESETS {
@@ -89,5 +111,11 @@ fn ik_iteration(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, forward_kinematics, jacobian, ik_iteration);
+criterion_group!(
+    benches,
+    forward_kinematics,
+    jacobian,
+    manipulability,
+    ik_iteration
+);
 criterion_main!(benches);
