@@ -124,18 +124,23 @@ describe('full-state links (WebGL2 path)', () => {
     }
   });
 
-  it('a lesson link opens with its note first and its panels hidden', T, async () => {
+  it('a lesson link opens with its note first, its panels hidden, the Jacobian panel named and its pinned pose', T, async () => {
     const a = await loadApp(first, server.url);
     let link;
     const lesson = {
       note: 'Watch the hands: where a target is out of reach, which method shakes?',
       hide_panels: ['Method', 'Recording', 'View'],
       pin_plots: ['errors'],
+      open_panels: ['Jacobian'],
     };
+    const pins = { right_foot: [-0.1, -0.75, 0.25] };
     try {
-      assert.equal(await command(a.page, { preset: 'she-2006', lesson }), 'ok');
+      assert.equal(await command(a.page, {
+        preset: 'she-2006', pinned_targets: pins, views: { reach_shells: true, ellipsoids: true }, lesson,
+      }), 'ok');
       const s = await state(a.page);
       assert.deepEqual(s.lesson, lesson);
+      assert.deepEqual(s.pinned_targets, pins);
       link = await a.page.evaluate(() => window.gaitlab.link());
       a.assertClean();
     } finally {
@@ -147,6 +152,9 @@ describe('full-state links (WebGL2 path)', () => {
       const s = await state(b.page);
       assert.equal(s.last_error, null);
       assert.deepEqual(s.lesson, lesson);
+      assert.deepEqual(s.pinned_targets, pins, 'the pinned pose');
+      assert.equal(s.view_options.reach_shells, true);
+      assert.equal(s.view_options.ellipsoids, true);
       assert.equal(s.layout.lesson_note_open, true, 'the note shows first');
       for (const title of lesson.hide_panels) assert.ok(!s.layout.panels_shown.includes(title), `${title} hidden`);
       for (const title of ['Motion', 'Lesson', 'Share']) assert.ok(s.layout.panels_shown.includes(title), `${title} shown`);
