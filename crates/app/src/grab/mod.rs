@@ -14,6 +14,7 @@ mod controls;
 mod figures;
 mod hand;
 mod pick;
+mod pins;
 mod tool;
 
 pub use command::{DragTargetCommand, MAX_DRAG_M};
@@ -21,3 +22,4 @@ pub use controls::controls;
 pub use figures::{Applied, apply, offer_points};
 pub use hand::{Grab, GrabEvent, SETTLE_FRAMES};
 pub use pick::{OVERLAP_PT, PICK_RADIUS_PT, Pickable, nearest, on_drag_plane, ray};
+pub use pins::{pinned, resolve};

@@ -73,32 +73,23 @@ impl Lab {
     }
 
     /// The pinned targets of the single view's figure: name → where, in the
-    /// root's frame, metres.
+    /// root's frame, metres ([`crate::grab::pinned`]).
     #[must_use]
     pub fn pinned_targets(&self) -> BTreeMap<String, [f64; 3]> {
-        let Some(held) = self.stage.driver.held_targets() else {
-            return BTreeMap::new();
-        };
-        self.session
-            .creature
-            .skeleton
-            .effectors()
-            .iter()
-            .enumerate()
-            .filter(|(e, _)| held.is_pinned(*e))
-            .filter_map(|(e, effector)| {
-                let at = held.held_at(e)?;
-                Some((effector.name.clone(), at.to_array()))
+        self.stage
+            .driver
+            .held_targets()
+            .map_or_else(BTreeMap::new, |held| {
+                crate::grab::pinned(&self.session.creature.skeleton, held)
             })
-            .collect()
     }
 
     /// `pinned_targets`: every pin at once, each a point in the root's frame
     /// (as `state().pinned_targets` and links carry them); the others let go.
     ///
     /// # Errors
-    /// `pinned_targets.NAME: …` for an effector the figure lacks or a point
-    /// beyond ±[`crate::grab::MAX_DRAG_M`]; nothing changes then.
+    /// `pinned_targets.NAME: …` ([`crate::grab::resolve`]), or pins on a
+    /// figure whose targets cannot be held; nothing changes then.
     pub fn set_pinned_targets(&mut self, pins: &BTreeMap<String, [f64; 3]>) -> Result<(), String> {
         if self.stage.driver.held_targets().is_none() {
             if pins.is_empty() {
@@ -108,23 +99,7 @@ impl Lab {
                 "pinned_targets: only the IK engine's thesis script has targets to pin".to_owned(),
             );
         }
-        let skeleton = &self.session.creature.skeleton;
-        let mut resolved = Vec::with_capacity(pins.len());
-        for (name, at) in pins {
-            let e = skeleton
-                .effector_index(name)
-                .ok_or_else(|| format!("pinned_targets.{name}: no effector named {name:?}"))?;
-            if let Some(x) = at
-                .iter()
-                .find(|x| x.is_nan() || x.abs() > crate::grab::MAX_DRAG_M)
-            {
-                return Err(format!(
-                    "pinned_targets.{name}: {x} is outside ±{} m",
-                    crate::grab::MAX_DRAG_M
-                ));
-            }
-            resolved.push((e, glam::DVec3::from_array(*at)));
-        }
+        let resolved = crate::grab::resolve(&self.session.creature.skeleton, pins)?;
         self.release_all_targets();
         let root = self.stage.driver.pose().root;
         for (e, body) in resolved {
