@@ -21,7 +21,7 @@ pub mod link_state;
 pub mod memory;
 pub mod named;
 pub mod off_or;
-pub mod param_widgets;
+pub(crate) mod param_widgets;
 pub mod plot_scale;
 pub mod settings;
 pub mod stage;

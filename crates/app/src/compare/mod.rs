@@ -8,7 +8,7 @@
 //! its limb's reach, the errors over reachable and unreachable frames and the
 //! limb's oscillation (docs/ik-metrics.md). The "singularity" scenario pulls every limb
 //! target to about its full reach ([`gaitlab_engine::StretchOptions`]). Each view is a
-//! [`Stage`] over its own driver, as the lab's single view is.
+//! [`Stage`](crate::stage::Stage) over its own driver, as the lab's single view is.
 //!
 //! # The `compare` command and state (DESIGN.md "Browser")
 //! `{"compare": {"views": [NAME, …], "scenario": "script" | "singularity",
