@@ -22,6 +22,7 @@ pub mod portable;
 pub mod pose;
 pub mod preset;
 pub mod skeleton;
+pub mod terrain;
 pub mod trig;
 
 pub use fk::Kinematics;

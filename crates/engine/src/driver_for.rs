@@ -60,9 +60,17 @@ pub struct Overrides {
 /// # Errors
 /// A [`PresetError`] whose path names the value that cannot be used: a
 /// scenario value (`scenario.thesis.…`, `scenario.poda.gait`,
-/// `scenario.physics.…`), or for tracking `targets` / `iterations` (the
+/// `scenario.physics.…`, `scenario.terrain` when it is not flat), or for
+/// tracking `targets` / `iterations` (the
 /// recorded targets do not fit the skeleton).
 pub fn driver_for(creature: &Creature, overrides: &Overrides) -> Result<AnyDriver, PresetError> {
+    if !creature.scenario.terrain.is_flat() {
+        return Err(PresetError::new(
+            "scenario.terrain",
+            "this version's engines walk on flat ground only: a plane, stairs or a height \
+             field is read and checked, and cannot run yet",
+        ));
+    }
     if let Some(tracking) = &overrides.tracking {
         return track_driver(creature, overrides, tracking);
     }

@@ -7,6 +7,7 @@
 //! by the engine's own validation arm; a section that does not belong to the
 //! chosen engine is rejected there.
 
+use crate::terrain::Terrain;
 use serde::{Deserialize, Serialize};
 
 use super::physics::PhysicsParams;
@@ -95,6 +96,12 @@ pub struct Scenario {
     /// Physical model and controller (engine `physics` only; required there).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub physics: Option<PhysicsParams>,
+    /// The ground (issue 45): `{"kind": "flat"}` (the default, every
+    /// paper's), `plane`, `stairs` or `height_field`. The engines walk on flat
+    /// ground only so far: another kind is checked, and refused when the
+    /// scenario runs.
+    #[serde(default, skip_serializing_if = "Terrain::is_flat")]
+    pub terrain: Terrain,
 }
 
 impl Default for Scenario {
@@ -108,6 +115,7 @@ impl Default for Scenario {
             thesis: ThesisParams::default(),
             poda: None,
             physics: None,
+            terrain: Terrain::Flat,
         }
     }
 }

@@ -29,6 +29,10 @@ pub(super) fn check_scenario(
         ));
     }
     check_ik_options("scenario.ik", &scenario.ik)?;
+    scenario
+        .terrain
+        .check()
+        .map_err(|e| PresetError::new(e.path("scenario.terrain"), e.reason))?;
     if scenario.physics.is_some() && scenario.engine != Engine::Physics {
         return Err(PresetError::new(
             "scenario.physics",

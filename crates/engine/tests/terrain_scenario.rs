@@ -1,0 +1,67 @@
+//! `scenario.terrain` in a preset (issue 45 item 1, first part): a stairs or
+//! height-field ground is read and checked with errors that name the field
+//! inside `scenario.terrain`; the engines, which walk on flat ground only so
+//! far, refuse to run it by the same path instead of ignoring it; a flat or
+//! absent terrain changes nothing and is not written back.
+
+use gaitlab_core::Creature;
+use gaitlab_core::terrain::Terrain;
+use gaitlab_engine::{Overrides, driver_for};
+use serde_json::{Value, json};
+
+fn hexapod_with(terrain: Value) -> Result<Creature, String> {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../presets/hexapod.json"
+    ))
+    .map_err(|e| e.to_string())?;
+    let mut preset: Value = serde_json::from_str(&text).map_err(|e| e.to_string())?;
+    preset["scenario"]["terrain"] = terrain;
+    Creature::from_json(&preset.to_string()).map_err(|e| format!("{}: {}", e.path, e.reason))
+}
+
+#[test]
+fn a_preset_carries_its_terrain_checked_and_refused_until_the_engines_walk_on_it() {
+    let stairs = json!({"kind": "stairs", "rise_m": 0.05, "run_m": 0.3, "count": 4});
+    let creature = hexapod_with(stairs).unwrap_or_else(|e| panic!("{e}"));
+    assert!(matches!(creature.scenario.terrain, Terrain::Stairs(ref s) if s.count == 4));
+    let error = driver_for(&creature, &Overrides::default()).err();
+    assert!(
+        error
+            .as_ref()
+            .is_some_and(|e| e.path == "scenario.terrain" && e.reason.contains("flat ground")),
+        "{error:?}"
+    );
+    for (terrain, path) in [
+        (
+            json!({"kind": "height_field", "cell_m": 0.1, "rows": 2, "cols": 2, "heights_m": [0, 0.1, null, 0]}),
+            "",
+        ),
+        (
+            json!({"kind": "height_field", "cell_m": 0.1, "rows": 2, "cols": 2, "heights_m": [0, 0.1, -1, 0]}),
+            "scenario.terrain.heights_m[2]",
+        ),
+        (
+            json!({"kind": "height_field", "cell_m": 0.1, "rows": 40000, "cols": 40000, "heights_m": []}),
+            "scenario.terrain.rows",
+        ),
+        (
+            json!({"kind": "stairs", "rise_m": 0.05, "run_m": 0.3, "count": 0}),
+            "scenario.terrain.count",
+        ),
+        (
+            json!({"kind": "plane", "slope_deg": 75}),
+            "scenario.terrain.slope_deg",
+        ),
+        (json!({"kind": "ice"}), "scenario.terrain"),
+    ] {
+        let error = hexapod_with(terrain.clone()).err().unwrap_or_default();
+        assert!(error.starts_with(path), "{terrain}: {error}");
+        assert!(!error.is_empty(), "{terrain} is refused");
+    }
+    // Flat, or left out: runs as before, and is not written back.
+    let flat = hexapod_with(json!({"kind": "flat"})).unwrap_or_else(|e| panic!("{e}"));
+    assert!(driver_for(&flat, &Overrides::default()).is_ok());
+    let written = serde_json::to_value(&flat.scenario).unwrap_or_default();
+    assert!(written.get("terrain").is_none(), "{written}");
+}
