@@ -9,17 +9,29 @@ use gaitlab_core::driver::Driver;
 use gaitlab_engine::AnyDriver;
 
 use super::Lab;
+use crate::compare::Comparison;
 use crate::grab::DragTargetCommand;
+use crate::stage::Stage;
+
+/// Runs `f` on every figure: the single view's driver (hidden during a
+/// comparison, it keeps the holds for when the comparison ends) and each
+/// comparison view's. Takes the two fields, so the hand can be borrowed
+/// beside them.
+fn each_figure(
+    stage: &mut Stage,
+    compare: &mut Option<Comparison>,
+    mut f: impl FnMut(&mut AnyDriver),
+) {
+    f(&mut stage.driver);
+    if let Some(compare) = compare.as_mut() {
+        compare.for_each_driver(&mut f);
+    }
+}
 
 impl Lab {
-    /// Runs `f` on every figure: the single view's driver (hidden during a
-    /// comparison, it keeps the holds for when the comparison ends) and each
-    /// comparison view's.
-    fn each_driver(&mut self, mut f: impl FnMut(&mut AnyDriver)) {
-        f(&mut self.stage.driver);
-        if let Some(compare) = self.compare.as_mut() {
-            compare.for_each_driver(&mut f);
-        }
+    /// [`each_figure`] on the lab's figures.
+    fn each_driver(&mut self, f: impl FnMut(&mut AnyDriver)) {
+        each_figure(&mut self.stage, &mut self.compare, f);
     }
 
     /// Refills the hand's pickable points from the figures on screen
@@ -43,10 +55,7 @@ impl Lab {
         let paused = self.playback.paused;
         let (stage, compare) = (&mut self.stage, &mut self.compare);
         let applied = crate::grab::apply(&mut self.grab, paused, |f| {
-            f(&mut stage.driver);
-            if let Some(compare) = compare.as_mut() {
-                compare.for_each_driver(&mut *f);
-            }
+            each_figure(stage, compare, f);
         });
         if applied.moved || applied.settled {
             self.probe_jacobian();
