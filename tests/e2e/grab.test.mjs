@@ -1,7 +1,8 @@
 // Grab and pull (issue 44 item 1), with a real mouse at 1440 × 900 and a real finger at
 // 390 × 844: a press on the left hand's target picks it and a drag moves it 0.3 m (the target
 // stays under the pointer); pulled to a spot within reach and pinned, the hand has it within a
-// second of SDLS; released, the script takes the target back without a jump beyond the
+// second of SDLS (joint limits off there: the paper's clamp loses a reachable pin for part of
+// each step); released, the script takes the target back without a jump beyond the
 // script's own motion plus 5 mm a frame; a drag in empty space still turns the camera; and side
 // by side all four views' targets move with the drag.
 import { after, before, describe, it } from 'node:test';
@@ -38,11 +39,22 @@ async function hand(page, touch) {
   };
 }
 
-/** Moves the pointer to `p`, gives the app a few frames to take it, and returns the state. */
+/**
+ * Moves the pointer to `p`, gives the app a few frames to take it, and returns the state once
+ * the held target has stopped moving (a slow machine takes the move a frame or two late).
+ */
 async function moveTo(page, pointer, p) {
   await pointer.move(p);
   await sleep(250);
-  return state(page);
+  let s = await state(page);
+  for (let k = 0; k < 8; k++) {
+    await sleep(100);
+    const next = await state(page);
+    const still = next.views[0].effectors.every((e, i) => dist(e.target_m, s.views[0].effectors[i].target_m) < 1e-6);
+    s = next;
+    if (still) break;
+  }
+  return s;
 }
 
 /**
@@ -53,7 +65,7 @@ async function moveTo(page, pointer, p) {
 async function dragBy(page, pointer, from, dir, name, start, metres) {
   let k = 40;
   let s;
-  for (let round = 0; round < 6; round++) {
+  for (let round = 0; round < 10; round++) {
     s = await moveTo(page, pointer, [from[0] + dir[0] * k, from[1] + dir[1] * k]);
     const moved = dist(effector(s, name).target_m, start);
     if (Math.abs(moved - metres) < 0.004) break;
@@ -69,7 +81,47 @@ async function grab(page, pointer, p, dir, name) {
   for (let k = 1; k <= 3; k++) {
     await moveTo(page, pointer, [p[0] + dir[0] * 4 * k, p[1] + dir[1] * 4 * k]);
   }
-  return until(page, (s) => effector(s, name).held, `${name} held`, 15_000);
+  try {
+    return await until(page, (s) => effector(s, name).held, `${name} held`, 15_000);
+  } catch (e) {
+    // Say what the press took instead, if anything, and where the points were.
+    const s = await state(page);
+    const seen = s.views[0].effectors.map((x) => `${x.name}${x.held ? ' (held)' : ''} target ${x.target_pt?.map((v) => v.toFixed(0))} hand ${x.position_pt?.map((v) => v.toFixed(0))}`);
+    throw new Error(`${e.message}; pressed at ${p.map((v) => v.toFixed(0))}; ${seen.join('; ')}`);
+  }
+}
+
+/**
+ * Turns the camera and waits until it has arrived (the view eases toward a new camera over
+ * frames, slower on a loaded machine): the drawn points stop moving. Returns the state.
+ */
+async function turnCamera(page, camera) {
+  assert.equal(await command(page, { camera }), 'ok');
+  return settle(page);
+}
+
+/**
+ * Waits until the drawn targets and effectors stop moving on screen; returns the state. A
+ * paused page may not draw again until an input comes, and `state()` reports the points as
+ * last drawn, so the mouse hovers over the page's corner (which holds nothing) to make it draw.
+ */
+async function settle(page) {
+  await sleep(300);
+  await page.mouse.move(2, 2);
+  await sleep(200);
+  await page.mouse.move(3, 3);
+  await sleep(200);
+  let s = await state(page);
+  const points = (st) => st.views[0].effectors.flatMap((e) => [...(e.position_pt ?? []), ...(e.target_pt ?? [])]);
+  for (let k = 0; k < 50; k++) {
+    await page.mouse.move(2 + (k % 2), 2);
+    await sleep(150);
+    const next = await state(page);
+    const [a, b] = [points(s), points(next)];
+    s = next;
+    if (a.length === b.length && a.every((v, i) => Math.abs(v - b[i]) < 0.05)) break;
+  }
+  return s;
 }
 
 /** Steps one frame while paused and returns the state after it. */
@@ -133,21 +185,18 @@ for (const device of [
         console.log(`# ${device.label}: after release the target moved at most ${(worst * 1e3).toFixed(1)} mm a frame (the script alone ${(scriptMove * 1e3).toFixed(1)})`);
         assert.ok(worst <= scriptMove + 0.005, `a jump of ${worst} m in a frame`);
 
-        // 2 pulls the hand seen from the side (the pick takes the hand in front where the two
-        // overlap) to a spot the trunk's own motion leaves within reach by centimetres: 12 of 12
-        // device runs passed here (2026-12-07), but the phone's error sits at 7-9 mm of the 10 mm
-        // line, too near it for a slower CI machine, so CI skips it (saying so) and a local run
-        // measures it.
-        if (process.env.CI) {
-          console.log(`# ${device.label}: the reach-and-follow part is skipped under CI (run locally)`);
-        } else {
-          // 2. The hand itself, pulled 0.3 m toward its limb's anchor (within reach), pinned. Seen
-          // from the side, so the drag plane is the body's own on both screens: from the left
-          // hand's side (the eye at yaw 90° is on +x), so it is drawn in front of the right one.
+        // 2. The hand itself, pulled 0.3 m toward its limb's anchor (within reach), pinned. With
+        // the preset's joint limits (She 2006 §6.1.1.1's clamp) the hand loses a reachable pinned
+        // target for part of each step (docs/app.md "Grab and pull", the Rust test
+        // `pinned_reachable`), so this part measures the drag and the follow with limits off.
+        {
+          assert.equal(await command(page, { enforce_limits: false }), 'ok');
+          // One frame, so the figure has been solved without limits before the press.
+          await stepFrame(page);
+          // Seen from the side, so the drag plane is the body's own on both screens: from the
+          // left hand's side (the eye at yaw 90° is on +x), so it is drawn in front of the right.
           const side = effector(s, 'left_hand').position_m[0] >= effector(s, 'right_hand').position_m[0] ? 90 : -90;
-          assert.equal(await command(page, { camera: { yaw_deg: side, pitch_deg: 10 } }), 'ok');
-          await sleep(500);
-          s = await state(page);
+          s = await turnCamera(page, { yaw_deg: side, pitch_deg: 10 });
           lh = effector(s, 'left_hand');
           const from = lh.position_pt;
           assert.ok(from, 'the left hand is on screen');
@@ -182,16 +231,22 @@ for (const device of [
           s = await state(page);
           assert.equal(effector(s, 'left_hand').pinned, true);
           assert.ok(effector(s, 'left_hand').out_of_reach_m < 0, `within reach: ${effector(s, 'left_hand').out_of_reach_m}`);
-          // Playing, the pinned target rides with the body; SDLS has it within a second.
+          // Playing, the pinned target rides with the body; SDLS has it within a second and
+          // keeps it (sampled every 50 ms over that second of play).
           const t0 = s.time_s;
           assert.equal(await command(page, { paused: false }), 'ok');
-          s = await until(page, (st) => st.time_s >= t0 + 1.0 || effector(st, 'left_hand').error_m < 0.01,
-            'the hand reaching its target', 60_000, 50);
-          const reached = effector(s, 'left_hand').error_m;
-          if (reached >= 0.01) console.log(`# ${device.label}: ${JSON.stringify(effector(s, 'left_hand'))}`);
-          console.log(`# ${device.label}: SDLS error ${(reached * 1e3).toFixed(1)} mm at ${(s.time_s - t0).toFixed(2)} s after the pull`);
-          assert.ok(reached < 0.01, `error ${reached} m after ${s.time_s - t0} s`);
-          assert.equal(await command(page, { paused: true, drag_target: { name: 'left_hand', pin: false, position: null } }), 'ok');
+          let reachedAt = null;
+          let worstAfter = 0;
+          s = await until(page, (st) => {
+            const err = effector(st, 'left_hand').error_m;
+            if (reachedAt === null && err < 0.01) reachedAt = st.time_s - t0;
+            else if (reachedAt !== null) worstAfter = Math.max(worstAfter, err);
+            return st.time_s >= t0 + 1.0;
+          }, 'a second of play after the pull', 60_000, 50);
+          console.log(`# ${device.label}: SDLS error under 1 cm at ${reachedAt?.toFixed(2)} s after the pull, then at most ${(worstAfter * 1e3).toFixed(1)} mm over ${(s.time_s - t0).toFixed(2)} s (limits off)`);
+          assert.ok(reachedAt !== null && reachedAt <= 1.0, `the hand had not reached its pinned target 1 s after the pull: ${JSON.stringify(effector(s, 'left_hand'))}`);
+          assert.ok(worstAfter < 0.01, `the hand lost its pinned target by ${worstAfter} m`);
+          assert.equal(await command(page, { paused: true, enforce_limits: true, drag_target: { name: 'left_hand', pin: false, position: null } }), 'ok');
         }
 
         // 3. A drag in empty space turns the camera and holds nothing.
@@ -207,14 +262,16 @@ for (const device of [
         assert.ok(turned > 3, `empty space orbits: ${turned}°`);
         assert.ok(s.views[0].effectors.every((e) => !e.held), 'nothing held');
 
-        // 4. Side by side, four views: the drag moves every view's target.
-        assert.equal(await command(page, { camera: { yaw_deg: 35, pitch_deg: 20 } }), 'ok');
+        // 4. Side by side, four views: the drag moves every view's target. Seen from the left
+        // hand's side, so where the hands overlap on screen the press takes the left one.
+        s = await state(page);
+        const yaw = effector(s, 'left_hand').position_m[0] >= effector(s, 'right_hand').position_m[0] ? 55 : -55;
+        await turnCamera(page, { yaw_deg: yaw, pitch_deg: 20 });
         assert.equal(await command(page, { compare: { views: ['transpose', 'pinv', 'dls', 'sdls'] } }), 'ok');
         assert.equal(await command(page, { paused: false }), 'ok');
         await until(page, (st) => st.time_s >= 1.0, '1 s side by side');
         assert.equal(await command(page, { paused: true }), 'ok');
-        await sleep(500);
-        s = await state(page);
+        s = await settle(page);
         const k = s.views[0].effectors.findIndex((e) => e.name === 'left_hand');
         const targetPt = s.views[0].effectors[k].target_pt;
         assert.ok(targetPt, 'the first pane shows the target');

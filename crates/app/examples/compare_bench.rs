@@ -5,11 +5,11 @@
 
 use std::time::Instant;
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 
 fn main() {
     for scenario in ["script", "singularity"] {
-        let mut lab = Lab::new(Settings::default());
+        let mut lab = App::new(Settings::default());
         if let Err(error) = lab.set_preset("ik-quadruped") {
             eprintln!("{error}");
             std::process::exit(1);

@@ -46,7 +46,7 @@ impl PresetEditor {
         self.source.as_ref().is_some_and(|s| *s != self.text)
     }
 
-    /// Forgets the filled text so the next [`Lab::editor_sync`](crate::Lab::editor_sync) refills it
+    /// Forgets the filled text so the next [`App::editor_sync`](crate::App::editor_sync) refills it
     /// (called when the running preset changes). Unapplied edits are kept.
     pub(crate) fn preset_changed(&mut self) {
         if !self.dirty() {

@@ -6,6 +6,7 @@ pub mod render;
 pub mod view;
 
 pub mod api;
+pub mod app;
 pub mod bench;
 pub mod compare;
 pub mod editor;
@@ -32,5 +33,6 @@ mod web;
 pub mod webm;
 pub mod words;
 
+pub use app::App;
 pub use lab::Lab;
 pub use settings::Settings;

@@ -1,8 +1,8 @@
 //! The whole lab in a link (issue 6 item 2, DESIGN.md "Browser: URL"): what
 //! "Copy link" writes and what opening the link restores.
 //!
-//! The link's `state` is a command object (keys of [`Lab::command`]) read out of
-//! [`Lab::state_json`] through [`LINK_KEYS`]; restoring loads the preset and then
+//! The link's `state` is a command object (keys of [`App::command`]) read out of
+//! [`App::state_json`] through [`LINK_KEYS`]; restoring loads the preset and then
 //! applies those keys one at a time in that order, each validated by the command
 //! code, skipping values the lab already has. Adding a setting to links is one
 //! line in [`LINK_KEYS`] (a command key and where `state()` shows its value, in
@@ -10,7 +10,7 @@
 
 use serde_json::{Map, Value, json};
 
-use crate::lab::Lab;
+use crate::app::App;
 use crate::link::{self, FullLink, LinkRequest};
 
 /// `(command key, JSON pointer into state())` for every setting a link carries,
@@ -68,7 +68,7 @@ fn current<'a>(state: &'a Value, key: &str) -> Option<&'a Value> {
         .find_map(|(_, pointer)| state.pointer(pointer).filter(|v| !v.is_null()))
 }
 
-impl Lab {
+impl App {
     fn state_value(&self) -> Value {
         serde_json::from_str(&self.state_json()).unwrap_or(Value::Null)
     }
@@ -98,7 +98,7 @@ impl Lab {
     }
 
     /// The whole lab as a link carries it: the preset JSON, whether it is a
-    /// bundled one unedited, and [`Lab::link_state`].
+    /// bundled one unedited, and [`App::link_state`].
     #[must_use]
     pub fn full_link(&self) -> FullLink {
         FullLink {

@@ -3,16 +3,16 @@
 //! before any key applies; errors name the key path in the API's words.
 
 use gaitlab_app::api::Command;
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::Value;
 
-fn state(lab: &Lab) -> Value {
+fn state(lab: &App) -> Value {
     serde_json::from_str(&lab.state_json()).expect("state is JSON")
 }
 
 #[test]
 fn a_type_error_anywhere_refuses_the_whole_command() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     for (command, expected) in [
         (
             r#"{"mode":"run","gain":{"name":"leg_stiffness","value":"x"}}"#,
@@ -65,7 +65,7 @@ fn a_type_error_anywhere_refuses_the_whole_command() {
 
 #[test]
 fn a_range_error_stops_in_order_and_keeps_what_came_before() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     let error = lab
         .command(r#"{"mode":"run","lambda":-1,"plots":false}"#)
         .expect_err("lambda out of range");
@@ -81,7 +81,7 @@ fn null_is_absent_except_for_compare_and_narrow() {
     assert!(parsed.mode.is_none());
     assert!(parsed.compare.is_some());
     assert_eq!(parsed.narrow, Some(None));
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"compare":{"views":["pinv","dls"]}}"#)
         .expect("starts");
     lab.command(r#"{"compare":null}"#).expect("leaves");
@@ -90,7 +90,7 @@ fn null_is_absent_except_for_compare_and_narrow() {
 
 #[test]
 fn the_playback_rate_is_set_within_its_range() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     assert_eq!(state(&lab)["playback_rate"], 1.0);
     assert!(lab.command(r#"{"playback_rate": 0.25}"#).is_ok());
     assert_eq!(state(&lab)["playback_rate"], 0.25);

@@ -11,7 +11,7 @@ use std::path::PathBuf;
 use gaitlab_app::api::schema::{
     COMMAND_SCHEMA_ID, STATE_SCHEMA_ID, command_schema, schema_text, state_schema,
 };
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::Value;
 
 fn shipped(name: &str) -> PathBuf {
@@ -77,7 +77,7 @@ fn every_state_key_is_in_the_state_schema() {
     let schema = state_schema();
     assert_eq!(schema["$id"], STATE_SCHEMA_ID);
     let state: Value =
-        serde_json::from_str(&Lab::new(Settings::default()).state_json()).expect("state is JSON");
+        serde_json::from_str(&App::new(Settings::default()).state_json()).expect("state is JSON");
     let properties = schema["properties"].as_object().expect("properties");
     let keys = state.as_object().expect("object");
     assert_eq!(

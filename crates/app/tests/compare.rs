@@ -3,18 +3,18 @@
 //! singular configurations, DLS and SDLS are not), the views run in lock step,
 //! and the `compare` command and state round-trip.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::Value;
 
-fn lab(preset: &str) -> Lab {
-    let mut lab = Lab::new(Settings::default());
+fn lab(preset: &str) -> App {
+    let mut lab = App::new(Settings::default());
     if let Err(error) = lab.set_preset(preset) {
         panic!("{error}");
     }
     lab
 }
 
-fn state(lab: &Lab) -> Value {
+fn state(lab: &App) -> Value {
     match serde_json::from_str(&lab.state_json()) {
         Ok(value) => value,
         Err(error) => panic!("{error}"),
@@ -23,7 +23,7 @@ fn state(lab: &Lab) -> Value {
 
 /// Runs `seconds` of the comparison in whole frames and returns the state's
 /// metrics as (method, jitter_rad, mean_error_m).
-fn run(lab: &mut Lab, seconds: f64) -> Vec<(String, f64, f64, u64)> {
+fn run(lab: &mut App, seconds: f64) -> Vec<(String, f64, f64, u64)> {
     let frames = (seconds / lab.frame_seconds()).round() as usize;
     lab.set_paused(true);
     for _ in 0..frames {
@@ -48,7 +48,7 @@ fn run(lab: &mut Lab, seconds: f64) -> Vec<(String, f64, f64, u64)> {
 }
 
 /// The human with the four thesis methods in the singularity scenario.
-fn four_views_at_full_reach() -> Lab {
+fn four_views_at_full_reach() -> App {
     let mut lab = lab("human");
     let command =
         r#"{"compare":{"views":["transpose","pinv","dls","sdls"],"scenario":"singularity"}}"#;
@@ -66,7 +66,7 @@ const HUMAN_2026_12_06: &str = include_str!("../../cli/tests/fixtures/human_2026
 
 /// The singularity scenario's figures, (method, jitter, mean error, limit
 /// hits) per view, after 12 s on `lab`.
-fn singularity(mut lab: Lab, name: &str, views: &str) -> Vec<(String, f64, f64, u64)> {
+fn singularity(mut lab: App, name: &str, views: &str) -> Vec<(String, f64, f64, u64)> {
     let command = format!(r#"{{"compare":{{"views":{views},"scenario":"singularity"}}}}"#);
     if let Err(error) = lab.command(&command) {
         panic!("{error}");
@@ -86,7 +86,7 @@ fn assert_pinv_worst(preset: &str, views: &str, factor: f64) {
     assert_pinv_worst_in(lab(preset), preset, views, factor);
 }
 
-fn assert_pinv_worst_in(lab: Lab, preset: &str, views: &str, factor: f64) {
+fn assert_pinv_worst_in(lab: App, preset: &str, views: &str, factor: f64) {
     let figures = singularity(lab, preset, views);
     let pinv = figures
         .iter()
@@ -107,7 +107,7 @@ fn the_singularity_scenario_ranks_pinv_jitter_worst_on_the_human() {
     // With the lab's settings of 2026-12-06 (the limit re-solve above all):
     // the human's legs have few joints and bent-knee limits, the margin is smaller.
     for views in [r#"["transpose","pinv","dls","sdls"]"#, r#"["pinv","ccd"]"#] {
-        let mut lab = Lab::new(Settings::default());
+        let mut lab = App::new(Settings::default());
         if let Err(error) = lab.set_custom_preset(HUMAN_2026_12_06) {
             panic!("{error}");
         }

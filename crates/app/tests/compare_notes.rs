@@ -5,7 +5,7 @@
 //! own metrics, and no line or method card states a comparison unchecked.
 
 use gaitlab_app::compare::{CompareMethod, LEVEL_FRACTION};
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::Value;
 
 /// Words that state a comparison; a line or card text without a checked
@@ -22,7 +22,7 @@ fn unnamed(text: &str) -> String {
     format!(" {} ", text.to_lowercase()).replace("least squares", "")
 }
 
-fn state(lab: &Lab) -> Value {
+fn state(lab: &App) -> Value {
     match serde_json::from_str(&lab.state_json()) {
         Ok(value) => value,
         Err(error) => panic!("{error}"),
@@ -80,7 +80,7 @@ fn verdict(metrics: &[Value], claim: &Value) -> String {
 
 /// Runs one scenario for `seconds` and checks every line; returns the lines.
 fn check(mode: &str, scenario: &str, views: &str, seconds: f64) -> Vec<String> {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     if let Err(error) = lab.set_preset("she-2006") {
         panic!("{error}");
     }

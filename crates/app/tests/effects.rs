@@ -2,13 +2,13 @@
 //! once a frame instead of polling flags on the lab.
 
 use gaitlab_app::lab::Effect;
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use gaitlab_core::ik::Method;
 use gaitlab_core::preset::thesis::ThesisMode;
 
 #[test]
 fn a_preset_change_asks_for_a_history_entry_and_a_link_update_once() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     assert!(lab.drain_effects().is_empty(), "a fresh lab asks nothing");
     lab.set_preset("ik-quadruped").expect("bundled");
     lab.set_mode(ThesisMode::Run);
@@ -23,7 +23,7 @@ fn a_preset_change_asks_for_a_history_entry_and_a_link_update_once() {
 
 #[test]
 fn opening_a_link_leaves_the_address_bar_as_it_is() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     let query = gaitlab_app::link::query("ik-quadruped", Some("run"), Some("dls"));
     lab.open_link(&query, "");
     assert_eq!(lab.creature().name, "ik-quadruped");
@@ -37,7 +37,7 @@ fn opening_a_link_leaves_the_address_bar_as_it_is() {
 
 #[test]
 fn video_file_picker_and_download_requests_reach_the_outbox() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.set_video_recording(true);
     lab.set_video_recording(true);
     assert_eq!(lab.drain_effects(), vec![Effect::StartVideo]);

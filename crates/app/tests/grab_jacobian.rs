@@ -4,11 +4,11 @@
 //! by one; `state().jacobian` carries each view's singular values and gains;
 //! bad input names its field and changes nothing.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::{Value, json};
 
-fn lab(preset: &str) -> Lab {
-    let mut lab = Lab::new(Settings::default());
+fn lab(preset: &str) -> App {
+    let mut lab = App::new(Settings::default());
     if let Err(error) = lab.set_preset(preset) {
         panic!("{preset}: {error}");
     }
@@ -16,20 +16,20 @@ fn lab(preset: &str) -> Lab {
     lab
 }
 
-fn state(lab: &Lab) -> Value {
+fn state(lab: &App) -> Value {
     match serde_json::from_str(&lab.state_json()) {
         Ok(value) => value,
         Err(error) => panic!("{error}"),
     }
 }
 
-fn command(lab: &mut Lab, c: &Value) {
+fn command(lab: &mut App, c: &Value) {
     if let Err(error) = lab.command(&c.to_string()) {
         panic!("{c}: {error}");
     }
 }
 
-fn frames(lab: &mut Lab, n: usize) {
+fn frames(lab: &mut App, n: usize) {
     for _ in 0..n {
         lab.single_step();
         lab.advance(0.0);
@@ -80,7 +80,7 @@ fn a_dragged_target_moves_and_the_hand_follows_alone_and_side_by_side() {
     let moved = distance(point(&hand["target_m"]), at);
     assert!((moved - 0.3).abs() < 0.01, "target moved {moved} m");
     // Paused, the figure reaches for it over the next UI frames.
-    let error = |lab: &Lab| {
+    let error = |lab: &App| {
         effector(&state(lab), "left_hand")["error_m"]
             .as_f64()
             .unwrap_or(f64::NAN)
@@ -168,7 +168,7 @@ fn one_iteration_at_a_time_is_the_frame() {
     let (a, b) = (state(&whole), state(&stepped));
     assert_eq!(a["frame"], b["frame"]);
     assert_eq!(a["time_s"], b["time_s"]);
-    let joints = |lab: &Lab| -> Vec<u64> {
+    let joints = |lab: &App| -> Vec<u64> {
         gaitlab_core::driver::Driver::pose(lab.driver())
             .joints
             .iter()
@@ -308,7 +308,7 @@ fn pinned_targets_ride_in_links_and_bad_pins_change_nothing() {
     assert_eq!(pins.as_object().map(|m| m.len()), Some(1), "{pins}");
     let link = lab.full_link();
     assert_eq!(link.state.get("pinned_targets"), Some(&pins));
-    let mut opened = Lab::new(Settings::default());
+    let mut opened = App::new(Settings::default());
     let errors = opened.apply_full_link(&link);
     assert!(errors.is_empty(), "{errors:?}");
     let s = state(&opened);
@@ -379,7 +379,7 @@ fn a_lesson_link_starts_from_a_pinned_pose_and_the_leg_flattens() {
                            "open_panels": ["Jacobian"], "pin_plots": ["errors"]}}),
     );
     let link = lab.full_link();
-    let mut opened = Lab::new(Settings::default());
+    let mut opened = App::new(Settings::default());
     let errors = opened.apply_full_link(&link);
     assert!(errors.is_empty(), "{errors:?}");
     let s = state(&opened);

@@ -4,14 +4,14 @@
 //! a singular direction — pinv's 1/σ against DLS's σ/(σ² + λ²) ≤ 1/(2λ) and
 //! SDLS's clamped 1/σ. Prints what docs/app.md quotes.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::json;
 
 const SECONDS: f64 = 10.0;
 
 #[test]
 fn near_the_singularity_pinv_gains_most_and_dls_stays_under_its_bound() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     if let Err(error) = lab.set_preset("she-2006") {
         panic!("{error}");
     }

@@ -2,16 +2,16 @@
 //! expose): commands change what the panels change, bad commands name the key
 //! and change nothing after it, and the state reports figures.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::Value;
 
-fn state(lab: &Lab) -> Value {
+fn state(lab: &App) -> Value {
     serde_json::from_str(&lab.state_json()).expect("state is JSON")
 }
 
 #[test]
 fn defaults_show_the_human_walking_with_sdls() {
-    let lab = Lab::new(Settings::default());
+    let lab = App::new(Settings::default());
     let s = state(&lab);
     assert_eq!(s["preset"], "human");
     assert_eq!(s["engine"], "ik");
@@ -24,7 +24,7 @@ fn defaults_show_the_human_walking_with_sdls() {
 
 #[test]
 fn commands_switch_mode_method_and_pause() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"mode":"run","method":"dls"}"#)
         .expect("valid");
     let s = state(&lab);
@@ -60,7 +60,7 @@ fn commands_switch_mode_method_and_pause() {
 
 #[test]
 fn walking_in_the_lab_tracks_the_feet() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     for _ in 0..120 {
         lab.advance(1.0 / 60.0);
     }
@@ -77,7 +77,7 @@ fn walking_in_the_lab_tracks_the_feet() {
 
 #[test]
 fn bad_commands_name_the_key_and_keep_the_state() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     for (command, expected) in [
         ("not json", "command is not JSON"),
         ("[1]", "command must be a JSON object"),
@@ -119,7 +119,7 @@ fn unknown_stored_preset_falls_back_with_a_message() {
         preset: "no-such".into(),
         ..Settings::default()
     };
-    let lab = Lab::new(settings);
+    let lab = App::new(settings);
     let s = state(&lab);
     assert_eq!(s["preset"], "human");
     assert!(
@@ -131,7 +131,7 @@ fn unknown_stored_preset_falls_back_with_a_message() {
 
 #[test]
 fn presets_switch_and_custom_presets_load() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"preset":"ik-quadruped"}"#)
         .expect("bundled");
     assert_eq!(state(&lab)["joints"], 63);
@@ -154,7 +154,7 @@ fn settings_that_cannot_drive_fall_back_to_the_default_creature_and_driver() {
         ..Settings::default()
     };
     settings.ik.lambda = -1.0;
-    let lab = Lab::new(settings);
+    let lab = App::new(settings);
     assert_eq!(lab.creature().name, gaitlab_core::preset::DEFAULT_PRESET);
     assert_eq!(
         lab.creature().skeleton.joint_count(),
@@ -170,7 +170,7 @@ fn settings_that_cannot_drive_fall_back_to_the_default_creature_and_driver() {
 /// mode or method for a physics or PODA creature.
 #[test]
 fn the_address_bar_describes_what_is_on_screen() {
-    let mut lab = gaitlab_app::Lab::new(gaitlab_app::Settings::default());
+    let mut lab = gaitlab_app::App::new(gaitlab_app::Settings::default());
     for (command, query) in [
         (
             r#"{"preset":"she-2006","mode":"walk","method":"sdls"}"#,

@@ -4,14 +4,14 @@
 //! figures, and an absurd gain blows up, is caught, and the lab says why
 //! while the creature starts again.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::Value;
 
-fn state(lab: &Lab) -> Value {
+fn state(lab: &App) -> Value {
     serde_json::from_str(&lab.state_json()).expect("state is JSON")
 }
 
-fn run(lab: &mut Lab, seconds: f64) {
+fn run(lab: &mut App, seconds: f64) {
     for _ in 0..(seconds * 60.0) as usize {
         lab.advance(1.0 / 60.0);
     }
@@ -19,7 +19,7 @@ fn run(lab: &mut Lab, seconds: f64) {
 
 #[test]
 fn a_physics_preset_runs_and_answers_commands() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"preset":"raibert-biped","speed_mps":2.0}"#)
         .expect("valid");
     run(&mut lab, 8.0);
@@ -59,7 +59,7 @@ fn a_physics_preset_runs_and_answers_commands() {
 
 #[test]
 fn an_absurd_gain_is_caught_and_the_lab_says_why() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"preset":"raibert-biped"}"#).expect("valid");
     run(&mut lab, 2.0);
     lab.command(r#"{"gain":{"name":"leg_stiffness","value":1e9}}"#)
@@ -97,7 +97,7 @@ fn an_absurd_gain_is_caught_and_the_lab_says_why() {
 
 #[test]
 fn the_engine_selector_reaches_the_physics_creatures() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"engine":"poda","preset":"poda-quadruped"}"#)
         .expect("valid");
     lab.command(r#"{"engine":"physics"}"#).expect("valid");
@@ -138,7 +138,7 @@ fn gaits_change_on_command_while_running() {
         ),
         ("raibert-quadruped", &["trot", "bound", "trot"][..], 4.0),
     ] {
-        let mut lab = Lab::new(Settings::default());
+        let mut lab = App::new(Settings::default());
         lab.command(&format!(r#"{{"preset":"{preset}"}}"#))
             .expect("valid");
         for gait in gaits {
@@ -159,7 +159,7 @@ fn gaits_change_on_command_while_running() {
 #[test]
 fn the_dynamic_scale_from_the_panel_stretches_steps_by_root_l() {
     let stride = |scale: f64| {
-        let mut lab = Lab::new(Settings::default());
+        let mut lab = App::new(Settings::default());
         lab.command(r#"{"preset":"raibert-biped","gait":"gallop","speed_mps":1.5}"#)
             .expect("valid");
         if scale != 1.0 {
@@ -183,7 +183,7 @@ fn the_dynamic_scale_from_the_panel_stretches_steps_by_root_l() {
         (two / one / 2.0_f64.sqrt() - 1.0).abs() < 0.01,
         "strides {one} s and {two} s"
     );
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     assert!(
         lab.set_physics_scale(2.0)
             .is_err_and(|e| e.starts_with("scale: engine"))
@@ -203,12 +203,12 @@ fn the_dynamic_scale_from_the_panel_stretches_steps_by_root_l() {
 /// and the kangaroo ran into one of them.
 #[test]
 fn a_second_box_placed_mid_jump_is_jumped_too() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"preset":"raibert-kangaroo"}"#)
         .expect("valid");
     run(&mut lab, 2.0);
     lab.place_obstacle(3.0).expect("the kangaroo jumps");
-    let phase = |lab: &Lab| lab.driver().physics().map_or("", |d| d.phase_name());
+    let phase = |lab: &App| lab.driver().physics().map_or("", |d| d.phase_name());
     let mut frames = 0;
     while phase(&lab) != "jump flight" {
         lab.advance(1.0 / 60.0);
@@ -259,7 +259,7 @@ fn a_second_box_placed_mid_jump_is_jumped_too() {
 /// carry it over without the toe entering it; the other gaits have no jump.
 #[test]
 fn a_box_placed_from_the_panel_is_jumped_by_the_kangaroo() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"preset":"raibert-kangaroo","speed_mps":2.0}"#)
         .expect("valid");
     // It starts on its cycle at the preset's 5 m/s and its speed ramp

@@ -3,11 +3,11 @@
 //! through the same command API the browser uses, every edit keeps eq. 7–8
 //! true, and bad gait commands name their key.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use gaitlab_core::driver::Driver;
 use serde_json::Value;
 
-fn state(lab: &Lab) -> Value {
+fn state(lab: &App) -> Value {
     serde_json::from_str(&lab.state_json()).expect("state is JSON")
 }
 
@@ -42,7 +42,7 @@ fn assert_gait_relations(s: &Value) {
 
 #[test]
 fn the_quadruped_trots_then_gallops() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"preset":"poda-quadruped","gait":"trot"}"#)
         .expect("valid");
     let s = state(&lab);
@@ -78,7 +78,7 @@ fn the_quadruped_trots_then_gallops() {
 
 #[test]
 fn every_gait_edit_keeps_eq_7_and_8_and_says_what_it_derived() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"preset":"hexapod"}"#).expect("valid");
     assert_gait_relations(&state(&lab));
     for (command, derived) in [
@@ -100,7 +100,7 @@ fn every_gait_edit_keeps_eq_7_and_8_and_says_what_it_derived() {
 
 #[test]
 fn bad_gait_commands_name_their_key_and_change_nothing() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     let error = lab
         .command(r#"{"gait":"trot"}"#)
         .expect_err("no gaits on ik");
@@ -134,7 +134,7 @@ fn bad_gait_commands_name_their_key_and_change_nothing() {
 
 #[test]
 fn phases_step_height_and_transfer_keys_are_editable() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"preset":"poda-quadruped","gait":"trot"}"#)
         .expect("valid");
     lab.command(
@@ -185,7 +185,7 @@ fn phases_step_height_and_transfer_keys_are_editable() {
 
 #[test]
 fn a_leg_joints_center_pulls_it_without_moving_the_planted_feet() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     // The feet's positions alone: a foot that holds its orientation too
     // (eq. 2's six rows, the bundled default) leaves the knee no freedom
     // in the null space, so eq. 6's pull on it would have nothing to move.
@@ -196,13 +196,13 @@ fn a_leg_joints_center_pulls_it_without_moving_the_planted_feet() {
     lab.command(&command).expect("custom preset");
     lab.command(r#"{"gait":"walk"}"#).expect("valid");
     let joint = "left_hind_knee_x";
-    let value = |lab: &Lab| {
+    let value = |lab: &App| {
         let driver = lab.driver().poda().expect("PODA");
         let j = driver.skeleton().joint_index(joint).expect("joint");
         driver.pose().joints[j]
     };
     // The knee's mean bend over two cycles, before and after pulling it to 1.2 rad.
-    let mean_over = |lab: &mut Lab| -> f64 {
+    let mean_over = |lab: &mut App| -> f64 {
         let mut sum = 0.0;
         for _ in 0..72 {
             lab.advance(1.0 / 60.0);
@@ -250,7 +250,7 @@ fn a_leg_joints_center_pulls_it_without_moving_the_planted_feet() {
 
 #[test]
 fn a_new_body_path_is_joined_where_the_body_is_and_followed() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"preset":"hexapod"}"#).expect("valid");
     for _ in 0..60 {
         lab.advance(1.0 / 60.0);
@@ -299,7 +299,7 @@ fn a_new_body_path_is_joined_where_the_body_is_and_followed() {
 
 #[test]
 fn the_engine_selector_swaps_matching_creatures_and_leg_force_lengthens_flights() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"engine":"poda"}"#).expect("valid");
     let s = state(&lab);
     assert_eq!(

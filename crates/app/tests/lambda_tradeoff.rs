@@ -4,11 +4,11 @@
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::Value;
 
-fn lab(preset: &str) -> Lab {
-    let mut lab = Lab::new(Settings::default());
+fn lab(preset: &str) -> App {
+    let mut lab = App::new(Settings::default());
     lab.set_paused(true);
     if let Err(error) = lab.command(&format!(r#"{{"preset":"{preset}"}}"#)) {
         panic!("{error}");
@@ -16,7 +16,7 @@ fn lab(preset: &str) -> Lab {
     lab
 }
 
-fn state(lab: &Lab) -> Value {
+fn state(lab: &App) -> Value {
     serde_json::from_str(&lab.state_json()).unwrap_or(Value::Null)
 }
 
@@ -79,7 +79,7 @@ fn the_method_panels_button_measures_it() {
     let lab = lab("she-2006");
     let mut harness = Harness::builder()
         .with_size(egui::vec2(1200.0, 1400.0))
-        .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab);
+        .build_ui_state(|ui, lab: &mut App| lab.ui(ui), lab);
     harness.run();
     harness.get_by_label("Method").click();
     harness.run();

@@ -2,10 +2,10 @@
 //! pinned plots travel in a link and come back with the note open; bad names
 //! are refused with the entry named; leaving the lesson shows everything again.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::Value;
 
-fn state(lab: &Lab) -> Value {
+fn state(lab: &App) -> Value {
     serde_json::from_str(&lab.state_json()).unwrap_or_default()
 }
 
@@ -13,7 +13,7 @@ const LESSON: &str = r#"{"lesson": {"note": "Watch the hands: the pseudoinverse 
 
 #[test]
 fn a_lesson_link_opens_with_its_note_hidden_panels_and_pinned_plots() {
-    let mut teacher = Lab::new(Settings::default());
+    let mut teacher = App::new(Settings::default());
     if let Err(error) = teacher.command(LESSON) {
         panic!("{error}");
     }
@@ -30,7 +30,7 @@ fn a_lesson_link_opens_with_its_note_hidden_panels_and_pinned_plots() {
         Ok(link) => link,
         Err(error) => panic!("{error}"),
     };
-    let mut student = Lab::new(Settings::default());
+    let mut student = App::new(Settings::default());
     student.open_link("", &link[link.find('#').unwrap_or(0)..]);
     let s = state(&student);
     assert_eq!(s["last_error"], Value::Null);
@@ -51,7 +51,7 @@ fn a_lesson_link_opens_with_its_note_hidden_panels_and_pinned_plots() {
 
 #[test]
 fn bad_lessons_are_refused_with_the_entry_named() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     for (command, want) in [
         (
             r#"{"lesson": {"hide_panels": ["Method", "Warp"]}}"#,
@@ -72,7 +72,7 @@ fn bad_lessons_are_refused_with_the_entry_named() {
 
 #[test]
 fn pins_of_another_engines_plots_hide_none() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     for command in [r#"{"preset": "raibert-biped"}"#, LESSON] {
         if let Err(error) = lab.command(command) {
             panic!("{command}: {error}");

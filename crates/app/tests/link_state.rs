@@ -3,7 +3,7 @@
 //! `state()` field by field (live counters aside); broken links leave a message
 //! and the default preset.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::Value;
 
 /// `state()` fields that count live time, not settings: the frame counter,
@@ -18,7 +18,7 @@ const LIVE: [&str; 6] = [
     "rewind",
 ];
 
-fn settled_state(lab: &Lab) -> Value {
+fn settled_state(lab: &App) -> Value {
     let mut state: Value = serde_json::from_str(&lab.state_json()).expect("state is JSON");
     let object = state.as_object_mut().expect("object");
     for key in LIVE {
@@ -51,19 +51,19 @@ fn settled_state(lab: &Lab) -> Value {
     state
 }
 
-fn fresh_lab() -> Lab {
-    Lab::new(Settings::default())
+fn fresh_lab() -> App {
+    App::new(Settings::default())
 }
 
 /// Opens `link` (`…#p=…`) in a fresh lab.
-fn open(link: &str) -> Lab {
+fn open(link: &str) -> App {
     let fragment = &link[link.find('#').expect("a fragment")..];
     let mut lab = fresh_lab();
     lab.open_link("", fragment);
     lab
 }
 
-fn assert_same_state(original: &Lab, restored: &Lab) {
+fn assert_same_state(original: &App, restored: &App) {
     let a = settled_state(original);
     let b = settled_state(restored);
     for (key, value) in a.as_object().expect("object") {
@@ -72,7 +72,7 @@ fn assert_same_state(original: &Lab, restored: &Lab) {
     assert_eq!(a, b);
 }
 
-fn run(lab: &mut Lab, frames: usize) {
+fn run(lab: &mut App, frames: usize) {
     for _ in 0..frames {
         lab.advance(lab.frame_seconds());
     }
@@ -182,7 +182,7 @@ fn broken_links_show_a_message_and_load_the_default_preset() {
         ("not base64", "%%%".to_owned()),
     ];
     for (what, payload) in cases {
-        let mut lab = Lab::new(Settings {
+        let mut lab = App::new(Settings {
             preset: "ik-quadruped".to_owned(),
             ..Settings::default()
         });
@@ -202,7 +202,7 @@ fn broken_links_show_a_message_and_load_the_default_preset() {
     bad.preset_json = bad.preset_json.replacen("\"hexapod\"", "\"\"", 1);
     bad.bundled = None;
     let payload = gaitlab_app::link::encode_full(&bad).expect("encodes");
-    let mut restored = Lab::new(Settings {
+    let mut restored = App::new(Settings {
         preset: "ik-quadruped".to_owned(),
         ..Settings::default()
     });

@@ -13,7 +13,7 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicIsize, Ordering};
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 
 struct Counting;
 
@@ -71,7 +71,7 @@ fn cycle() -> Vec<String> {
 #[test]
 fn repeated_passes_over_every_switch_leave_the_heap_as_it_was_after_warm_up() {
     let commands = cycle();
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     let mut live = Vec::new();
     for _pass in 0..4 {
         for command in &commands {

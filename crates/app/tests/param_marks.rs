@@ -4,20 +4,20 @@
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 
 /// A paused lab on `preset` in a tall window (every control laid out).
-fn harness(preset: &str) -> Harness<'static, Lab> {
-    let mut lab = Lab::new(Settings::default());
+fn harness(preset: &str) -> Harness<'static, App> {
+    let mut lab = App::new(Settings::default());
     lab.set_paused(true);
     lab.set_preset(preset).expect("bundled");
     Harness::builder()
         .with_size(egui::vec2(1200.0, 1600.0))
-        .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab)
+        .build_ui_state(|ui, lab: &mut App| lab.ui(ui), lab)
 }
 
 /// The vertical centres of every "lab" tag on screen.
-fn tag_rows(harness: &Harness<'static, Lab>) -> Vec<f32> {
+fn tag_rows(harness: &Harness<'static, App>) -> Vec<f32> {
     harness
         .query_all_by_label("lab")
         .map(|node| node.rect().center().y)
@@ -26,7 +26,7 @@ fn tag_rows(harness: &Harness<'static, Lab>) -> Vec<f32> {
 
 /// Whether a "lab" tag sits on the row of the control labelled `label` (a
 /// slider's first node: it has one for the handle and one for its text).
-fn tagged(harness: &Harness<'static, Lab>, label: &str) -> bool {
+fn tagged(harness: &Harness<'static, App>, label: &str) -> bool {
     let row = harness
         .query_all_by_label(label)
         .next()

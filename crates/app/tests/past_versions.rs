@@ -9,7 +9,7 @@
 //! are unchanged across the change). The preset of that version is
 //! `presets/human.json`, whose golden run covers it.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use gaitlab_core::driver::Driver;
 use gaitlab_core::preset::thesis::{TargetScript, WoundForm};
 
@@ -21,9 +21,9 @@ const LINK_V1: &str = include_str!("fixtures/link_v1_human_wounded.txt");
 /// recorded before issue 18.
 const LINK_V1_JOINT_SUM_RAD: f64 = 3.8866359721608053;
 
-fn open(link: &str) -> Lab {
+fn open(link: &str) -> App {
     let fragment = &link[link.find('#').expect("a fragment")..];
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.open_link("", fragment);
     lab
 }
@@ -80,7 +80,7 @@ fn a_she_2006_link_made_before_limit_passes_replays_with_the_re_solve() {
     // Even where the person's stored settings clamp alone.
     let mut settings = Settings::default();
     settings.ik.limit_passes = 1;
-    let mut lab = Lab::new(settings);
+    let mut lab = App::new(settings);
     let link = she_2006_link_2026_12_01();
     lab.open_link("", &link[link.find('#').expect("a fragment")..]);
     assert_eq!(lab.last_error(), None);
@@ -111,7 +111,7 @@ fn a_she_2006_link_made_before_limit_passes_replays_with_the_re_solve() {
 #[test]
 fn a_link_with_the_deprecated_vertical_gain_runs_with_it_and_says_so() {
     let preset = include_str!("../../cli/tests/fixtures/hexapod_2026_12_01.json");
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     let fragment = format!("#p={}", gaitlab_app::link::encode_preset(preset));
     lab.open_link("", &fragment);
     assert_eq!(lab.last_error(), None);

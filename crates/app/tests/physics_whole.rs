@@ -5,13 +5,13 @@
 //! is held where it fell, then put back at the start with the speed it
 //! started with.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use gaitlab_core::driver::Driver as _;
 
 const FRAME_S: f64 = 1.0 / 60.0;
 
-fn lab(command: &str) -> Lab {
-    let mut lab = Lab::new(Settings::default());
+fn lab(command: &str) -> App {
+    let mut lab = App::new(Settings::default());
     if let Err(error) = lab.command(command) {
         panic!("{command}: {error}");
     }
@@ -19,7 +19,7 @@ fn lab(command: &str) -> Lab {
 }
 
 /// Runs `seconds` of frames and returns the lowest trunk height seen, m.
-fn lowest_trunk(lab: &mut Lab, seconds: f64) -> f64 {
+fn lowest_trunk(lab: &mut App, seconds: f64) -> f64 {
     let mut lowest = f64::INFINITY;
     for _ in 0..(seconds / FRAME_S).round() as usize {
         lab.advance(FRAME_S);
@@ -31,7 +31,7 @@ fn lowest_trunk(lab: &mut Lab, seconds: f64) -> f64 {
     lowest
 }
 
-fn speed(lab: &mut Lab, mps: f64) {
+fn speed(lab: &mut App, mps: f64) {
     let command = format!(r#"{{"speed_mps":{mps}}}"#);
     if let Err(error) = lab.command(&command) {
         panic!("{command}: {error}");
@@ -97,7 +97,7 @@ fn the_kangaroo_with_three_boxes_keeps_its_trunk_above_ground() {
 /// preset change clears any banner.
 #[test]
 fn every_bundled_preset_runs_its_default_for_a_minute_whatever_ran_before() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     // Start from a blown-up biped, so the first preset follows a banner.
     for command in [
         r#"{"preset":"raibert-biped"}"#,
@@ -134,7 +134,7 @@ fn every_bundled_preset_runs_its_default_for_a_minute_whatever_ran_before() {
 }
 
 /// [`lowest_trunk`] for a physics creature; other engines just run (∞).
-fn lowest_trunk_or_any(lab: &mut Lab, seconds: f64) -> f64 {
+fn lowest_trunk_or_any(lab: &mut App, seconds: f64) -> f64 {
     if lab.driver().physics_probe().is_some() {
         return lowest_trunk(lab, seconds);
     }

@@ -3,17 +3,17 @@
 //! the same motion — checked through two independent paths (the BVH reader's
 //! own forward kinematics against the core's FK of the CSV rows).
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use gaitlab_core::export::{BvhKinematics, from_rotation_vector, parse_bvh};
 use gaitlab_core::{Kinematics, Pose, RootTransform};
 use glam::DVec3;
 use serde_json::Value;
 
-fn state(lab: &Lab) -> Value {
+fn state(lab: &App) -> Value {
     serde_json::from_str(&lab.state_json()).expect("state is JSON")
 }
 
-fn advance_frames(lab: &mut Lab, frames: usize) {
+fn advance_frames(lab: &mut App, frames: usize) {
     for _ in 0..frames {
         lab.command(r#"{"step": true}"#).expect("step");
         lab.advance(0.0);
@@ -21,8 +21,8 @@ fn advance_frames(lab: &mut Lab, frames: usize) {
 }
 
 /// A recorded lab: 90 frames of running with DLS, recording on for the middle 60.
-fn recorded_lab() -> Lab {
-    let mut lab = Lab::new(Settings::default());
+fn recorded_lab() -> App {
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"mode": "run", "method": "dls", "paused": true}"#)
         .expect("valid");
     advance_frames(&mut lab, 15);
@@ -144,7 +144,7 @@ fn bvh_and_csv_of_a_take_describe_the_same_motion() {
 
 #[test]
 fn saving_without_a_take_or_in_a_bad_format_says_why() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     let error = lab
         .command(r#"{"save": "bvh"}"#)
         .expect_err("nothing recorded");
@@ -171,7 +171,7 @@ fn switching_preset_drops_the_take() {
 
 #[test]
 fn plotted_joints_follow_the_command_and_reject_unknown_names() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     let s = state(&lab);
     assert_eq!(
         s["plot_joints"],
@@ -213,7 +213,7 @@ fn plotted_joints_follow_the_command_and_reject_unknown_names() {
 
 #[test]
 fn video_commands_set_the_request_and_size() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(r#"{"video_size": "p720", "record_video": true}"#)
         .expect("valid");
     let s = state(&lab);

@@ -4,10 +4,10 @@
 //! walker and a physics creature; a setting changed while back in time makes
 //! a new future; the history reaches back at most 10 s.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 
-fn lab(preset: &str) -> Lab {
-    let mut lab = Lab::new(Settings::default());
+fn lab(preset: &str) -> App {
+    let mut lab = App::new(Settings::default());
     if let Err(error) = lab.set_preset(preset) {
         panic!("{error}");
     }
@@ -15,14 +15,14 @@ fn lab(preset: &str) -> Lab {
     lab
 }
 
-fn command(lab: &mut Lab, json: &str) {
+fn command(lab: &mut App, json: &str) {
     if let Err(error) = lab.command(json) {
         panic!("{json}: {error}");
     }
 }
 
 /// One frame forward (as the Step button does) and the shown pose's digest.
-fn step(lab: &mut Lab) -> String {
+fn step(lab: &mut App) -> String {
     lab.single_step();
     lab.advance(0.0);
     lab.rewind_state().pose_digest
@@ -30,7 +30,7 @@ fn step(lab: &mut Lab) -> String {
 
 /// Runs `frames` frames, then steps back 1 s and forward again, checking
 /// every frame of that second against the digests taken the first time.
-fn back_and_forth(lab: &mut Lab, frames: u64) {
+fn back_and_forth(lab: &mut App, frames: u64) {
     let fps = (1.0 / lab.frame_seconds()).round() as u64;
     let mut digests = Vec::new();
     for _ in 0..frames {

@@ -9,7 +9,7 @@
 
 use std::path::PathBuf;
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::Value;
 
 /// Keys (JSON pointers) whose values depend on wall time or the machine.
@@ -27,17 +27,17 @@ const VOLATILE: &[&str] = &[
     "/views/0/metrics/wall_ms_per_frame",
 ];
 
-fn labs() -> Vec<(&'static str, Lab)> {
+fn labs() -> Vec<(&'static str, App)> {
     let mut out = Vec::new();
-    out.push(("human", Lab::new(Settings::default())));
-    let mut poda = Lab::new(Settings::default());
+    out.push(("human", App::new(Settings::default())));
+    let mut poda = App::new(Settings::default());
     poda.command(r#"{"preset":"poda-quadruped","gait":"trot"}"#)
         .expect("poda");
     for _ in 0..30 {
         poda.advance(1.0 / 60.0);
     }
     out.push(("poda_quadruped", poda));
-    let mut kangaroo = Lab::new(Settings::default());
+    let mut kangaroo = App::new(Settings::default());
     kangaroo
         .command(r#"{"preset":"raibert-kangaroo"}"#)
         .expect("kangaroo");
@@ -45,7 +45,7 @@ fn labs() -> Vec<(&'static str, Lab)> {
         kangaroo.advance(1.0 / 60.0);
     }
     out.push(("raibert_kangaroo", kangaroo));
-    let mut compare = Lab::new(Settings::default());
+    let mut compare = App::new(Settings::default());
     compare
         .command(
             r#"{"compare":{"views":["dls","sdls"],"scenario":"singularity"},

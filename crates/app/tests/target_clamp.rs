@@ -4,7 +4,7 @@
 //! and a tighter 0.1 m. Prints the table docs/she-2006.md quotes and checks
 //! what the measurement showed.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::{Value, json};
 
 const SECONDS: f64 = 10.0;
@@ -12,7 +12,7 @@ const SECONDS: f64 = 10.0;
 /// Each view's method and figures after `SECONDS` of `scenario` with the
 /// clamp at `clamp_m`.
 fn run(scenario: &str, clamp_m: f64) -> Vec<Value> {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     if let Err(error) = lab.set_preset("she-2006") {
         panic!("{error}");
     }

@@ -4,16 +4,16 @@
 //! leaves the figure as it was; stopping (or another preset) brings the
 //! creature's own motion back.
 
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use gaitlab_core::Kinematics;
 use gaitlab_core::driver::Driver;
 use serde_json::Value;
 
-fn state(lab: &Lab) -> Value {
+fn state(lab: &App) -> Value {
     serde_json::from_str(&lab.state_json()).unwrap_or_default()
 }
 
-fn command(lab: &mut Lab, json: &str) {
+fn command(lab: &mut App, json: &str) {
     if let Err(error) = lab.command(json) {
         panic!("{json}: {error}");
     }
@@ -24,7 +24,7 @@ fn command(lab: &mut Lab, json: &str) {
 /// figure's first frame's: a followed recording holds the root where the
 /// rest pose has it, and the human's first frame is already on §5.2.2's
 /// listing, with its root 8 cm lower.
-fn recording(lab: &Lab) -> String {
+fn recording(lab: &App) -> String {
     let creature = lab.creature();
     let rest = Kinematics::of(&creature.skeleton, &creature.rest_pose()).effector_position;
     let mut csv = String::from("t");
@@ -49,7 +49,7 @@ fn recording(lab: &Lab) -> String {
     csv
 }
 
-fn run(lab: &mut Lab, frames: usize) {
+fn run(lab: &mut App, frames: usize) {
     lab.set_paused(true);
     for _ in 0..frames {
         lab.single_step();
@@ -59,7 +59,7 @@ fn run(lab: &mut Lab, frames: usize) {
 
 #[test]
 fn a_dropped_recording_is_followed_alone_and_side_by_side() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     let csv = recording(&lab);
     if let Err(error) = lab.load_file("swing.csv", csv.as_bytes()) {
         panic!("{error}");
@@ -131,7 +131,7 @@ fn a_dropped_recording_is_followed_alone_and_side_by_side() {
 
 #[test]
 fn a_bad_recording_names_its_line_and_leaves_the_figure() {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     for (name, text, want) in [
         (
             "short.csv",

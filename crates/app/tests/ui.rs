@@ -4,10 +4,10 @@
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 
-fn harness() -> Harness<'static, Lab> {
-    let mut lab = Lab::new(Settings::default());
+fn harness() -> Harness<'static, App> {
+    let mut lab = App::new(Settings::default());
     // Tests drive time themselves: start paused so the harness settles.
     lab.set_paused(true);
     // One step moves the human 2.8 cm at once (She 2006 starts the cycle at
@@ -16,7 +16,7 @@ fn harness() -> Harness<'static, Lab> {
     Harness::builder()
         .with_size(egui::vec2(1200.0, 800.0))
         .with_max_steps(32)
-        .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab)
+        .build_ui_state(|ui, lab: &mut App| lab.ui(ui), lab)
 }
 
 /// The IK engine's collapsible sections, top to bottom.
@@ -120,13 +120,13 @@ fn the_recording_panel_records_a_take_and_saves_it() {
 }
 
 /// A paused lab on PODA preset `preset`, in a window `height` points tall.
-fn poda_harness(preset: &str, height: f32) -> Harness<'static, Lab> {
-    let mut lab = Lab::new(Settings::default());
+fn poda_harness(preset: &str, height: f32) -> Harness<'static, App> {
+    let mut lab = App::new(Settings::default());
     lab.set_paused(true);
     lab.set_preset(preset).expect("bundled");
     Harness::builder()
         .with_size(egui::vec2(1200.0, height))
-        .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab)
+        .build_ui_state(|ui, lab: &mut App| lab.ui(ui), lab)
 }
 
 #[test]
@@ -240,7 +240,7 @@ fn the_side_by_side_controls_change_the_comparison() {
     harness.run();
     harness.get_by_label("Compare methods").click();
     harness.run();
-    let views = |h: &Harness<'static, Lab>| -> Vec<&'static str> {
+    let views = |h: &Harness<'static, App>| -> Vec<&'static str> {
         h.state()
             .comparison()
             .map(|c| c.config.views.iter().map(|m| m.name()).collect())
@@ -380,7 +380,7 @@ fn copy_link_shows_the_link_and_download_preset_queues_the_json() {
 fn the_gait_panel_says_while_legs_take_a_switch_on() {
     let mut harness = poda_harness("poda-quadruped", 1400.0);
     harness.run();
-    let says = |h: &Harness<'static, Lab>| {
+    let says = |h: &Harness<'static, App>| {
         h.query_all_by_label_contains("Legs taking the change on")
             .next()
             .is_some()
@@ -546,7 +546,7 @@ fn the_panel_pushes_forward_draws_the_push_and_judges_it() {
     let mut harness = poda_harness("raibert-quadruped", 1400.0);
     harness.run_steps(30);
     // Run `seconds` of the creature, then pause again for the panel.
-    let run_for = |harness: &mut Harness<'static, Lab>, seconds: f64| {
+    let run_for = |harness: &mut Harness<'static, App>, seconds: f64| {
         let lab = harness.state_mut();
         lab.set_paused(false);
         for _ in 0..(seconds * 60.0) as usize {
@@ -556,7 +556,7 @@ fn the_panel_pushes_forward_draws_the_push_and_judges_it() {
         // The view eases toward the moved creature: a few frames to settle.
         harness.run_steps(30);
     };
-    let drawn = |lab: &Lab| {
+    let drawn = |lab: &App| {
         lab.stage()
             .scene()
             .segments()
@@ -608,7 +608,7 @@ fn dragging_the_trunk_pushes_it_and_leaves_the_camera() {
     lab.set_paused(true);
     harness.run_steps(30);
     let trunk = trunk_point(&harness);
-    let pushes = |harness: &Harness<'static, Lab>| {
+    let pushes = |harness: &Harness<'static, App>| {
         harness
             .state()
             .driver()
@@ -667,13 +667,13 @@ fn the_physics_plots_each_hold_one_unit_and_open_on_a_phone() {
     }
     // On a phone the plots are a drawer of their own, closed at first; the
     // controls drawer and the plots drawer never show together.
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.set_paused(true);
     lab.set_preset("raibert-biped").expect("bundled");
     assert!(lab.command(r#"{"narrow": true}"#).is_ok());
     let mut harness = Harness::builder()
         .with_size(egui::vec2(390.0, 844.0))
-        .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab);
+        .build_ui_state(|ui, lab: &mut App| lab.ui(ui), lab);
     harness.run();
     assert!(harness.query_all_by_label("Ground force").next().is_none());
     // Touch targets: the phone bar's buttons are at least 44 px tall.
@@ -746,7 +746,7 @@ fn a_first_visit_finds_the_intro_the_help_and_presets_by_engine() {
 
 #[test]
 fn a_recording_shows_a_red_dot_above_the_view() {
-    let shown = |harness: &Harness<'static, Lab>| {
+    let shown = |harness: &Harness<'static, App>| {
         harness
             .query_all_by_label_contains("Recording motion")
             .next()
@@ -815,8 +815,8 @@ fn a_lesson_opens_with_its_note_and_leaves_out_its_hidden_panels() {
 }
 
 /// A paused lab of `preset` on a 390 × 844 phone after the command `setup`.
-fn phone_harness(preset: &str, setup: &str) -> Harness<'static, Lab> {
-    let mut lab = Lab::new(Settings::default());
+fn phone_harness(preset: &str, setup: &str) -> Harness<'static, App> {
+    let mut lab = App::new(Settings::default());
     if let Err(error) = lab.set_preset(preset) {
         panic!("{error}");
     }
@@ -826,12 +826,12 @@ fn phone_harness(preset: &str, setup: &str) -> Harness<'static, Lab> {
     }
     Harness::builder()
         .with_size(egui::vec2(390.0, 844.0))
-        .build_ui_state(|ui, lab: &mut Lab| lab.ui(ui), lab)
+        .build_ui_state(|ui, lab: &mut App| lab.ui(ui), lab)
 }
 
 /// Asserts the last frame's touch audit found no target under 44 points
 /// (or cut off) and returns how many it measured.
-fn no_small_targets(harness: &Harness<'static, Lab>, what: &str) -> u64 {
+fn no_small_targets(harness: &Harness<'static, App>, what: &str) -> u64 {
     let checked = layout(harness);
     println!(
         "{what}: {} targets, small {}",
@@ -846,7 +846,7 @@ fn no_small_targets(harness: &Harness<'static, Lab>, what: &str) -> u64 {
 }
 
 /// Where the trunk is drawn on the screen (`state().layout.trunk_pt`).
-fn trunk_point(harness: &Harness<'static, Lab>) -> egui::Pos2 {
+fn trunk_point(harness: &Harness<'static, App>) -> egui::Pos2 {
     let at = &layout(harness)["trunk_pt"];
     egui::pos2(
         at[0].as_f64().expect("trunk x") as f32,
@@ -855,7 +855,7 @@ fn trunk_point(harness: &Harness<'static, Lab>) -> egui::Pos2 {
 }
 
 /// `state().layout` of the harness's lab.
-fn layout(harness: &Harness<'static, Lab>) -> serde_json::Value {
+fn layout(harness: &Harness<'static, App>) -> serde_json::Value {
     let state: serde_json::Value =
         serde_json::from_str(&harness.state().state_json()).unwrap_or_default();
     state["layout"].clone()
@@ -958,14 +958,14 @@ fn the_scale_slider_warns_outside_the_tested_scales() {
 fn the_sections_below_the_poda_panel_hold_still_through_play_and_gait_switches() {
     let mut harness = poda_harness("hexapod", 1400.0);
     harness.run_steps(4);
-    let header_y = |h: &Harness<'static, Lab>| {
+    let header_y = |h: &Harness<'static, App>| {
         (
             h.get_by_label("Phases and steps").rect().top(),
             h.get_by_label("Center angles and gains").rect().top(),
         )
     };
     // Which of the panel's messages show: the warning, derived values, a change taken on.
-    let messages = |lab: &Lab| {
+    let messages = |lab: &App| {
         let readout = lab.driver().poda_readout();
         (
             readout.as_ref().is_some_and(|r| {

@@ -9,7 +9,7 @@
 mod common;
 
 use common::{gaitlab_ok, scratch_arg};
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 
 /// The CLI's BVH and CSV for `args` (preset first).
 fn cli_files(tag: &str, args: &[&str]) -> (String, String) {
@@ -28,7 +28,7 @@ fn cli_files(tag: &str, args: &[&str]) -> (String, String) {
 /// The lab's BVH and CSV downloads after `setup`, reset, and `frames` single
 /// steps with recording on; `last_s` as in the `save` command.
 fn lab_files(setup: &str, frames: usize, last_s: Option<f64>) -> (String, String) {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(setup).expect("setup command");
     lab.command(r#"{"paused": true, "reset": true, "record": true}"#)
         .expect("record");

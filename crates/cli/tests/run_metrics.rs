@@ -16,7 +16,7 @@ mod common;
 use std::path::PathBuf;
 
 use common::{bundled_names, gaitlab_ok, run_json, without_timing};
-use gaitlab_app::{Lab, Settings};
+use gaitlab_app::{App, Settings};
 use serde_json::Value;
 
 fn golden_dir() -> PathBuf {
@@ -342,7 +342,7 @@ fn cli_metrics(preset: &str, seconds: &str) -> Value {
 }
 
 fn lab_metrics(preset: &str, frames: usize) -> Value {
-    let mut lab = Lab::new(Settings::default());
+    let mut lab = App::new(Settings::default());
     lab.command(&serde_json::json!({"preset": preset}).to_string())
         .expect("preset");
     lab.command(r#"{"paused": true, "reset": true}"#)

@@ -1,6 +1,6 @@
 //! The `command(json)` API (DESIGN.md "Browser", docs/app.md): the typed
 //! [`Command`] — every key optional, unknown keys refused — and
-//! [`Lab::command`], which reads it whole and then applies its keys in a fixed
+//! [`App::command`], which reads it whole and then applies its keys in a fixed
 //! order. Commands are plain data; nothing in them is evaluated.
 
 use std::collections::BTreeMap;
@@ -14,8 +14,9 @@ use super::names::{
     EngineName, JacobianAtName, MethodName, ModeName, SaveFormatName, ThemeName,
     TransposeAlphaName, VideoSizeName,
 };
+use crate::app::App;
 use crate::compare::CompareValue;
-use crate::lab::{GaitShapeEdit, Lab};
+use crate::lab::GaitShapeEdit;
 
 /// Longest command text accepted, bytes (a custom preset rides in `preset_json`).
 pub const MAX_COMMAND_BYTES: usize = 300 * 1024;
@@ -112,7 +113,7 @@ impl<'de> Deserialize<'de> for SaveCommand {
     }
 }
 
-/// One `command(json)` object. Every key is optional; [`Lab::command`]
+/// One `command(json)` object. Every key is optional; [`App::command`]
 /// applies them in the order of these fields. `null` counts as absent except
 /// for `compare` (leaves the comparison) and `narrow` (follow the width).
 #[derive(Clone, Debug, Default, PartialEq, Deserialize)]
@@ -324,7 +325,7 @@ impl Command {
     }
 }
 
-impl Lab {
+impl App {
     /// Applies a JSON command object, e.g. `{"mode":"run","method":"dls"}`
     /// (the keys are [`Command`]'s; docs/app.md lists them). The command is
     /// read whole first: a wrong type or an unknown key refuses it and nothing
@@ -339,7 +340,7 @@ impl Lab {
         self.apply_command(&command)
     }
 
-    /// Applies a typed command in [`Command`]'s field order (see [`Lab::command`]).
+    /// Applies a typed command in [`Command`]'s field order (see [`App::command`]).
     ///
     /// # Errors
     /// The first key whose value the lab refuses, as `key: reason`.
@@ -437,7 +438,7 @@ impl Lab {
             self.set_pinned_targets(pins)?;
         }
         if let Some(seconds) = c.step_back_s {
-            let seconds = range("step_back_s", seconds, 0.0, crate::lab::rewind::REWIND_S)?;
+            let seconds = range("step_back_s", seconds, 0.0, crate::app::rewind::REWIND_S)?;
             let frames = (seconds / self.frame_seconds()).round() as u64;
             self.step_back(frames)?;
         }
@@ -537,7 +538,11 @@ impl Lab {
             }
         }
         if let Some(camera) = &c.camera {
-            super::camera::apply_camera(&mut self.camera, &mut self.session.settings.view, camera)?;
+            super::camera::apply_camera(
+                &mut self.lab.camera,
+                &mut self.lab.session.settings.view,
+                camera,
+            )?;
         }
         if let Some(open) = c.editor_open {
             self.set_editor_open(open);

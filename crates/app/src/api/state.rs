@@ -11,7 +11,7 @@ use serde::Serialize;
 use gaitlab_engine::status::{PhysicsState, PodaState};
 
 use super::camera::CameraState;
-use crate::lab::Lab;
+use crate::app::App;
 use crate::view::ViewOptions;
 
 /// One of the lab's additions in force (`lab_additions`).
@@ -255,7 +255,7 @@ pub struct State {
     pub playback_rate: f64,
     /// The history scrubber: the frame shown, how far back one can go, and
     /// whether frames simulated again matched the stored poses.
-    pub rewind: crate::lab::rewind::RewindState,
+    pub rewind: crate::app::rewind::RewindState,
     /// Frames since the last reset.
     pub frame: u64,
     /// Simulated time, seconds.
@@ -323,7 +323,7 @@ pub struct State {
 impl State {
     /// The lab's state (the one place that reads the lab's fields for `state()`).
     #[must_use]
-    pub fn of(lab: &Lab) -> Self {
+    pub fn of(lab: &App) -> Self {
         let skeleton = &lab.session.creature.skeleton;
         let report = lab.stage.driver.ik_report();
         let metrics = lab.stage.driver.ik_metrics();
@@ -500,7 +500,7 @@ impl State {
 /// The figures `gaitlab run --json` prints, for the run since the last
 /// reset: the engine layer's one metrics type. Wall-time fields come from
 /// the page's smoothed time per frame; `within_limits` is the current pose's.
-fn run_metrics(lab: &Lab) -> gaitlab_engine::RunMetrics {
+fn run_metrics(lab: &App) -> gaitlab_engine::RunMetrics {
     let frames = usize::try_from(lab.stage.frame).unwrap_or(usize::MAX);
     let step_ms = lab.playback.sim_us_per_frame * lab.stage.frame as f64 / 1e3;
     let within_limits = gaitlab_engine::metrics::pose_within_limits(
@@ -517,7 +517,7 @@ fn run_metrics(lab: &Lab) -> gaitlab_engine::RunMetrics {
         .with_fps(1.0 / lab.frame_seconds())
 }
 
-impl Lab {
+impl App {
     /// The state as one JSON object ([`State`]).
     #[must_use]
     pub fn state_json(&self) -> String {

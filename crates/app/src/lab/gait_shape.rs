@@ -1,7 +1,7 @@
 //! An edit of the PODA gait's shape (Girard & Maciejewski 1985: a leg's
 //! relative phase, eq. 9; the transfer trajectory's height and key positions).
 
-/// An edit of the PODA gait's shape (see [`crate::Lab::edit_gait_shape`]).
+/// An edit of the PODA gait's shape (see [`crate::App::edit_gait_shape`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum GaitShapeEdit<'a> {
     /// Relative phase of one leg, a fraction of the period.

@@ -3,38 +3,29 @@
 //! composed of parts, one file each: the [`Session`] (creature, settings,
 //! custom preset, last error), the [`Stage`] (driver, kinematics, scene, error
 //! history, frame), the [`Plots`], the [`Overlays`], the [`TakeRecorder`] and
-//! an [`Outbox`] of effects the web glue drains. Front ends (eframe on the
-//! web, egui_kittest natively) call [`Lab::ui`] once per frame.
+//! an [`Outbox`] of effects the web glue drains. The lab holds no feature's
+//! state: the comparison, the hand, the Jacobian panel, the λ trade-off and
+//! the history scrubber sit beside it in the [`crate::app::App`], which is
+//! what front ends drive and which keeps every figure on screen in step.
 
 use gaitlab_core::driver::Driver;
 use gaitlab_core::ik::{IkOptions, Method};
 use gaitlab_core::preset::Creature;
 use gaitlab_core::preset::Engine;
-use gaitlab_core::preset::thesis::ThesisMode;
-use gaitlab_engine::{AnyDriver, Applied, EngineCommand, Take};
+use gaitlab_engine::{AnyDriver, EngineCommand, Take};
 
 use crate::history::History;
 use crate::render::Camera;
 use crate::settings::Settings;
 
-mod compare;
-mod editor;
-mod gait;
-mod gait_shape;
-mod grab;
-mod iteration;
-mod lambda_tradeoff;
+pub(crate) mod gait_shape;
 pub(crate) mod layout;
-mod lesson;
 mod outbox;
 mod overlays;
-mod paper_alone;
 mod playback;
 mod plots;
-pub mod rewind;
-mod session;
+pub(crate) mod session;
 mod take;
-mod track;
 mod video;
 
 use crate::stage::Stage;
@@ -48,7 +39,7 @@ pub use session::Session;
 pub use take::TakeRecorder;
 pub use video::VideoStatus;
 
-/// The whole state of the lab, by part.
+/// The single figure's lab, by part (the features are the [`crate::App`]'s).
 pub struct Lab {
     /// What a person chose and what runs.
     pub(crate) session: Session,
@@ -72,26 +63,16 @@ pub struct Lab {
     pub(crate) layout: Layout,
     /// A drag on the physics creature's trunk, pushing it.
     pub(crate) push_drag: crate::render::push_drag::PushDrag,
-    /// The side-by-side IK comparison, when one runs (it replaces the single view).
-    pub(crate) compare: Option<crate::compare::Comparison>,
-    /// The history scrubber's stored poses and keyframes.
-    pub(crate) rewind: rewind::Rewind,
     /// The preset editor.
     pub(crate) editor: crate::editor::PresetEditor,
     /// What the last PODA gait edit derived, to say so in the gait panel.
     pub(crate) gait_derived: Vec<&'static str>,
     /// The link "Copy link" made last, shown for copying by hand.
     pub(crate) shown_link: Option<String>,
-    /// The hand in the 3-D view: grab and pull of IK targets.
-    pub(crate) grab: crate::grab::Grab,
-    /// The Jacobian panel's figures (singular values, gains, traces).
-    pub(crate) jacobian: crate::jacobian::Jacobian,
-    /// The last measured λ trade-off (the Method panel's).
-    pub(crate) lambda_tradeoff: Option<crate::lambda_tradeoff::LambdaTradeoff>,
     /// The graphics path drawing the view ("webgpu (…)" or "webgl2 (…)"), when known.
     pub backend: Option<String>,
     /// The page's address without query or fragment (the web glue sets it;
-    /// empty natively), the base of [`Lab::share_link`].
+    /// empty natively), the base of [`crate::App::share_link`].
     pub page_url: String,
 }
 
@@ -113,18 +94,13 @@ impl Lab {
             video: VideoStatus::default(),
             layout: Layout::default(),
             push_drag: crate::render::push_drag::PushDrag::default(),
-            compare: None,
-            rewind: rewind::Rewind::default(),
             editor: crate::editor::PresetEditor::default(),
             gait_derived: Vec::new(),
             shown_link: None,
-            grab: crate::grab::Grab::default(),
-            jacobian: crate::jacobian::Jacobian::default(),
-            lambda_tradeoff: None,
             backend: None,
             page_url: String::new(),
         };
-        lab.after_reset();
+        lab.restart_records();
         lab
     }
 
@@ -218,32 +194,15 @@ impl Lab {
         self.outbox.drain()
     }
 
-    /// Switches to a bundled preset (its own default scenario, keeping the chosen mode and method).
-    ///
-    /// # Errors
-    /// If no bundled preset has that name or it cannot drive the thesis motions;
-    /// the current preset stays.
-    pub fn set_preset(&mut self, name: &str) -> Result<(), String> {
-        let creature = session::bundled(name)?;
-        self.install(creature, None)?;
-        self.session.settings.preset = name.to_owned();
-        Ok(())
-    }
-
-    /// Switches to a preset given as JSON (a `#p=` link or a pasted file).
-    ///
-    /// # Errors
-    /// The preset's `path: reason`; the current preset stays.
-    pub fn set_custom_preset(&mut self, json: &str) -> Result<(), String> {
-        let creature = Creature::from_json(json).map_err(|e| format!("preset: {e}"))?;
-        self.install(creature, Some(json.to_owned()))
-    }
-
     /// Runs `creature`. Where its IK options (`scenario.ik`) differ from the
     /// running preset's, it runs with its own, as the CLI does (she-2006's
     /// clamp-only joint limits); otherwise the person's options stay (an
     /// editor apply keeps a λ set in the panel). The method stays either way.
-    fn install(&mut self, creature: Creature, custom: Option<String>) -> Result<(), String> {
+    pub(crate) fn load_creature(
+        &mut self,
+        creature: Creature,
+        custom: Option<String>,
+    ) -> Result<(), String> {
         let mut settings = self.session.settings.clone();
         if creature.scenario.ik != self.session.creature.scenario.ik {
             settings.ik = IkOptions {
@@ -274,20 +233,8 @@ impl Lab {
         self.camera.home();
         self.outbox.push(Effect::PresetChanged);
         self.outbox.push(Effect::LinkChanged);
-        self.after_reset();
-        self.rebuild_compare();
+        self.restart_records();
         Ok(())
-    }
-
-    /// Sets the thesis motion.
-    pub fn set_mode(&mut self, mode: ThesisMode) {
-        self.session.settings.mode = mode;
-        // Other engines keep the mode for when a thesis preset runs.
-        drop(self.stage.driver.apply(EngineCommand::Mode(mode)));
-        if let Some(compare) = self.compare.as_mut() {
-            compare.set_mode(mode);
-        }
-        self.outbox.push(Effect::LinkChanged);
     }
 
     /// Sets the IK method.
@@ -319,52 +266,10 @@ impl Lab {
         self.stage.driver.set_ik_options(options);
     }
 
-    /// Applies a new figure heading (restarts the motion facing that way).
-    pub fn set_heading_deg(&mut self, degrees: f64) {
-        let heading_deg = degrees.clamp(-180.0, 180.0);
-        self.session.settings.heading_deg = heading_deg;
-        // A running physics creature turns toward the new heading; the
-        // others start again facing it.
-        if let Ok(Applied::Restart) = self
-            .stage
-            .driver
-            .apply(EngineCommand::Heading(heading_deg.to_radians()))
-        {
-            self.reset();
-        }
-    }
-
-    /// The address bar's query for what is on screen ([`crate::link::query`]):
-    /// the preset; for the IK engine its mode; and the method when one view
-    /// runs (a comparison runs several).
-    #[must_use]
-    pub fn address_query(&self) -> String {
-        let settings = &self.session.settings;
-        let ik = self.engine() == Engine::Ik;
-        crate::link::query(
-            &settings.preset,
-            ik.then(|| settings.mode.name()),
-            (ik && self.compare.is_none()).then(|| settings.method.name()),
-        )
-    }
-
     /// The engine of the creature being animated.
     #[must_use]
     pub fn engine(&self) -> Engine {
         self.session.creature.scenario.engine
-    }
-
-    /// Switches engine by loading the matching bundled creature (the engine
-    /// layer's [`gaitlab_engine::bundled_for_engine`]).
-    ///
-    /// # Errors
-    /// If the matching preset cannot be loaded; nothing changes.
-    pub fn set_engine(&mut self, engine: Engine) -> Result<(), String> {
-        if engine == self.engine() {
-            return Ok(());
-        }
-        let name = gaitlab_engine::bundled_for_engine(engine, &self.session.creature.name);
-        self.set_preset(name)
     }
 
     /// Pauses or resumes.
@@ -377,18 +282,10 @@ impl Lab {
         self.playback.single_step();
     }
 
-    /// Back to time 0 and the rest pose.
-    pub fn reset(&mut self) {
-        self.stage.driver.reset();
-        if let Some(compare) = self.compare.as_mut() {
-            compare.reset();
-        }
-        self.after_reset();
-    }
-
     /// Frame 0 of the stage's driver: empty histories, no footprints, the
-    /// plotted joints resolved again, the scene redrawn.
-    fn after_reset(&mut self) {
+    /// plotted joints resolved again (the app redraws the scene and restarts
+    /// its features after it).
+    pub(crate) fn restart_records(&mut self) {
         self.stage.frame = 0;
         self.overlays.clear();
         self.playback.clear_accumulator();
@@ -408,10 +305,6 @@ impl Lab {
                     .collect(),
             )
         };
-        self.jacobian.probe.clear();
-        self.probe_jacobian();
-        self.refresh_scene();
-        self.rewind_restart();
     }
 
     /// Frame length of the animation, seconds (the preset's fps).
@@ -420,40 +313,8 @@ impl Lab {
         self.session.creature.scenario.frame_seconds()
     }
 
-    /// Advances the animation by `real_dt` seconds of wall time in fixed frames
-    /// of [`Lab::frame_seconds`]; paused labs only take requested single steps.
-    pub fn advance(&mut self, real_dt: f64) {
-        let dt = self.frame_seconds();
-        let steps = self.playback.steps_for(real_dt, dt);
-        if steps == 0 {
-            return;
-        }
-        let started = self.playback.now_ms();
-        for _ in 0..steps {
-            self.step_frame(dt);
-        }
-        self.playback.note_sim_time(started, steps);
-        self.refresh_scene();
-    }
-
-    /// One frame of `dt` seconds: the single view or, in lock step, every
-    /// comparison view; then the plots, take and footprints and the history
-    /// scrubber's record.
-    fn step_frame(&mut self, dt: f64) {
-        if let Some(compare) = self.compare.as_mut() {
-            // The views replace the single figure, in lock step.
-            compare.step(dt, self.playback.clock.as_deref());
-            self.stage.frame += 1;
-        } else {
-            self.stage.step(dt);
-            self.record_frame();
-        }
-        self.rewind_note();
-        self.probe_jacobian();
-    }
-
     /// After a step of the single view: the plots, the take and the footprints.
-    fn record_frame(&mut self) {
+    pub(crate) fn record_frame(&mut self) {
         let stage = &mut self.stage;
         if let Some(probe) = stage.driver.physics_probe() {
             let message = stage.driver.take_message();
@@ -590,17 +451,6 @@ impl Lab {
         self.plots
             .resolve(&self.session.creature, &self.session.settings.plot_joints);
         Ok(())
-    }
-
-    /// Rebuilds the 3-D scenes from the drivers' current poses, with overlays.
-    fn refresh_scene(&mut self) {
-        let view = &self.session.settings.view;
-        if let Some(compare) = self.compare.as_mut() {
-            compare.refresh_scenes(view);
-        }
-        self.stage.refresh_scene(view);
-        self.overlays
-            .add_to(&mut self.stage.scene, &self.stage.driver, view);
     }
 
     /// Records the display frame rate from the UI's frame time.

@@ -5,7 +5,7 @@
 //! plots become drawers toggled from a slim top bar (one open at a time, the
 //! plots one under another), so the 3-D view keeps most of the screen.
 
-use crate::lab::Lab;
+use crate::app::App;
 use crate::render::viewport;
 
 pub mod fonts;
@@ -25,7 +25,7 @@ const PHONE_PLOT_HEIGHT_PT: f32 = 230.0;
 /// Share of the screen height the phone layout's drawers take.
 const DRAWER_HEIGHT_FRACTION: f32 = 0.45;
 
-impl Lab {
+impl App {
     /// Shows the whole lab in `ui` and advances the animation by the frame's time.
     pub fn ui(&mut self, ui: &mut egui::Ui) {
         self.layout.widgets_pt = crate::lab::layout::WidgetRects::default();
@@ -109,9 +109,9 @@ impl Lab {
             self.offer_grab_points();
             let rect = match &self.compare {
                 Some(compare) => {
-                    self.layout.trunk_pt = None;
-                    self.layout.figure_pt = None;
-                    self.layout.view_pt = [0.0; 4];
+                    self.lab.layout.trunk_pt = None;
+                    self.lab.layout.figure_pt = None;
+                    self.lab.layout.view_pt = [0.0; 4];
                     let labels: Vec<String> = compare
                         .views()
                         .iter()
@@ -123,13 +123,13 @@ impl Lab {
                         .enumerate()
                         .map(|(i, label)| (compare.colour(i), label.as_str()))
                         .collect();
-                    let settings = &self.session.settings.view;
+                    let settings = &self.lab.session.settings.view;
                     if compare.config.overlay {
                         viewport::show_overlay(
                             ui,
                             compare.overlay(),
                             &key,
-                            &mut self.camera,
+                            &mut self.lab.camera,
                             settings,
                             &mut self.grab,
                         )
@@ -141,35 +141,43 @@ impl Lab {
                             .zip(&key)
                             .map(|(v, (colour, label))| (&v.stage().scene, *label, *colour))
                             .collect();
-                        viewport::show_split(ui, &panes, &mut self.camera, settings, &mut self.grab)
-                            .rect
+                        viewport::show_split(
+                            ui,
+                            &panes,
+                            &mut self.lab.camera,
+                            settings,
+                            &mut self.grab,
+                        )
+                        .rect
                     }
                 }
-                None if self.stage.driver.held_targets().is_some() => {
+                None if self.lab.stage.driver.held_targets().is_some() => {
                     let response = viewport::show_with_tool(
                         ui,
-                        &self.stage.scene,
-                        &mut self.camera,
-                        &self.session.settings.view,
+                        &self.lab.stage.scene,
+                        &mut self.lab.camera,
+                        &self.lab.session.settings.view,
                         &mut self.grab,
                     );
-                    self.layout.trunk_pt = None;
+                    self.lab.layout.trunk_pt = None;
                     self.note_single_view(response.rect);
                     response.rect
                 }
                 None => {
-                    let grab = self.stage.driver.push_grab();
+                    let grab = self.lab.stage.driver.push_grab();
                     let trunk = grab.map(|(p, sideways)| (p.as_vec3(), sideways));
                     let (response, pushed) = viewport::show_pushable(
                         ui,
-                        &self.stage.scene,
-                        &mut self.camera,
-                        &self.session.settings.view,
-                        &mut self.push_drag,
+                        &self.lab.stage.scene,
+                        &mut self.lab.camera,
+                        &self.lab.session.settings.view,
+                        &mut self.lab.push_drag,
                         trunk,
                     );
-                    self.layout.trunk_pt = trunk
-                        .and_then(|(p, _)| viewport::screen_point(&self.camera, response.rect, p))
+                    self.lab.layout.trunk_pt = trunk
+                        .and_then(|(p, _)| {
+                            viewport::screen_point(&self.lab.camera, response.rect, p)
+                        })
                         .map(|at| [at.x, at.y]);
                     self.note_single_view(response.rect);
                     if let Some(dv) = pushed
@@ -183,19 +191,19 @@ impl Lab {
             self.apply_grab();
             self.note_targets_on_screen(rect);
             let ppp = ui.ctx().pixels_per_point();
-            self.layout.view_rect_px = [
+            self.lab.layout.view_rect_px = [
                 rect.min.x * ppp,
                 rect.min.y * ppp,
                 rect.width() * ppp,
                 rect.height() * ppp,
             ];
         });
-        if self.layout.narrow {
-            self.layout.touch_targets_checked =
-                touch::audit(ui.ctx(), &mut self.layout.small_touch_targets_pt);
+        if self.lab.layout.narrow {
+            self.lab.layout.touch_targets_checked =
+                touch::audit(ui.ctx(), &mut self.lab.layout.small_touch_targets_pt);
         } else {
-            self.layout.touch_targets_checked = 0;
-            self.layout.small_touch_targets_pt.clear();
+            self.lab.layout.touch_targets_checked = 0;
+            self.lab.layout.small_touch_targets_pt.clear();
         }
         if !self.playback.paused {
             ui.ctx().request_repaint();
@@ -374,20 +382,21 @@ impl Lab {
                 };
                 (first.driver(), pane)
             }
-            None => (&self.stage.driver, rect),
+            None => (&self.lab.stage.driver, rect),
         };
-        let camera = &self.camera;
+        let camera = &self.lab.camera;
         let on_screen = |p: &glam::DVec3| {
             viewport::screen_point(camera, pane, p.as_vec3()).map(|at| [at.x, at.y])
         };
-        self.layout.target_pt.clear();
+        self.lab.layout.target_pt.clear();
         if let Some(targets) = gaitlab_core::driver::Driver::targets(driver) {
-            self.layout
+            self.lab
+                .layout
                 .target_pt
                 .extend(targets.position.iter().map(on_screen));
         }
-        self.layout.effector_pt.clear();
-        self.layout.effector_pt.extend(
+        self.lab.layout.effector_pt.clear();
+        self.lab.layout.effector_pt.extend(
             gaitlab_core::driver::Driver::effector_positions(driver)
                 .iter()
                 .map(on_screen),
@@ -418,7 +427,8 @@ impl Lab {
             self.report_error(error);
         }
         if space {
-            self.set_paused(!self.playback.paused);
+            let paused = self.playback.paused;
+            self.set_paused(!paused);
         }
         if reset {
             self.reset();

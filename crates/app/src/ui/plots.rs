@@ -14,8 +14,9 @@ use gaitlab_engine::DriverKind;
 
 use crate::plot_scale::{few_round_marks, tick_label};
 
+use crate::app::App;
 use crate::history::History;
-use crate::lab::{Lab, MAX_PLOT_JOINTS};
+use crate::lab::MAX_PLOT_JOINTS;
 
 /// The colours of `names`' series: each by its side, as the 3-D view draws
 /// it (the figure's left blue, its right orange, the centre line in other
@@ -53,7 +54,7 @@ struct PlotSpec<'a> {
     y_names: Option<&'static [&'static str]>,
 }
 
-impl Lab {
+impl App {
     /// The plots side by side, filling `ui` (the wide layout's bottom panel).
     pub(crate) fn plots_ui(&mut self, ui: &mut egui::Ui) {
         let count = self.shown_plots().count().max(1);

@@ -3,7 +3,7 @@
 //! `<input type=file id="gaitlab-preset-file">` that "Load file…" clicks, and
 //! files dropped on the canvas (eframe hands them over as handles whose bytes
 //! arrive asynchronously). Files land in an [`Inbox`] the app empties each
-//! frame into [`crate::Lab::load_file`], which checks the size limit
+//! frame into [`crate::App::load_file`], which checks the size limit
 //! before parsing; a file over the limit is refused here before it is read.
 
 use std::cell::RefCell;

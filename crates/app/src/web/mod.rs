@@ -12,7 +12,8 @@ use std::rc::Rc;
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
 
-use crate::lab::{Download, Effect, Lab};
+use crate::app::App;
+use crate::lab::{Download, Effect};
 use crate::link;
 use crate::settings::Settings;
 use download::offer_text;
@@ -70,7 +71,7 @@ fn backend_name(info: &egui_wgpu::wgpu::AdapterInfo) -> String {
 
 /// The eframe app: the lab plus the page plumbing.
 struct WebApp {
-    lab: Lab,
+    lab: App,
     egui_ctx: egui::Context,
     first_frame_done: bool,
     /// Set by the `popstate` listener: the URL changed under us (Back/Forward).
@@ -108,7 +109,7 @@ impl WebApp {
             );
         }
         mark("gaitlab-pipelines-ready");
-        let mut lab = Lab::new(settings);
+        let mut lab = App::new(settings);
         lab.set_clock(Box::new(now_ms));
         lab.backend = backend;
         if let Some(location) = window().map(|w| w.location()) {

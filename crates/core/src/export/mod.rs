@@ -25,7 +25,7 @@ mod pose_csv;
 mod rotation;
 mod target_csv;
 mod target_track;
-mod text;
+pub(crate) mod text;
 mod write_error;
 
 pub use bvh::{Bvh, BvhChannel, BvhJoint, MAX_BVH_CHANNELS_PER_JOINT, MAX_BVH_JOINTS};

@@ -8,8 +8,8 @@
 //! (z up) cell (r, c) is the triangles {(c, r+1), (c, r), (c+1, r+1)} and
 //! {(c, r), (c+1, r+1), (c+1, r)}, split along the diagonal from sample
 //! (c, r) to (c+1, r+1). An exported field lies in gaitlab's y-up world with
-//! its z axis turned onto +y, which turns its rows onto −z; written with
-//! gaitlab's rows in reverse order, MuJoCo's diagonal is then the one from
+//! its z axis turned onto +y, which turns its rows onto −z; MuJoCo stores
+//! gaitlab's rows in reverse order, and its diagonal is then the one from
 //! (x low, z high) to (x high, z low). So here a cell with fractions u
 //! (along x) and w (along z) is split along u + w = 1: the triangle of
 //! samples (0, 0), (1, 0), (0, 1) where u + w ≤ 1, and (1, 0), (0, 1),

@@ -7,12 +7,14 @@
 //! - `ground`: [`Terrain`], the four kinds and what they answer.
 //! - `plane`, `stairs`, `height_field`: each kind.
 //! - `direction`: headings in the ground plane (0° is +x, 90° is +z).
+//! - `mjcf`: the terrain as MuJoCo geoms and an `hfield` asset.
 //! - `error`: [`TerrainError`], the field and the reason.
 
 mod direction;
 mod error;
 mod ground;
 mod height_field;
+mod mjcf;
 mod plane;
 mod stairs;
 
@@ -20,5 +22,6 @@ pub use direction::{along, ground_direction};
 pub use error::TerrainError;
 pub use ground::Terrain;
 pub use height_field::{HeightField, MAX_FRICTION, MAX_HEIGHT_M, MAX_SAMPLES};
+pub use mjcf::{EXTENT_M, TerrainMjcf, to_mjcf};
 pub use plane::{MAX_SLOPE_DEG, Plane};
 pub use stairs::{MAX_STEP_M, MAX_STEPS, Stairs};

@@ -655,6 +655,9 @@ impl PhysicsDriver {
                 400.0 * self.params.scale.powi(4)
             },
             ground: self.sim.ground,
+            // The engines run on the flat floor until they walk on terrain
+            // (`driver_for` refuses the others).
+            terrain: gaitlab_core::terrain::Terrain::Flat,
         };
         crate::engine::mjcf::to_mjcf(creature, &options)
     }

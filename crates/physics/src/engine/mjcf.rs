@@ -33,6 +33,9 @@ pub struct MjcfOptions {
     pub hip_torque_limit: f64,
     /// The ground springs, written as the feet's contact softness.
     pub ground: GroundParams,
+    /// The ground's shape ([`gaitlab_core::terrain::to_mjcf`]): the floor
+    /// plane, or boxes and an `hfield`.
+    pub terrain: gaitlab_core::terrain::Terrain,
 }
 
 fn v3(v: DVec3) -> String {
@@ -104,11 +107,14 @@ pub fn to_mjcf(creature: &PhysicalCreature, options: &MjcfOptions) -> String {
         "    <geom contype=\"0\" conaffinity=\"0\" rgba=\"0.7 0.72 0.78 1\"/>"
     );
     let _ = writeln!(x, "  </default>");
+    let ground = gaitlab_core::terrain::to_mjcf(&options.terrain);
+    if !ground.asset.is_empty() {
+        let _ = writeln!(x, "  <asset>");
+        x.push_str(&ground.asset);
+        let _ = writeln!(x, "  </asset>");
+    }
     let _ = writeln!(x, "  <worldbody>");
-    let _ = writeln!(
-        x,
-        "    <geom name=\"floor\" type=\"plane\" size=\"50 50 0.1\" zaxis=\"0 1 0\" contype=\"1\" conaffinity=\"1\" rgba=\"0.3 0.33 0.36 1\"/>"
-    );
+    x.push_str(&ground.geoms);
     // Which bodies carry their parents' merged joints.
     let mut carried: Vec<Vec<usize>> = vec![Vec::new(); bodies.len()];
     let mut skipped = vec![false; bodies.len()];

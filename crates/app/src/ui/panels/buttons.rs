@@ -1,9 +1,9 @@
 //! The Reset / Pause / Back / Step buttons (keys R, space, comma, period):
 //! in the side panel, or in the phone layout's bar above the drawer; the
-//! playback rate and the history scrubber ([`crate::lab::rewind::REWIND_S`] seconds).
+//! playback rate and the history scrubber ([`crate::app::rewind::REWIND_S`] seconds).
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 
 /// The buttons in the side panel (the phone layout's bar has them instead).
 pub struct ButtonsPanel;
@@ -13,11 +13,11 @@ impl Panel for ButtonsPanel {
         "Reset / Pause / Step"
     }
 
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         !lab.narrow()
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         ui.horizontal(|ui| buttons(ui, lab));
     }
 }
@@ -26,7 +26,7 @@ impl Panel for ButtonsPanel {
 /// comma, period), added to `ui` as they are: the side panel puts them in a
 /// row, the phone bar in its wrapping row (a row of their own would not
 /// wrap, and Step went off a narrow screen).
-pub fn buttons(ui: &mut egui::Ui, lab: &mut Lab) {
+pub fn buttons(ui: &mut egui::Ui, lab: &mut App) {
     if bar_button(ui, "Reset")
         .on_hover_text("Back to time 0 and the rest pose (key R)")
         .clicked()
@@ -38,7 +38,8 @@ pub fn buttons(ui: &mut egui::Ui, lab: &mut Lab) {
         .on_hover_text("Pause or resume the animation (space bar)")
         .clicked()
     {
-        lab.set_paused(!lab.paused());
+        let paused = lab.paused();
+        lab.set_paused(!paused);
     }
     if bar_button(ui, "Back")
         .on_hover_text(
@@ -73,7 +74,7 @@ impl Panel for RatePanel {
         "Playback"
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         rate(ui, lab);
         // On a wide screen the scrubber runs along the window's foot.
         if lab.narrow() {
@@ -89,7 +90,7 @@ const SCRUBBER_LABELS_PT: f32 = 140.0;
 /// The history scrubber, its rail `width` points wide (less its value and
 /// label): the frame shown among the stored ones, labelled in seconds
 /// before the newest; dragging it pauses and goes there.
-pub(crate) fn history_scrubber(ui: &mut egui::Ui, lab: &mut Lab, width: f32) {
+pub(crate) fn history_scrubber(ui: &mut egui::Ui, lab: &mut App, width: f32) {
     let Some((oldest, newest)) = lab.rewind_range() else {
         return;
     };
@@ -105,7 +106,7 @@ pub(crate) fn history_scrubber(ui: &mut egui::Ui, lab: &mut Lab, width: f32) {
 }
 
 /// The scrubber's slider between frames `oldest` and `newest`.
-fn scrubber(ui: &mut egui::Ui, lab: &mut Lab, oldest: u64, newest: u64) {
+fn scrubber(ui: &mut egui::Ui, lab: &mut App, oldest: u64, newest: u64) {
     let dt = lab.frame_seconds();
     let mut frame = lab.frame().clamp(oldest, newest);
     let response = ui
@@ -135,7 +136,7 @@ fn scrubber(ui: &mut egui::Ui, lab: &mut Lab, oldest: u64, newest: u64) {
 
 /// The playback rate, 0.1× to 2× (the side panel; the same frames, slower or
 /// faster, for watching a motion frame by frame).
-fn rate(ui: &mut egui::Ui, lab: &mut Lab) {
+fn rate(ui: &mut egui::Ui, lab: &mut App) {
     let mut rate = lab.playback.rate();
     let range = crate::lab::PLAYBACK_RATES;
     let response = ui

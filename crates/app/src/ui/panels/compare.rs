@@ -4,8 +4,8 @@
 //! ask, reporting what the lab refuses.
 
 use super::panel::Panel;
+use crate::app::App;
 use crate::compare::CompareRequest;
-use crate::lab::Lab;
 
 /// The "Side by side" controls.
 pub struct SideBySidePanel;
@@ -15,11 +15,11 @@ impl Panel for SideBySidePanel {
         "Side by side"
     }
 
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         lab.driver().is_ik()
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         let base = lab.compare_base();
         let request = crate::compare::controls(
             ui,
@@ -44,7 +44,7 @@ impl Panel for SideBySidePanel {
 }
 
 /// The comparison's cards, in columns or `stacked` (the phone's drawer).
-pub fn cards(ui: &mut egui::Ui, lab: &mut Lab, stacked: bool) {
+pub fn cards(ui: &mut egui::Ui, lab: &mut App, stacked: bool) {
     if let Some(compare) = lab.comparison_mut() {
         crate::compare::cards(ui, compare, stacked);
     }

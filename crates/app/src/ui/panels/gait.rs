@@ -8,7 +8,8 @@ use gaitlab_engine::DriverKind;
 use gaitlab_engine::readout::{Footfall, JointCenterReadout};
 
 use super::panel::Panel;
-use crate::lab::{GaitShapeEdit, Lab};
+use crate::app::App;
+use crate::lab::GaitShapeEdit;
 use crate::param_widgets::{self as widgets, Param, key};
 
 /// The PODA gait panel.
@@ -19,11 +20,11 @@ impl Panel for GaitPanel {
         "Gait"
     }
 
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         lab.driver().kind() == DriverKind::Poda
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         gait(ui, lab);
     }
 }
@@ -35,7 +36,7 @@ const ROW_HEIGHT: f32 = 18.0;
 const LABEL_FONT_PT: f32 = 13.0;
 
 /// The gait panel (shown for PODA creatures).
-fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
+fn gait(ui: &mut egui::Ui, lab: &mut App) {
     let Some(gait) = lab.driver().poda_readout() else {
         return;
     };
@@ -151,7 +152,7 @@ fn gait(ui: &mut egui::Ui, lab: &mut Lab) {
 
 /// Center angle and gain of every leg joint (PODA eq. 6: the null-space term
 /// pulls each joint toward its center with its gain, without moving the foot).
-fn centers(ui: &mut egui::Ui, lab: &mut Lab) {
+fn centers(ui: &mut egui::Ui, lab: &mut App) {
     let Some(readout) = lab.driver().poda_readout() else {
         return;
     };
@@ -214,7 +215,7 @@ fn centers(ui: &mut egui::Ui, lab: &mut Lab) {
 /// The gait's shape: each leg's relative phase (eq. 9), the step height and
 /// the key leg positions of the transfer trajectory (PODA "Leg Support and
 /// Transfer Trajectories").
-fn shape(ui: &mut egui::Ui, lab: &mut Lab) {
+fn shape(ui: &mut egui::Ui, lab: &mut App) {
     let Some(readout) = lab.driver().poda_readout() else {
         return;
     };

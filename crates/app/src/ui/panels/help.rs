@@ -4,7 +4,7 @@
 //! is.
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 use crate::render::gait_overlay::{FOOTHOLD_COLOR, FOOTPRINT_COLOR, PATH_COLOR};
 use crate::render::physics_overlay::OBSTACLE_COLOR;
 use crate::render::scene::{
@@ -21,7 +21,7 @@ impl Panel for IntroPanel {
         "Introduction"
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         ui.horizontal_wrapped(|ui| {
             ui.label(INTRO);
             let help = ui
@@ -120,7 +120,7 @@ const ENGINES: [(&str, &str); 3] = [
 ];
 
 /// The help window, when open.
-pub fn help_window(ctx: &egui::Context, lab: &mut Lab) {
+pub fn help_window(ctx: &egui::Context, lab: &mut App) {
     if !lab.layout.help_open {
         return;
     }

@@ -4,7 +4,7 @@
 use gaitlab_core::ik::{JacobianAt, Method, TransposeAlpha};
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 use crate::param_widgets::{self as widgets, Param, key};
 
 /// The Method panel (hidden while a comparison runs: each view has its own).
@@ -15,11 +15,11 @@ impl Panel for MethodPanel {
         "Method"
     }
 
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         lab.driver().is_ik() && lab.comparison().is_none()
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         method(ui, lab);
     }
 }
@@ -89,7 +89,7 @@ fn transpose_alpha_hint(alpha: TransposeAlpha) -> &'static str {
 }
 
 /// Method panel: the four IK methods and their parameters.
-fn method(ui: &mut egui::Ui, lab: &mut Lab) {
+fn method(ui: &mut egui::Ui, lab: &mut App) {
     ui.collapsing("Method", |ui| {
         let mut method = lab.session.settings.method;
         for m in Method::ALL {

@@ -4,7 +4,7 @@
 //! figures and carries out what they ask.
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 
 /// The Jacobian panel, for the IK engine's thesis script (alone or side by side).
 pub struct JacobianPanel;
@@ -14,11 +14,11 @@ impl Panel for JacobianPanel {
         "Jacobian"
     }
 
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         lab.driver().ik_solver().is_some()
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         let open = lab.jacobian.open_request.take();
         egui::CollapsingHeader::new("Jacobian (§4.4, the SVD of J)")
             .open(open)

@@ -4,7 +4,7 @@
 //! "Copy link".
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 use crate::lesson::{LESSON_PANEL, Lesson, OPENABLE_PANELS, PLOT_NAMES};
 
 /// The "Lesson" panel.
@@ -15,7 +15,7 @@ impl Panel for LessonPanel {
         LESSON_PANEL
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         if lab.lesson().is_some() {
             running(ui, lab);
         }
@@ -24,7 +24,7 @@ impl Panel for LessonPanel {
 }
 
 /// The running lesson: show its note again, or leave it.
-fn running(ui: &mut egui::Ui, lab: &mut Lab) {
+fn running(ui: &mut egui::Ui, lab: &mut App) {
     ui.horizontal_wrapped(|ui| {
         ui.strong("Lesson");
         if ui
@@ -46,7 +46,7 @@ fn running(ui: &mut egui::Ui, lab: &mut Lab) {
 }
 
 /// The teacher's side: a draft kept in egui's memory until applied.
-fn maker(ui: &mut egui::Ui, lab: &mut Lab) {
+fn maker(ui: &mut egui::Ui, lab: &mut App) {
     egui::CollapsingHeader::new("Make a lesson")
         .id_salt("lesson-maker")
         .default_open(false)
@@ -112,7 +112,7 @@ fn toggle(ui: &mut egui::Ui, list: &mut Vec<String>, name: &str) {
 }
 
 /// The lesson's note, over the lab, when open (first thing a lesson link shows).
-pub fn lesson_window(ctx: &egui::Context, lab: &mut Lab) {
+pub fn lesson_window(ctx: &egui::Context, lab: &mut App) {
     if !lab.layout.lesson_note_open {
         return;
     }

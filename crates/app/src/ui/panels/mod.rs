@@ -75,11 +75,11 @@ pub fn hideable_titles() -> Vec<&'static str> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Lab, Settings};
+    use crate::{App, Settings};
 
     /// Which panels show for a preset, by title.
     fn shown(preset: &str) -> Vec<&'static str> {
-        let mut lab = Lab::new(Settings::default());
+        let mut lab = App::new(Settings::default());
         lab.set_preset(preset).expect("bundled");
         REGISTRY
             .iter()

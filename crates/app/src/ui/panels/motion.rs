@@ -11,7 +11,7 @@ use gaitlab_engine::DriverKind;
 use gaitlab_engine::catalog::check_thesis_params;
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 use crate::param_widgets::{self as widgets, Param, key};
 
 /// The Motion panel.
@@ -22,11 +22,11 @@ impl Panel for MotionPanel {
         "Motion"
     }
 
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         lab.driver().kind() == DriverKind::Thesis
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         motion(ui, lab);
     }
 }
@@ -39,11 +39,11 @@ impl Panel for SpeedAndTargetsPanel {
         "Speed"
     }
 
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         lab.driver().kind() == DriverKind::Thesis
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         speed_and_targets(ui, lab);
     }
 }
@@ -91,7 +91,7 @@ fn wound_label(form: WoundForm) -> (&'static str, &'static str) {
 }
 
 /// Motion and motion-control panels.
-fn motion(ui: &mut egui::Ui, lab: &mut Lab) {
+fn motion(ui: &mut egui::Ui, lab: &mut App) {
     ui.collapsing("Motion", |ui| {
         let mut mode = lab.session.settings.mode;
         for m in ThesisMode::ALL {
@@ -165,7 +165,7 @@ fn motion(ui: &mut egui::Ui, lab: &mut Lab) {
     });
 }
 
-fn apply_params(lab: &mut Lab, params: ThesisParams) {
+fn apply_params(lab: &mut App, params: ThesisParams) {
     let result = check_thesis_params(&params).and_then(|()| lab.set_params(params));
     if let Err(error) = result {
         lab.report_error(error);
@@ -174,7 +174,7 @@ fn apply_params(lab: &mut Lab, params: ThesisParams) {
 
 /// Speed and target-position panels: the thesis' step frequency, slowdown and
 /// speed, and the targets of the script in use.
-fn speed_and_targets(ui: &mut egui::Ui, lab: &mut Lab) {
+fn speed_and_targets(ui: &mut egui::Ui, lab: &mut App) {
     let Some(thesis) = lab.driver().thesis_readout() else {
         return;
     };

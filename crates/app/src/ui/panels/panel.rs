@@ -3,7 +3,7 @@
 //! in one list. Which panels show follows from each panel's own
 //! [`Panel::shown_for`], not from a choice over engines in the layout.
 
-use crate::lab::Lab;
+use crate::app::App;
 
 /// One panel of the controls (the wide layout's side panel, the phone
 /// layout's drawer).
@@ -13,11 +13,11 @@ pub trait Panel: Sync {
 
     /// Whether the panel shows for the lab as it is (its driver, a running
     /// comparison, the layout). All panels show by default.
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         let _ = lab;
         true
     }
 
     /// Draws the panel and applies what the person changed.
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui);
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui);
 }

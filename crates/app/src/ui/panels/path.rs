@@ -9,7 +9,7 @@ use glam::DVec2;
 
 use super::ground_view::GroundView;
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 
 /// The body-path editor.
 pub struct PathPanel;
@@ -19,11 +19,11 @@ impl Panel for PathPanel {
         "Path"
     }
 
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         lab.driver().kind() == DriverKind::Poda
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         path(ui, lab);
     }
 }
@@ -61,7 +61,7 @@ fn preset_path(name: &str, start: DVec2) -> PathSpec {
 }
 
 /// The path panel (shown for PODA creatures).
-fn path(ui: &mut egui::Ui, lab: &mut Lab) {
+fn path(ui: &mut egui::Ui, lab: &mut App) {
     if lab.driver().kind() != DriverKind::Poda {
         return;
     }

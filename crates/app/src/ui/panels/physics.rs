@@ -8,7 +8,7 @@ use gaitlab_core::preset::physics::MAX_CONTROLLER_VALUE;
 use gaitlab_engine::DriverKind;
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 use crate::param_widgets::{self as widgets, Param, key};
 
 /// The physics panel.
@@ -19,17 +19,17 @@ impl Panel for PhysicsPanel {
         "Physics"
     }
 
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         lab.driver().kind() == DriverKind::Physics
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         physics(ui, lab);
     }
 }
 
 /// The physics panel (shown for physics creatures).
-fn physics(ui: &mut egui::Ui, lab: &mut Lab) {
+fn physics(ui: &mut egui::Ui, lab: &mut App) {
     let Some(readout) = lab.driver().physics_readout() else {
         return;
     };

@@ -3,7 +3,7 @@
 use gaitlab_core::preset::{Engine, bundled_catalog};
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 
 /// The engine selector.
 pub struct EnginePanel;
@@ -13,7 +13,7 @@ impl Panel for EnginePanel {
         "Engine"
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         engine(ui, lab);
     }
 }
@@ -26,14 +26,14 @@ impl Panel for PresetPanel {
         "Preset"
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         preset(ui, lab);
     }
 }
 
 /// The engine selector: She 2006's IK tracking or PODA's gait synthesis
 /// (switching loads the matching creature).
-fn engine(ui: &mut egui::Ui, lab: &mut Lab) {
+fn engine(ui: &mut egui::Ui, lab: &mut App) {
     let mut engine = lab.engine();
     ui.horizontal(|ui| {
         ui.label("Engine");
@@ -72,7 +72,7 @@ fn engine_hover(engine: Engine) -> &'static str {
 
 /// The preset picker: the bundled presets grouped by engine, each with its
 /// description as its tooltip; an edited or loaded preset is marked so.
-fn preset(ui: &mut egui::Ui, lab: &mut Lab) {
+fn preset(ui: &mut egui::Ui, lab: &mut App) {
     let current = lab.creature().name.clone();
     let edited = lab.session.custom_preset.is_some();
     let title = crate::words::preset_title(&current);

@@ -6,7 +6,7 @@
 use gaitlab_core::driver::Driver;
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 
 /// The readout.
 pub struct ReadoutPanel;
@@ -16,12 +16,12 @@ impl Panel for ReadoutPanel {
         "Readout"
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         readout(ui, lab);
     }
 }
 
-fn readout(ui: &mut egui::Ui, lab: &mut Lab) {
+fn readout(ui: &mut egui::Ui, lab: &mut App) {
     // Side by side, the views' drivers run and the single one waits.
     let time_s = lab
         .comparison()
@@ -81,7 +81,7 @@ fn readout(ui: &mut egui::Ui, lab: &mut Lab) {
 
 /// The lab's additions in force for what runs, each with its reason on
 /// hover, or that the paper runs alone (issue 41: the screen names them).
-fn additions(ui: &mut egui::Ui, lab: &mut Lab) {
+fn additions(ui: &mut egui::Ui, lab: &mut App) {
     let found = lab.stage.driver.lab_additions();
     if found.is_empty() {
         ui.label("The paper alone: none of the lab's additions in force.")

@@ -2,7 +2,7 @@
 //! a video of the 3-D view at a chosen frame size (in the browser).
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 use crate::settings::VideoSize;
 
 /// The Recording panel.
@@ -13,14 +13,14 @@ impl Panel for RecordingPanel {
         "Recording"
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         recording(ui, lab);
     }
 }
 
 /// Recording panel (She 2006 §6.2): a motion take saved as BVH or CSV, and a
 /// video of the 3-D view at a chosen frame size (in the browser).
-fn recording(ui: &mut egui::Ui, lab: &mut Lab) {
+fn recording(ui: &mut egui::Ui, lab: &mut App) {
     ui.collapsing("Recording", |ui| {
         ui.horizontal(|ui| {
             if lab.recording() {

@@ -1,7 +1,7 @@
 //! A separating line between groups of panels.
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 
 /// A horizontal line.
 pub struct Separator;
@@ -11,7 +11,7 @@ impl Panel for Separator {
         "—"
     }
 
-    fn ui(&self, _lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, _lab: &mut App, ui: &mut egui::Ui) {
         ui.separator();
     }
 }

@@ -5,7 +5,7 @@
 //! core's `json.path: reason`) under the text.
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 
 /// The Share row.
 pub struct SharePanel;
@@ -15,7 +15,7 @@ impl Panel for SharePanel {
         "Share"
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         share(ui, lab);
     }
 }
@@ -24,7 +24,7 @@ impl Panel for SharePanel {
 use crate::theme::PROBLEM_COLOR as PROBLEM;
 
 /// The Share row: Copy link, Edit preset, Load preset file, Download preset.
-fn share(ui: &mut egui::Ui, lab: &mut Lab) {
+fn share(ui: &mut egui::Ui, lab: &mut App) {
     ui.horizontal_wrapped(|ui| {
         if ui
             .button("Copy link")
@@ -102,7 +102,7 @@ fn share(ui: &mut egui::Ui, lab: &mut Lab) {
     }
 }
 
-impl Lab {
+impl App {
     /// Shows the full-state link under the Share row, as "Copy link" does but
     /// without touching the clipboard (the `show_link` command), or hides it.
     ///
@@ -115,7 +115,7 @@ impl Lab {
 }
 
 /// The preset editor window, when open.
-pub fn editor_window(ctx: &egui::Context, lab: &mut Lab) {
+pub fn editor_window(ctx: &egui::Context, lab: &mut App) {
     if !lab.editor.open {
         return;
     }

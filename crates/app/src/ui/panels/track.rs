@@ -3,7 +3,7 @@
 //! way back to the creature's own motion.
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 use gaitlab_core::driver::Driver;
 
 /// The "Recorded targets" panel, while a recording is followed.
@@ -14,11 +14,11 @@ impl Panel for TrackPanel {
         "Recorded targets"
     }
 
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         lab.tracking().is_some()
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         let Some(track) = lab.tracking() else {
             return;
         };

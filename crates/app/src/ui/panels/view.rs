@@ -2,7 +2,7 @@
 //! colour theme, and the figure's heading.
 
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 use crate::param_widgets::{self as widgets, Param, key};
 use crate::theme::Theme;
 
@@ -14,13 +14,13 @@ impl Panel for ViewPanel {
         "View"
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         view(ui, lab);
     }
 }
 
 /// View and object-transformation panels.
-fn view(ui: &mut egui::Ui, lab: &mut Lab) {
+fn view(ui: &mut egui::Ui, lab: &mut App) {
     ui.collapsing("View", |ui| {
         if ui
             .button("Home view")
@@ -82,7 +82,7 @@ fn view(ui: &mut egui::Ui, lab: &mut Lab) {
 }
 
 /// The colour scheme: system, light or dark (the panels and the 3-D view).
-fn theme(ui: &mut egui::Ui, lab: &mut Lab) {
+fn theme(ui: &mut egui::Ui, lab: &mut App) {
     ui.horizontal(|ui| {
         ui.label("Theme");
         for theme in Theme::ALL {

@@ -8,7 +8,7 @@ use glam::DVec2;
 
 use super::ground_view::GroundView;
 use super::panel::Panel;
-use crate::lab::Lab;
+use crate::app::App;
 
 /// The waypoint editor.
 pub struct WaypointsPanel;
@@ -18,13 +18,13 @@ impl Panel for WaypointsPanel {
         "Path (waypoints)"
     }
 
-    fn shown_for(&self, lab: &Lab) -> bool {
+    fn shown_for(&self, lab: &App) -> bool {
         lab.driver()
             .physics_route()
             .is_some_and(|route| route.steerable)
     }
 
-    fn ui(&self, lab: &mut Lab, ui: &mut egui::Ui) {
+    fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {
         waypoints(ui, lab);
     }
 }
@@ -42,7 +42,7 @@ pub fn square(at: DVec2, side_m: f64) -> Vec<[f64; 2]> {
         .collect()
 }
 
-fn waypoints(ui: &mut egui::Ui, lab: &mut Lab) {
+fn waypoints(ui: &mut egui::Ui, lab: &mut App) {
     let Some(route) = lab.driver().physics_route() else {
         return;
     };

@@ -1,17 +1,18 @@
-//! The lab's side of the IK comparison ([`crate::compare`]): starting and
+//! The app's side of the IK comparison ([`crate::compare`]): starting and
 //! leaving it, the `compare` command and the `compare` state object
 //! (DESIGN.md "Browser"). Comparison runs on the IK engine only.
 
 use serde_json::Value;
 
+use super::App;
 use crate::compare::{CompareConfig, CompareScenario, Comparison, DEFAULT_VIEWS};
 use crate::compare::{CompareValue, config_from_command};
-use crate::lab::{Effect, Lab};
+use crate::lab::Effect;
 
 /// The bundled preset that runs She 2006 as written.
 pub const THESIS_PRESET: &str = "she-2006";
 
-impl Lab {
+impl App {
     /// The lab's IK options with its method: a new comparison view's
     /// defaults.
     #[must_use]
@@ -57,11 +58,11 @@ impl Lab {
     }
 
     /// Changes the running comparison to `config`: in place when only how it
-    /// is drawn changes (the overlay), else by [`Lab::start_compare`] (a
+    /// is drawn changes (the overlay), else by [`App::start_compare`] (a
     /// restart from time 0, also when nothing changes).
     ///
     /// # Errors
-    /// As [`Lab::start_compare`].
+    /// As [`App::start_compare`].
     pub fn configure_compare(&mut self, config: CompareConfig) -> Result<(), String> {
         if let Some(compare) = self.compare.as_mut()
             && compare.config.same_run(&config)
@@ -79,7 +80,7 @@ impl Lab {
     /// four thesis methods side by side on the current motion.
     ///
     /// # Errors
-    /// As [`Lab::set_preset`] and [`Lab::start_compare`]; the lab keeps its
+    /// As [`App::set_preset`] and [`App::start_compare`]; the lab keeps its
     /// state where the preset cannot load.
     pub fn compare_as_the_thesis(&mut self) -> Result<(), String> {
         let mode = self.session.settings.mode;

@@ -1,14 +1,14 @@
-//! The lab's side of the λ trade-off ([`crate::lambda_tradeoff`]): measuring
+//! The app's side of the λ trade-off ([`crate::lambda_tradeoff`]): measuring
 //! it on the running thesis motion (She 2006 §4.4.3; docs/she-2006.md
 //! "Choosing λ").
 
 use gaitlab_engine::lambda_sweep::{SWEEP_LAMBDAS_M, SWEEP_SECONDS};
 use gaitlab_engine::lambda_sweep_of;
 
-use super::Lab;
+use super::App;
 use crate::lambda_tradeoff::LambdaTradeoff;
 
-impl Lab {
+impl App {
     /// Measures the λ trade-off of the running thesis motion (the running
     /// preset, motion, parameters and solver options, DLS at each λ of the
     /// sweep for 10 s at the preset's frame rate). The motion on screen is

@@ -7,11 +7,11 @@
 use gaitlab_core::preset::Engine;
 use gaitlab_engine::{Applied, EngineCommand};
 
-use super::Lab;
-use super::gait_shape::GaitShapeEdit;
-use super::outbox::Effect;
+use super::App;
+use crate::lab::Effect;
+use crate::lab::GaitShapeEdit;
 
-impl Lab {
+impl App {
     /// Switches the PODA or physics gait (the engine layer's
     /// [`gaitlab_engine::switch_gait`], shared with the CLI's `--switch`).
     ///
@@ -28,7 +28,7 @@ impl Lab {
     /// `stroke_m`, `leg_force_n`, `hop_height_m`) through the engine layer's
     /// [`gaitlab_engine::edit_value`], shared with the CLI's `--edit`; the
     /// gait model derives the others so that eq. 7–8 (and eq. 13 for the
-    /// force) stay true, and [`Lab::gait_derived`] names what it derived.
+    /// force) stay true, and [`App::gait_derived`] names what it derived.
     ///
     /// # Errors
     /// `key: reason` when the engine has no gait, the key is unknown, or the

@@ -1,4 +1,4 @@
-//! The lab's side of grab and pull ([`crate::grab`]): which points each pane
+//! The app's side of grab and pull ([`crate::grab`]): which points each pane
 //! offers the hand, the hand's events applied to every figure on screen (so
 //! side by side every view chases the same target), and a paused figure
 //! reaching for a moved target.
@@ -8,7 +8,7 @@ use std::collections::BTreeMap;
 use gaitlab_core::driver::Driver;
 use gaitlab_engine::AnyDriver;
 
-use super::Lab;
+use super::App;
 use crate::compare::Comparison;
 use crate::grab::DragTargetCommand;
 use crate::stage::Stage;
@@ -28,10 +28,10 @@ fn each_figure(
     }
 }
 
-impl Lab {
+impl App {
     /// [`each_figure`] on the lab's figures.
     fn each_driver(&mut self, f: impl FnMut(&mut AnyDriver)) {
-        each_figure(&mut self.stage, &mut self.compare, f);
+        each_figure(&mut self.lab.stage, &mut self.compare, f);
     }
 
     /// Refills the hand's pickable points from the figures on screen
@@ -43,7 +43,7 @@ impl Lab {
             }
             None => crate::grab::offer_points(
                 &mut self.grab,
-                std::iter::once(&self.stage.driver),
+                std::iter::once(&self.lab.stage.driver),
                 false,
             ),
         }
@@ -53,7 +53,7 @@ impl Lab {
     /// ([`crate::grab::apply`]) and redraws when something moved.
     pub(crate) fn apply_grab(&mut self) {
         let paused = self.playback.paused;
-        let (stage, compare) = (&mut self.stage, &mut self.compare);
+        let (stage, compare) = (&mut self.lab.stage, &mut self.compare);
         let applied = crate::grab::apply(&mut self.grab, paused, |f| {
             each_figure(stage, compare, f);
         });

@@ -1,10 +1,11 @@
-//! The lab's side of a teacher's lesson ([`crate::lesson`]): setting and
+//! The app's side of a teacher's lesson ([`crate::lesson`]): setting and
 //! leaving it, which panels and plots it leaves on screen.
 
-use crate::lab::{Effect, Lab};
+use super::App;
+use crate::lab::Effect;
 use crate::lesson::Lesson;
 
-impl Lab {
+impl App {
     /// Sets the lesson (`None` leaves it); a lesson with a note opens the
     /// note. `panels` are the control panels' titles it may hide.
     ///

@@ -1,13 +1,14 @@
-//! The lab's side of the preset editor ([`crate::editor`]): filling it from the
+//! The app's side of the preset editor ([`crate::editor`]): filling it from the
 //! running preset, Apply / Revert, preset files loaded by picker or
 //! drag-and-drop, and "Download preset".
 
 use gaitlab_core::preset::MAX_PRESET_BYTES;
 
+use super::App;
 use crate::editor::{BeforeApply, PresetEditor, readable_json};
-use crate::lab::{Download, Effect, Lab};
+use crate::lab::{Download, Effect};
 
-impl Lab {
+impl App {
     /// The running preset's JSON: the custom text, or the bundled file.
     #[must_use]
     pub fn preset_text(&self) -> String {
@@ -156,10 +157,11 @@ impl Lab {
         } else {
             format!("{clean}.json")
         };
+        let text = self.preset_text();
         self.outbox.push(Effect::Download(Download {
             file_name,
             mime: "application/json",
-            text: self.preset_text(),
+            text,
         }));
     }
 
@@ -189,7 +191,7 @@ mod tests {
 
     #[test]
     fn a_bad_edit_names_the_path_and_keeps_the_creature() {
-        let mut lab = Lab::new(Settings::default());
+        let mut lab = App::new(Settings::default());
         lab.set_editor_open(true);
         let good = lab.editor().text.clone();
         assert!(!good.is_empty() && !lab.editor().dirty());
@@ -213,7 +215,7 @@ mod tests {
 
     #[test]
     fn files_over_the_limit_or_not_text_are_refused_before_parsing() {
-        let mut lab = Lab::new(Settings::default());
+        let mut lab = App::new(Settings::default());
         let big = vec![b' '; MAX_PRESET_BYTES + 1];
         let error = lab.load_preset_file("big.json", &big).expect_err("too big");
         assert!(error.contains("256 KiB"), "{error}");

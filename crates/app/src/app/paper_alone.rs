@@ -5,9 +5,9 @@
 use gaitlab_core::ik::{IkOptions, Method};
 use gaitlab_core::preset::paper_alone;
 
-use super::Lab;
+use super::App;
 
-impl Lab {
+impl App {
     /// Runs the preset as its paper alone: every lab addition off, the
     /// file marked `gaitlab-preset/2` (so the keys it leaves out are the
     /// paper's), the method SDLS where it was CCD. The motion starts again.
@@ -39,12 +39,12 @@ impl Lab {
 
 #[cfg(test)]
 mod tests {
-    use crate::{Lab, Settings};
+    use crate::{App, Settings};
 
     #[test]
     fn every_bundled_preset_runs_the_paper_alone_from_the_page() {
         for name in gaitlab_core::preset::bundled_names() {
-            let mut lab = Lab::new(Settings::default());
+            let mut lab = App::new(Settings::default());
             lab.set_preset(name).expect("bundled");
             // Panel choices that are the lab's go too.
             lab.command(r#"{"clamp_every_method": true, "limit_passes": 4}"#)

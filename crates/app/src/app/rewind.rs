@@ -21,10 +21,10 @@ use gaitlab_core::driver::Driver;
 use gaitlab_engine::AnyDriver;
 use serde::Serialize;
 
-use super::Lab;
-use super::overlays::Overlays;
+use super::App;
 use crate::compare::CompareSnapshot;
 use crate::history::History;
+use crate::lab::Overlays;
 
 /// Seconds of history the scrubber keeps.
 pub const REWIND_S: f64 = 10.0;
@@ -112,7 +112,7 @@ impl Rewind {
     }
 }
 
-impl Lab {
+impl App {
     /// The pose of what is shown (the figure, or every comparison view's) into the scratch.
     fn rewind_capture(&mut self) {
         let mut scratch = std::mem::take(&mut self.rewind.scratch);
@@ -152,7 +152,7 @@ impl Lab {
         self.rewind_capture();
         let rewind = &mut self.rewind;
         rewind.width = rewind.scratch.len();
-        rewind.capacity = (REWIND_S / self.session.creature.scenario.frame_seconds())
+        rewind.capacity = (REWIND_S / self.lab.session.creature.scenario.frame_seconds())
             .round()
             .max(1.0) as u64;
         rewind.poses.clear();
@@ -244,7 +244,7 @@ impl Lab {
     /// Steps back `frames` frames (at most to the oldest stored one). Pauses.
     ///
     /// # Errors
-    /// As [`Lab::rewind_to`].
+    /// As [`App::rewind_to`].
     pub fn step_back(&mut self, frames: u64) -> Result<(), String> {
         self.rewind_to(self.stage.frame.saturating_sub(frames))
     }
@@ -255,7 +255,7 @@ impl Lab {
         match (&key.snapshot, self.compare.as_mut()) {
             (Snapshot::Compare(views), Some(compare)) => {
                 compare.restore(views, key.frame);
-                self.stage.frame = key.frame;
+                self.lab.stage.frame = key.frame;
             }
             (
                 Snapshot::Single {
@@ -266,11 +266,12 @@ impl Lab {
                 },
                 None,
             ) => {
-                self.stage.driver.clone_from(driver);
-                self.stage.history.clone_from(history);
-                self.plots.joint_history.clone_from(joint_history);
-                self.overlays.clone_from(overlays);
-                self.stage.frame = key.frame;
+                let lab = &mut self.lab;
+                lab.stage.driver.clone_from(driver);
+                lab.stage.history.clone_from(history);
+                lab.plots.joint_history.clone_from(joint_history);
+                lab.overlays.clone_from(overlays);
+                lab.stage.frame = key.frame;
             }
             // A keyframe of the other mode cannot be here (starting or
             // leaving a comparison restarts the history); nothing to restore.

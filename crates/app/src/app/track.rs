@@ -9,14 +9,15 @@
 
 use gaitlab_core::export::{MAX_TARGET_CSV_BYTES, parse_target_csv};
 
-use super::session::{self, LoadedTrack};
+use super::App;
 use crate::history::History;
-use crate::lab::{Effect, Lab};
+use crate::lab::Effect;
+use crate::lab::session::{self, LoadedTrack};
 use crate::stage::Stage;
 
-impl Lab {
+impl App {
     /// Loads a file picked or dropped: a `.csv` is a target recording to
-    /// follow, anything else a preset ([`Lab::load_preset_file`]).
+    /// follow, anything else a preset ([`App::load_preset_file`]).
     ///
     /// # Errors
     /// `file NAME: reason`; the running figure stays.

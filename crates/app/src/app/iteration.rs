@@ -4,10 +4,10 @@
 
 use gaitlab_engine::IterationStep;
 
-use super::Lab;
+use super::App;
 use crate::jacobian::JacobianProbe;
 
-impl Lab {
+impl App {
     /// Pauses and runs one IK iteration in the single view or, in lock step,
     /// in every comparison view: the first iteration of the next frame, or
     /// the next of a frame already opened. The iteration that closes a frame
@@ -50,7 +50,7 @@ impl Lab {
             None => self
                 .jacobian
                 .probe
-                .update(std::iter::once(&self.stage.driver)),
+                .update(std::iter::once(&self.lab.stage.driver)),
         }
     }
 
