@@ -336,3 +336,30 @@ fn the_engine_selector_swaps_matching_creatures_and_leg_force_lengthens_flights(
         .expect_err("below the weight share");
     assert!(error.starts_with("leg_force_n"), "{error}");
 }
+
+/// Issue 45: the page draws a flat floor, so a preset with stairs is refused
+/// with the field named (`gaitlab run` walks it), and the running creature
+/// carries on.
+#[test]
+fn the_page_refuses_ground_it_cannot_draw_and_keeps_running() {
+    let mut lab = App::new(Settings {
+        preset: "hexapod".into(),
+        ..Settings::default()
+    });
+    let text = gaitlab_core::preset::bundled_json("hexapod").expect("bundled hexapod");
+    let mut preset: Value = serde_json::from_str(text).expect("JSON");
+    preset["scenario"]["terrain"] =
+        serde_json::json!({"kind": "stairs", "rise_m": 0.05, "run_m": 0.3, "count": 4});
+    let error = lab
+        .set_custom_preset(&preset.to_string())
+        .expect_err("stairs are refused in the page");
+    assert!(
+        error.contains("scenario.terrain: the page draws flat ground only"),
+        "{error}"
+    );
+    assert_eq!(lab.creature().name, "hexapod");
+    let before = lab.driver().time();
+    lab.set_paused(false);
+    lab.advance(0.5);
+    assert!(lab.driver().time() > before, "the hexapod carries on");
+}

@@ -98,6 +98,16 @@ fn print_gait(m: &GaitRunMetrics) {
         or_nan(m.stride_length_m),
         m.body_speed_mps,
     );
+    if let Some(t) = &m.terrain {
+        outln!(
+            "  terrain {} · made good {:.3} m · climbed {:.3} m · deepest foot below ground {:.3} mm · {} footholds moved off uneven spots",
+            t.kind,
+            t.made_good_m,
+            t.climbed_m,
+            t.foot_below_ground_max_m.max(0.0) * 1e3,
+            t.footholds_moved,
+        );
+    }
     outln!(
         "  {:<14} {:>10} {:>10} {:>10} {:>10}",
         "leg",

@@ -293,3 +293,97 @@ fn terrain_json_is_tagged_by_kind() {
         assert!(serde_json::from_str::<Terrain>(bad).is_err(), "{bad}");
     }
 }
+
+#[test]
+fn rough_ground_is_the_same_from_the_same_seed_and_scales_with_difficulty() {
+    let parse = |json: &str| -> Terrain { serde_json::from_str(json).expect(json) };
+    let a = parse(r#"{"kind": "rough", "seed": 7, "difficulty": 0.5}"#);
+    let b = parse(r#"{"kind": "rough", "seed": 7, "difficulty": 0.5}"#);
+    let other = parse(r#"{"kind": "rough", "seed": 8, "difficulty": 0.5}"#);
+    let flat = parse(r#"{"kind": "rough", "seed": 7, "difficulty": 0}"#);
+    let full = parse(r#"{"kind": "rough", "seed": 7, "difficulty": 1}"#);
+    for t in [&a, &other, &flat, &full] {
+        t.check().expect("valid rough ground");
+    }
+    assert_eq!(a, b);
+    let Terrain::Rough(rough) = &a else {
+        panic!("a rough terrain");
+    };
+    let field = rough.field();
+    assert_eq!(
+        (field.cols, field.rows),
+        (121, 481),
+        "6 × 24 m in 0.05 m cells"
+    );
+    let mut state = 21_u64;
+    let (mut differ, mut highest) = (0_u32, 0.0_f64);
+    for _ in 0..2000 {
+        let (x, z) = (
+            -3.0 + 6.0 * next(&mut state),
+            -2.0 + 24.0 * next(&mut state),
+        );
+        let h = a.height_m(x, z);
+        assert_eq!(
+            h.to_bits(),
+            b.height_m(x, z).to_bits(),
+            "the same seed, the same ground"
+        );
+        assert!(
+            (0.0..=0.5 * 0.08 + 1e-12).contains(&h),
+            "height {h} at difficulty 0.5"
+        );
+        assert!(
+            (full.height_m(x, z) - 2.0 * h).abs() < 1e-12,
+            "difficulty scales the heights"
+        );
+        assert_eq!(flat.height_m(x, z), 0.0, "difficulty 0 is flat");
+        differ += u32::from((other.height_m(x, z) - h).abs() > 1e-3);
+        highest = highest.max(h);
+    }
+    assert!(
+        differ > 1000,
+        "another seed, another ground: {differ} of 2000 points differ"
+    );
+    assert!(highest > 0.03, "bumps near their height: {highest} m");
+    // Faded to the floor at the border: no step walking off the patch.
+    for x in [-3.0, 0.0, 2.99] {
+        assert!(a.height_m(x, -2.0).abs() < 1e-12 && a.height_m(x, 22.0).abs() < 1e-12);
+    }
+    // JSON keeps the parameters, not the heights.
+    let written = serde_json::to_string(&a).expect("serialises");
+    assert!(
+        written.len() < 300 && !written.contains("heights"),
+        "{written}"
+    );
+    assert_eq!(parse(&written), a);
+}
+
+#[test]
+fn bad_rough_ground_names_its_field() {
+    for (json, field) in [
+        (r#"{"kind": "rough", "difficulty": 1.5}"#, "difficulty"),
+        (r#"{"kind": "rough", "difficulty": -0.1}"#, "difficulty"),
+        (
+            r#"{"kind": "rough", "difficulty": 0.5, "cell_m": 0}"#,
+            "cell_m",
+        ),
+        (
+            r#"{"kind": "rough", "difficulty": 0.5, "cell_m": 0.001}"#,
+            "cell_m",
+        ),
+        (
+            r#"{"kind": "rough", "difficulty": 0.5, "size_m": [1e9, 1]}"#,
+            "size_m[0]",
+        ),
+        (
+            r#"{"kind": "rough", "difficulty": 0.5, "max_height_m": 1000}"#,
+            "max_height_m",
+        ),
+    ] {
+        let terrain: Terrain = serde_json::from_str(json).expect(json);
+        let error = terrain.check().expect_err(json);
+        assert_eq!(error.field, field, "{json}: {error}");
+    }
+    let nan: Result<Terrain, _> = serde_json::from_str(r#"{"kind": "rough", "difficulty": NaN}"#);
+    assert!(nan.is_err(), "NaN is not JSON");
+}

@@ -60,15 +60,19 @@ pub struct Overrides {
 /// # Errors
 /// A [`PresetError`] whose path names the value that cannot be used: a
 /// scenario value (`scenario.thesis.…`, `scenario.poda.gait`,
-/// `scenario.physics.…`, `scenario.terrain` when it is not flat), or for
+/// `scenario.physics.…`, `scenario.terrain` when it is not flat and the
+/// engine is not PODA's), or for
 /// tracking `targets` / `iterations` (the
 /// recorded targets do not fit the skeleton).
 pub fn driver_for(creature: &Creature, overrides: &Overrides) -> Result<AnyDriver, PresetError> {
-    if !creature.scenario.terrain.is_flat() {
+    if !creature.scenario.terrain.is_flat() && creature.scenario.engine != Engine::Poda {
         return Err(PresetError::new(
             "scenario.terrain",
-            "this version's engines walk on flat ground only: a plane, stairs or a height \
-             field is read and checked, and cannot run yet",
+            format!(
+                "the {} engine walks on flat ground only in this version (PODA creatures walk \
+                 on a plane, stairs or a height field)",
+                creature.scenario.engine.name()
+            ),
         ));
     }
     if let Some(tracking) = &overrides.tracking {

@@ -343,6 +343,26 @@ pub struct GaitRunMetrics {
     /// Frames per second of the run (set by the front end).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fps: Option<f64>,
+    /// On ground that is not flat (`scenario.terrain`), what the walk over
+    /// it measured; absent on the floor.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub terrain: Option<TerrainRunMetrics>,
+}
+
+/// A PODA walk over ground that is not flat (issue 45 item 2).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TerrainRunMetrics {
+    /// The terrain's kind (`plane`, `stairs`, `height_field`, `rough`).
+    pub kind: &'static str,
+    /// Horizontal distance from the root's start to its end, metres.
+    pub made_good_m: f64,
+    /// The root's height at the end above its start, metres.
+    pub climbed_m: f64,
+    /// Deepest any foot went below the ground under it at a frame, metres
+    /// (0 or less: never below).
+    pub foot_below_ground_max_m: f64,
+    /// Footholds moved off a spot too steep or too near an edge.
+    pub footholds_moved: u64,
 }
 
 impl GaitRunMetrics {
@@ -402,8 +422,26 @@ impl GaitRunMetrics {
             within_limits: timing.within_limits,
             lab_additions,
             fps: None,
+            terrain: terrain_metrics(driver),
         }
     }
+}
+
+/// The terrain figures of a PODA walk, `None` on the floor.
+fn terrain_metrics(driver: &PodaDriver) -> Option<TerrainRunMetrics> {
+    let terrain = driver.terrain();
+    if terrain.is_flat() {
+        return None;
+    }
+    let metrics = driver.metrics();
+    let (first, last) = metrics.root_first_last.unwrap_or_default();
+    Some(TerrainRunMetrics {
+        kind: terrain.kind_name(),
+        made_good_m: glam::DVec2::new(last.x - first.x, last.z - first.z).length(),
+        climbed_m: last.y - first.y,
+        foot_below_ground_max_m: metrics.below_ground_max_m,
+        footholds_moved: driver.footholds_moved(),
+    })
 }
 
 /// One physics leg's mean stance time.

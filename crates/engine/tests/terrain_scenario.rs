@@ -1,8 +1,8 @@
 //! `scenario.terrain` in a preset (issue 45 item 1, first part): a stairs or
 //! height-field ground is read and checked with errors that name the field
-//! inside `scenario.terrain`; the engines, which walk on flat ground only so
-//! far, refuse to run it by the same path instead of ignoring it; a flat or
-//! absent terrain changes nothing and is not written back.
+//! inside `scenario.terrain`; PODA runs on it, the engines that walk on flat
+//! ground only so far refuse it by the same path instead of ignoring it; a
+//! flat or absent terrain changes nothing and is not written back.
 
 use gaitlab_core::Creature;
 use gaitlab_core::terrain::Terrain;
@@ -10,11 +10,12 @@ use gaitlab_engine::{Overrides, driver_for};
 use serde_json::{Value, json};
 
 fn hexapod_with(terrain: Value) -> Result<Creature, String> {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../presets/hexapod.json"
-    ))
-    .map_err(|e| e.to_string())?;
+    preset_with("hexapod", terrain)
+}
+
+fn preset_with(name: &str, terrain: Value) -> Result<Creature, String> {
+    let path = format!("{}/../../presets/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).map_err(|e| e.to_string())?;
     let mut preset: Value = serde_json::from_str(&text).map_err(|e| e.to_string())?;
     preset["scenario"]["terrain"] = terrain;
     Creature::from_json(&preset.to_string()).map_err(|e| format!("{}: {}", e.path, e.reason))
@@ -23,9 +24,14 @@ fn hexapod_with(terrain: Value) -> Result<Creature, String> {
 #[test]
 fn a_preset_carries_its_terrain_checked_and_refused_until_the_engines_walk_on_it() {
     let stairs = json!({"kind": "stairs", "rise_m": 0.05, "run_m": 0.3, "count": 4});
-    let creature = hexapod_with(stairs).unwrap_or_else(|e| panic!("{e}"));
+    let creature = hexapod_with(stairs.clone()).unwrap_or_else(|e| panic!("{e}"));
     assert!(matches!(creature.scenario.terrain, Terrain::Stairs(ref s) if s.count == 4));
-    let error = driver_for(&creature, &Overrides::default()).err();
+    assert!(
+        driver_for(&creature, &Overrides::default()).is_ok(),
+        "PODA walks on stairs"
+    );
+    let biped = preset_with("raibert-biped", stairs).unwrap_or_else(|e| panic!("{e}"));
+    let error = driver_for(&biped, &Overrides::default()).err();
     assert!(
         error
             .as_ref()

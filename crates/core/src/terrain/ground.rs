@@ -9,6 +9,7 @@ use serde::{Deserialize, Serialize};
 use super::error::TerrainError;
 use super::height_field::HeightField;
 use super::plane::Plane;
+use super::rough::Rough;
 use super::stairs::Stairs;
 
 /// The ground.
@@ -25,6 +26,9 @@ pub enum Terrain {
     Stairs(Stairs),
     /// A grid of heights, split into triangles as MuJoCo splits an hfield.
     HeightField(HeightField),
+    /// Smooth random bumps from a seed and a difficulty (a height field made
+    /// from them).
+    Rough(Rough),
 }
 
 impl Terrain {
@@ -32,6 +36,18 @@ impl Terrain {
     #[must_use]
     pub fn is_flat(&self) -> bool {
         matches!(self, Terrain::Flat)
+    }
+
+    /// The kind's name, as `kind` writes it.
+    #[must_use]
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Terrain::Flat => "flat",
+            Terrain::Plane(_) => "plane",
+            Terrain::Stairs(_) => "stairs",
+            Terrain::HeightField(_) => "height_field",
+            Terrain::Rough(_) => "rough",
+        }
     }
 
     /// Ground height at (x, z), metres.
@@ -42,6 +58,7 @@ impl Terrain {
             Terrain::Plane(plane) => plane.height_m(x, z),
             Terrain::Stairs(stairs) => stairs.height_m(x, z),
             Terrain::HeightField(field) => field.height_m(x, z),
+            Terrain::Rough(rough) => rough.field().height_m(x, z),
         }
     }
 
@@ -53,6 +70,7 @@ impl Terrain {
             Terrain::Plane(plane) => plane.normal(),
             Terrain::Stairs(stairs) => stairs.normal(),
             Terrain::HeightField(field) => field.normal(x, z),
+            Terrain::Rough(rough) => rough.field().normal(x, z),
         }
     }
 
@@ -76,6 +94,7 @@ impl Terrain {
             Terrain::Plane(plane) => plane.check(),
             Terrain::Stairs(stairs) => stairs.check(),
             Terrain::HeightField(field) => field.check(),
+            Terrain::Rough(rough) => rough.check(),
         }
     }
 }

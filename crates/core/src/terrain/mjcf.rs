@@ -106,6 +106,10 @@ pub fn to_mjcf(terrain: &Terrain) -> TerrainMjcf {
             m.geoms.push_str(FLOOR);
             height_field(&mut m, field);
         }
+        Terrain::Rough(rough) => {
+            m.geoms.push_str(FLOOR);
+            height_field(&mut m, rough.field());
+        }
     }
     m
 }

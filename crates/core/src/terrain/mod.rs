@@ -5,7 +5,8 @@
 //!
 //! # Files
 //! - `ground`: [`Terrain`], the four kinds and what they answer.
-//! - `plane`, `stairs`, `height_field`: each kind.
+//! - `plane`, `stairs`, `height_field`, `rough`: each kind (rough ground is a
+//!   height field made from a seed and a difficulty).
 //! - `direction`: headings in the ground plane (0° is +x, 90° is +z).
 //! - `mjcf`: the terrain as MuJoCo geoms and an `hfield` asset.
 //! - `error`: [`TerrainError`], the field and the reason.
@@ -16,6 +17,7 @@ mod ground;
 mod height_field;
 mod mjcf;
 mod plane;
+mod rough;
 mod stairs;
 
 pub use direction::{along, ground_direction};
@@ -24,4 +26,5 @@ pub use ground::Terrain;
 pub use height_field::{HeightField, MAX_FRICTION, MAX_HEIGHT_M, MAX_SAMPLES};
 pub use mjcf::{EXTENT_M, TerrainMjcf, to_mjcf};
 pub use plane::{MAX_SLOPE_DEG, Plane};
+pub use rough::Rough;
 pub use stairs::{MAX_STEP_M, MAX_STEPS, Stairs};

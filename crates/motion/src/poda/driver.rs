@@ -373,6 +373,19 @@ impl PodaDriver {
         state.clock.is_shifting(state.time, &state.gait)
     }
 
+    /// The ground the creature walks on (`scenario.terrain`).
+    #[must_use]
+    pub fn terrain(&self) -> &gaitlab_core::terrain::Terrain {
+        &self.model.terrain
+    }
+
+    /// Footholds moved off an unacceptable spot since the restart
+    /// ([`crate::poda::terrain_feet`]; 0 on the floor).
+    #[must_use]
+    pub fn footholds_moved(&self) -> u64 {
+        self.state.footholds_moved
+    }
+
     /// The figures measured since the last reset.
     #[must_use]
     pub fn metrics(&self) -> &GaitMetrics {

@@ -168,6 +168,11 @@ pub struct GaitMetrics {
     pub body_surge_range_m: (f64, f64),
     /// Longest time with no foot in contact, seconds (a flight phase).
     pub flight_max_s: f64,
+    /// Deepest any foot went below the ground under it, metres (the feet
+    /// are recorded as heights above the ground; 0 or less: never below).
+    pub below_ground_max_m: f64,
+    /// The root where the run started and where it is now, metres.
+    pub root_first_last: Option<(DVec3, DVec3)>,
     flight_start_s: Option<f64>,
     last_body: Option<DVec2>,
 }
@@ -180,12 +185,14 @@ impl GaitMetrics {
             legs: names.into_iter().map(LegMetrics::new).collect(),
             body_height_range_m: (f64::INFINITY, f64::NEG_INFINITY),
             body_pitch_range_rad: (f64::INFINITY, f64::NEG_INFINITY),
+            below_ground_max_m: f64::NEG_INFINITY,
             ..Self::default()
         }
     }
 
     /// Records the frame ending at `t` (the previous one ended at `t_prev`):
-    /// each leg's foot position and whether the gait has it in support, the
+    /// each leg's foot position (its height above the ground under it) and
+    /// whether the gait has it in support, the
     /// root position and the body's pitch (radians). The first call after [`GaitMetrics::new`] only sets
     /// the starting state.
     pub fn record(
@@ -201,7 +208,9 @@ impl GaitMetrics {
         for (leg, (foot, support)) in self.legs.iter_mut().zip(feet) {
             leg.record(t_prev, t, foot, support, first);
             any_contact |= leg.in_contact;
+            self.below_ground_max_m = self.below_ground_max_m.max(-foot.y);
         }
+        self.root_first_last = Some((self.root_first_last.map_or(root, |(first, _)| first), root));
         let body = DVec2::new(root.x, root.z);
         if let Some(last) = self.last_body {
             self.body_distance_m += (body - last).length();

@@ -17,10 +17,19 @@ pub fn record(model: &PodaModel, state: &mut PodaState, t_prev: f64, t: f64, fir
     let legs = &model.legs;
     let runs = &state.runs;
     let effectors = &state.effectors;
+    // Heights above the ground under each foot (the floor's: the foot's own).
+    let terrain = &model.terrain;
+    let above_ground = |p: glam::DVec3| {
+        if terrain.is_flat() {
+            p
+        } else {
+            glam::DVec3::new(p.x, p.y - terrain.height_m(p.x, p.z), p.z)
+        }
+    };
     let feet = legs
         .iter()
         .zip(runs)
-        .map(|(leg, run)| (effectors[leg.effector], run.support));
+        .map(|(leg, run)| (above_ground(effectors[leg.effector]), run.support));
     if first {
         state.metrics = GaitMetrics::new(legs.iter().map(|l| l.name.as_str()))
             .holding_orientation(legs.iter().map(|l| l.holds_orientation));

@@ -32,6 +32,7 @@ mod stages;
 mod start;
 mod state;
 pub mod surge;
+pub mod terrain_feet;
 pub mod transition;
 mod vertical_centre;
 

@@ -12,6 +12,7 @@ use std::sync::Arc;
 
 use gaitlab_core::preset::poda::check_transfer_key_centers;
 use gaitlab_core::preset::{Creature, PodaParams};
+use gaitlab_core::terrain::Terrain;
 use gaitlab_core::{Kinematics, Pose, Skeleton};
 use glam::{DQuat, DVec2, DVec3};
 
@@ -93,6 +94,9 @@ pub struct PodaModel {
     pub legs_mean_z_m: f64,
     /// The longest stroke gait by speed gives the legs, metres.
     pub max_stroke_m: f64,
+    /// The ground the feet stand on (`scenario.terrain`; the paper's floor
+    /// when flat, [`crate::poda::terrain_feet`] otherwise).
+    pub terrain: Terrain,
 }
 
 /// The body's pitch from its legs' vertical motion (Figure 2; "Rotational
@@ -293,6 +297,7 @@ impl PodaModel {
             pitch_weights: weights,
             legs_mean_z_m,
             max_stroke_m,
+            terrain: creature.scenario.terrain.clone(),
         };
         Ok((model, gait_name, gait))
     }

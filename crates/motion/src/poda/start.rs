@@ -23,6 +23,16 @@ fn reference_world(model: &PodaModel, state: &PodaState, i: usize, t_mid: f64) -
         .to_world(model.legs[i].reference_body)
 }
 
+/// Where a foot stands for eq. 11's spot `p`: on the floor, or on the
+/// ground's nearest acceptable spot ([`crate::poda::terrain_feet`]).
+fn on_ground(model: &PodaModel, p: DVec3) -> DVec3 {
+    if model.terrain.is_flat() {
+        DVec3::new(p.x, 0.0, p.z)
+    } else {
+        super::terrain_feet::foothold(&model.terrain, p.x, p.z).chosen
+    }
+}
+
 /// Restarts the run at time 0; the queued edits are taken on (the run
 /// starts in the gait as it is now).
 pub fn restart(model: &PodaModel, state: &mut PodaState) {
@@ -40,6 +50,7 @@ pub fn restart(model: &PodaModel, state: &mut PodaState) {
     // The gait reads the path's speed at the first frame.
     state.edits.path_replaced();
     state.time = 0.0;
+    state.footholds_moved = 0;
     state.clock.restart(&state.gait);
     state.centre.restart();
     state.pose.clone_from(&model.rest);
@@ -52,12 +63,12 @@ pub fn restart(model: &PodaModel, state: &mut PodaState) {
         if phase.support {
             let planted = reference_world(model, state, i, phase.last_touchdown_s + 0.5 * support);
             let run = &mut state.runs[i];
-            run.planted = DVec3::new(planted.x, 0.0, planted.z);
+            run.planted = on_ground(model, planted);
             run.support = true;
             run.target = run.planted;
         } else {
             let planted = reference_world(model, state, i, phase.last_liftoff_s - 0.5 * support);
-            state.runs[i].planted = DVec3::new(planted.x, 0.0, planted.z);
+            state.runs[i].planted = on_ground(model, planted);
             footholds::plan_leg(model, state, i, phase.last_liftoff_s);
             state.runs[i].support = false;
             let target = targets::transfer_target(model, state, i, 0.0, phase.fraction);

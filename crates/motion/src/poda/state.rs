@@ -35,8 +35,16 @@ pub struct LegRun {
     pub liftoff_body: DVec3,
     /// Planned foothold in the body frame at touchdown (eq. 11, f₂).
     pub foothold_body: DVec3,
-    /// Planned foothold in the world (eq. 11, f₁).
+    /// Planned foothold in the world (eq. 11, f₁, on the ground: where an
+    /// uneven spot moved it, [`crate::poda::terrain_feet`]).
     pub foothold_world: DVec3,
+    /// Eq. 11's own spot on the ground, before an uneven one moved.
+    pub foothold_nominal: DVec3,
+    /// Whether eq. 11's spot was unacceptable and the foothold moved.
+    pub foothold_moved: bool,
+    /// The highest ground between the lift-off point and the foothold,
+    /// metres (the transfer's apex clears it by the step height).
+    pub highest_m: f64,
     /// The foot's target this frame, world metres.
     pub target: DVec3,
     /// The transfer's progress this frame, the foot spline's parameter in
@@ -112,6 +120,9 @@ pub struct PodaState {
     pub report: IkFrameReport,
     /// This frame's body pitch, radians (positive: nose up).
     pub pitch_rad: f64,
+    /// Footholds moved off an unacceptable spot since the restart
+    /// ([`crate::poda::terrain_feet`]).
+    pub footholds_moved: u64,
     /// This frame's fore-aft surge, metres forward (0 when `fore_aft_surge` is off).
     pub surge_m: f64,
     /// The figures measured since the last restart.
@@ -191,6 +202,7 @@ impl PodaState {
             effectors: vec![DVec3::ZERO; effectors],
             report: IkFrameReport::new(effectors),
             pitch_rad: 0.0,
+            footholds_moved: 0,
             surge_m: 0.0,
             metrics: GaitMetrics::new(model.legs.iter().map(|l| l.name.as_str())),
             stability: StabilityMeter::default(),

@@ -6,7 +6,9 @@
 //! superposition of each leg's vertical push / fall / restore (eq. 12–13),
 //! pitched by the legs' vertical motion front against rear (Figure 2) and
 //! surged fore and aft. While legs take a gait change on, the height and
-//! pitch stay within [`crate::poda::transition`]'s bounds.
+//! pitch stay within [`crate::poda::transition`]'s bounds. On ground that is
+//! not flat the ground under the legs is added to the height and pitch
+//! ([`crate::poda::terrain_feet`], the lab's).
 //!
 //! Reads the gait, the path, the legs' clock; writes the track, the legs'
 //! cycles (brought to this frame: each leg's vertical contribution), the
@@ -17,8 +19,10 @@ use gaitlab_core::portable::Portable;
 use glam::{DMat3, DVec3};
 
 use crate::poda::model::{GRAVITY_MPS2, PodaModel};
+use crate::poda::spline::eval_open;
 use crate::poda::state::PodaState;
 use crate::poda::surge::{surge_coefficient, surge_superposition_m};
+use crate::poda::terrain_feet;
 
 /// The body from `t_prev` to `t`: the track planned anew beyond the
 /// footholds already planned when `replan` (a speed, period or duty-factor
@@ -72,12 +76,40 @@ fn height_and_slope(model: &PodaModel, state: &mut PodaState, t_s: f64) -> (f64,
     (height, slope)
 }
 
+/// The ground under the legs at `t` on ground that is not flat (`None` on
+/// the floor): each leg's ground point — its planted foot in support,
+/// blended in the world from its lift-off point to its foothold along the
+/// transfer — in
+/// the body's ground frame, as the height at the root and the slope of the
+/// line through them ([`terrain_feet::ground_under`]). It moves only as the
+/// legs do, so the body rises a step as its feet climb it.
+fn ground_under_legs(model: &PodaModel, state: &PodaState, t: f64) -> Option<(f64, f64)> {
+    if model.terrain.is_flat() {
+        return None;
+    }
+    let ground = state.track.ground_pose(t);
+    let points = state.runs.iter().map(move |run| {
+        if run.support {
+            (ground.to_body(run.planted).z, run.planted.y)
+        } else {
+            // Between its lift-off point and its foothold in the world, so
+            // on a plane the point stays on it.
+            let along = eval_open(&model.keys, run.progress).x;
+            let point = run.planted.lerp(run.foothold_world, along);
+            (ground.to_body(point).z, point.y)
+        }
+    });
+    Some(terrain_feet::ground_under(points))
+}
+
 /// Places the root at `t`: the planned ground pose, raised, pitched and
 /// surged; while legs take a change on, within the transition's height
 /// bounds (the planted feet's reach is the IK stage's).
 pub fn place(model: &PodaModel, state: &mut PodaState, t: f64) {
     let ground = state.track.ground_pose(t);
     let (height, slope) = height_and_slope(model, state, t);
+    let under = ground_under_legs(model, state, t);
+    let slope = under.map_or(slope, |(_, ground_slope)| slope + ground_slope);
     // Nose up (the front higher, slope > 0) turns +z toward +y: about −x.
     state.pitch_rad = slope.patan2(1.0);
     let gait = &state.gait;
@@ -100,6 +132,8 @@ pub fn place(model: &PodaModel, state: &mut PodaState, t: f64) {
     } else {
         height
     };
+    // The ground under the legs, at the root.
+    let height = under.map_or(height, |(ground_m, _)| height + ground_m);
     state.pose.root = RootTransform {
         position: DVec3::new(surge.x, height, surge.z),
         rotation,

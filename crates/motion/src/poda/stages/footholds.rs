@@ -5,11 +5,16 @@
 //! in the body frame. On the legs' own cycles f₁ and f₂ are those of the
 //! cycle the lift-off belongs to, fixed at the mid-stance before it.
 //!
+//! On ground that is not flat the foothold lies on the surface, moved to
+//! the nearest acceptable spot where eq. 11's is not
+//! ([`crate::poda::terrain_feet`]).
+//!
 //! Reads the legs' lift-offs, the planned track and the legs' clock; writes
 //! each lifting leg's lift-off point and foothold.
 
 use crate::poda::model::PodaModel;
 use crate::poda::state::PodaState;
+use crate::poda::terrain_feet::{self, Foothold};
 
 /// Eq. 11 for every leg that lifted off this frame.
 pub fn plan(model: &PodaModel, state: &mut PodaState) {
@@ -33,11 +38,28 @@ pub fn plan_leg(model: &PodaModel, state: &mut PodaState, i: usize, t_lo: f64) {
         }
     };
     let track = &state.track;
-    let foothold_world = track.ground_pose(f1).to_world(model.legs[i].reference_body);
-    let liftoff_body = track.ground_pose(t_lo).to_body(state.runs[i].planted);
-    let foothold_body = track.ground_pose(f2).to_body(foothold_world);
+    let spot = track.ground_pose(f1).to_world(model.legs[i].reference_body);
+    // On the ground, or the nearest acceptable spot (the lab's, for ground
+    // that is not flat: `terrain_feet`; the floor keeps eq. 11's spot).
+    let foothold = if model.terrain.is_flat() {
+        Foothold {
+            nominal: spot,
+            chosen: spot,
+            moved: false,
+        }
+    } else {
+        terrain_feet::foothold(&model.terrain, spot.x, spot.z)
+    };
+    let planted = state.runs[i].planted;
+    let liftoff_body = track.ground_pose(t_lo).to_body(planted);
+    let foothold_body = track.ground_pose(f2).to_body(foothold.chosen);
+    let highest_m = terrain_feet::highest_between(&model.terrain, planted, foothold.chosen);
     let run = &mut state.runs[i];
     run.liftoff_body = liftoff_body;
     run.foothold_body = foothold_body;
-    run.foothold_world = foothold_world;
+    run.foothold_world = foothold.chosen;
+    run.foothold_nominal = foothold.nominal;
+    run.foothold_moved = foothold.moved;
+    run.highest_m = highest_m;
+    state.footholds_moved += u64::from(foothold.moved);
 }

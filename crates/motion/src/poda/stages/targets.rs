@@ -35,6 +35,7 @@ use crate::poda::foot_orientation::{angle_between_rad, slerp, yaw_rotation};
 use crate::poda::model::PodaModel;
 use crate::poda::spline::eval_open;
 use crate::poda::state::PodaState;
+use crate::poda::terrain_feet::{highest_between, transfer_height_m};
 
 /// A held planted foot farther than this from its orientation target after
 /// a frame's IK was refused it by its leg's joints, radians (1°).
@@ -59,7 +60,12 @@ pub fn place(model: &PodaModel, state: &mut PodaState, t: f64) {
         }
         if let Some(t_td) = run.touchdown_s {
             let landed = transfer_target(model, state, i, t_td, 1.0);
-            state.runs[i].planted = DVec3::new(landed.x, 0.0, landed.z);
+            let ground = if model.terrain.is_flat() {
+                0.0
+            } else {
+                model.terrain.height_m(landed.x, landed.z)
+            };
+            state.runs[i].planted = DVec3::new(landed.x, ground, landed.z);
         }
         let target = if run.support {
             state.runs[i].planted
@@ -136,17 +142,43 @@ pub fn transfer_target(model: &PodaModel, state: &PodaState, i: usize, t: f64, u
     let key = eval_open(&model.keys, u);
     let body = run.liftoff_body.lerp(run.foothold_body, key.x);
     let mut world = state.track.ground_pose(t).to_world(body);
-    world.y = key.y * model.params.step_height_m;
+    if model.terrain.is_flat() {
+        world.y = key.y * model.params.step_height_m;
+    } else {
+        // The lab's, on ground that is not flat (`terrain_feet`): from the
+        // lift-off's height to the foothold's, the apex clearing the ground
+        // between them by the step height, and never below the ground
+        // still ahead of the foot (so it rises before a riser, not through it).
+        let height = transfer_height_m(
+            key.x,
+            key.y,
+            model.params.step_height_m,
+            run.planted.y,
+            run.foothold_world.y,
+            run.highest_m,
+        );
+        let here = DVec3::new(world.x, model.terrain.height_m(world.x, world.z), world.z);
+        world.y = height.max(highest_between(&model.terrain, here, run.foothold_world));
+    }
     world
 }
 
 /// The orientation the foot of leg `i` touches down with at `t_td`: its
 /// rest orientation carried by the body's ground yaw at `t_td` (level,
-/// facing the heading).
+/// facing the heading); on ground that is not flat, turned onto the
+/// ground's normal at its foothold.
 #[must_use]
 pub fn touchdown_rotation(model: &PodaModel, state: &PodaState, i: usize, t_td: f64) -> DQuat {
-    (yaw_rotation(state.track.ground_pose(t_td).yaw_rad) * model.legs[i].rest_foot_rotation)
-        .normalize()
+    let level =
+        yaw_rotation(state.track.ground_pose(t_td).yaw_rad) * model.legs[i].rest_foot_rotation;
+    if model.terrain.is_flat() {
+        return level.normalize();
+    }
+    // On ground that is not flat the sole lies on the ground at the
+    // foothold: level turned onto its normal (the lab's, `terrain_feet`).
+    let at = state.runs[i].foothold_world;
+    let onto = DQuat::from_rotation_arc(DVec3::Y, model.terrain.normal(at.x, at.z));
+    (onto * level).normalize()
 }
 
 /// The orientation target of leg `i`'s transferring foot at transfer

@@ -1,0 +1,77 @@
+//! `gaitlab run` on ground that is not flat (issue 45 item 2): the hexapod
+//! with stairs in its preset climbs them — the run's `terrain` figures say
+//! how far it got, how high, that no foot went below the ground and how
+//! many footholds moved off a riser's edge — and a physics creature on
+//! stairs is refused with the field named (its engine walks on the floor
+//! only so far).
+
+mod common;
+
+use common::{gaitlab, gaitlab_ok, json_of};
+use serde_json::{Value, json};
+
+fn preset_with(name: &str, terrain: Value) -> std::path::PathBuf {
+    let text = gaitlab_core::preset::bundled_json(name).expect("bundled preset");
+    let mut preset: Value = serde_json::from_str(text).expect("JSON");
+    preset["scenario"]["terrain"] = terrain;
+    let path = std::env::temp_dir().join(format!(
+        "gaitlab-run-terrain-{name}-{}.json",
+        std::process::id()
+    ));
+    std::fs::write(&path, preset.to_string()).expect("write preset");
+    path
+}
+
+#[test]
+fn the_hexapod_climbs_stairs_from_its_preset_and_says_so() {
+    let stairs = json!({"kind": "stairs", "rise_m": 0.05, "run_m": 0.3, "count": 20,
+        "direction_deg": 90, "start_m": 0.4});
+    let path = preset_with("hexapod", stairs);
+    let output = gaitlab_ok(&[
+        "run",
+        path.to_str().expect("utf-8 path"),
+        "--seconds",
+        "10",
+        "--json",
+    ]);
+    let figures = json_of(&output);
+    let terrain = &figures["terrain"];
+    let number = |v: &Value| v.as_f64().unwrap_or(f64::NAN);
+    assert_eq!(terrain["kind"], "stairs", "{figures}");
+    assert!(
+        (number(&terrain["made_good_m"]) - 2.0).abs() < 0.05,
+        "{terrain}"
+    );
+    // 2 m of 0.3 m treads from the first riser at 0.4 m: five or six risers.
+    assert!(
+        (0.25..=0.31).contains(&number(&terrain["climbed_m"])),
+        "{terrain}"
+    );
+    assert!(
+        number(&terrain["foot_below_ground_max_m"]) <= 0.001,
+        "{terrain}"
+    );
+    assert!(
+        terrain["footholds_moved"].as_u64().unwrap_or(0) > 0,
+        "{terrain}"
+    );
+    assert!(number(&figures["foot_slip_max_m"]) <= 0.001, "{figures}");
+    let text = gaitlab_ok(&["run", path.to_str().expect("utf-8 path"), "--seconds", "2"]);
+    let stdout = String::from_utf8_lossy(&text.stdout);
+    assert!(stdout.contains("  terrain stairs · made good"), "{stdout}");
+    let _ = std::fs::remove_file(path);
+}
+
+#[test]
+fn a_physics_creature_on_stairs_is_refused_with_the_field_named() {
+    let stairs = json!({"kind": "stairs", "rise_m": 0.1, "run_m": 0.4, "count": 5});
+    let path = preset_with("raibert-biped", stairs);
+    let output = gaitlab(&["run", path.to_str().expect("utf-8 path"), "--seconds", "1"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("scenario.terrain: the physics engine walks on flat ground only"),
+        "{stderr}"
+    );
+    let _ = std::fs::remove_file(path);
+}
