@@ -15,6 +15,11 @@ use serde::{Deserialize, Serialize};
 use super::error::{TerrainError, finite_within};
 use super::height_field::{HeightField, MAX_HEIGHT_M, MAX_SAMPLES};
 
+/// The finest bump spacing, metres.
+pub const MIN_FEATURE_M: f64 = 0.01;
+/// The finest cell, metres.
+pub const MIN_CELL_M: f64 = 0.001;
+
 /// Rough ground's parameters (and, once asked, its heights).
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -117,12 +122,13 @@ impl Rough {
         let (fu, fw) = (gu.floor(), gw.floor());
         #[expect(
             clippy::cast_possible_truncation,
-            reason = "the patch is at most 1024 cells across, so the lattice index is small"
+            reason = "the patch is at most 1000 m across and the spacing at least 1 cm"
         )]
         let (i, k) = (fu as i64, fw as i64);
         let (su, sw) = (smooth(gu - fu), smooth(gw - fw));
-        let a = self.lattice(i, k) + su * (self.lattice(i + 1, k) - self.lattice(i, k));
-        let b = self.lattice(i, k + 1) + su * (self.lattice(i + 1, k + 1) - self.lattice(i, k + 1));
+        let (i1, k1) = (i.wrapping_add(1), k.wrapping_add(1));
+        let a = self.lattice(i, k) + su * (self.lattice(i1, k) - self.lattice(i, k));
+        let b = self.lattice(i, k1) + su * (self.lattice(i1, k1) - self.lattice(i, k1));
         a + sw * (b - a)
     }
 
@@ -188,10 +194,16 @@ impl Rough {
                 format!("{} is below 0", self.max_height_m),
             ));
         }
-        for (field, value) in [("feature_m", self.feature_m), ("cell_m", self.cell_m)] {
+        for (field, value, least) in [
+            ("feature_m", self.feature_m, MIN_FEATURE_M),
+            ("cell_m", self.cell_m, MIN_CELL_M),
+        ] {
             finite_within(field, value, MAX_HEIGHT_M)?;
-            if value <= 0.0 {
-                return Err(TerrainError::new(field, format!("{value} must be above 0")));
+            if value < least {
+                return Err(TerrainError::new(
+                    field,
+                    format!("{value} is below {least} m"),
+                ));
             }
         }
         for (i, size) in self.size_m.iter().enumerate() {
