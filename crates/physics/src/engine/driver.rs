@@ -198,6 +198,10 @@ impl PhysicsDriver {
         let ground = ground.scaled(l);
         let mut sim = Sim::new(creature, ground, options);
         sim.commands = starting_commands(&params);
+        // The ground's shape (issue 45): the engine layer's `driver_for`
+        // still refuses a physics creature on anything but the floor until
+        // its controllers walk on it; the springs already act along its normal.
+        sim.terrain.surface = preset.scenario.terrain.clone();
         for o in &params.obstacles {
             sim.terrain.obstacles.push(Obstacle {
                 min_xz: [-10.0 * l, o.at_m * l],
@@ -655,9 +659,7 @@ impl PhysicsDriver {
                 400.0 * self.params.scale.powi(4)
             },
             ground: self.sim.ground,
-            // The engines run on the flat floor until they walk on terrain
-            // (`driver_for` refuses the others).
-            terrain: gaitlab_core::terrain::Terrain::Flat,
+            terrain: self.sim.terrain.surface.clone(),
         };
         crate::engine::mjcf::to_mjcf(creature, &options)
     }
