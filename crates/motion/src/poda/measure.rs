@@ -17,15 +17,10 @@ pub fn record(model: &PodaModel, state: &mut PodaState, t_prev: f64, t: f64, fir
     let legs = &model.legs;
     let runs = &state.runs;
     let effectors = &state.effectors;
-    // Heights above the ground under each foot (the floor's: the foot's own).
+    // Heights above the ground under each foot (on the floor, the foot's own).
     let terrain = &model.terrain;
-    let above_ground = |p: glam::DVec3| {
-        if terrain.is_flat() {
-            p
-        } else {
-            glam::DVec3::new(p.x, p.y - terrain.height_m(p.x, p.z), p.z)
-        }
-    };
+    let above_ground =
+        |p: glam::DVec3| glam::DVec3::new(p.x, p.y - terrain.height_m(p.x, p.z), p.z);
     let feet = legs
         .iter()
         .zip(runs)

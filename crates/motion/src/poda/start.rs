@@ -26,11 +26,7 @@ fn reference_world(model: &PodaModel, state: &PodaState, i: usize, t_mid: f64) -
 /// Where a foot stands for eq. 11's spot `p`: on the floor, or on the
 /// ground's nearest acceptable spot ([`crate::poda::terrain_feet`]).
 fn on_ground(model: &PodaModel, p: DVec3) -> DVec3 {
-    if model.terrain.is_flat() {
-        DVec3::new(p.x, 0.0, p.z)
-    } else {
-        super::terrain_feet::foothold(&model.terrain, p.x, p.z).chosen
-    }
+    super::terrain_feet::foothold(&model.terrain, p.x, p.z).chosen
 }
 
 /// Restarts the run at time 0; the queued edits are taken on (the run

@@ -113,11 +113,7 @@ impl Terrain {
     /// Height of the surface under (x, z) (m).
     #[must_use]
     pub fn height(&self, x: f64, z: f64) -> f64 {
-        let ground = if self.surface.is_flat() {
-            0.0
-        } else {
-            self.surface.height_m(x, z)
-        };
+        let ground = self.surface.height_m(x, z);
         self.obstacles
             .iter()
             .filter(|o| o.covers(x, z))

@@ -60,11 +60,7 @@ pub fn place(model: &PodaModel, state: &mut PodaState, t: f64) {
         }
         if let Some(t_td) = run.touchdown_s {
             let landed = transfer_target(model, state, i, t_td, 1.0);
-            let ground = if model.terrain.is_flat() {
-                0.0
-            } else {
-                model.terrain.height_m(landed.x, landed.z)
-            };
+            let ground = model.terrain.height_m(landed.x, landed.z);
             state.runs[i].planted = DVec3::new(landed.x, ground, landed.z);
         }
         let target = if run.support {
