@@ -100,7 +100,7 @@ fn print_gait(m: &GaitRunMetrics) {
     );
     if let Some(t) = &m.terrain {
         outln!(
-            "  terrain {} · made good {:.3} m · climbed {:.3} m · deepest foot below ground {:.3} mm · {} footholds moved off uneven spots",
+            "  terrain {} · made good {:.3} m · climbed {:.3} m · deepest foot below ground {:.3} mm · footholds moved off uneven spots: {}",
             t.kind,
             t.made_good_m,
             t.climbed_m,

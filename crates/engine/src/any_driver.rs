@@ -133,7 +133,7 @@ impl AnyDriver {
                 thesis_lab_additions(driver.params(), driver.options(), driver.mode())
             }
             AnyDriver::Track(driver) => ik_lab_additions(driver.options()).collect(),
-            AnyDriver::Poda(driver) => poda_lab_additions(driver.params()),
+            AnyDriver::Poda(driver) => poda_lab_additions(driver.params(), driver.terrain()),
             AnyDriver::Physics(driver) => driver
                 .lab_additions_in_force()
                 .map(|name| LabAddition {

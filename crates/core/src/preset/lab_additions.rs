@@ -8,6 +8,7 @@ use super::listing::{TargetScript, WoundForm};
 use super::poda::PodaParams;
 use super::thesis::{ThesisMode, ThesisParams};
 use crate::ik::{IkOptions, Method, TransposeAlpha};
+use crate::terrain::Terrain;
 
 /// One lab addition: its name and why it is there.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -71,6 +72,10 @@ const FORE_AFT_SURGE: LabAddition = LabAddition {
     name: "fore_aft_surge",
     reason: "the fore-aft surge of \"Horizontal Control\" with a magnitude the lab derived (each leg pushes along itself)",
 };
+const TERRAIN_FEET: LabAddition = LabAddition {
+    name: "terrain_feet",
+    reason: "on ground that is not flat: footholds moved off uneven spots, transfers that clear the ground, the body following the ground under its legs (the paper's creatures walk on a floor)",
+};
 const GAIT_BY_SPEED: LabAddition = LabAddition {
     name: "gait_by_speed",
     reason: "the gait and stride picked from the speed by Alexander's Froude rule, not by the user",
@@ -85,11 +90,13 @@ const WITHOUT_FOOT_ORIENTATION: LabAddition = LabAddition {
     reason: "eq. 2's foot orientation is left out: every foot holds its position alone",
 };
 
-/// Every PODA addition in force with `params`, and Figure 2's body pitch
-/// and eq. 2's foot orientation where they are left out.
+/// Every PODA addition in force with `params` on `terrain` (the feet's
+/// rules for ground that is not flat), and Figure 2's body pitch and eq. 2's
+/// foot orientation where they are left out.
 #[must_use]
-pub fn poda_lab_additions(params: &PodaParams) -> Vec<LabAddition> {
+pub fn poda_lab_additions(params: &PodaParams, terrain: &Terrain) -> Vec<LabAddition> {
     [
+        (!terrain.is_flat()).then_some(TERRAIN_FEET),
         params.turn_within_reach.then_some(TURN_WITHIN_REACH),
         params.yaw_toward_actual.then_some(YAW_TOWARD_ACTUAL),
         params.fore_aft_surge.then_some(FORE_AFT_SURGE),
@@ -185,21 +192,29 @@ mod tests {
             let Some(Ok(creature)) = load_bundled(name) else {
                 panic!("{name}")
             };
-            let found = poda_lab_additions(&creature.scenario.poda_params());
+            let found =
+                poda_lab_additions(&creature.scenario.poda_params(), &creature.scenario.terrain);
             assert_eq!(
                 names(&found),
                 ["turn_within_reach", "yaw_toward_actual", "fore_aft_surge"],
                 "{name}"
             );
         }
-        assert!(poda_lab_additions(&PodaParams::default()).is_empty());
+        assert!(poda_lab_additions(&PodaParams::default(), &Terrain::Flat).is_empty());
+        let stairs: Terrain =
+            serde_json::from_str(r#"{"kind": "stairs", "rise_m": 0.05, "run_m": 0.3, "count": 4}"#)
+                .expect("stairs");
+        assert_eq!(
+            names(&poda_lab_additions(&PodaParams::default(), &stairs)),
+            ["terrain_feet"]
+        );
         let level = PodaParams {
             body_pitch: false,
             foot_orientation: false,
             ..PodaParams::default()
         };
         assert_eq!(
-            names(&poda_lab_additions(&level)),
+            names(&poda_lab_additions(&level, &Terrain::Flat)),
             ["without_body_pitch", "without_foot_orientation"]
         );
     }
