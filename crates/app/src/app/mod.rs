@@ -67,12 +67,6 @@ impl App {
         app.after_reset();
         app
     }
-
-    /// The lab under the features.
-    #[must_use]
-    pub fn lab(&self) -> &Lab {
-        &self.lab
-    }
 }
 
 impl Deref for App {
