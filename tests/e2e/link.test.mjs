@@ -30,6 +30,8 @@ const presetJson = (name) => readFileSync(join(repoRoot, 'presets', `${name}.jso
 function settled(s) {
   const out = { ...s };
   for (const key of LIVE) delete out[key];
+  // The ground is a setting; where the body stands on it and the footholds moved so far are live.
+  if (out.terrain) out.terrain = { ...out.terrain, root_m: undefined, ground_under_root_m: undefined, footholds_moved: undefined };
   // The side-by-side comparison's live figures: its metrics and the plots' shared y-range, which
   // follows the errors measured so far (its configuration must match).
   // The notes' verdicts are computed from those figures too.

@@ -100,6 +100,15 @@ impl<D: Driver> Stage<D> {
 }
 
 impl Stage<AnyDriver> {
+    /// A stage over `driver` at frame 0 with an empty history, drawing the
+    /// ground the driver's figure stands on ([`AnyDriver::terrain`]).
+    #[must_use]
+    pub fn on_ground(driver: AnyDriver) -> Self {
+        let mut stage = Self::new(driver, History::default());
+        stage.scene.set_terrain(stage.driver.terrain());
+        stage
+    }
+
     /// One IK iteration ([`AnyDriver::step_iteration`]); the frame counter
     /// moves when the iteration closes its frame. `None` when the driver
     /// cannot step by iteration.

@@ -337,29 +337,99 @@ fn the_engine_selector_swaps_matching_creatures_and_leg_force_lengthens_flights(
     assert!(error.starts_with("leg_force_n"), "{error}");
 }
 
-/// Issue 45: the page draws a flat floor, so a preset with stairs is refused
-/// with the field named (`gaitlab run` walks it), and the running creature
-/// carries on.
+/// Issue 45 item 4: the page walks the hexapod up stairs from its preset
+/// and draws them (a tread and a riser per step), with the footholds moved
+/// off the risers' edges on the treads; an IK figure on stairs is refused
+/// with the field named, and the running creature carries on.
 #[test]
-fn the_page_refuses_ground_it_cannot_draw_and_keeps_running() {
+fn the_page_draws_stairs_and_the_hexapod_climbs_them() {
     let mut lab = App::new(Settings {
         preset: "hexapod".into(),
         ..Settings::default()
     });
     let text = gaitlab_core::preset::bundled_json("hexapod").expect("bundled hexapod");
     let mut preset: Value = serde_json::from_str(text).expect("JSON");
-    preset["scenario"]["terrain"] =
-        serde_json::json!({"kind": "stairs", "rise_m": 0.05, "run_m": 0.3, "count": 4});
-    let error = lab
-        .set_custom_preset(&preset.to_string())
-        .expect_err("stairs are refused in the page");
-    assert!(
-        error.contains("scenario.terrain: the page draws flat ground only"),
-        "{error}"
+    preset["scenario"]["terrain"] = serde_json::json!({"kind": "stairs", "rise_m": 0.05,
+        "run_m": 0.3, "count": 4, "direction_deg": 90, "start_m": 0.4});
+    lab.set_custom_preset(&preset.to_string())
+        .expect("stairs in the page");
+    let mesh = lab
+        .stage()
+        .scene()
+        .frame()
+        .terrain
+        .clone()
+        .expect("the stairs are drawn");
+    assert_eq!(
+        mesh.triangles(),
+        2 * (1 + 2 * 4),
+        "floor, then riser and tread"
     );
+    let start_y = lab.driver().pose().root.position.y;
+    lab.set_paused(false);
+    let mut moved_drawn = 0;
+    for _ in 0..100 {
+        lab.advance(0.1);
+        moved_drawn = moved_drawn.max(lab.driver().moved_footholds().count());
+    }
+    let root = lab.driver().pose().root.position;
+    assert!(root.z > 1.8, "walked up the flight: at z = {:.2} m", root.z);
+    let climbed = root.y - start_y;
+    assert!(
+        (climbed - 0.2).abs() < 0.03,
+        "four 5 cm steps: the body rose {climbed:.3} m"
+    );
+    assert!(moved_drawn > 0, "a foothold moved off an edge while drawn");
+    // Every drawn foothold cross lies on the tread under it.
+    let scene = lab.stage().scene();
+    for hold in lab.driver().footholds() {
+        let ground = scene.ground_height_m(hold.x, hold.z);
+        assert!(
+            (hold.y - ground).abs() < 1e-6,
+            "foothold {hold} on ground {ground}"
+        );
+    }
+
+    // Bad ground through the command key: refused naming the field, the
+    // stairs and the walk on them kept.
+    let time = lab.driver().time();
+    for (command, field) in [
+        (
+            r#"{"terrain": {"kind": "stairs", "rise_m": 0.05, "run_m": 0.3, "count": 0}}"#,
+            "terrain.count",
+        ),
+        (
+            r#"{"terrain": {"kind": "stairs", "rise_m": 0.2, "run_m": 0.3, "count": 3}}"#,
+            "scenario.terrain.rise_m: a 0.200 m step is as high as hexapod's hips",
+        ),
+        (
+            r#"{"terrain": {"kind": "height_field", "cell_m": 0.1, "cols": 0, "rows": 4, "heights_m": []}}"#,
+            "terrain.cols",
+        ),
+        (
+            r#"{"terrain": {"kind": "plane", "slope_deg": 45}}"#,
+            "scenario.terrain.slope_deg: 45° is steeper than a foot may stand",
+        ),
+        (r#"{"terrain": {"kind": "cliff"}}"#, "terrain"),
+    ] {
+        let error = lab.command(command).expect_err(command);
+        assert!(
+            error.starts_with("terrain") && error.contains(field),
+            "{command}: {error}"
+        );
+        assert_eq!(lab.terrain().kind_name(), "stairs", "{command}");
+        assert_eq!(lab.driver().time(), time, "{command}: the walk carries on");
+    }
+
+    let human = gaitlab_core::preset::bundled_json("human").expect("bundled human");
+    let mut human: Value = serde_json::from_str(human).expect("JSON");
+    human["scenario"]["terrain"] = serde_json::json!({"kind": "plane", "slope_deg": 5});
+    let error = lab
+        .set_custom_preset(&human.to_string())
+        .expect_err("IK walks on the floor only");
+    assert!(error.contains("scenario.terrain"), "{error}");
     assert_eq!(lab.creature().name, "hexapod");
     let before = lab.driver().time();
-    lab.set_paused(false);
     lab.advance(0.5);
     assert!(lab.driver().time() > before, "the hexapod carries on");
 }

@@ -786,3 +786,98 @@ fn render_shadows_darken_only_the_ground_under_the_figure() {
         );
     }
 }
+
+/// Issue 45 item 4: ground that is not flat is drawn as the terrain's
+/// triangles — a stairs' risers shaded apart from its treads, so a step shows
+/// from the side, and what lies under the ground hidden by it.
+#[test]
+fn render_stairs_show_their_risers_and_hide_what_is_under_them() {
+    use gaitlab_core::terrain::{Stairs, Terrain};
+    for gpu in gpus() {
+        let mut frame = Frame::new(&gpu);
+        let view = ViewOptions {
+            follow: false,
+            targets: false,
+            ..ViewOptions::default()
+        };
+        // A green ball sunk under the top of the flight (the plateau is at 0.6 m).
+        let buried = || {
+            Scene::from(SceneFrame {
+                spheres: vec![Sphere::new(
+                    Vec3::new(2.5, 0.3, 0.37),
+                    0.15,
+                    [0.1, 0.95, 0.1, 1.0],
+                )],
+                ..SceneFrame::default()
+            })
+        };
+        let floor = buried();
+        let mut stairs = buried();
+        stairs.set_terrain(&Terrain::Stairs(Stairs {
+            rise_m: 0.2,
+            run_m: 0.5,
+            count: 3,
+            direction_deg: 0.0,
+            start_m: 0.0,
+        }));
+        let camera = Camera {
+            target: Vec3::new(1.0, 0.3, 0.37),
+            yaw: -std::f32::consts::FRAC_PI_2 + 0.35,
+            pitch: 0.35,
+            distance: 4.0,
+            framed: true,
+            ..Camera::default()
+        };
+        let size = egui::vec2(400.0, 400.0);
+        let drawn_with = std::cell::Cell::new(camera);
+        let mut render = |scene: &Scene| {
+            frame.render(&gpu, size, 1.0, |ui| {
+                let mut shown = camera;
+                viewport::show(ui, scene, &mut shown, &view);
+                drawn_with.set(shown);
+            })
+        };
+        let on_floor = render(&floor);
+        let on_stairs = render(&stairs);
+        on_stairs.save(&format!("stairs-{}", gpu.name.replace(' ', "_")));
+        let greens = |image: &Image| image.bbox(is_green).is_some();
+        assert!(
+            greens(&on_floor),
+            "{}: the ball shows over the floor",
+            gpu.name
+        );
+        assert!(
+            !greens(&on_stairs),
+            "{}: the ball under the top tread is hidden by it",
+            gpu.name
+        );
+        let view_proj = drawn_with.get().view_projection(1.0);
+        let pixel = |image: &Image, p: Vec3| {
+            let clip = view_proj * p.extend(1.0);
+            let x = (clip.x / clip.w * 0.5 + 0.5) * size.x;
+            let y = (0.5 - clip.y / clip.w * 0.5) * size.y;
+            image.at(x as u32, y as u32)
+        };
+        let apart = |a: [u8; 3], b: [u8; 3]| -> u32 {
+            (0..3).map(|c| u32::from(a[c].abs_diff(b[c]))).sum()
+        };
+        // Between two 5 cm contour lines.
+        let riser = pixel(&on_stairs, Vec3::new(0.5, 0.325, 0.37));
+        for tread in [Vec3::new(0.37, 0.2, 0.37), Vec3::new(0.87, 0.4, 0.37)] {
+            let top = pixel(&on_stairs, tread);
+            assert!(
+                apart(riser, top) >= 15,
+                "{}: riser {riser:?} and tread {top:?} look alike",
+                gpu.name
+            );
+        }
+        // A tread is level: it reads as the floor does.
+        let tread = pixel(&on_stairs, Vec3::new(0.87, 0.4, 0.37));
+        let floor_near = pixel(&on_floor, Vec3::new(-0.63, 0.0, 0.37));
+        assert!(
+            apart(tread, floor_near) <= 12,
+            "{}: a tread {tread:?} against the floor {floor_near:?}",
+            gpu.name
+        );
+    }
+}

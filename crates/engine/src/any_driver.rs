@@ -148,6 +148,19 @@ impl AnyDriver {
         }
     }
 
+    /// The ground the figure stands on: its preset's `scenario.terrain` for
+    /// PODA and physics creatures, the floor for IK figures (which walk on
+    /// flat ground only).
+    #[must_use]
+    pub fn terrain(&self) -> &gaitlab_core::terrain::Terrain {
+        static FLOOR: gaitlab_core::terrain::Terrain = gaitlab_core::terrain::Terrain::Flat;
+        match self {
+            AnyDriver::Poda(driver) => driver.terrain(),
+            AnyDriver::Physics(driver) => &driver.sim().terrain.surface,
+            AnyDriver::Thesis(_) | AnyDriver::Track(_) => &FLOOR,
+        }
+    }
+
     /// The IK options of an IK driver ([`AnyDriver::is_ik`]).
     #[must_use]
     pub fn ik_options(&self) -> Option<&IkOptions> {

@@ -50,6 +50,12 @@ impl AnyDriver {
         self.poda().into_iter().flat_map(|d| d.footholds())
     }
 
+    /// PODA's moved footholds: (eq. 11's spot, the foothold chosen
+    /// instead) for each foot in transfer whose spot was unacceptable.
+    pub fn moved_footholds(&self) -> impl Iterator<Item = (DVec3, DVec3)> + '_ {
+        self.poda().into_iter().flat_map(|d| d.moved_footholds())
+    }
+
     /// `samples + 1` ground points of PODA's body path, from where the body
     /// is to `ahead_m` metres ahead of it.
     pub fn path_ahead(&self, ahead_m: f64, samples: u32) -> impl Iterator<Item = DVec2> + '_ {

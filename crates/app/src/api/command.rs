@@ -133,6 +133,11 @@ pub struct Command {
     pub preset: Option<String>,
     /// A whole preset file's text (gaitlab-preset/1).
     pub preset_json: Option<String>,
+    /// The ground under the figure (the preset's `scenario.terrain`, as the
+    /// Terrain panel builds it: `{"kind": "stairs", "rise_m": 0.05, …}`,
+    /// `{"kind": "flat"}` for the floor); the walk starts again on it and
+    /// the link carries it.
+    pub terrain: Option<gaitlab_core::terrain::Terrain>,
     /// The PODA or physics gait's name.
     pub gait: Option<String>,
     /// PODA cycle period P, seconds (each gait edit keeps eq. 7–8 true).
@@ -353,6 +358,15 @@ impl App {
         }
         if let Some(json) = &c.preset_json {
             self.set_custom_preset(json)?;
+        }
+        if let Some(terrain) = &c.terrain {
+            self.set_terrain(terrain).map_err(|e| {
+                if e.starts_with("terrain") {
+                    e
+                } else {
+                    format!("terrain: {e}")
+                }
+            })?;
         }
         if let Some(name) = &c.gait {
             self.set_gait(name)?;

@@ -181,6 +181,27 @@ pub struct LayoutState {
     pub view_pt: [f32; 4],
 }
 
+/// `terrain`: the ground under the figure (issue 45).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+pub struct TerrainState {
+    /// `flat`, `plane`, `stairs`, `height_field` or `rough`.
+    pub kind: &'static str,
+    /// The preset's `scenario.terrain` as the `terrain` command takes it
+    /// (`null` for a height field, whose grid can be large: the preset
+    /// carries it).
+    #[cfg_attr(feature = "schema", schemars(with = "Option<serde_json::Value>"))]
+    pub spec: Option<serde_json::Value>,
+    /// Triangles the 3-D view draws for it (0 on the floor).
+    pub triangles_drawn: usize,
+    /// PODA footholds moved off an unacceptable spot since the restart.
+    pub footholds_moved: u64,
+    /// The body's root, world metres `[x, y, z]`.
+    pub root_m: [f64; 3],
+    /// The ground's height under the root, metres.
+    pub ground_under_root_m: f64,
+}
+
 /// `track`: the target recording the figure follows.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -242,6 +263,8 @@ pub struct State {
     pub physics: Option<PhysicsState>,
     /// The PODA figures (PODA engine).
     pub poda: Option<PodaState>,
+    /// The ground under the figure.
+    pub terrain: TerrainState,
     /// The IK method.
     pub method: &'static str,
     /// The method of each view.
@@ -385,6 +408,7 @@ impl State {
                 .stage
                 .driver
                 .poda_state(&lab.gait_derived, crate::ui::panels::UNSTABLE_WARNING_SHARE),
+            terrain: terrain_state(lab),
             method: settings.method.name(),
             methods: lab.compare.as_ref().map_or_else(
                 || vec![settings.method.name()],
@@ -527,5 +551,29 @@ impl App {
             |e| format!("{{\"last_error\":\"state: {e}\"}}"),
             |v| v.to_string(),
         )
+    }
+}
+
+/// The ground under the figure, for `state().terrain`.
+fn terrain_state(lab: &App) -> TerrainState {
+    let terrain = lab.terrain();
+    let root = lab.stage.driver.pose().root.position;
+    let spec = match terrain {
+        gaitlab_core::terrain::Terrain::HeightField(_) => None,
+        other => serde_json::to_value(other).ok(),
+    };
+    TerrainState {
+        kind: terrain.kind_name(),
+        spec,
+        triangles_drawn: lab
+            .stage
+            .scene
+            .frame()
+            .terrain
+            .as_ref()
+            .map_or(0, |mesh| mesh.triangles()),
+        footholds_moved: lab.stage.driver.poda().map_or(0, |d| d.footholds_moved()),
+        root_m: root.to_array(),
+        ground_under_root_m: terrain.height_m(root.x, root.z),
     }
 }

@@ -33,6 +33,7 @@ mod lambda_tradeoff;
 mod lesson;
 mod paper_alone;
 pub mod rewind;
+mod terrain;
 mod track;
 
 /// The lab and its features, each with its own state.

@@ -10,7 +10,6 @@
 use gaitlab_core::export::{MAX_TARGET_CSV_BYTES, parse_target_csv};
 
 use super::App;
-use crate::history::History;
 use crate::lab::Effect;
 use crate::lab::session::{self, LoadedTrack};
 use crate::stage::Stage;
@@ -85,7 +84,7 @@ impl App {
             &self.session.settings,
             track.as_ref().map(|t| &t.targets),
         )?;
-        self.stage = Stage::new(driver, History::default());
+        self.stage = Stage::on_ground(driver);
         self.session.track = track;
         self.take.clear();
         self.camera.framed = false;

@@ -70,6 +70,10 @@ pub struct WidgetRects {
     pub rate_slider: [f32; 4],
     /// The preset combo box.
     pub preset_combo: [f32; 4],
+    /// The Terrain panel's header (a click opens or closes it).
+    pub terrain_header: [f32; 4],
+    /// The Terrain panel's Stairs button (zeros while the panel is closed).
+    pub terrain_stairs: [f32; 4],
 }
 
 /// The open preset menu's entries, by preset name, points `[x, y, w, h]`

@@ -84,7 +84,7 @@ impl Lab {
         let (session, driver) = Session::start(settings);
         let mut lab = Self {
             session,
-            stage: Stage::new(driver, History::default()),
+            stage: Stage::on_ground(driver),
             camera: Camera::default(),
             playback: Playback::default(),
             plots: Plots::default(),
@@ -218,7 +218,7 @@ impl Lab {
             .map(ToString::to_string)
             .collect();
         self.session.notice = (!deprecations.is_empty()).then(|| deprecations.join("; "));
-        self.stage = Stage::new(driver, History::default());
+        self.stage = Stage::on_ground(driver);
         self.session.creature = creature;
         self.session.custom_preset = custom;
         // A problem shown belonged to the run this one replaces (a fall, a

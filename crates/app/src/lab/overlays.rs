@@ -72,6 +72,7 @@ impl Overlays {
             scene.add_gait_overlay(
                 self.footprints.iter().copied(),
                 driver.footholds(),
+                driver.moved_footholds(),
                 driver.path_ahead(PATH_AHEAD_M, PATH_SAMPLES),
             );
             if let Some((polygon, root, inside)) = driver.support() {

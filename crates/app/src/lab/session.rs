@@ -77,15 +77,6 @@ pub fn driver_with(
     settings: &Settings,
     track: Option<&gaitlab_core::export::TargetTrack>,
 ) -> Result<AnyDriver, String> {
-    if !creature.scenario.terrain.is_flat() {
-        // The page draws a flat floor: a creature climbing ground it does not
-        // show would mislead (issue 45 item 4 draws the relief).
-        return Err(format!(
-            "preset {}: scenario.terrain: the page draws flat ground only in this version; \
-             run this preset with `gaitlab run`",
-            creature.name
-        ));
-    }
     let overrides = Overrides {
         mode: Some(settings.mode),
         method: Some(settings.method),

@@ -5,7 +5,8 @@
 
 use glam::{DVec2, Vec3};
 
-use super::scene::{GROUND_Y, Scene, Segment};
+use super::gait_overlay::on_ground;
+use super::scene::{Scene, Segment};
 
 /// The support polygon and centre while statically stable (sRGB with alpha).
 pub const SUPPORT_COLOR: [f32; 4] = [0.15, 0.70, 0.35, 0.95];
@@ -15,10 +16,6 @@ pub const UNSUPPORTED_COLOR: [f32; 4] = [0.95, 0.45, 0.10, 0.95];
 const LIFT_M: f32 = 0.003;
 /// Half the size of the centre's cross (metres).
 const CENTRE_HALF_M: f32 = 0.04;
-
-fn ground(p: DVec2) -> Vec3 {
-    Vec3::new(p.x as f32, GROUND_Y + LIFT_M, p.y as f32)
-}
 
 impl Scene {
     /// Adds the support polygon (ground x, z corners, in order; two corners
@@ -33,6 +30,8 @@ impl Scene {
         } else {
             UNSUPPORTED_COLOR
         };
+        let terrain = self.frame().terrain.clone();
+        let ground = |p: DVec2| on_ground(terrain.as_deref(), p.x, p.y, LIFT_M);
         let frame = self.frame_mut();
         let n = polygon.len();
         if n >= 2 {

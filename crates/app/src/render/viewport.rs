@@ -250,14 +250,21 @@ fn steer(
         && let Some(bounds) = scene.bounds()
     {
         camera.frame_for(&bounds, aspect);
+        let centre = bounds.centre();
+        camera.ground_m = scene.ground_height_m(centre.x, centre.z) as f32;
         ui.ctx().request_repaint();
     }
     if view.follow
         && let Some(centre) = scene.centre()
     {
+        let ground_m = scene.ground_height_m(centre.x, centre.z) as f32;
         let centre = centre.as_vec3();
         let dt = ui.input(|i| i.stable_dt).clamp(0.0, 0.1);
         camera.follow(centre, dt);
+        camera.follow_ground(ground_m, dt);
+        if (ground_m - camera.ground_m).abs() > FOLLOW_SETTLED {
+            ui.ctx().request_repaint();
+        }
         if let Some(bounds) = scene.bounds()
             && camera.keep_in_view(&bounds, aspect)
         {

@@ -184,6 +184,19 @@ pub const PODA_PARAMS: &[ParamSpec] = &[
         why: "left out: a straight line ahead",
     },
     ParamSpec {
+        key: "scenario.terrain",
+        command: Some("terrain"),
+        label: "The ground: the floor, a plane, stairs, a height field or rough ground",
+        unit: "m",
+        domain: Domain::Structured {
+            shape: "{kind: flat} | {kind: plane, slope_deg, direction_deg} | {kind: stairs, rise_m, run_m, count, direction_deg, start_m} | {kind: height_field, cell_m, cols, rows, heights_m, origin_m, friction} | {kind: rough, seed, difficulty in [0, 1], …}",
+        },
+        live: false,
+        reference: "docs/terrain.md (the paper walks on the floor)",
+        origin: Origin::Lab,
+        why: "left out: the floor, as in the paper; ground that is not flat, and the footholds moved off its unacceptable spots (terrain_feet), are the lab's",
+    },
+    ParamSpec {
         key: "scenario.poda.body_mass_kg",
         command: None,
         label: "Body mass",

@@ -97,9 +97,9 @@ pub struct Scenario {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub physics: Option<PhysicsParams>,
     /// The ground (issue 45): `{"kind": "flat"}` (the default, every
-    /// paper's), `plane`, `stairs` or `height_field`. The engines walk on flat
-    /// ground only so far: another kind is checked, and refused when the
-    /// scenario runs.
+    /// paper's), `plane`, `stairs`, `height_field` or `rough`. PODA creatures
+    /// walk on every kind; the IK and physics engines refuse any but the
+    /// floor when the scenario runs.
     #[serde(default, skip_serializing_if = "Terrain::is_flat")]
     pub terrain: Terrain,
 }

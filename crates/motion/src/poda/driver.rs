@@ -417,6 +417,17 @@ impl PodaDriver {
             .map(|r| r.foothold_world)
     }
 
+    /// The feet in transfer whose eq. 11 spot was unacceptable: each as
+    /// (eq. 11's own spot, the foothold chosen instead), world metres
+    /// ([`crate::poda::terrain_feet`]).
+    pub fn moved_footholds(&self) -> impl Iterator<Item = (DVec3, DVec3)> + '_ {
+        self.state
+            .runs
+            .iter()
+            .filter(|r| !r.support && r.foothold_moved)
+            .map(|r| (r.foothold_nominal, r.foothold_world))
+    }
+
     /// Largest distance of the body's ground position from its path since
     /// the last reset, metres: how far it cut corners its legs could not
     /// take (`turn_within_reach`) or lagged behind the path.

@@ -33,6 +33,7 @@ mod start;
 mod state;
 pub mod surge;
 pub mod terrain_feet;
+pub mod terrain_fit;
 pub mod transition;
 mod vertical_centre;
 

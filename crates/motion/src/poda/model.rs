@@ -232,6 +232,11 @@ impl PodaModel {
         let rest = creature.rest_pose();
         let stand_height_m = params.stand_height_m.unwrap_or(rest.root.position.y);
         let mut legs = legs(&skeleton, &params, &rest, stand_height_m)?;
+        let lowest_hip_m = legs
+            .iter()
+            .map(|leg| stand_height_m + leg.hip_body.y)
+            .fold(f64::INFINITY, f64::min);
+        super::terrain_fit::check_fits(&creature.scenario.terrain, &creature.name, lowest_hip_m)?;
         let (gait_name, gait) = scenario_gait(&params, legs.len())?;
         let path = match &params.path {
             Some(spec) => BodyPath::try_from(spec).map_err(|e| {

@@ -54,6 +54,23 @@ impl Camera {
     }
 }
 
+impl Camera {
+    /// Follow mode on ground that is not flat: eases the target up or down
+    /// with the ground's height under the figure (`ground_m`, metres), at
+    /// [`FOLLOW_RATE`], so a climb stays framed while the figure's own
+    /// bobbing never moves the camera. On the floor (`ground_m` always 0)
+    /// it does nothing.
+    pub fn follow_ground(&mut self, ground_m: f32, dt: f32) {
+        if !ground_m.is_finite() || dt.is_nan() || dt <= 0.0 {
+            return;
+        }
+        let k = 1.0 - (-FOLLOW_RATE * dt.min(0.1)).exp();
+        let next = self.ground_m + (ground_m - self.ground_m) * k;
+        self.target.y += next - self.ground_m;
+        self.ground_m = next;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use glam::Vec2;
@@ -103,6 +120,25 @@ mod tests {
                 "{speed} m/s: trails by {worst_late} m after 3 s"
             );
         }
+    }
+
+    #[test]
+    fn follow_rises_with_the_ground_under_a_climbing_figure() {
+        let mut camera = Camera::default();
+        let start = camera.target.y;
+        let dt = 1.0 / 60.0;
+        // Up 1 m of stairs over 5 s, then level for 2 s.
+        for frame in 0..420 {
+            let ground = (frame as f32 * dt / 5.0).min(1.0);
+            camera.follow_ground(ground, dt);
+        }
+        assert!(
+            (camera.target.y - start - 1.0).abs() < 1e-3,
+            "target {} after a 1 m climb from {start}",
+            camera.target.y
+        );
+        camera.follow_ground(f32::NAN, dt);
+        assert!(camera.target.y.is_finite());
     }
 
     #[test]

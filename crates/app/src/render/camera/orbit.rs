@@ -52,6 +52,9 @@ pub struct Camera {
     /// Whether the person zoomed since the last framing; follow mode's
     /// [`Camera::keep_in_view`] then leaves the distance alone.
     pub zoomed: bool,
+    /// The ground's height under the figure as follow mode has eased the
+    /// target up or down with it ([`Camera::follow_ground`]), metres.
+    pub ground_m: f32,
 }
 
 impl Default for Camera {
@@ -67,6 +70,7 @@ impl Default for Camera {
             follow_velocity: Vec3::ZERO,
             framed: false,
             zoomed: false,
+            ground_m: 0.0,
         }
     }
 }

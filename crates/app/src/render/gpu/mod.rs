@@ -13,8 +13,10 @@
 //!    view's offscreen targets: 4× multisampled colour (`Rgba8Unorm`, holding
 //!    sRGB-encoded values) and depth (`Depth24Plus`, cleared to 1.0, compare
 //!    `Less`), resolved into a sampleable texture. Draw order: lit capsules and
-//!    spheres (depth write) → ground with fading grid (depth test only) → blob
-//!    shadows (depth test, Min blend) → lines (depth test, alpha blend).
+//!    spheres (depth write) → ground with fading grid (depth test only), or on
+//!    ground that is not flat the terrain's triangles (depth write; no blob
+//!    shadows there) → blob shadows (depth test, Min blend) → lines (depth
+//!    test, alpha blend).
 //! 4. `paint` (inside egui's pass, viewport already set to the callback rect)
 //!    draws that texture with one triangle.
 //!
@@ -42,6 +44,7 @@
 //! - `capsule_mesh`: the unit capsule mesh's vertex and index buffers.
 //! - `instance_buffer`: a growing vertex buffer of per-instance primitives.
 //! - `targets`: one view's offscreen textures, uniforms and instance buffers.
+//! - `terrain_buffers`: one view's copy of the terrain's triangles, uploaded once per mesh.
 //! - `renderer`: [`SceneRenderer`], the scene pass and the compositing draw.
 //! - `callback`: [`SceneCallback`], one view's frame handed to egui-wgpu.
 
@@ -55,6 +58,7 @@ mod renderer;
 mod setup;
 mod style;
 mod targets;
+mod terrain_buffers;
 
 pub use callback::SceneCallback;
 pub use formats::{PassFormat, SCENE_COLOR_FORMAT, SCENE_DEPTH_FORMAT, SCENE_MSAA_SAMPLES};

@@ -1,5 +1,6 @@
 //! The GPU programs of the 3-D view: `scene.wgsl` (lit capsules and spheres,
-//! the ground with its fading grid, blob shadows and contact marks, lines) and
+//! the ground with its fading grid, the terrain's triangles, blob shadows and
+//! contact marks, lines) and
 //! `composite.wgsl` (the resolved scene onto egui's pass), with their bind
 //! group layouts, vertex layouts, blend and depth states and render pipelines.
 //!
@@ -24,6 +25,8 @@ pub(super) struct Pipelines {
     pub(super) capsule: wgpu::RenderPipeline,
     /// The ground plane with its fading grid (depth test only).
     pub(super) ground: wgpu::RenderPipeline,
+    /// Ground that is not flat: the terrain's triangles (depth-writing).
+    pub(super) terrain: wgpu::RenderPipeline,
     /// Blob shadows and contact marks (depth test, Min blend).
     pub(super) mark: wgpu::RenderPipeline,
     /// Screen-width lines (depth test, alpha blend).
@@ -213,6 +216,19 @@ impl Pipelines {
         );
         let ground_pipeline =
             scene_pipeline("gaitlab ground", "vs_ground", "fs_ground", &[], false, None);
+        let terrain_layout = vertex_layout(
+            size_of::<[f32; 4]>(),
+            wgpu::VertexStepMode::Vertex,
+            &wgpu::vertex_attr_array![0 => Float32x4],
+        );
+        let terrain_pipeline = scene_pipeline(
+            "gaitlab terrain",
+            "vs_terrain",
+            "fs_terrain",
+            &[Some(terrain_layout)],
+            true,
+            None,
+        );
         let mark_pipeline = scene_pipeline(
             "gaitlab ground marks",
             "vs_mark",
@@ -282,6 +298,7 @@ impl Pipelines {
             sampler,
             capsule: capsule_pipeline,
             ground: ground_pipeline,
+            terrain: terrain_pipeline,
             mark: mark_pipeline,
             line: line_pipeline,
             composite: composite_pipeline,

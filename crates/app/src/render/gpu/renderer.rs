@@ -1,7 +1,7 @@
 //! [`SceneRenderer`]: what lives in egui-wgpu's callback resources — the
 //! pipelines, the unit mesh and every view's targets — and the two halves of
 //! drawing a [`SceneCallback`]: `prepare` renders the scene offscreen
-//! (solids → ground → marks → lines), `paint` composites it into egui's pass.
+//! (solids → ground or terrain → marks → lines), `paint` composites it into egui's pass.
 
 use std::collections::HashMap;
 
@@ -145,7 +145,9 @@ impl SceneRenderer {
         self.solids.extend(frame.spheres.iter().map(Capsule::from));
         view.solids.upload(device, queue, &self.solids);
         view.segments.upload(device, queue, &frame.segments);
-        if callback.shadow {
+        view.terrain.show(device, frame.terrain.as_deref());
+        // Blob shadows lie on the floor: on terrain they would sink into it.
+        if callback.shadow && frame.terrain.is_none() {
             view.marks.upload(device, queue, &frame.ground_marks);
         } else {
             view.marks.count = 0;
@@ -189,8 +191,12 @@ impl SceneRenderer {
             pass.set_vertex_buffer(1, view.solids.slice::<Capsule>());
             pass.draw_indexed(0..self.mesh.index_count, 0, 0..view.solids.count);
         }
-        // The ground behind them (depth-tested, not written), then its marks.
-        if callback.grid {
+        // The ground behind them (depth-tested, not written), then its marks;
+        // or the terrain's triangles, which hide what lies under them.
+        if view.terrain.count > 0 {
+            pass.set_pipeline(&self.pipelines.terrain);
+            view.terrain.draw(&mut pass);
+        } else if callback.grid {
             pass.set_pipeline(&self.pipelines.ground);
             pass.draw(0..6, 0..1);
         }

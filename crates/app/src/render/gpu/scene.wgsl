@@ -1,6 +1,7 @@
 // gaitlab's 3-D scene pass (render/gpu.rs): lit capsules and spheres from one
-// instanced unit-capsule mesh, the ground with its fading grid, blob shadows
-// and contact marks, and screen-width line segments.
+// instanced unit-capsule mesh, the ground with its fading grid (or the
+// terrain's triangles), blob shadows and contact marks, and screen-width line
+// segments.
 //
 // Conventions: world metres, y up; mat4x4 column-major, clip = view_proj * p
 // with wgpu depth in [0, 1]. Colours come in sRGB; lighting is done in linear
@@ -170,6 +171,60 @@ fn vs_ground(@builtin(vertex_index) vi: u32) -> GroundOut {
 fn fs_ground(in: GroundOut) -> @location(0) vec4<f32> {
     let surface = ground_surface(in.ground);
     return vec4<f32>(mix(surface, g.background.rgb, fog(in.ground)), 1.0);
+}
+
+// ---------------------------------------------------------------- terrain
+
+struct TerrainOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) world: vec3<f32>,
+};
+
+@vertex
+fn vs_terrain(@location(0) position: vec4<f32>) -> TerrainOut {
+    var out: TerrainOut;
+    out.clip = g.view_proj * vec4<f32>(position.xyz, 1.0);
+    out.world = position.xyz;
+    return out;
+}
+
+// Coverage (0..1) of contour lines `width_px` wide at integer values of `h`.
+fn contour_coverage(h: f32, width_px: f32) -> f32 {
+    let fw = max(fwidth(h), 1e-5);
+    let d = abs(fract(h - 0.5) - 0.5) / fw;
+    return 1.0 - smoothstep(0.5 * width_px - 0.5, 0.5 * width_px + 0.5, d);
+}
+
+// Ground that is not flat (render/scene/terrain_mesh.rs): the floor's colour
+// and grid seen from above, lit by the face's own normal (flat shading from
+// the screen derivatives, so every triangle and riser shows), with a contour
+// line every 5 cm of height on sloped faces. A level face reads exactly as
+// the floor does.
+@fragment
+fn fs_terrain(in: TerrainOut) -> @location(0) vec4<f32> {
+    let grid_surface = ground_surface(in.world.xz);
+    let contour = contour_coverage(in.world.y * 20.0, 1.0);
+    let spacing = 1.0 / max(fwidth(in.world.y * 20.0), 1e-5);
+    var n = normalize(cross(dpdy(in.world), dpdx(in.world)));
+    var v = -g.forward.xyz;
+    if g.eye.w > 0.5 {
+        v = normalize(g.eye.xyz - in.world);
+    }
+    if dot(n, v) < 0.0 {
+        n = -n;
+    }
+    let level = smoothstep(0.5, 0.95, abs(n.y));
+    let base = mix(g.background.rgb, g.ground_color.rgb, g.flags.x);
+    var c = mix(base, grid_surface, level);
+    let sloped = smoothstep(0.0005, 0.01, 1.0 - abs(n.y));
+    c = mix(c, g.grid_color.rgb, contour * sloped * smoothstep(3.0, 8.0, spacing) * 0.7);
+    // Lambert with a floor of ambient, scaled so that a level face keeps the floor's colour.
+    let l = g.light.xyz;
+    let lit = (0.5 + 0.5 * max(dot(n, l), 0.0)) / (0.5 + 0.5 * max(l.y, 0.05));
+    c = c * clamp(lit, 0.5, 1.5);
+    let d = distance(in.world, g.eye.xyz);
+    let far = smoothstep(g.ground.z, g.ground.w, d);
+    return vec4<f32>(mix(c, g.background.rgb, far), 1.0);
 }
 
 // ---------------------------------------------------------------- ground marks

@@ -9,6 +9,7 @@ use super::formats::{SCENE_COLOR_FORMAT, SCENE_DEPTH_FORMAT};
 use super::globals::Globals;
 use super::instance_buffer::InstanceBuffer;
 use super::pipelines::Pipelines;
+use super::terrain_buffers::TerrainBuffers;
 
 /// Views not drawn for this many egui frames give their GPU targets back.
 pub(super) const STALE_FRAMES: u64 = 120;
@@ -28,6 +29,8 @@ pub(super) struct ViewTargets {
     pub(super) solids: InstanceBuffer,
     pub(super) segments: InstanceBuffer,
     pub(super) marks: InstanceBuffer,
+    /// The terrain's triangles (none on the floor).
+    pub(super) terrain: TerrainBuffers,
     /// egui frame number of the last prepare.
     pub(super) last_frame: u64,
 }
@@ -79,6 +82,7 @@ impl ViewTargets {
             solids: InstanceBuffer::new(device, "gaitlab solids"),
             segments: InstanceBuffer::new(device, "gaitlab segments"),
             marks: InstanceBuffer::new(device, "gaitlab ground marks"),
+            terrain: TerrainBuffers::default(),
             last_frame: 0,
         }
     }

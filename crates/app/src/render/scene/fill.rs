@@ -44,6 +44,9 @@ impl Scene {
     ) {
         let frame = self.frame_mut();
         frame.clear();
+        if let Some(terrain) = frame.terrain.clone() {
+            frame.segments.extend_from_slice(&terrain.edges);
+        }
         frame.include(root);
         let joints = skeleton.joints();
 

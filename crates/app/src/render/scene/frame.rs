@@ -8,6 +8,7 @@ use glam::DVec3;
 
 use super::bounds::Bounds;
 use super::primitives::{Capsule, GroundMark, Segment, Sphere};
+use super::terrain_mesh::TerrainMesh;
 
 /// One frame's primitives. Read it through [`Scene`]; the renderer holds an
 /// `Arc` of it while drawing.
@@ -29,6 +30,9 @@ pub struct SceneFrame {
     /// Where the IK targets lie in [`Self::spheres`] and their error
     /// segments in [`Self::segments`] (the overlay keeps one set of targets).
     pub targets: TargetRanges,
+    /// The ground when it is not flat (`None`: the floor). Kept across
+    /// fills; set by [`Scene::set_terrain`].
+    pub terrain: Option<Arc<TerrainMesh>>,
 }
 
 /// Index ranges of the targets' spheres and error segments in a frame's lists.
@@ -41,7 +45,8 @@ pub struct TargetRanges {
 }
 
 impl SceneFrame {
-    /// Empties every list and forgets the bounds (the allocations are kept).
+    /// Empties every list and forgets the bounds (the allocations and the
+    /// terrain are kept).
     pub(super) fn clear(&mut self) {
         self.capsules.clear();
         self.spheres.clear();
@@ -89,6 +94,27 @@ impl Scene {
     /// first if the renderer still holds the previous frame).
     pub(crate) fn frame_mut(&mut self) -> &mut SceneFrame {
         Arc::make_mut(&mut self.frame)
+    }
+
+    /// Draws `terrain` under the figure from now on (a mesh is built only
+    /// when the terrain differs from the one drawn).
+    pub fn set_terrain(&mut self, terrain: &gaitlab_core::terrain::Terrain) {
+        let same = match &self.frame.terrain {
+            Some(mesh) => mesh.terrain == *terrain,
+            None => terrain.is_flat(),
+        };
+        if !same {
+            self.frame_mut().terrain = TerrainMesh::of(terrain).map(Arc::new);
+        }
+    }
+
+    /// The ground's height under (x, z), metres (0 on the floor).
+    #[must_use]
+    pub fn ground_height_m(&self, x: f64, z: f64) -> f64 {
+        self.frame
+            .terrain
+            .as_ref()
+            .map_or(0.0, |mesh| mesh.height_m(x, z))
     }
 
     /// The primitives of the last fill, shared with the renderer.

@@ -26,6 +26,7 @@
 //! - `reach`: manipulability ellipsoids and reach shells (issue 44 item 3).
 //! - `palette`: colours by side (left, right, centre line) and by role.
 //! - `sizes`: the ground's height, the sizes of bones, spheres and axes, shadow reach.
+//! - `terrain_mesh`: [`TerrainMesh`], ground that is not flat as triangles (issue 45 item 4).
 
 mod bounds;
 mod fill;
@@ -34,6 +35,7 @@ mod palette;
 mod primitives;
 mod reach;
 mod sizes;
+mod terrain_mesh;
 mod tint;
 
 pub use bounds::Bounds;
@@ -49,3 +51,4 @@ pub use sizes::{
     CONTACT_DARKNESS, CONTACT_HEIGHT, GROUND_Y, JOINT_SPHERE_SCALE, MIN_BONE_RADIUS,
     SHADOW_DARKNESS, SHADOW_FADE_HEIGHT, WORLD_AXIS_LENGTH,
 };
+pub use terrain_mesh::{DRAWN_SAMPLES, REACH_M, TerrainMesh};

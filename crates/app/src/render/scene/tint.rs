@@ -257,6 +257,7 @@ mod tests {
                 spheres: 2..3,
                 segments: 0..1,
             },
+            terrain: None,
         };
         frame.include(DVec3::ZERO);
         frame.include(foot.as_dvec3());

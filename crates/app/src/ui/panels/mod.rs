@@ -20,6 +20,7 @@ mod recording;
 mod separator;
 mod share;
 mod stability;
+mod terrain;
 mod track;
 mod view;
 mod waypoints;
@@ -48,6 +49,7 @@ pub static REGISTRY: &[&dyn Panel] = &[
     &waypoints::WaypointsPanel,
     &gait::GaitPanel,
     &path::PathPanel,
+    &terrain::TerrainPanel,
     &compare::SideBySidePanel,
     &ik::MethodPanel,
     &jacobian::JacobianPanel,
@@ -113,7 +115,7 @@ mod tests {
                 gaitlab_core::preset::Engine::Poda,
                 "human"
             )),
-            with(&["Gait", "Path"])
+            with(&["Gait", "Path", "Terrain"])
         );
         assert_eq!(
             shown(gaitlab_engine::bundled_for_engine(
