@@ -100,12 +100,14 @@ fn print_gait(m: &GaitRunMetrics) {
     );
     if let Some(t) = &m.terrain {
         outln!(
-            "  terrain {} · made good {:.3} m · climbed {:.3} m · deepest foot below ground {:.3} mm · footholds moved off uneven spots: {}",
+            "  terrain {} · made good {:.3} m · climbed {:.3} m · deepest foot below ground {:.3} mm · footholds moved off uneven spots: {} · body eased toward the ground: {} frames (least kept {:.3})",
             t.kind,
             t.made_good_m,
             t.climbed_m,
             t.foot_below_ground_max_m.max(0.0) * 1e3,
             t.footholds_moved,
+            t.body_eased_frames,
+            t.body_eased_least_kept,
         );
     }
     outln!(

@@ -1,9 +1,10 @@
 //! `gaitlab run` on ground that is not flat (issue 45 item 2): the hexapod
 //! with stairs in its preset climbs them — the run's `terrain` figures say
 //! how far it got, how high, that no foot went below the ground and how
-//! many footholds moved off a riser's edge — and a physics creature on
-//! stairs is refused with the field named (its engine walks on the floor
-//! only so far).
+//! many footholds moved off a riser's edge —, the quadruped bounds up a 10°
+//! slope holding its feet with the body eased where its legs fold to their
+//! limits (and says how often), and a physics creature on stairs is refused
+//! with the field named (its engine walks on the floor only so far).
 
 mod common;
 
@@ -59,6 +60,43 @@ fn the_hexapod_climbs_stairs_from_its_preset_and_says_so() {
     let text = gaitlab_ok(&["run", path.to_str().expect("utf-8 path"), "--seconds", "2"]);
     let stdout = String::from_utf8_lossy(&text.stdout);
     assert!(stdout.contains("  terrain stairs · made good"), "{stdout}");
+    let _ = std::fs::remove_file(path);
+}
+
+#[test]
+fn the_quadruped_bounds_up_a_slope_and_counts_the_frames_its_body_eased() {
+    let text = gaitlab_core::preset::bundled_json("poda-quadruped").expect("bundled preset");
+    let mut preset: Value = serde_json::from_str(text).expect("JSON");
+    preset["scenario"]["terrain"] = json!({"kind": "plane", "slope_deg": 10, "direction_deg": 90});
+    preset["scenario"]["poda"]["gait"] = json!("bound");
+    let path = std::env::temp_dir().join(format!(
+        "gaitlab-run-terrain-bound-{}.json",
+        std::process::id()
+    ));
+    std::fs::write(&path, preset.to_string()).expect("write preset");
+    let output = gaitlab_ok(&[
+        "run",
+        path.to_str().expect("utf-8 path"),
+        "--seconds",
+        "6",
+        "--json",
+    ]);
+    let figures = json_of(&output);
+    let terrain = &figures["terrain"];
+    let number = |v: &Value| v.as_f64().unwrap_or(f64::NAN);
+    assert!(
+        terrain["body_eased_frames"].as_u64().unwrap_or(0) > 0,
+        "{terrain}"
+    );
+    assert!(
+        (0.5..1.0).contains(&number(&terrain["body_eased_least_kept"])),
+        "{terrain}"
+    );
+    assert!(
+        number(&terrain["foot_below_ground_max_m"]) <= 0.001,
+        "{terrain}"
+    );
+    assert!(number(&figures["foot_slip_max_m"]) <= 0.001, "{figures}");
     let _ = std::fs::remove_file(path);
 }
 

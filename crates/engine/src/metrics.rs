@@ -363,6 +363,12 @@ pub struct TerrainRunMetrics {
     pub foot_below_ground_max_m: f64,
     /// Footholds moved off a spot too steep or too near an edge.
     pub footholds_moved: u64,
+    /// Frames in which the body eased its gait's height and pitch toward
+    /// the ground's so that its legs hold their feet (`terrain_feet` rule 5).
+    pub body_eased_frames: u64,
+    /// The least fraction of the gait's height and pitch the body kept in
+    /// those frames (1 when none).
+    pub body_eased_least_kept: f64,
 }
 
 impl GaitRunMetrics {
@@ -441,6 +447,8 @@ fn terrain_metrics(driver: &PodaDriver) -> Option<TerrainRunMetrics> {
         climbed_m: last.y - first.y,
         foot_below_ground_max_m: metrics.below_ground_max_m,
         footholds_moved: driver.footholds_moved(),
+        body_eased_frames: driver.body_eased().0,
+        body_eased_least_kept: driver.body_eased().1,
     })
 }
 

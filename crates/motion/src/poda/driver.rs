@@ -386,6 +386,15 @@ impl PodaDriver {
         self.state.footholds_moved
     }
 
+    /// Frames in which the body eased its gait's height and pitch toward
+    /// the ground's so that its legs hold their feet, since the restart, and
+    /// the least fraction of them it kept (1 when none;
+    /// [`crate::poda::terrain_feet`]; `(0, 1.0)` on the floor).
+    #[must_use]
+    pub fn body_eased(&self) -> (u64, f64) {
+        self.state.eased
+    }
+
     /// The figures measured since the last reset.
     #[must_use]
     pub fn metrics(&self) -> &GaitMetrics {

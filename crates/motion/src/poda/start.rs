@@ -47,6 +47,7 @@ pub fn restart(model: &PodaModel, state: &mut PodaState) {
     state.edits.path_replaced();
     state.time = 0.0;
     state.footholds_moved = 0;
+    state.eased = (0, 1.0);
     state.clock.restart(&state.gait);
     state.centre.restart();
     state.pose.clone_from(&model.rest);

@@ -120,9 +120,24 @@ pub struct PodaState {
     pub report: IkFrameReport,
     /// This frame's body pitch, radians (positive: nose up).
     pub pitch_rad: f64,
+    /// The pitch of the ground under the legs this frame, radians (0 on
+    /// the floor): the part of [`PodaState::pitch_rad`] the ground gives
+    /// ([`crate::poda::terrain_feet`]), which the IK stage keeps when it
+    /// eases the gait's pitch for a planted foot.
+    pub ground_pitch_rad: f64,
+    /// The root's height standing on the ground under the legs this frame,
+    /// world metres: the stand height above the ground line at the root
+    /// (the stand height on the floor), toward which the IK stage eases the
+    /// gait's height with its pitch.
+    pub ground_root_m: f64,
     /// Footholds moved off an unacceptable spot since the restart
     /// ([`crate::poda::terrain_feet`]).
     pub footholds_moved: u64,
+    /// Frames on ground that is not flat in which the body eased its gait's
+    /// height and pitch toward the ground's since the restart, and the least
+    /// fraction of them it kept (1 when none;
+    /// [`crate::poda::terrain_feet`]).
+    pub eased: (u64, f64),
     /// This frame's fore-aft surge, metres forward (0 when `fore_aft_surge` is off).
     pub surge_m: f64,
     /// The figures measured since the last restart.
@@ -202,7 +217,10 @@ impl PodaState {
             effectors: vec![DVec3::ZERO; effectors],
             report: IkFrameReport::new(effectors),
             pitch_rad: 0.0,
+            ground_pitch_rad: 0.0,
+            ground_root_m: 0.0,
             footholds_moved: 0,
+            eased: (0, 1.0),
             surge_m: 0.0,
             metrics: GaitMetrics::new(model.legs.iter().map(|l| l.name.as_str())),
             stability: StabilityMeter::default(),

@@ -23,6 +23,18 @@
 //!   the transfer — gives the least-squares line of ground height against
 //!   fore-aft position in the body's ground frame; its height at the root
 //!   and its slope are added to eq. 12–13's height and pitch.
+//! - **The gait's motion within the legs' reach** (the IK stage,
+//!   `stages/ik.rs`): where the legs cannot follow the body at the planned
+//!   height and pitch — a planted foot not held, or a transferring foot left
+//!   below the ground, because a leg folds to its joints' limits — the frame
+//!   is solved again with eq. 12–13's bob and Figure 2's pitch eased toward
+//!   the body standing on the ground under the legs (the stand height above
+//!   the line at the root, the line's pitch), keeping the largest fraction
+//!   of them at which every foot holds (bisection, 1/64). The bound on the
+//!   floor pitches the body ±16° and moves the root between 0.35 and 0.64 m
+//!   about its 0.5 m stand, a front elbow already at its limit; a 10° slope
+//!   or a tread adds what the leg cannot fold. On the floor the rule does
+//!   not act.
 
 use gaitlab_core::terrain::Terrain;
 use glam::{DVec2, DVec3};

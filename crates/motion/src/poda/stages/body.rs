@@ -112,6 +112,8 @@ pub fn place(model: &PodaModel, state: &mut PodaState, t: f64) {
     let slope = under.map_or(slope, |(_, ground_slope)| slope + ground_slope);
     // Nose up (the front higher, slope > 0) turns +z toward +y: about −x.
     state.pitch_rad = slope.patan2(1.0);
+    state.ground_pitch_rad = under.map_or(0.0, |(_, ground_slope)| ground_slope.patan2(1.0));
+    state.ground_root_m = model.stand_height_m + under.map_or(0.0, |(ground_m, _)| ground_m);
     let gait = &state.gait;
     let by_cycles = state.clock.by_cycles();
     state.surge_m = if !model.params.fore_aft_surge {

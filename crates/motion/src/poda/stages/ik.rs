@@ -9,7 +9,14 @@
 //! While legs take a change on with the body pitched (Figure 2), a frame
 //! whose planted foot the legs cannot hold (a joint at its limit) is solved
 //! again with less pitch: the largest fraction of it at which every planted
-//! foot holds, by bisection.
+//! foot holds, by bisection. On ground that is not flat (the lab's,
+//! [`crate::poda::terrain_feet`] rule 5) the same holds in every frame, for
+//! the gait's height and pitch together: a frame in which a planted foot is
+//! not held, or a transferring foot ends below the ground, is solved again
+//! with the body's height and pitch eased from the planned ones toward the
+//! body standing on the ground under its legs (the stand height above the
+//! ground line at the root, the ground line's pitch) — the largest fraction
+//! of eq. 12–13's and Figure 2's motion at which every foot holds.
 //!
 //! Reads the root, the pitch, the targets, the legs and their key centres;
 //! writes the pose, the pitch, the effectors, the targets of every effector
@@ -36,12 +43,29 @@ const HOLD_M: f64 = 2.5e-4;
 pub fn solve(model: &PodaModel, state: &mut PodaState, iterations: usize) {
     let planned = (state.pose.root, state.pitch_rad);
     let pitch_rad = planned.1;
-    within_reach(model, state, planned, pitch_rad);
+    within_reach(model, state, planned, (pitch_rad, planned.0.position.y));
     key_centres(model, state);
-    if !state.clock.by_cycles() || pitch_rad == 0.0 {
+    // On ground that is not flat the gait's height and pitch ease (the
+    // lab's, `terrain_feet` rule 5) toward the body standing on the ground
+    // under the legs: its height and pitch, which the easing keeps.
+    let on_terrain = !model.terrain.is_flat();
+    if !on_terrain && (!state.clock.by_cycles() || pitch_rad == 0.0) {
         iterate(model, state, iterations);
         return;
     }
+    let ground_rad = state.ground_pitch_rad;
+    let planned_m = planned.0.position.y;
+    let ground_m = state.ground_root_m;
+    let eased = |fraction: f64| {
+        if on_terrain {
+            (
+                ground_rad + fraction * (pitch_rad - ground_rad),
+                ground_m + fraction * (planned_m - ground_m),
+            )
+        } else {
+            (fraction * pitch_rad, planned_m)
+        }
+    };
     state.joints_before.copy_from_slice(&state.pose.joints);
     iterate(model, state, iterations);
     if planted_held(model, state) {
@@ -51,7 +75,7 @@ pub fn solve(model: &PodaModel, state: &mut PodaState, iterations: usize) {
     let mut last_held = false;
     for _ in 0..HOLD_STEPS {
         let mid = 0.5 * (held + refused);
-        retry(model, state, planned, mid * pitch_rad, iterations);
+        retry(model, state, planned, eased(mid), iterations);
         last_held = planted_held(model, state);
         if last_held {
             held = mid;
@@ -60,44 +84,60 @@ pub fn solve(model: &PodaModel, state: &mut PodaState, iterations: usize) {
         }
     }
     if !last_held {
-        retry(model, state, planned, held * pitch_rad, iterations);
+        retry(model, state, planned, eased(held), iterations);
+    }
+    if on_terrain {
+        state.eased = (state.eased.0 + 1, state.eased.1.min(held));
     }
 }
 
 /// The frame solved again from the previous frame's joints with the body
-/// pitched `pitch_rad` instead of the `planned` root's pitch.
+/// pitched and raised `eased` (pitch, root height) instead of the `planned`
+/// root's.
 fn retry(
     model: &PodaModel,
     state: &mut PodaState,
     planned: (RootTransform, f64),
-    pitch_rad: f64,
+    eased: (f64, f64),
     iterations: usize,
 ) {
     state.pose.joints.copy_from_slice(&state.joints_before);
-    within_reach(model, state, planned, pitch_rad);
+    within_reach(model, state, planned, eased);
     iterate(model, state, iterations);
 }
 
-/// Every planted foot within [`HOLD_M`] of its spot after the IK.
+/// Every planted foot within [`HOLD_M`] of its spot after the IK; on
+/// ground that is not flat every transferring foot, too, no more than
+/// [`HOLD_M`] below the ground (a leg folded to its limits leaves its foot
+/// short of a target near the ground, under it).
 fn planted_held(model: &PodaModel, state: &PodaState) -> bool {
-    model
-        .legs
-        .iter()
-        .zip(&state.runs)
-        .all(|(leg, run)| !run.support || state.report.effector_error_m[leg.effector] <= HOLD_M)
+    let on_terrain = !model.terrain.is_flat();
+    model.legs.iter().zip(&state.runs).all(|(leg, run)| {
+        if run.support {
+            state.report.effector_error_m[leg.effector] <= HOLD_M
+        } else if on_terrain {
+            let foot = state.effectors[leg.effector];
+            model.terrain.height_m(foot.x, foot.z) - foot.y <= HOLD_M
+        } else {
+            true
+        }
+    })
 }
 
-/// The `planned` root (with the planned pitch) pitched `pitch_rad` instead,
-/// and while legs take a change on no higher than every planted foot
-/// reaches at [`crate::poda::transition::REACH`] of its straight leg.
+/// The `planned` root (with the planned pitch) pitched and raised to `at`
+/// (pitch, root height) instead, and while legs take a change on no higher
+/// than every planted foot reaches at [`crate::poda::transition::REACH`] of
+/// its straight leg.
 fn within_reach(
     model: &PodaModel,
     state: &mut PodaState,
     planned: (RootTransform, f64),
-    pitch_rad: f64,
+    at: (f64, f64),
 ) {
     let (root, planned_pitch_rad) = planned;
+    let (pitch_rad, height_m) = at;
     state.pose.root = root;
+    state.pose.root.position.y = height_m;
     state.pitch_rad = pitch_rad;
     if pitch_rad != planned_pitch_rad {
         // Nose up turns +z toward +y, about −x (the body stage's rotation).
