@@ -349,7 +349,7 @@ pub struct GaitRunMetrics {
     pub terrain: Option<TerrainRunMetrics>,
 }
 
-/// A PODA walk over ground that is not flat (issue 45 item 2).
+/// A walk or run over ground that is not flat (issue 45 items 2 and 3).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TerrainRunMetrics {
     /// The terrain's kind (`plane`, `stairs`, `height_field`, `rough`).
@@ -363,6 +363,10 @@ pub struct TerrainRunMetrics {
     pub foot_below_ground_max_m: f64,
     /// Footholds moved off a spot too steep or too near an edge.
     pub footholds_moved: u64,
+    /// Physics: the lowest and highest trunk height above the ground under
+    /// it after settling, metres (absent for PODA).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trunk_height_range_m: Option<[f64; 2]>,
 }
 
 impl GaitRunMetrics {
@@ -441,6 +445,27 @@ fn terrain_metrics(driver: &PodaDriver) -> Option<TerrainRunMetrics> {
         climbed_m: last.y - first.y,
         foot_below_ground_max_m: metrics.below_ground_max_m,
         footholds_moved: driver.footholds_moved(),
+        trunk_height_range_m: None,
+    })
+}
+
+/// The terrain figures of a physics run, `None` on the floor: made good
+/// and climbed by the centre of mass from the end of settling to the end.
+fn physics_terrain_metrics(driver: &PhysicsDriver) -> Option<TerrainRunMetrics> {
+    let surface = &driver.sim().terrain.surface;
+    if surface.is_flat() {
+        return None;
+    }
+    let s = driver.summary();
+    let (first, last) = s.com_first_last.unwrap_or_default();
+    let (low, high) = s.trunk_height_range_m;
+    Some(TerrainRunMetrics {
+        kind: surface.kind_name(),
+        made_good_m: glam::DVec2::new(last.x - first.x, last.z - first.z).length(),
+        climbed_m: last.y - first.y,
+        foot_below_ground_max_m: s.foot_below_ground_max_m,
+        footholds_moved: 0,
+        trunk_height_range_m: low.is_finite().then_some([low, high]),
     })
 }
 
@@ -645,6 +670,11 @@ pub struct PhysicsRunMetrics {
     pub steps_per_second: f64,
     /// Simulated seconds per wall second.
     pub realtime_factor: f64,
+    /// On ground that is not flat (`scenario.terrain`), what the run over
+    /// it measured (`footholds_moved` is 0: the physics' feet land where
+    /// the dynamics put them); absent on the floor.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub terrain: Option<TerrainRunMetrics>,
 }
 
 impl PhysicsRunMetrics {
@@ -760,6 +790,7 @@ impl PhysicsRunMetrics {
             steps: sim.steps,
             steps_per_second: if step_s > 0.0 { steps / step_s } else { 0.0 },
             realtime_factor: if step_s > 0.0 { sim.time / step_s } else { 0.0 },
+            terrain: physics_terrain_metrics(driver),
         }
     }
 }

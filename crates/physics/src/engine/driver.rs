@@ -854,6 +854,7 @@ impl PhysicsDriver {
             time: sim.time,
             dt: sim.options.dt,
             commands: sim.commands.at_scale(sim.creature.scale),
+            ground: sim.ground_view(),
         };
         if vy < 0.0
             && let Some(next) = self.pending.as_mut()
