@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Issue 45 item 3's figures (docs/terrain.md, "Physics on terrain"): the
-biped run up and down a 5° slope, the quadruped trot up 5° and the kangaroo
-hop over rough ground at difficulty 0.25, each for SECONDS (default 60) with
+biped run up and down a 5° slope (and 10°), the quadruped trot up 5° and
+the kangaroo hop over rough ground at difficulty 0.25 (and 0.5, 1), each for SECONDS (default 60) with
 the lab's `ground_ahead` off (the paper's laws) and on, beside each
 creature's run on the floor. Prints a Markdown table: whether it fell (and
 how many times it was put back), the mean horizontal speed against the
@@ -20,16 +20,24 @@ from gaitlab_run import run
 
 UP = {"kind": "plane", "slope_deg": 5, "direction_deg": 90}
 DOWN = {"kind": "plane", "slope_deg": -5, "direction_deg": 90}
+UP10 = {"kind": "plane", "slope_deg": 10, "direction_deg": 90}
+DOWN10 = {"kind": "plane", "slope_deg": -10, "direction_deg": 90}
 ROUGH = {"kind": "rough", "seed": 1, "difficulty": 0.25, "size_m": [6, 400]}
+ROUGH_05 = dict(ROUGH, difficulty=0.5)
+ROUGH_1 = dict(ROUGH, difficulty=1.0)
 FLAT = {"kind": "flat"}
 CASES = [
     ("biped run", "raibert-biped", "floor", FLAT),
     ("biped run", "raibert-biped", "up 5°", UP),
     ("biped run", "raibert-biped", "down 5°", DOWN),
+    ("biped run", "raibert-biped", "up 10°", UP10),
+    ("biped run", "raibert-biped", "down 10°", DOWN10),
     ("quadruped trot", "raibert-quadruped", "floor", FLAT),
     ("quadruped trot", "raibert-quadruped", "up 5°", UP),
     ("kangaroo hop", "raibert-kangaroo", "floor", FLAT),
     ("kangaroo hop", "raibert-kangaroo", "rough 0.25", ROUGH),
+    ("kangaroo hop", "raibert-kangaroo", "rough 0.5", ROUGH_05),
+    ("kangaroo hop", "raibert-kangaroo", "rough 1", ROUGH_1),
 ]
 
 
