@@ -300,3 +300,44 @@ fn a_box_placed_from_the_panel_is_jumped_by_the_kangaroo() {
             .is_err_and(|e| e.contains("no jump"))
     );
 }
+
+/// tan 5°: the slope's rise per metre.
+const TAN_5_DEG: f64 = 0.087_488_663_525_924;
+
+/// Issue 45: the Terrain panel's command puts the running biped on a 5°
+/// slope (drawn, and run by its controller with the ground under it); stairs
+/// are refused with the engine's reason and the slope run carries on.
+#[test]
+fn the_biped_runs_up_a_slope_from_the_page_and_stairs_are_refused() {
+    let mut lab = App::new(Settings::default());
+    lab.command(r#"{"preset":"raibert-biped"}"#).expect("valid");
+    lab.command(r#"{"terrain":{"kind":"plane","slope_deg":5,"direction_deg":90}}"#)
+        .expect("a slope for the biped");
+    run(&mut lab, 6.0);
+    let s = state(&lab);
+    assert_eq!(s["terrain"]["kind"], "plane");
+    assert_eq!(s["terrain"]["triangles_drawn"], 2);
+    assert!(s["last_error"].is_null(), "{}", s["last_error"]);
+    let root = &s["terrain"]["root_m"];
+    let (z, y) = (
+        root[2].as_f64().unwrap_or(0.0),
+        root[1].as_f64().unwrap_or(0.0),
+    );
+    let ground = s["terrain"]["ground_under_root_m"]
+        .as_f64()
+        .unwrap_or(f64::NAN);
+    assert!(z > 3.0, "ran up the slope: z = {z:.2} m");
+    assert!(
+        (ground - z * TAN_5_DEG).abs() < 0.01,
+        "ground {ground:.3} m at z = {z:.2}"
+    );
+    assert!(
+        y - ground > 0.5,
+        "the trunk above the slope: {y:.3} m over {ground:.3} m"
+    );
+    let error = lab
+        .command(r#"{"terrain":{"kind":"stairs","rise_m":0.1,"run_m":0.4,"count":5}}"#)
+        .expect_err("stairs are not climbed by the physics engine yet");
+    assert!(error.contains("does not climb stairs"), "{error}");
+    assert_eq!(state(&lab)["terrain"]["kind"], "plane");
+}

@@ -181,6 +181,18 @@ fn print_physics(m: &PhysicsRunMetrics) {
         m.realtime_factor,
     );
     print_put_backs(m);
+    if let Some(t) = &m.terrain {
+        let [low, high] = t.trunk_height_range_m.unwrap_or([f64::NAN; 2]);
+        outln!(
+            "  terrain {} · made good {:.3} m · climbed {:.3} m · trunk {:.3}–{:.3} m above the ground · deepest foot in the ground springs {:.1} mm",
+            t.kind,
+            t.made_good_m,
+            t.climbed_m,
+            low,
+            high,
+            t.foot_below_ground_max_m.max(0.0) * 1e3,
+        );
+    }
     for p in &m.pushes {
         let verdict = match p.recovered {
             Some(true) => "recovered",

@@ -3,8 +3,9 @@
 //! how far it got, how high, that no foot went below the ground and how
 //! many footholds moved off a riser's edge —, the quadruped bounds up a 10°
 //! slope holding its feet with the body eased where its legs fold to their
-//! limits (and says how often), and a physics creature on stairs is refused
-//! with the field named (its engine walks on the floor only so far).
+//! limits (and says how often), the physics biped runs up a slope and says
+//! how far and how high, and a physics creature on stairs, or in a gait not
+//! made for terrain, is refused with the field named.
 
 mod common;
 
@@ -108,8 +109,52 @@ fn a_physics_creature_on_stairs_is_refused_with_the_field_named() {
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert_eq!(output.status.code(), Some(2), "{stderr}");
     assert!(
-        stderr.contains("scenario.terrain: the physics engine walks on flat ground only"),
+        stderr.contains("scenario.terrain: the physics engine does not climb stairs"),
         "{stderr}"
     );
+    let _ = std::fs::remove_file(path);
+}
+
+#[test]
+fn a_physics_gait_not_made_for_terrain_is_refused_with_the_gait_named() {
+    let slope = json!({"kind": "plane", "slope_deg": 5, "direction_deg": 90});
+    let path = preset_with("raibert-quadruped", slope);
+    let path_text = path.to_str().expect("utf-8 path");
+    let output = gaitlab(&["run", path_text, "--gait", "bound", "--seconds", "1"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("scenario.terrain: the physics engine runs the bound on flat ground only"),
+        "{stderr}"
+    );
+    let _ = std::fs::remove_file(path);
+}
+
+#[test]
+fn the_physics_biped_runs_up_a_slope_and_says_how_far_and_how_high() {
+    let slope = json!({"kind": "plane", "slope_deg": 5, "direction_deg": 90});
+    let path = preset_with("raibert-biped", slope);
+    let output = gaitlab_ok(&[
+        "run",
+        path.to_str().expect("utf-8 path"),
+        "--seconds",
+        "6",
+        "--json",
+    ]);
+    let figures = json_of(&output);
+    let number = |v: &Value| v.as_f64().unwrap_or(f64::NAN);
+    let terrain = &figures["terrain"];
+    assert_eq!(figures["fell"], false, "{figures}");
+    assert_eq!(terrain["kind"], "plane", "{figures}");
+    // About 1.5 m/s for the 3 s after settling, rising tan 5° per metre.
+    let made = number(&terrain["made_good_m"]);
+    let climbed = number(&terrain["climbed_m"]);
+    assert!((3.5..5.5).contains(&made), "{terrain}");
+    let (sin, cos) = gaitlab_core::trig::sin_cos(5f64.to_radians());
+    let rise = sin / cos;
+    assert!((climbed / made - rise).abs() < 0.01, "{terrain}");
+    let text = gaitlab_ok(&["run", path.to_str().expect("utf-8 path"), "--seconds", "4"]);
+    let stdout = String::from_utf8_lossy(&text.stdout);
+    assert!(stdout.contains("  terrain plane · made good"), "{stdout}");
     let _ = std::fs::remove_file(path);
 }

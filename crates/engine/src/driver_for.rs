@@ -61,16 +61,18 @@ pub struct Overrides {
 /// A [`PresetError`] whose path names the value that cannot be used: a
 /// scenario value (`scenario.thesis.…`, `scenario.poda.gait`,
 /// `scenario.physics.…`, `scenario.terrain` when it is not flat and the
-/// engine is not PODA's), or for
+/// engine is the IK's, or the physics' on ground or in a gait it does not
+/// run on yet: [`PHYSICS_ON_TERRAIN`]), or for
 /// tracking `targets` / `iterations` (the
 /// recorded targets do not fit the skeleton).
 pub fn driver_for(creature: &Creature, overrides: &Overrides) -> Result<AnyDriver, PresetError> {
-    if !creature.scenario.terrain.is_flat() && creature.scenario.engine != Engine::Poda {
+    if !creature.scenario.terrain.is_flat() && creature.scenario.engine == Engine::Ik {
         return Err(PresetError::new(
             "scenario.terrain",
             format!(
                 "the {} engine walks on flat ground only in this version (PODA creatures walk \
-                 on a plane, stairs or a height field)",
+                 on a plane, stairs or a height field; physics creatures run on a plane or \
+                 rough ground)",
                 creature.scenario.engine.name()
             ),
         ));
@@ -106,10 +108,47 @@ pub fn driver_for(creature: &Creature, overrides: &Overrides) -> Result<AnyDrive
                 check_speed_mps("scenario.physics.speed_mps", speed)?;
                 params.speed_mps = speed;
             }
-            PhysicsDriver::with_params(creature, params)
-                .map(|driver| AnyDriver::Physics(Box::new(driver)))
+            let driver = PhysicsDriver::with_params(creature, params)?;
+            physics_on_terrain(&creature.scenario.terrain, driver.gait())?;
+            Ok(AnyDriver::Physics(Box::new(driver)))
         }
     }
+}
+
+/// The physics gaits made to run on ground that is not flat (issue 45 item
+/// 3, docs/terrain.md "Physics on terrain"): the biped's run, the
+/// quadruped's trot and the kangaroo's hop, on a plane, a height field or
+/// rough ground.
+pub const PHYSICS_ON_TERRAIN: [&str; 3] = ["run", "trot", "hop"];
+
+/// Refuses a physics run on `terrain` that the controllers do not plan for
+/// yet: stairs (their risers), or a gait not in [`PHYSICS_ON_TERRAIN`].
+fn physics_on_terrain(
+    terrain: &gaitlab_core::terrain::Terrain,
+    gait: &str,
+) -> Result<(), PresetError> {
+    if terrain.is_flat() {
+        return Ok(());
+    }
+    let kind = terrain.kind_name();
+    if kind == "stairs" {
+        return Err(PresetError::new(
+            "scenario.terrain",
+            "the physics engine does not climb stairs in this version (it runs the biped, \
+             the quadruped's trot and the kangaroo's hop on a plane or rough ground; PODA \
+             creatures climb stairs)",
+        ));
+    }
+    if !PHYSICS_ON_TERRAIN.contains(&gait) {
+        return Err(PresetError::new(
+            "scenario.terrain",
+            format!(
+                "the physics engine runs the {gait} on flat ground only in this version (on \
+                 a {kind}: the biped's run, the quadruped's trot, the kangaroo's hop)"
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// The IK options a thesis or tracking driver gets; options given in

@@ -349,7 +349,7 @@ pub struct GaitRunMetrics {
     pub terrain: Option<TerrainRunMetrics>,
 }
 
-/// A PODA walk over ground that is not flat (issue 45 item 2).
+/// A walk or run over ground that is not flat (issue 45 items 2 and 3).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TerrainRunMetrics {
     /// The terrain's kind (`plane`, `stairs`, `height_field`, `rough`).
@@ -363,12 +363,17 @@ pub struct TerrainRunMetrics {
     pub foot_below_ground_max_m: f64,
     /// Footholds moved off a spot too steep or too near an edge.
     pub footholds_moved: u64,
-    /// Frames in which the body eased its gait's height and pitch toward
-    /// the ground's so that its legs hold their feet (`terrain_feet` rule 5).
+    /// PODA: frames in which the body eased its gait's height and pitch
+    /// toward the ground's so that its legs hold their feet (`terrain_feet`
+    /// rule 5; 0 for physics).
     pub body_eased_frames: u64,
-    /// The least fraction of the gait's height and pitch the body kept in
-    /// those frames (1 when none).
+    /// PODA: the least fraction of the gait's height and pitch the body kept
+    /// in those frames (1 when none, and for physics).
     pub body_eased_least_kept: f64,
+    /// Physics: the lowest and highest trunk height above the ground under
+    /// it after settling, metres (absent for PODA).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trunk_height_range_m: Option<[f64; 2]>,
 }
 
 impl GaitRunMetrics {
@@ -449,6 +454,29 @@ fn terrain_metrics(driver: &PodaDriver) -> Option<TerrainRunMetrics> {
         footholds_moved: driver.footholds_moved(),
         body_eased_frames: driver.body_eased().0,
         body_eased_least_kept: driver.body_eased().1,
+        trunk_height_range_m: None,
+    })
+}
+
+/// The terrain figures of a physics run, `None` on the floor: made good
+/// and climbed by the centre of mass from the end of settling to the end.
+fn physics_terrain_metrics(driver: &PhysicsDriver) -> Option<TerrainRunMetrics> {
+    let surface = &driver.sim().terrain.surface;
+    if surface.is_flat() {
+        return None;
+    }
+    let s = driver.summary();
+    let (first, last) = s.com_first_last.unwrap_or_default();
+    let (low, high) = s.trunk_height_range_m;
+    Some(TerrainRunMetrics {
+        kind: surface.kind_name(),
+        made_good_m: glam::DVec2::new(last.x - first.x, last.z - first.z).length(),
+        climbed_m: last.y - first.y,
+        foot_below_ground_max_m: s.foot_below_ground_max_m,
+        footholds_moved: 0,
+        body_eased_frames: 0,
+        body_eased_least_kept: 1.0,
+        trunk_height_range_m: low.is_finite().then_some([low, high]),
     })
 }
 
@@ -653,6 +681,11 @@ pub struct PhysicsRunMetrics {
     pub steps_per_second: f64,
     /// Simulated seconds per wall second.
     pub realtime_factor: f64,
+    /// On ground that is not flat (`scenario.terrain`), what the run over
+    /// it measured (`footholds_moved` is 0: the physics' feet land where
+    /// the dynamics put them); absent on the floor.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub terrain: Option<TerrainRunMetrics>,
 }
 
 impl PhysicsRunMetrics {
@@ -768,6 +801,7 @@ impl PhysicsRunMetrics {
             steps: sim.steps,
             steps_per_second: if step_s > 0.0 { steps / step_s } else { 0.0 },
             realtime_factor: if step_s > 0.0 { sim.time / step_s } else { 0.0 },
+            terrain: physics_terrain_metrics(driver),
         }
     }
 }

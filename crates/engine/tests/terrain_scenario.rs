@@ -1,7 +1,8 @@
 //! `scenario.terrain` in a preset (issue 45 item 1, first part): a stairs or
 //! height-field ground is read and checked with errors that name the field
-//! inside `scenario.terrain`; PODA runs on it, the engines that walk on flat
-//! ground only so far refuse it by the same path instead of ignoring it; a
+//! inside `scenario.terrain`; PODA runs on it, the physics biped runs on a
+//! slope but not yet up stairs, the IK engine, which walks on flat ground
+//! only so far, refuses it by the same path instead of ignoring it; a
 //! flat or absent terrain changes nothing and is not written back.
 
 use gaitlab_core::Creature;
@@ -22,7 +23,7 @@ fn preset_with(name: &str, terrain: Value) -> Result<Creature, String> {
 }
 
 #[test]
-fn a_preset_carries_its_terrain_checked_and_refused_until_the_engines_walk_on_it() {
+fn a_preset_carries_its_terrain_checked_and_refused_where_the_engine_cannot_walk_on_it() {
     let stairs = json!({"kind": "stairs", "rise_m": 0.05, "run_m": 0.3, "count": 4});
     let creature = hexapod_with(stairs.clone()).unwrap_or_else(|e| panic!("{e}"));
     assert!(matches!(creature.scenario.terrain, Terrain::Stairs(ref s) if s.count == 4));
@@ -30,8 +31,21 @@ fn a_preset_carries_its_terrain_checked_and_refused_until_the_engines_walk_on_it
         driver_for(&creature, &Overrides::default()).is_ok(),
         "PODA walks on stairs"
     );
+    // The physics biped does not climb stairs yet; it runs on a slope.
     let biped = preset_with("raibert-biped", stairs).unwrap_or_else(|e| panic!("{e}"));
     let error = driver_for(&biped, &Overrides::default()).err();
+    assert!(
+        error
+            .as_ref()
+            .is_some_and(|e| e.path == "scenario.terrain" && e.reason.contains("stairs")),
+        "{error:?}"
+    );
+    let slope = json!({"kind": "plane", "slope_deg": 5, "direction_deg": 90});
+    let biped = preset_with("raibert-biped", slope.clone()).unwrap_or_else(|e| panic!("{e}"));
+    assert!(driver_for(&biped, &Overrides::default()).is_ok());
+    // The IK engine walks on the floor only.
+    let thesis = preset_with("she-2006", slope).unwrap_or_else(|e| panic!("{e}"));
+    let error = driver_for(&thesis, &Overrides::default()).err();
     assert!(
         error
             .as_ref()

@@ -20,6 +20,7 @@ const PAPER_ONLY: LabAdditions = LabAdditions {
     speed_ramp: Some(false),
     tail_feedback: Some(false),
     hop_integrator: None,
+    ground_ahead: None,
 };
 
 /// The bundled kangaroo by the paper's laws alone.

@@ -56,6 +56,10 @@ const PHYSICS_OFF: &[(&str, ValueOf)] = &[
         "scenario.physics.lab_additions.hop_integrator",
         ValueOf::Bool(false),
     ),
+    (
+        "scenario.physics.lab_additions.ground_ahead",
+        ValueOf::Bool(false),
+    ),
     ("scenario.physics.switch_to_start", ValueOf::Empty),
     (
         "scenario.physics.lab_additions_by_gait",

@@ -385,6 +385,13 @@ pub struct LabAdditions {
     /// prediction alone.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hop_integrator: Option<bool>,
+    /// Ground ahead (issue 45): on ground that is not flat, the controllers
+    /// measure eq. 2's hop and eq. 3's touchdown from the local ground plane
+    /// under the body (its height and slope, handed to them each control
+    /// interval), where the paper's laws take the floor at height 0. No
+    /// effect on the floor.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ground_ahead: Option<bool>,
 }
 
 impl LabAdditions {
@@ -398,6 +405,7 @@ impl LabAdditions {
             speed_ramp: self.speed_ramp.or(base.speed_ramp),
             tail_feedback: self.tail_feedback.or(base.tail_feedback),
             hop_integrator: self.hop_integrator.or(base.hop_integrator),
+            ground_ahead: self.ground_ahead.or(base.ground_ahead),
         }
     }
 }

@@ -279,4 +279,15 @@ pub const PHYSICS_PARAMS: &[ParamSpec] = &[
         origin: Origin::Lab,
         why: "the paper sets the thrust by eq. 2's predicted apex alone",
     },
+    ParamSpec {
+        key: "scenario.physics.lab_additions.ground_ahead",
+        command: None,
+        label: "Eq. 2 and eq. 3 measured from the ground plane under the body (terrain)",
+        unit: "",
+        domain: Domain::Bool,
+        live: false,
+        reference: "docs/terrain.md",
+        origin: Origin::Lab,
+        why: "the paper's laws take the ground as the level floor at height 0",
+    },
 ];

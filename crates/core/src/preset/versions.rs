@@ -156,6 +156,7 @@ fn paper_by_default(preset: &mut Preset) {
             &mut additions.speed_ramp,
             &mut additions.tail_feedback,
             &mut additions.hop_integrator,
+            &mut additions.ground_ahead,
         ] {
             named.get_or_insert(false);
         }

@@ -198,9 +198,8 @@ impl PhysicsDriver {
         let ground = ground.scaled(l);
         let mut sim = Sim::new(creature, ground, options);
         sim.commands = starting_commands(&params);
-        // The ground's shape (issue 45): the engine layer's `driver_for`
-        // still refuses a physics creature on anything but the floor until
-        // its controllers walk on it; the springs already act along its normal.
+        // The ground's shape (issue 45): the springs act along its normal;
+        // the engine layer's `driver_for` lets the gaits made for it onto it.
         sim.terrain.surface = preset.scenario.terrain.clone();
         for o in &params.obstacles {
             sim.terrain.obstacles.push(Obstacle {
@@ -219,6 +218,7 @@ impl PhysicsDriver {
         sim.data.q.copy_from_slice(&start_q);
         controller.start(&mut sim, params.speed_mps);
         crate::dynamics::kinematics::kinematics(&sim.creature.model, &mut sim.data);
+        lift_above_ground(&mut sim);
         consistency::check_start(&sim.creature, &sim.data, &sim.terrain)?;
         let mut controller = controller;
         let mut start_controller = None;
@@ -854,6 +854,7 @@ impl PhysicsDriver {
             time: sim.time,
             dt: sim.options.dt,
             commands: sim.commands.at_scale(sim.creature.scale),
+            ground: sim.ground_view(),
         };
         if vy < 0.0
             && let Some(next) = self.pending.as_mut()
@@ -1021,4 +1022,37 @@ fn starting_commands(params: &PhysicsParams) -> Commands {
         heading_rad: Steering::default().heading,
         hop_height_m: params.hop_height_m,
     }
+}
+
+/// On ground that is not flat, a creature whose start would put a foot
+/// below the ground under it is raised (its free base, or the planar
+/// kangaroo's `base-up` slide; kinematics refreshed) until that foot is on
+/// it: the start the gait gives on the floor, over the ground where it
+/// stands (rough ground's bumps under the start). Nothing moves where every
+/// foot starts above the ground, the floor included.
+fn lift_above_ground(sim: &mut Sim) {
+    if sim.terrain.surface.is_flat() {
+        return;
+    }
+    let lift = sim
+        .creature
+        .legs
+        .iter()
+        .map(|leg| {
+            let p = sim.data.point_world(leg.foot_body, leg.foot_point);
+            sim.terrain.height(p.x, p.z) - p.y
+        })
+        .fold(0.0, f64::max);
+    if lift <= 0.0 {
+        return;
+    }
+    let model = &sim.creature.model;
+    if model.free_base() {
+        sim.data.base_position.y += lift;
+    } else if let Some(k) = model.body_index("base-up").and_then(|b| model.dof_of(b)) {
+        sim.data.q[k] += lift;
+    } else {
+        return;
+    }
+    crate::dynamics::kinematics::kinematics(&sim.creature.model, &mut sim.data);
 }

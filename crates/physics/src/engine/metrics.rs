@@ -110,6 +110,14 @@ pub struct GaitSummary {
     pub flights: Vec<FlightPeriod>,
     /// Every stance after settling, per leg.
     pub stances: Vec<Vec<Stance>>,
+    /// The centre of mass when settled and now (world, m), if settled.
+    pub com_first_last: Option<(DVec3, DVec3)>,
+    /// Deepest any touching foot went below the ground under it after
+    /// settling (m; the ground springs' penetration, 0 with none).
+    pub foot_below_ground_max_m: f64,
+    /// Lowest and highest trunk height above the ground under it after
+    /// settling (m).
+    pub trunk_height_range_m: (f64, f64),
 }
 
 /// Accumulates a run's events.
@@ -149,6 +157,8 @@ pub struct GaitRecorder {
     /// Positive actuator work since settling (J) and the weight (N).
     positive_work_j: f64,
     weight_n: f64,
+    below_ground: f64,
+    trunk_height_range: (f64, f64),
 }
 
 impl GaitRecorder {
@@ -184,6 +194,8 @@ impl GaitRecorder {
             peak_leg_force: vec![0.0; legs],
             positive_work_j: 0.0,
             weight_n: 0.0,
+            below_ground: 0.0,
+            trunk_height_range: (f64::INFINITY, f64::NEG_INFINITY),
         }
     }
 
@@ -202,7 +214,10 @@ impl GaitRecorder {
             .legs
             .first()
             .map_or(1.0, |l| l.foot_point.length() + l.hip_in_trunk.length());
-        let trunk_y = d.world[c.trunk].pos.y;
+        // The trunk's height above the ground under it (the floor's 0, or
+        // the terrain's there).
+        let trunk = d.world[c.trunk].pos;
+        let trunk_y = trunk.y - sim.terrain.height(trunk.x, trunk.z);
         if pitch.abs() > 60.0 || roll.abs() > 60.0 || trunk_y < 0.4 * reach.min(1.0 * c.scale) {
             self.fell = true;
         }
@@ -224,6 +239,7 @@ impl GaitRecorder {
             self.weight_n = weight;
         }
         let mut vertical = 0.0;
+        let flat = sim.terrain.surface.is_flat() && sim.terrain.obstacles.is_empty();
         for (i, (leg, contact)) in c.legs.iter().zip(&sim.contacts).enumerate() {
             vertical += contact.force.y;
             let hip = d.world[c.trunk].rot * leg.hip_in_trunk + d.world[c.trunk].pos;
@@ -233,10 +249,26 @@ impl GaitRecorder {
             }
             // The touchdown's sample belongs to the support it starts: the
             // samples are cleared at the touchdown (below) before it is kept.
-            let friction =
-                (contact.touching && contact.force.y > 0.1 * weight && settled).then(|| {
-                    DVec3::new(contact.force.x, 0.0, contact.force.z).length() / contact.force.y
-                });
+            // Tangential over normal force, in the surface's frame at the
+            // foot (on the floor: horizontal over vertical).
+            let normal = if flat {
+                DVec3::Y
+            } else {
+                let p = contact.position;
+                sim.terrain.surface_at(p.x, p.z).1
+            };
+            if contact.touching && settled {
+                let p = contact.position;
+                let depth = if flat {
+                    -p.y
+                } else {
+                    sim.terrain.height(p.x, p.z) - p.y
+                };
+                self.below_ground = self.below_ground.max(depth);
+            }
+            let pressing = contact.force.dot(normal);
+            let friction = (contact.touching && pressing > 0.1 * weight && settled)
+                .then(|| (contact.force - pressing * normal).length() / pressing);
             if let Some(ratio) = friction {
                 self.friction = self.friction.max(ratio);
             }
@@ -292,6 +324,8 @@ impl GaitRecorder {
             });
         }
         if settled {
+            let (low, high) = self.trunk_height_range;
+            self.trunk_height_range = (low.min(trunk_y), high.max(trunk_y));
             self.peak_force = self.peak_force.max(vertical / weight);
             self.pitch_range = (self.pitch_range.0.min(pitch), self.pitch_range.1.max(pitch));
             self.roll_range = (self.roll_range.0.min(roll), self.roll_range.1.max(roll));
@@ -395,6 +429,9 @@ impl GaitRecorder {
                 .then(|| mean(&mut self.tail_spans.iter().copied())),
             flights: self.flights.clone(),
             stances: self.stances.clone(),
+            com_first_last: self.start.map(|(_, c0)| (c0, self.last.1)),
+            foot_below_ground_max_m: self.below_ground,
+            trunk_height_range_m: self.trunk_height_range,
         }
     }
 }

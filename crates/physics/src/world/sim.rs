@@ -14,6 +14,7 @@ use crate::dynamics::spatial::Force;
 use crate::world::actuator::{SpringDamper, Stops};
 use crate::world::commands::{Commands, ScaledCommands};
 use crate::world::ground::{FootContact, GroundParams, Terrain, contact_forces};
+use crate::world::ground_view::GroundView;
 
 /// One joint's actuator: a spring-damper / servo (eq. 1, eq. 5) plus a
 /// feed-forward torque from the controller (eq. 4's posture torque) and the
@@ -83,6 +84,10 @@ pub struct ControlInput<'a> {
     pub dt: f64,
     /// The commands, at the creature's scale.
     pub commands: ScaledCommands,
+    /// The ground plane under the trunk, from the terrain at the last
+    /// control interval (issue 45 item 3): all a controller learns of the
+    /// terrain.
+    pub ground: GroundView,
 }
 
 /// A running controller: sets actuator set points from the state.
@@ -243,6 +248,8 @@ pub struct Sim {
     /// What a person asks of the running creature, at scale 1; the
     /// controller reads them each control interval.
     pub commands: Commands,
+    /// The ground plane under the trunk at the last control interval.
+    ground_view: GroundView,
     accumulator: f64,
 }
 
@@ -264,8 +271,17 @@ impl Sim {
             time: 0.0,
             steps: 0,
             commands: Commands::default(),
+            ground_view: GroundView::FLAT,
             accumulator: 0.0,
         }
+    }
+
+    /// The ground plane under the trunk now, from [`Sim::terrain`]: what a
+    /// controller is handed of the terrain ([`ControlInput::ground`]).
+    #[must_use]
+    pub fn ground_view(&self) -> GroundView {
+        let trunk = self.data.world[self.creature.trunk].pos;
+        GroundView::of(&self.terrain, trunk, self.creature.scale)
     }
 
     /// One integration step of `options.dt`.
@@ -286,6 +302,10 @@ impl Sim {
             &mut self.contacts,
         );
         let every = u64::from(self.options.control_every.max(1));
+        let control_due = self.steps.is_multiple_of(every);
+        if control_due {
+            self.ground_view = self.ground_view();
+        }
         let input = ControlInput {
             creature: &self.creature,
             data: &self.data,
@@ -293,8 +313,9 @@ impl Sim {
             time: self.time,
             dt: dt * every as f64,
             commands: self.commands.at_scale(self.creature.scale),
+            ground: self.ground_view,
         };
-        if self.steps.is_multiple_of(every) {
+        if control_due {
             controller.control(&input, &mut self.drives);
         }
         controller.servo(&input, &mut self.drives);

@@ -122,9 +122,9 @@ mod tests {
                 gaitlab_core::preset::Engine::Physics,
                 "human"
             )),
-            with(&["Physics", "Path (waypoints)"])
+            with(&["Physics", "Path (waypoints)", "Terrain"])
         );
         // The planar kangaroo cannot turn: no waypoints.
-        assert_eq!(shown("raibert-kangaroo"), with(&["Physics"]));
+        assert_eq!(shown("raibert-kangaroo"), with(&["Physics", "Terrain"]));
     }
 }

@@ -18,10 +18,10 @@ impl Panel for TerrainPanel {
         "Terrain"
     }
 
-    /// PODA creatures (the IK figures and, in this version, the physics
-    /// creatures walk on the floor only).
+    /// PODA and physics creatures (the IK figures walk on the floor only;
+    /// ground a physics gait cannot take is refused with the engine's reason).
     fn shown_for(&self, lab: &App) -> bool {
-        lab.driver().kind() == DriverKind::Poda
+        matches!(lab.driver().kind(), DriverKind::Poda | DriverKind::Physics)
     }
 
     fn ui(&self, lab: &mut App, ui: &mut egui::Ui) {

@@ -3,6 +3,7 @@
 //! "The lab's additions"). None is in the paper; each is named, and off by
 //! default wherever a gait runs by the paper's laws alone.
 
+pub mod ground_ahead;
 pub mod speed_trim;
 
 use gaitlab_core::preset::physics::LabAdditions;
@@ -26,6 +27,11 @@ pub struct Additions {
     /// The thrust corrected from each measured apex or flight (every gait),
     /// where eq. 2's prediction alone sets it.
     pub hop_integrator: bool,
+    /// On ground that is not flat, eq. 2's hop and eq. 3's touchdown
+    /// measured from the ground plane under the body
+    /// ([`crate::world::ground_view::GroundView`]), where the paper's laws
+    /// take the floor at height 0 (issue 45, docs/terrain.md).
+    pub ground_ahead: bool,
     /// The file predates the additions being optional: every addition on
     /// and the controllers' earlier defaults, so it runs as it was made.
     pub legacy: bool,
@@ -47,6 +53,8 @@ pub struct Offered {
     pub tail_feedback: Option<bool>,
     /// [`Additions::hop_integrator`].
     pub hop_integrator: Option<bool>,
+    /// [`Additions::ground_ahead`].
+    pub ground_ahead: Option<bool>,
 }
 
 /// Each controller's offer, in one table: which of the lab's additions it
@@ -61,6 +69,7 @@ impl Offered {
         speed_ramp: None,
         tail_feedback: None,
         hop_integrator: None,
+        ground_ahead: None,
     };
 
     /// The biped run: the speed trim (off: eq. 3 alone holds the speed),
@@ -72,6 +81,7 @@ impl Offered {
         speed_trim: Some(false),
         unloading_posture: Some(true),
         hop_integrator: Some(true),
+        ground_ahead: Some(false),
         ..Self::NONE
     };
 
@@ -103,6 +113,7 @@ impl Offered {
     /// written").
     pub const TROT: Self = Self {
         hop_integrator: Some(true),
+        ground_ahead: Some(false),
         ..Self::NONE
     };
 
@@ -115,6 +126,7 @@ impl Offered {
         speed_ramp: Some(true),
         tail_feedback: Some(true),
         hop_integrator: Some(true),
+        ground_ahead: Some(false),
         ..Self::NONE
     };
 }
@@ -127,6 +139,7 @@ impl Additions {
         speed_ramp: false,
         tail_feedback: false,
         hop_integrator: false,
+        ground_ahead: false,
         legacy: false,
     };
 
@@ -147,6 +160,10 @@ impl Additions {
             speed_ramp: pick(offered.speed_ramp, |a| a.speed_ramp),
             tail_feedback: pick(offered.tail_feedback, |a| a.tail_feedback),
             hop_integrator: pick(offered.hop_integrator, |a| a.hop_integrator),
+            // Made after terrain: a file from before the additions were
+            // optional ran on the floor, and gets it off.
+            ground_ahead: offered.ground_ahead.is_some()
+                && spec.is_some_and(|a| a.ground_ahead.unwrap_or(false)),
             legacy: spec.is_none(),
         }
     }
@@ -160,6 +177,7 @@ impl Additions {
             (self.speed_ramp, "speed_ramp"),
             (self.tail_feedback, "tail_feedback"),
             (self.hop_integrator, "hop_integrator"),
+            (self.ground_ahead, "ground_ahead"),
         ];
         on.into_iter().filter(|&(on, _)| on).map(|(_, name)| name)
     }

@@ -6,6 +6,8 @@
 use gaitlab_core::portable::Portable;
 use glam::{DMat3, DVec3};
 
+use crate::world::ground_view::GroundView;
+
 /// Eq. 3 on the ground plane: the desired foot displacement from the
 /// projection of the centre of mass (world, m, y = 0) for horizontal velocity
 /// `velocity`, desired velocity `desired`, predicted stance time `stance_s`
@@ -109,6 +111,36 @@ pub fn hip_at_touchdown(
     .min(lookahead_s);
     let ahead = DVec3::new(hip_v.x, 0.0, hip_v.z) * t_rem;
     DVec3::new(hip_world.x, 0.0, hip_world.z) + ahead
+}
+
+/// [`hip_at_touchdown`] over the ground plane `ground` instead of the floor
+/// (the lab's `ground_ahead`, issue 45): the hip's fall is measured to the
+/// ground's height where the foot will land (found by two passes), and the
+/// point returned lies on that ground. On [`GroundView::FLAT`] it is
+/// [`hip_at_touchdown`] to the bit.
+#[must_use]
+pub fn hip_at_touchdown_over(
+    ground: &GroundView,
+    hip_world: DVec3,
+    hip_v: DVec3,
+    reach: f64,
+    displacement: DVec3,
+    lookahead_s: f64,
+) -> DVec3 {
+    let land = |at: DVec3| ground.height_at(at.x + displacement.x, at.z + displacement.z);
+    let mut ground_y = land(hip_world);
+    for _ in 0..2 {
+        let at = hip_at_touchdown(
+            hip_world - DVec3::Y * ground_y,
+            hip_v,
+            reach,
+            displacement,
+            lookahead_s,
+        );
+        ground_y = land(at);
+    }
+    let lifted = hip_world - DVec3::Y * ground_y;
+    hip_at_touchdown(lifted, hip_v, reach, displacement, lookahead_s) + DVec3::Y * ground_y
 }
 
 /// How long a point moving up at `vy_mps` takes to fall `drop_m` (m,

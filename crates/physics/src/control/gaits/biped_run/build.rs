@@ -30,6 +30,7 @@ pub fn build(
     let mut p = with_parameters(d, params, "run")?;
     p.unloading_posture = additions.unloading_posture;
     p.speed_trim = additions.speed_trim;
+    p.ground_ahead = additions.ground_ahead;
     let p = p.with_hop_integrator(additions.hop_integrator);
     Ok(Box::new(BipedRun::new(p, creature)))
 }

@@ -10,6 +10,7 @@ pub mod params;
 
 use glam::DVec3;
 
+use crate::control::additions::ground_ahead::{Liftoff, apex_target_m};
 use crate::control::additions::speed_trim::SpeedTrim;
 use crate::control::laws::attitude::{attitude_error, com_state, heading_forward, trunk_rate};
 use crate::control::laws::body_plan::BodyPlan;
@@ -40,6 +41,9 @@ pub struct BipedRun {
     /// The centre of mass's height at the last lift-off, or at touchdown
     /// before the first (m): eq. 2's apex target is measured from it.
     liftoff_com_y: f64,
+    /// The ground plane's height under the centre of mass then (m; used
+    /// only with the lab's `ground_ahead`).
+    liftoff_ground_y: f64,
     apex_height: f64,
     thrust: f64,
     descending: bool,
@@ -66,6 +70,7 @@ impl BipedRun {
             touchdown_time: 0.0,
             liftoff_height: 0.0,
             liftoff_com_y: f64::NAN,
+            liftoff_ground_y: 0.0,
             apex_height: f64::NEG_INFINITY,
             thrust: params.hopper.thrust_m * scale,
             descending: true,
@@ -84,7 +89,7 @@ impl BipedRun {
         let q = input.data.q[leg.spring];
         let qd = input.data.qd[leg.spring];
         let trunk_y = input.data.world[input.creature.trunk].pos.y;
-        let p = &self.params;
+        let p = self.params;
         let (l, t) = (self.plan.scale.length(), self.plan.scale.time());
         match self.phase {
             Phase::Flight => {
@@ -95,7 +100,8 @@ impl BipedRun {
                     self.phase = Phase::Loading;
                     self.touchdown_time = input.time;
                     if !self.liftoff_com_y.is_finite() {
-                        self.liftoff_com_y = com_state(input.creature, input.data).0.y;
+                        let com = com_state(input.creature, input.data).0;
+                        self.set_liftoff(Liftoff::at(com, &input.ground));
                     }
                 }
             }
@@ -125,7 +131,8 @@ impl BipedRun {
                 self.thrust = (self.thrust + p.hopper.hop_gain * error).clamp(0.0, 0.12 * l);
             }
             self.liftoff_height = trunk_y;
-            self.liftoff_com_y = com_state(input.creature, input.data).0.y;
+            let com = com_state(input.creature, input.data).0;
+            self.set_liftoff(Liftoff::at(com, &input.ground));
             // Speed over the last step against the desired speed.
             let (on, gain) = (p.speed_trim, p.hopper.speed_integral_gain);
             (self.trim).stride_at_input(on, gain, self.plan.scale.velocity(), input);
@@ -147,8 +154,27 @@ impl BipedRun {
         let rise = input.commands.hop_height_m.unwrap_or(p.hop_height_m * l);
         let rest = self.rest[self.active];
         let landing = p.hopper.landing_rest_m * l;
-        p.hopper
-            .eq2_thrust(input, s, (rest, q), landing, self.liftoff_com_y + rise)
+        let liftoff = Liftoff {
+            com_y: self.liftoff_com_y,
+            ground_y: self.liftoff_ground_y,
+        };
+        let now = com_state(input.creature, input.data);
+        let half_stance = self.stance_s / 2.0;
+        let target = apex_target_m(
+            p.ground_ahead,
+            &input.ground,
+            liftoff,
+            now,
+            half_stance,
+            rise,
+        );
+        p.hopper.eq2_thrust(input, s, (rest, q), landing, target)
+    }
+
+    /// Keep the lift-off eq. 2's next target is measured from.
+    fn set_liftoff(&mut self, liftoff: Liftoff) {
+        self.liftoff_com_y = liftoff.com_y;
+        self.liftoff_ground_y = liftoff.ground_y;
     }
 }
 

@@ -28,6 +28,10 @@ pub struct BipedRunParams {
     /// corrected by `hopper.hop_gain` from each hop's measured apex, where
     /// the paper sets it by eq. 2's prediction at the bottom of each stance.
     pub hop_integrator: bool,
+    /// The lab's ground ahead (`lab_additions.ground_ahead`; not in the
+    /// paper): eq. 2's apex target taken above the ground plane under the
+    /// next apex, where the paper's is above the last lift-off.
+    pub ground_ahead: bool,
 }
 
 impl Default for BipedRunParams {
@@ -38,6 +42,7 @@ impl Default for BipedRunParams {
             speed_trim: false,
             unloading_posture: true,
             hop_integrator: false,
+            ground_ahead: false,
         }
     }
 }
@@ -85,6 +90,7 @@ impl BipedRunParams {
             speed_trim: true,
             unloading_posture: true,
             hop_integrator: true,
+            ground_ahead: false,
         }
     }
 }

@@ -37,6 +37,7 @@ pub fn build(
     p.speed_ramp = additions.speed_ramp;
     p.tail_feedback = additions.tail_feedback;
     p.hop_integrator = additions.hop_integrator;
+    p.ground_ahead = additions.ground_ahead;
     let mut hop = KangarooHop::new(p);
     // Every box of the file is jumped, nearest first.
     for o in &params.obstacles {

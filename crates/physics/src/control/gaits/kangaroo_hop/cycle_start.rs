@@ -45,6 +45,7 @@ impl KangarooHop {
             settled.touchdown_toe - advanced_m
         };
         self.liftoff_com_y = settled.liftoff_com_y;
+        self.liftoff_ground_y = settled.liftoff_ground_y;
         self.apex_com_y = settled.apex_com_y;
         self.target_apex_y = settled.target_apex_y;
         self.flight_start = settled.flight_start - elapsed_s;

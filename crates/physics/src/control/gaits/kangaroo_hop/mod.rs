@@ -101,6 +101,9 @@ pub struct KangarooHop {
     touchdown_time: f64,
     touchdown_toe: f64,
     liftoff_com_y: f64,
+    /// The ground plane's height under the centre of mass then (m; used
+    /// only with the lab's `ground_ahead`).
+    liftoff_ground_y: f64,
     apex_com_y: f64,
     target_apex_y: f64,
     flight_start: f64,
@@ -128,6 +131,7 @@ impl KangarooHop {
             touchdown_time: 0.0,
             touchdown_toe: 0.0,
             liftoff_com_y: f64::NAN,
+            liftoff_ground_y: 0.0,
             apex_com_y: f64::NEG_INFINITY,
             target_apex_y: f64::NAN,
             flight_start: 0.0,

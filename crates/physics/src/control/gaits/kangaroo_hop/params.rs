@@ -84,6 +84,10 @@ pub struct KangarooHopParams {
     /// the paper): each measured apex corrects eq. 2's target by
     /// `hop_gain`, learning the losses eq. 2 leaves out.
     pub hop_integrator: bool,
+    /// The lab's ground ahead (`lab_additions.ground_ahead`; not in the
+    /// paper): eq. 2's apex target taken above the ground plane under the
+    /// next apex, where the paper's is above the last lift-off.
+    pub ground_ahead: bool,
     /// Pitch-rate feedback added to the tail-base rest angle (s).
     pub tail_rate_gain_s: f64,
     /// Stiffness of the two distal tail joints (N·m/rad).
@@ -145,6 +149,7 @@ impl Default for KangarooHopParams {
             tail_pitch_gain: 4.0,
             tail_feedback: true,
             hop_integrator: true,
+            ground_ahead: false,
             tail_rate_gain_s: 0.3,
             tail_tip_stiffness: 4.0,
             tail_tip_damping: 0.05,

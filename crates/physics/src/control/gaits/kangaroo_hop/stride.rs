@@ -6,6 +6,7 @@
 use glam::DVec3;
 
 use super::{JumpStage, KangarooHop};
+use crate::control::additions::ground_ahead::{Liftoff, apex_target_m};
 use crate::control::additions::speed_trim::along_z;
 use crate::control::laws::hop_height::{Compressed, rest_for_apex};
 use crate::control::laws::phase::{Phase, StanceEvents};
@@ -52,7 +53,8 @@ impl KangarooHop {
             && !contact.touching
             && t - self.touchdown_time > 0.02 * Scale::new(l).time()
         {
-            self.lift_off(t, com, l);
+            let ground_y = input.ground.height_at(com.x, com.z);
+            self.lift_off(t, com, l, ground_y);
         }
     }
 
@@ -105,12 +107,15 @@ impl KangarooHop {
         }
     }
 
-    pub(super) fn lift_off(&mut self, t: f64, com: DVec3, l: f64) {
+    /// Lift-off at `t` (s) of the centre of mass at `com` over ground
+    /// `ground_y` (m) high, at scale `l`.
+    pub(super) fn lift_off(&mut self, t: f64, com: DVec3, l: f64, ground_y: f64) {
         let measured = t - self.touchdown_time;
         if self.jump == JumpStage::None {
             self.stance_s = measured.clamp(0.05 * Scale::new(l).time(), 0.3 * Scale::new(l).time());
         }
         self.liftoff_com_y = com.y;
+        self.liftoff_ground_y = ground_y;
         self.apex_com_y = f64::NEG_INFINITY;
         self.flight_start = t;
         self.phase = Phase::Flight;
@@ -137,7 +142,14 @@ impl KangarooHop {
         } else {
             com.y
         };
-        let mut target = base + input.commands.hop_height_m.unwrap_or(p.hop_rise_m * l);
+        let rise = input.commands.hop_height_m.unwrap_or(p.hop_rise_m * l);
+        let liftoff = Liftoff {
+            com_y: base,
+            ground_y: self.liftoff_ground_y,
+        };
+        let half_stance = self.stance_s / 2.0;
+        let on = p.ground_ahead && self.liftoff_com_y.is_finite();
+        let mut target = apex_target_m(on, &input.ground, liftoff, (com, com_v), half_stance, rise);
         if self.jump == JumpStage::Takeoff
             && let Some(at) = p.jump_at_m
         {

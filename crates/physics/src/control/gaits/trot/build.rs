@@ -42,5 +42,6 @@ pub fn on_pairs(
     quadruped_legs(creature)?;
     let mut p = with_parameters(own, params, gait)?;
     p.hop_integrator = additions.hop_integrator;
+    p.ground_ahead = additions.ground_ahead;
     Ok(Box::new(QuadrupedRun::on_pairs(p, creature, pairs)))
 }

@@ -7,6 +7,7 @@
 //! corrects it from the Table-2 flight time.
 
 use super::QuadrupedRun;
+use crate::control::additions::ground_ahead::{Liftoff, apex_target_m};
 use crate::control::additions::speed_trim::along_z;
 use crate::control::laws::attitude::com_state;
 use crate::control::laws::hop_height::{
@@ -74,7 +75,10 @@ impl QuadrupedRun {
                             self.touchdown_time = input.time;
                             self.eq2_set = false;
                             if !self.liftoff_com_y.is_finite() {
-                                self.liftoff_com_y = com_state(input.creature, input.data).0.y;
+                                let com = com_state(input.creature, input.data).0;
+                                let liftoff = Liftoff::at(com, &input.ground);
+                                self.liftoff_com_y = liftoff.com_y;
+                                self.liftoff_ground_y = liftoff.ground_y;
                             }
                         }
                     }
@@ -137,7 +141,8 @@ impl QuadrupedRun {
             self.stance_s[self.active] = measured.clamp(0.04 * time_s, 0.4 * time_s);
             self.liftoff_time = input.time;
             self.liftoff_pair = Some(self.active);
-            self.liftoff_com_y = com_state(input.creature, input.data).0.y;
+            let com = com_state(input.creature, input.data).0;
+            self.set_liftoff(Liftoff::at(com, &input.ground));
             // Integral speed correction from the step's mean speed.
             let vd = input.commands.speed_mps;
             self.trim.stride(
@@ -188,9 +193,25 @@ impl QuadrupedRun {
             mass,
             com.y,
             v.y,
-            self.liftoff_com_y + rise,
+            apex_target_m(
+                self.params.ground_ahead,
+                &input.ground,
+                Liftoff {
+                    com_y: self.liftoff_com_y,
+                    ground_y: self.liftoff_ground_y,
+                },
+                (com, v),
+                self.stance_s[self.active] / 2.0,
+                rise,
+            ),
         );
         step.clamp(0.0, self.params.max_thrust_m * l)
+    }
+
+    /// Keep the lift-off eq. 2's next target is measured from.
+    fn set_liftoff(&mut self, liftoff: Liftoff) {
+        self.liftoff_com_y = liftoff.com_y;
+        self.liftoff_ground_y = liftoff.ground_y;
     }
 
     /// The leg springs of eq. 1 with a programmable rest: the idle pair and
@@ -214,7 +235,20 @@ impl QuadrupedRun {
         // The active pair lands as one virtual leg: each leg's landing length
         // makes up for its hip's height above the pair's mean, so the feet
         // reach the ground together although the trunk pitches and rolls.
-        let hip_y = |i: usize| (trunk_rot * creature.legs[i].hip_in_trunk).y;
+        // With the lab's `ground_ahead`, each hip's height is taken above
+        // the ground plane under it, so on a slope the feet still reach
+        // the ground together; the paper's floor is level.
+        let trunk_pos = input.data.world[creature.trunk].pos;
+        let ground_ahead = self.params.ground_ahead;
+        let hip_y = |i: usize| {
+            let hip = trunk_rot * creature.legs[i].hip_in_trunk;
+            if ground_ahead {
+                let at = hip + trunk_pos;
+                hip.y - (input.ground.height_at(at.x, at.z) - input.ground.at.y)
+            } else {
+                hip.y
+            }
+        };
         let mean_hip_y = (hip_y(pair[0]) + hip_y(pair[1])) / 2.0;
         let level = |i: usize| (hip_y(i) - mean_hip_y).clamp(-0.08 * l, 0.08 * l);
         // Leg springs: eq. 1 with a programmable rest.

@@ -16,6 +16,8 @@
 //! for the trot. Every parameter is given for the creature at scale 1 and
 //! scaled by its dynamic scale L (Table 1).
 
+use gaitlab_core::portable::Portable;
+
 use crate::control::additions::speed_trim::SpeedTrim;
 use crate::control::laws::attitude::{com_velocity, heading_forward};
 use crate::control::laws::body_plan::BodyPlan;
@@ -24,9 +26,12 @@ use crate::control::laws::hop_height::height_for_flight;
 use crate::control::laws::lift_share::lift_share;
 use crate::control::laws::pair_posture::PairPosture;
 use crate::control::laws::phase::Phase;
-use crate::control::laws::placement::{aim_frame, foot_displacement, hip_angles, hip_at_touchdown};
+use crate::control::laws::placement::{
+    aim_frame, foot_displacement, hip_angles, hip_at_touchdown_over,
+};
 use crate::control::laws::scale::Scale;
 use crate::creatures::PhysicalCreature;
+use crate::world::ground_view::GroundView;
 use crate::world::sim::{ControlInput, Controller, Drive};
 
 /// The trot's two virtual legs, diagonal pairs of leg indices (front-left
@@ -80,6 +85,9 @@ pub struct QuadrupedRun {
     /// The centre of mass's height at the last lift-off, or at the first
     /// touchdown before one (m): eq. 2's apex target is measured from it.
     liftoff_com_y: f64,
+    /// The ground plane's height under the centre of mass then (m; used
+    /// only with the lab's `ground_ahead`).
+    liftoff_ground_y: f64,
     /// Eq. 2 has set this stance's thrust.
     eq2_set: bool,
     /// A per-step speed correction by the tuning's `speed_gain` (0 unless a
@@ -129,6 +137,7 @@ impl QuadrupedRun {
             liftoff_time: 0.0,
             liftoff_pair: None,
             liftoff_com_y: f64::NAN,
+            liftoff_ground_y: 0.0,
             eq2_set: false,
             trim: SpeedTrim::default(),
             lift_share: pairs.map(|pair| lift_share(creature, pair)),
@@ -230,9 +239,17 @@ impl Controller for QuadrupedRun {
         };
         let gains = |kp: f64, kv: f64| s.torsional_gains(kp, kv);
         let servoing = |ph: Phase| matches!(ph, Phase::Compression | Phase::Thrust);
+        // With the lab's `ground_ahead` the trunk pitches with the ground
+        // along the heading (nose up uphill), so the front and rear hips
+        // stand as high above their ground; the paper holds it level.
+        let slope_pitch = if p.ground_ahead {
+            input.ground.grade_along(fwd).patan2(1.0)
+        } else {
+            0.0
+        };
         let mut posture = PairPosture {
             heading: input.commands.heading_rad,
-            pitch_d: t.pitch_d + swing,
+            pitch_d: t.pitch_d + swing - slope_pitch,
             gains: [
                 gains(t.pitch_kp, t.pitch_kv),
                 gains(t.roll_kp, t.roll_kv),
@@ -265,9 +282,22 @@ impl Controller for QuadrupedRun {
                     // target stays put on the ground and the leg sweeps
                     // back as the body travels (ground speed matching).
                     let hip_v = data.point_velocity_world(trunk, leg.hip_in_trunk);
-                    let foot =
-                        hip_at_touchdown(hip_world, hip_v, reach, displacement, 0.5 * s.time())
-                            + displacement;
+                    // The paper's floor, or with the lab's `ground_ahead`
+                    // the ground plane under the body.
+                    let ground = if p.ground_ahead {
+                        input.ground
+                    } else {
+                        GroundView::FLAT
+                    };
+                    let lookahead = 0.5 * s.time();
+                    let foot = hip_at_touchdown_over(
+                        &ground,
+                        hip_world,
+                        hip_v,
+                        reach,
+                        displacement,
+                        lookahead,
+                    ) + displacement;
                     let angles = hip_angles(aim, hip_world, foot, reach);
                     servo.set(drives, &leg.hip, angles, &mut self.hip_target[i]);
                 }

@@ -83,6 +83,10 @@ pub struct QuadrupedRunParams {
     /// flight's measured duration, where the paper sets it by eq. 2's
     /// prediction at the virtual leg's bottom.
     pub hop_integrator: bool,
+    /// The lab's ground ahead (`lab_additions.ground_ahead`; not in the
+    /// paper): eq. 3's touchdown point found over the ground plane under
+    /// the body, where the paper's law takes the floor at height 0.
+    pub ground_ahead: bool,
     /// Largest thrust (m).
     pub max_thrust_m: f64,
     /// Trunk yaw servo towards the heading in stance (N·m/rad).
@@ -130,6 +134,7 @@ impl Default for QuadrupedRunParams {
             trot,
             flight_gain: 0.05,
             hop_integrator: true,
+            ground_ahead: false,
             max_thrust_m: 0.10,
             yaw_kp: 300.0,
             yaw_kv: 30.0,
