@@ -38,6 +38,12 @@ pub struct MjcfOptions {
     pub terrain: gaitlab_core::terrain::Terrain,
 }
 
+/// The foot's contact sphere's radius, metres at scale 1: gaitlab's ground
+/// springs act at the foot's point, so MuJoCo's sphere is all but a point
+/// (a 1 cm sphere stood the quadruped 1 cm higher on its feet:
+/// `tools/stairs_mujoco_check.py`, docs/terrain.md "In MuJoCo").
+const FOOT_RADIUS_M: f64 = 1e-4;
+
 fn v3(v: DVec3) -> String {
     format!("{} {} {}", num(v.x), num(v.y), num(v.z))
 }
@@ -219,7 +225,7 @@ pub fn to_mjcf(creature: &PhysicalCreature, options: &MjcfOptions) -> String {
                     x,
                     "{pad}  <geom name=\"{}-foot\" type=\"sphere\" size=\"{}\" pos=\"{}\" mass=\"0\" contype=\"1\" conaffinity=\"1\" condim=\"3\" friction=\"2 0.005 0.0001\" solref=\"{}\"/>",
                     escape(name),
-                    num(0.01 * ctx.scale),
+                    num(FOOT_RADIUS_M * ctx.scale),
                     v3(*point),
                     ctx.solref
                 );
