@@ -15,8 +15,7 @@ impl App {
         &self.session.creature.scenario.terrain
     }
 
-    /// Puts the running preset on `terrain` (its `scenario.terrain`; the
-    /// floor removes it) and starts the walk again on it. Nothing changes
+    /// Puts the running preset on `terrain` (its `scenario.terrain`) and starts the walk again on it. Nothing changes
     /// when the ground is the one already under the figure.
     ///
     /// # Errors
@@ -30,21 +29,9 @@ impl App {
         }
         let mut preset: Value = serde_json::from_str(&self.preset_text())
             .map_err(|e| format!("terrain: the running preset does not read back: {e}"))?;
-        let Some(root) = preset.as_object_mut() else {
-            return Err("terrain: the running preset is not a JSON object".to_owned());
-        };
-        let scenario = root
-            .entry("scenario")
-            .or_insert_with(|| Value::Object(serde_json::Map::new()));
-        let Some(scenario) = scenario.as_object_mut() else {
-            return Err("terrain: the running preset's scenario is not an object".to_owned());
-        };
-        if terrain.is_flat() {
-            scenario.remove("terrain");
-        } else {
-            let value = serde_json::to_value(terrain).map_err(|e| format!("terrain: {e}"))?;
-            scenario.insert("terrain".to_owned(), value);
-        }
+        let value = serde_json::to_value(terrain).map_err(|e| format!("terrain: {e}"))?;
+        gaitlab_core::preset::set_preset_value(&mut preset, "scenario.terrain", value)
+            .map_err(|e| format!("terrain: {e}"))?;
         self.set_custom_preset(&preset.to_string())?;
         self.outbox.push(crate::lab::Effect::LinkChanged);
         Ok(())

@@ -39,9 +39,9 @@ struct Drafts {
     slope: Plane,
     stairs: Stairs,
     rough: Rough,
-    /// The running ground the drafts last followed (a height field's grid
-    /// is not kept: its kind is enough).
-    seen: Terrain,
+    /// The running ground the drafts last followed (`None` for a height
+    /// field, whose grid is not kept: its kind is enough).
+    seen: Option<Terrain>,
 }
 
 impl Default for Drafts {
@@ -59,7 +59,7 @@ impl Default for Drafts {
                 start_m: 0.5,
             },
             rough: Rough::new(1, 0.5),
-            seen: Terrain::Flat,
+            seen: Some(Terrain::Flat),
         }
     }
 }
@@ -69,22 +69,16 @@ impl Drafts {
     /// since the last look (a link, a preset, the `terrain` command).
     fn follow(&mut self, running: &Terrain) {
         let same = match (&self.seen, running) {
-            (Terrain::HeightField(_), Terrain::HeightField(_)) => true,
-            (seen, running) => seen == running,
+            (None, Terrain::HeightField(_)) => true,
+            (Some(seen), running) => seen == running,
+            (None, _) => false,
         };
         if same {
             return;
         }
         self.seen = match running {
-            Terrain::HeightField(_) => Terrain::HeightField(gaitlab_core::terrain::HeightField {
-                cell_m: 1.0,
-                cols: 0,
-                rows: 0,
-                origin_m: None,
-                heights_m: Vec::new(),
-                friction: None,
-            }),
-            other => other.clone(),
+            Terrain::HeightField(_) => None,
+            other => Some(other.clone()),
         };
         match running {
             Terrain::Plane(plane) => self.slope = plane.clone(),
